@@ -1,0 +1,6 @@
+"""`python -m rockcli` runs the command-line interface."""
+
+from rockcli.cli.main import cli
+
+if __name__ == "__main__":
+    cli()

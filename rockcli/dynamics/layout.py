@@ -1,0 +1,30 @@
+"""Layouts of the arrays passed to and from the compiled kernel (no numba import here)."""
+
+# Parameter vector layout (packed by simulate.pack_parameters).
+P_ALPHA, P_P2, P_E, P_ONE_SIDED, P_FREE_SIDE, P_REBOUND, P_LINEAR = 0, 1, 2, 3, 4, 5, 6
+P_OVERTURN, P_RTOL, P_ATOL, P_REST, P_INV_I0, P_MAX_EVENTS, P_MAX_STEPS = 7, 8, 9, 10, 11, 12, 13
+P_THETA0, P_OMEGA0 = 14, 15  # initial state (free-rocking tests); 0, 0 = at rest
+N_PARAMS = 16
+
+# Float outputs.
+O_MAX_A, O_THETA_MAX, O_THETA_MIN, O_MAX_OMEGA, O_T_OVERTURN, O_T_UPLIFT, O_T_END = range(7)
+N_FLOAT_OUT = 7
+# Integer outputs.
+I_STATUS, I_IMPACTS, I_STEPS, I_REJECTED, I_UPLIFTS = range(5)
+N_INT_OUT = 5
+# Status codes.
+STATUS_COMPLETED, STATUS_OVERTURNED, STATUS_EVENT_LIMIT, STATUS_STEP_LIMIT = 0, 1, 2, 3
+# Per-restrainer outputs: peak elongation [m], peak force [N], failure time [s] (nan: intact).
+S_MAX_U, S_MAX_FORCE, S_T_FAIL = 0, 1, 2
+N_SPRING_OUT = 3
+
+# Event kinds.
+EV_NONE, EV_IMPACT, EV_OVERTURN, EV_FAIL, EV_SETTLE = 0, 1, 2, 3, 4
+
+
+STATUS_NAMES = {
+    STATUS_COMPLETED: "completed",
+    STATUS_OVERTURNED: "overturned",
+    STATUS_EVENT_LIMIT: "event-limit",
+    STATUS_STEP_LIMIT: "step-limit",
+}

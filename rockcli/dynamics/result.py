@@ -1,0 +1,138 @@
+"""Results of rocking runs: data, rendered elsewhere (spec/style.md, "Output is data first")."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from enum import StrEnum
+
+import numpy as np
+
+#: Runs whose peak amplitude ratio stays below this while impacts happen are flagged as
+#: chattering-dominated (engine.md, "Sensitivity": small-amplitude rocking is ill-conditioned).
+CHATTER_RATIO = 0.05
+
+
+class RunStatus(StrEnum):
+    """How a run ended."""
+
+    COMPLETED = "completed"
+    OVERTURNED = "overturned"
+    EVENT_LIMIT = "event-limit"
+    STEP_LIMIT = "step-limit"
+
+
+class Verdict(StrEnum):
+    """Envelope verdict over both polarities."""
+
+    SURVIVES = "survives"
+    OVERTURNS = "overturns"
+    UNDECIDED = "undecided"
+
+
+@dataclass(frozen=True)
+class RestrainerPeak:
+    """Demand on one restrainer during a run.
+
+    Attributes:
+        name: restrainer label.
+        max_displacement: peak spring elongation [m].
+        max_force: peak spring force K·u [N].
+        t_fail: time the restrainer failed [s], None if it held.
+    """
+
+    name: str
+    max_displacement: float
+    max_force: float
+    t_fail: float | None = None
+
+
+@dataclass(frozen=True, eq=False)
+class History:
+    """θ(t) and θ̇(t) at the sample times (tail included) up to the end of the run."""
+
+    time: np.ndarray
+    theta: np.ndarray
+    omega: np.ndarray
+
+
+@dataclass(frozen=True)
+class RockingRun:
+    """One time-history run for one polarity.
+
+    Attributes:
+        polarity: +1 as recorded, −1 reversed.
+        status: how the run ended. message: one sentence about it.
+        max_ratio: max|θ|/α, the paper's amplitude ratio [-].
+        theta_max, theta_min: signed extremes of θ [rad].
+        max_velocity: max|θ̇| seen at step ends and events [rad/s].
+        t_overturn: time of overturning [s] or None. t_uplift: first uplift [s] or None.
+        impacts: impacts counted (with rest threshold rest_velocity). uplifts: starts from rest.
+        steps, rejected: accepted and rejected integration steps.
+        t_end: time the run ended [s].
+        engine, rtol, atol, rest_velocity: how it was integrated.
+        restrainers: demand on each restrainer.
+        warnings: remarks for the reader (chattering, event limit, …).
+        history: θ(t), θ̇(t) when asked for.
+    """
+
+    polarity: int
+    status: RunStatus
+    message: str
+    max_ratio: float
+    theta_max: float
+    theta_min: float
+    max_velocity: float
+    t_overturn: float | None
+    t_uplift: float | None
+    impacts: int
+    uplifts: int
+    steps: int
+    rejected: int
+    t_end: float
+    engine: str
+    rtol: float
+    atol: float
+    rest_velocity: float
+    restrainers: tuple[RestrainerPeak, ...] = ()
+    warnings: tuple[str, ...] = ()
+    history: History | None = field(default=None, compare=False, repr=False)
+
+    @property
+    def overturned(self) -> bool:
+        """True when the block overturned in this run."""
+        return self.status is RunStatus.OVERTURNED
+
+    @property
+    def chattering(self) -> bool:
+        """True for small-amplitude runs dominated by impacts (read their peak with care)."""
+        return self.impacts > 0 and self.max_ratio < CHATTER_RATIO
+
+
+@dataclass(frozen=True)
+class Assessment:
+    """Both polarities of one block under one record, and their envelope.
+
+    Attributes:
+        runs: the run with the record as given (+1) and reversed (−1).
+    """
+
+    runs: tuple[RockingRun, ...]
+
+    @property
+    def worst(self) -> RockingRun:
+        """The run that decides the verdict: an overturn first, else the largest ratio."""
+        return max(self.runs, key=lambda r: (r.overturned, r.max_ratio))
+
+    @property
+    def verdict(self) -> Verdict:
+        """`overturns` if either polarity overturns, else `survives` (spec/rocking.md)."""
+        if any(r.overturned for r in self.runs):
+            return Verdict.OVERTURNS
+        if any(r.status is not RunStatus.COMPLETED for r in self.runs):
+            return Verdict.UNDECIDED
+        return Verdict.SURVIVES
+
+    @property
+    def max_ratio(self) -> float:
+        """Envelope amplitude ratio max over both polarities [-]."""
+        return max(r.max_ratio for r in self.runs)

@@ -1,0 +1,129 @@
+"""The rules of the rocking motion, shared by the fast engine and the reference engine.
+
+Plain scalar functions of floats and small arrays (no numpy calls), so that the compiled
+engine (:mod:`rockcli.dynamics.kernel`) compiles this very code with numba and the reference
+engine (:mod:`rockcli.dynamics.reference`) calls it as Python. The mechanics (gravity,
+ground and spring moments) come from :mod:`rockcli.mechanics`, written once for both the
+rocking and the kinematic analyses.
+
+Sign convention of the source paper (spec/rocking.md): a positive ground acceleration drives
+a positive rotation; s = ±1 is the active pivot side, a = s·θ ≥ 0 the rotation about it.
+
+Packed restrainer table (one row per restrainer), columns:
+``K+ [N/m], K− [N/m], r+ [m], φ+ [rad], r− [m], φ− [rad], a_fail+ [rad], a_fail− [rad],
+fails_at [m]`` (a_fail: rotation about the pivot at which the elongation reaches fails_at).
+"""
+
+from __future__ import annotations
+
+from rockcli.mechanics import (
+    gravity_moment_ratio,
+    ground_moment_ratio,
+    spring_elongation,
+    spring_moment,
+)
+
+#: Columns of the packed restrainer table.
+COL_K_POS, COL_K_NEG, COL_R_POS, COL_PHI_POS, COL_R_NEG, COL_PHI_NEG = 0, 1, 2, 3, 4, 5
+COL_A_FAIL_POS, COL_A_FAIL_NEG, COL_FAILS_AT = 6, 7, 8
+N_SPRING_COLS = 9
+
+
+def spring_on_side(springs, j, s):  # type: ignore[no-untyped-def]
+    """(K, r, φ, a_fail) of restrainer row j for pivot side s = ±1."""
+    if s > 0:
+        return springs[j, COL_K_POS], springs[j, COL_R_POS], springs[j, COL_PHI_POS], springs[
+            j, COL_A_FAIL_POS
+        ]
+    return springs[j, COL_K_NEG], springs[j, COL_R_NEG], springs[j, COL_PHI_NEG], springs[
+        j, COL_A_FAIL_NEG
+    ]
+
+
+def angular_acceleration(a, s, ag, alpha, p2, linearized, springs, alive, inv_i0):  # type: ignore[no-untyped-def]
+    """θ̈ of the block on pivot side s at rotation a = s·θ under ground acceleration ag [g].
+
+    Source: spec/rocking.md, θ̈ = −s p² sin(α − sθ) − Σ_k M_k(θ)/I0 + p² üg cos(α − sθ), with
+    M_k = s·K·u·r·cos(φ − |θ|) (paper Eq. 2 and 4; linearized: sin x ≈ x, cos x ≈ 1).
+
+    Args:
+        a: rotation about the active pivot s·θ [rad].
+        s: pivot side, +1 or −1.
+        ag: ground acceleration, polarity applied [g].
+        alpha: slenderness [rad]. p2: p² [rad²/s²]. linearized: small-angle form.
+        springs: packed restrainer table. alive: 1 for a restrainer still acting, 0 if failed.
+        inv_i0: 1/I0 [1/(kg·m²)] (0 when there are no restrainers and no mass).
+    """
+    acc = -s * p2 * gravity_moment_ratio(alpha, a, linearized) + p2 * ag * ground_moment_ratio(
+        alpha, a, linearized
+    )
+    for j in range(springs.shape[0]):
+        if alive[j] != 0:
+            k, r, phi, _ = spring_on_side(springs, j, s)
+            if k != 0.0:
+                acc -= s * spring_moment(k, r, phi, a, linearized) * inv_i0
+    return acc
+
+
+def ground_acceleration(t, i, times, accel, polarity):  # type: ignore[no-untyped-def]
+    """Ground acceleration at time t inside sample interval i, linear between samples [g].
+
+    Source: spec/rocking.md, "The ground motion between samples is linear".
+    """
+    t0 = times[i]
+    t1 = times[i + 1]
+    w = (t - t0) / (t1 - t0)
+    return polarity * (accel[i] + (accel[i + 1] - accel[i]) * w)
+
+
+def uplift_in_interval(t, i, times, accel, polarity, threshold, one_sided, free_side):  # type: ignore[no-untyped-def]
+    """Earliest time τ ≥ t in sample interval i at which the block at rest starts to rock.
+
+    The block leaves rest when the ground acceleration exceeds the threshold (tan α, in g)
+    towards a side it may rotate to (spec/rocking.md, "Uplift from rest"); the acceleration is
+    linear in the interval, so the crossing is exact. Tested on the interpolated value at t
+    first (engine.md, trap 2), so a spike is never skipped.
+
+    Returns:
+        (τ, side): side = ±1 the side it rotates to, or (inf, 0) when it stays at rest.
+    """
+    g_now = ground_acceleration(t, i, times, accel, polarity)
+    if g_now > threshold and (one_sided == 0 or free_side > 0):
+        return t, 1
+    if g_now < -threshold and (one_sided == 0 or free_side < 0):
+        return t, -1
+    t1 = times[i + 1]
+    g_end = ground_acceleration(t1, i, times, accel, polarity)
+    best_t = 1e300
+    best_side = 0
+    for side in (1, -1):
+        if one_sided != 0 and side != free_side:
+            continue
+        level = side * threshold
+        if (side * g_end > threshold) and (side * g_now <= threshold):
+            tau = t + (level - g_now) / (g_end - g_now) * (t1 - t)
+            tau = min(max(tau, t), t1)
+            if tau < best_t:
+                best_t = tau
+                best_side = side
+    if best_side == 0:
+        return 1e300, 0
+    return best_t, best_side
+
+
+def velocity_after_impact(omega, s, e, one_sided, rebound):  # type: ignore[no-untyped-def]
+    """(θ̇⁺, new side) at θ = 0 from θ̇⁻ on side s.
+
+    Source: spec/rocking.md, "Impacts": two-sided θ̇⁺ = e·θ̇⁻, sign kept, the pivot switches
+    (paper §3.1; Housner 1963); one-sided θ̇⁺ = −r_f·e·θ̇⁻ about the same pivot (paper §3.1,
+    ref. [26]).
+    """
+    if one_sided != 0:
+        return -rebound * e * omega, s
+    return e * omega, -s
+
+
+def elongation_on_side(springs, j, s, a, linearized):  # type: ignore[no-untyped-def]
+    """Spring elongation u of restrainer row j on pivot side s at rotation a [m]."""
+    _, r, phi, _ = spring_on_side(springs, j, s)
+    return spring_elongation(r, phi, a, linearized)

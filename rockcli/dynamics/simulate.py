@@ -1,0 +1,231 @@
+"""Run the rocking time history of a block under a record: pack, integrate, unpack.
+
+The ground motion is the record's samples, linear between them, followed by a free tail at the
+record's sample interval: the last sample ramps to zero over one interval (the record ends) and
+the block then moves freely (spec/rocking.md, "Duration").
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from rockcli.dynamics import rules
+from rockcli.dynamics.result import (
+    Assessment,
+    History,
+    RestrainerPeak,
+    RockingRun,
+    RunStatus,
+)
+from rockcli.dynamics.settings import Engine, SolverSettings
+from rockcli.mechanics import Block, spring_failure_rotation
+
+# Kernel layouts, duplicated here as plain ints so that packing does not import numba.
+from rockcli.dynamics.layout import (  # noqa: I001
+    I_IMPACTS, I_REJECTED, I_STATUS, I_STEPS, I_UPLIFTS, N_FLOAT_OUT, N_INT_OUT, N_PARAMS,
+    N_SPRING_OUT, O_MAX_A, O_MAX_OMEGA, O_T_END, O_T_OVERTURN, O_T_UPLIFT, O_THETA_MAX,
+    O_THETA_MIN, P_OMEGA0, P_THETA0, P_ALPHA, P_ATOL, P_E, P_FREE_SIDE, P_INV_I0, P_LINEAR, P_MAX_EVENTS,
+    P_MAX_STEPS, P_ONE_SIDED, P_OVERTURN, P_P2, P_REBOUND, P_REST, P_RTOL, S_MAX_FORCE,
+    S_MAX_U, S_T_FAIL, STATUS_NAMES,
+)
+
+
+def extend_with_tail(time: np.ndarray, accel: np.ndarray, dt: float, tail: float) -> tuple[np.ndarray, np.ndarray]:
+    """Sample times and accelerations [g] with `tail` seconds of zeros after the record."""
+    n_tail = max(1, int(math.ceil(tail / dt - 1e-9)))
+    t_tail = time[-1] + dt * np.arange(1, n_tail + 1)
+    return (
+        np.ascontiguousarray(np.concatenate([time, t_tail]), dtype=np.float64),
+        np.ascontiguousarray(np.concatenate([accel, np.zeros(n_tail)]), dtype=np.float64),
+    )
+
+
+def pack_parameters(block: Block, settings: SolverSettings, rtol: float, atol: float) -> np.ndarray:
+    """The kernel's parameter vector (layout P_* in layout.py)."""
+    par = np.zeros(N_PARAMS)
+    par[P_ALPHA] = block.alpha
+    par[P_P2] = block.p2
+    par[P_E] = block.e
+    par[P_ONE_SIDED] = 1.0 if block.one_sided else 0.0
+    par[P_FREE_SIDE] = float(block.free_side)
+    par[P_REBOUND] = block.rebound
+    par[P_LINEAR] = 1.0 if block.linearized else 0.0
+    par[P_OVERTURN] = settings.overturn_angle
+    par[P_RTOL] = rtol
+    par[P_ATOL] = atol
+    par[P_REST] = settings.rest_velocity
+    par[P_INV_I0] = 1.0 / block.inertia if block.mass is not None else 0.0
+    par[P_MAX_EVENTS] = float(settings.max_events)
+    par[P_MAX_STEPS] = float(settings.max_steps)
+    return par
+
+
+def pack_springs(block: Block) -> np.ndarray:
+    """The packed restrainer table (columns in rules.py), failure rotations precomputed."""
+    table = np.zeros((len(block.restrainers), rules.N_SPRING_COLS))
+    for j, sp in enumerate(block.restrainers):
+        if block.mass is None and (sp.k_pos or sp.k_neg):
+            raise ValueError("a block with restrainers needs a mass")
+        table[j, rules.COL_K_POS] = sp.k_pos
+        table[j, rules.COL_K_NEG] = sp.k_neg
+        table[j, rules.COL_R_POS] = sp.r_pos
+        table[j, rules.COL_PHI_POS] = sp.phi_pos
+        table[j, rules.COL_R_NEG] = sp.r_neg
+        table[j, rules.COL_PHI_NEG] = sp.phi_neg
+        table[j, rules.COL_A_FAIL_POS] = spring_failure_rotation(
+            sp.r_pos, sp.phi_pos, sp.fails_at, block.linearized
+        )
+        table[j, rules.COL_A_FAIL_NEG] = spring_failure_rotation(
+            sp.r_neg, sp.phi_neg, sp.fails_at, block.linearized
+        )
+        table[j, rules.COL_FAILS_AT] = sp.fails_at
+    return table
+
+
+def simulate(
+    block: Block,
+    time: np.ndarray,
+    accel: np.ndarray,
+    dt: float,
+    *,
+    polarity: int = 1,
+    settings: SolverSettings | None = None,
+    engine: Engine = Engine.FAST,
+    history: bool = False,
+    theta0: float = 0.0,
+    omega0: float = 0.0,
+) -> RockingRun:
+    """One rocking run of `block` under the ground acceleration `accel` [g] at `time` [s].
+
+    Args:
+        block: the block and its restrainers.
+        time, accel: record samples (uniform or not); dt: the interval of the free tail [s].
+        polarity: +1 as recorded, −1 reversed.
+        settings: tolerances and thresholds (defaults: spec/engine.md).
+        engine: FAST (compiled DP5(4)) or REFERENCE (scipy DOP853, tight tolerance).
+        history: keep θ(t), θ̇(t) at the sample times.
+        theta0, omega0: initial rotation [rad] and velocity [rad/s] (default: at rest).
+    """
+    settings = settings or SolverSettings()
+    times, acc = extend_with_tail(np.asarray(time, float), np.asarray(accel, float), dt, settings.tail_for(block.p))
+    if engine is Engine.REFERENCE:
+        from rockcli.dynamics.reference import integrate_reference as run
+        rtol, atol = _reference_tolerances()
+    else:
+        from rockcli.dynamics.kernel import integrate as run
+        rtol, atol = settings.rtol, settings.atol
+    par = pack_parameters(block, settings, rtol, atol)
+    par[P_THETA0] = theta0
+    par[P_OMEGA0] = omega0
+    springs = pack_springs(block)
+    alive = np.ones(len(block.restrainers), dtype=np.int64)
+    n_hist = times.size if history else 1
+    hist_th = np.full(n_hist, np.nan)
+    hist_om = np.full(n_hist, np.nan)
+    out_f = np.zeros(N_FLOAT_OUT)
+    out_i = np.zeros(N_INT_OUT, dtype=np.int64)
+    spring_out = np.zeros((len(block.restrainers), N_SPRING_OUT))
+    spring_out[:, S_T_FAIL] = np.nan
+    run(times, acc, float(polarity), par, springs, alive, hist_th, hist_om, out_f, out_i, spring_out)
+    hist = _history(times, hist_th, hist_om, out_f[O_T_END]) if history else None
+    return _unpack(block, settings, engine, rtol, atol, polarity, out_f, out_i, spring_out, hist)
+
+
+def _reference_tolerances() -> tuple[float, float]:
+    from rockcli.dynamics.settings import REFERENCE_ATOL, REFERENCE_RTOL
+
+    return REFERENCE_RTOL, REFERENCE_ATOL
+
+
+def _history(times: np.ndarray, th: np.ndarray, om: np.ndarray, t_end: float) -> History:
+    keep = (times <= t_end) & np.isfinite(th)
+    return History(time=times[keep], theta=th[keep], omega=om[keep])
+
+
+def _optional(x: float) -> float | None:
+    return None if math.isnan(x) else float(x)
+
+
+def _unpack(block, settings, engine, rtol, atol, polarity, out_f, out_i, spring_out, hist) -> RockingRun:  # type: ignore[no-untyped-def]
+    status = RunStatus(STATUS_NAMES[int(out_i[I_STATUS])])
+    peaks = tuple(
+        RestrainerPeak(
+            name=sp.name,
+            max_displacement=float(spring_out[j, S_MAX_U]),
+            max_force=float(spring_out[j, S_MAX_FORCE]),
+            t_fail=_optional(spring_out[j, S_T_FAIL]),
+        )
+        for j, sp in enumerate(block.restrainers)
+    )
+    run = RockingRun(
+        polarity=polarity,
+        status=status,
+        message=_message(status, out_f),
+        max_ratio=float(out_f[O_MAX_A] / block.alpha),
+        theta_max=float(out_f[O_THETA_MAX]),
+        theta_min=float(out_f[O_THETA_MIN]),
+        max_velocity=float(out_f[O_MAX_OMEGA]),
+        t_overturn=_optional(out_f[O_T_OVERTURN]),
+        t_uplift=_optional(out_f[O_T_UPLIFT]),
+        impacts=int(out_i[I_IMPACTS]),
+        uplifts=int(out_i[I_UPLIFTS]),
+        steps=int(out_i[I_STEPS]),
+        rejected=int(out_i[I_REJECTED]),
+        t_end=float(out_f[O_T_END]),
+        engine=str(engine),
+        rtol=rtol,
+        atol=atol,
+        rest_velocity=settings.rest_velocity,
+        restrainers=peaks,
+        history=hist,
+    )
+    return _with_warnings(run)
+
+
+def _message(status: RunStatus, out_f: np.ndarray) -> str:
+    if status is RunStatus.OVERTURNED:
+        return f"overturned at t = {out_f[O_T_OVERTURN]:.3f} s"
+    if status is RunStatus.COMPLETED:
+        if math.isnan(out_f[O_T_UPLIFT]):
+            return "never uplifted"
+        return "survived"
+    if status is RunStatus.EVENT_LIMIT:
+        return f"stopped at t = {out_f[O_T_END]:.3f} s: too many impacts (raise max_events)"
+    return f"stopped at t = {out_f[O_T_END]:.3f} s: too many steps (raise max_steps)"
+
+
+def _with_warnings(run: RockingRun) -> RockingRun:
+    notes = []
+    if run.chattering:
+        notes.append(
+            f"polarity {run.polarity:+d}: small-amplitude chattering (max θ/α = {run.max_ratio:.3g} "
+            f"with {run.impacts} impacts): the peak is sensitive to α and e; read it as an order of "
+            f"magnitude; impact count depends on the rest threshold {run.rest_velocity:g} rad/s"
+        )
+    if run.status in (RunStatus.EVENT_LIMIT, RunStatus.STEP_LIMIT):
+        notes.append(f"polarity {run.polarity:+d}: {run.message}")
+    if not notes:
+        return run
+    from dataclasses import replace
+
+    return replace(run, warnings=tuple(notes))
+
+
+def assess(
+    block: Block,
+    time: np.ndarray,
+    accel: np.ndarray,
+    dt: float,
+    *,
+    settings: SolverSettings | None = None,
+    engine: Engine = Engine.FAST,
+    history: bool = False,
+) -> Assessment:
+    """Both polarities of the record (the response to +üg and −üg differ: spec/rocking.md)."""
+    runs = tuple(
+        simulate(block, time, accel, dt, polarity=pol, settings=settings, engine=engine, history=history)
+        for pol in (1, -1)
+    )
+    return Assessment(runs=runs)

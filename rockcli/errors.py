@@ -1,0 +1,59 @@
+"""The one error family of rock: bad input, named where it is and what is allowed.
+
+A physics outcome (overturning, a run stopped by the event guard) is a *result*, never an
+exception. Everything the user can get wrong raises :class:`InputError`, which the CLI turns
+into one line on stderr and a non-zero exit code in a single place (``cli/main.py``).
+"""
+
+from __future__ import annotations
+
+
+class RockError(Exception):
+    """Base of every error rock raises on purpose."""
+
+
+class InputError(RockError):
+    """Bad input: a file, a field or line, the value found and what is allowed.
+
+    Args:
+        problem: what is wrong, e.g. "must be greater than 0".
+        file: the file the input came from (path as the user gave it), if any.
+        where: the field path (``geometry.thickness``) or the line (``line 12``), if known.
+        value: the offending value as found, if any.
+        allowed: what would be accepted, e.g. "a number > 0 [m]".
+    """
+
+    def __init__(
+        self,
+        problem: str,
+        *,
+        file: str | None = None,
+        where: str | None = None,
+        value: object = None,
+        allowed: str | None = None,
+    ) -> None:
+        self.problem = problem
+        self.file = file
+        self.where = where
+        self.value = value
+        self.allowed = allowed
+        super().__init__(self.render())
+
+    def render(self) -> str:
+        """One line: ``file: where: problem (got value; allowed: ...)``."""
+        head = ": ".join(str(x) for x in (self.file, self.where) if x)
+        text = f"{head}: {self.problem}" if head else self.problem
+        extras = []
+        if self.value is not None:
+            extras.append(f"got {self.value!r}")
+        if self.allowed:
+            extras.append(f"allowed: {self.allowed}")
+        return f"{text} ({'; '.join(extras)})" if extras else text
+
+    def with_file(self, file: str) -> InputError:
+        """The same error, naming the file (when a lower layer did not know it)."""
+        if self.file:
+            return self
+        return InputError(
+            self.problem, file=file, where=self.where, value=self.value, allowed=self.allowed
+        )

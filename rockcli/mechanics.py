@@ -1,0 +1,276 @@
+"""Mechanics of the rocking block, written once for both analyses.
+
+The rocking engine (``rockcli.dynamics``) and the kinematic check (``rockcli.codecheck``) both
+read the block through the functions here, so the uplift acceleration of a time history equals
+α0·g of the code check by construction (spec/README.md, "Architecture").
+
+Pure and silent: only :mod:`math`. The scalar formulas are plain functions of floats so the
+engine can compile the very same code with numba.
+
+Notation (spec/rocking.md): half-thickness b, half-height h, semi-diagonal R = √(b²+h²),
+slenderness α = atan(b/h), mass m, I0 = 4/3·m·R², p² = m g R / I0 = 3g/(4R); rotation θ,
+pivot side s = ±1, a = s·θ = |θ| the rotation about the active pivot.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+#: Side of rotation / pivot: +1 for θ > 0 (pivot O), −1 for θ < 0 (pivot O′).
+POSITIVE = 1
+NEGATIVE = -1
+
+
+@dataclass(frozen=True)
+class Restrainer:
+    """A horizontal spring between a point of the block and a fixed support.
+
+    The attachment point is described, for each pivot, by its distance ``r`` from the pivot and
+    the angle ``phi`` of that radius from the vertical at rest, measured into the block
+    (spec/rocking.md, "Restrainers"). The paper's spring at the top corner is r = 2R, φ = α.
+
+    Attributes:
+        name: label shown in reports.
+        k_pos: stiffness while θ > 0 [N/m].
+        k_neg: stiffness while θ < 0 [N/m].
+        r_pos, phi_pos: radius [m] and angle [rad] of the point about pivot O (θ > 0).
+        r_neg, phi_neg: radius [m] and angle [rad] of the point about pivot O′ (θ < 0).
+        fails_at: spring elongation at which it is lost for the rest of the run [m]
+            (``math.inf``: never).
+    """
+
+    name: str
+    k_pos: float
+    k_neg: float
+    r_pos: float
+    phi_pos: float
+    r_neg: float
+    phi_neg: float
+    fails_at: float = math.inf
+
+    def side(self, s: int) -> tuple[float, float, float]:
+        """(K [N/m], r [m], φ [rad]) for pivot side s = ±1."""
+        if s > 0:
+            return self.k_pos, self.r_pos, self.phi_pos
+        return self.k_neg, self.r_neg, self.phi_neg
+
+    @property
+    def can_fail(self) -> bool:
+        """True when the restrainer has a finite failure elongation."""
+        return math.isfinite(self.fails_at)
+
+
+@dataclass(frozen=True)
+class Block:
+    """A rigid rectangular block rocking on a rigid base, with its restrainers.
+
+    Attributes:
+        R: semi-diagonal [m].
+        alpha: slenderness atan(b/h) [rad], 0 < α < π/2.
+        mass: mass [kg] (``None`` allowed only without restrainers: the free block's motion
+            does not depend on it, paper §4.3).
+        g: gravity [m/s²].
+        e: coefficient of restitution at impact, ratio of angular velocities [-].
+        one_sided: True when transverse walls stop the rotation towards one side.
+        free_side: with ``one_sided``, the side the block can rotate to (+1 or −1).
+        rebound: r_f, the rebound reduction factor of one-sided motion [-].
+        linearized: use sin x ≈ x, cos x ≈ 1 (slender-block approximation).
+        restrainers: the horizontal springs.
+    """
+
+    R: float
+    alpha: float
+    mass: float | None = None
+    g: float = 9.81
+    e: float = 1.0
+    one_sided: bool = False
+    free_side: int = POSITIVE
+    rebound: float = 1.0
+    linearized: bool = False
+    restrainers: tuple[Restrainer, ...] = field(default_factory=tuple)
+
+    @property
+    def b(self) -> float:
+        """Half-thickness R·sin α [m]."""
+        return self.R * math.sin(self.alpha)
+
+    @property
+    def h(self) -> float:
+        """Half-height R·cos α [m]."""
+        return self.R * math.cos(self.alpha)
+
+    @property
+    def p2(self) -> float:
+        """p² = m g R / I0 = 3g/(4R) [rad²/s²] (paper Eq. 2, rectangular block)."""
+        return frequency_parameter_sq(self.R, self.g)
+
+    @property
+    def p(self) -> float:
+        """Frequency parameter p = √(3g/(4R)) [rad/s] (paper Eq. 2)."""
+        return math.sqrt(self.p2)
+
+    @property
+    def inertia(self) -> float:
+        """I0 = 4/3·m·R² [kg·m²], polar moment about a base corner (rectangular block)."""
+        if self.mass is None:
+            raise ValueError("the block has no mass")
+        return polar_inertia(self.mass, self.R)
+
+    @property
+    def weight(self) -> float:
+        """W = m g [N]."""
+        if self.mass is None:
+            raise ValueError("the block has no mass")
+        return self.mass * self.g
+
+    @property
+    def uplift_acceleration(self) -> float:
+        """Ground acceleration that starts rocking from rest [g]: tan α (α when linearized)."""
+        return uplift_threshold(self.alpha, self.linearized)
+
+
+def frequency_parameter_sq(R: float, g: float) -> float:
+    """p² = 3g/(4R) [rad²/s²].
+
+    Source: paper Eq. (2); Housner (1963). Rectangular block, I0 = 4/3·m·R².
+    """
+    return 3.0 * g / (4.0 * R)
+
+
+def polar_inertia(mass: float, R: float) -> float:
+    """I0 = 4/3·m·R² [kg·m²], rectangular block about a base corner.
+
+    Source: paper §4.3 (I0 = 4/3·m(h² + b²)).
+    """
+    return 4.0 / 3.0 * mass * R * R
+
+
+def housner_restitution(alpha: float) -> float:
+    """e = 1 − 1.5·sin²α, Housner's coefficient of restitution (may be ≤ 0 for α ≥ 54.74°).
+
+    Source: paper Eq. (3); Housner (1963), conservation of angular momentum at impact.
+    """
+    return 1.0 - 1.5 * math.sin(alpha) ** 2
+
+
+def uplift_threshold(alpha: float, linearized: bool = False) -> float:
+    """Ground acceleration [g] at which the free block at rest starts to rock: tan α.
+
+    Source: spec/rocking.md, "Uplift from rest": at θ = 0, θ̈ > 0 iff üg > tan α (from
+    Eq. 2 with sin(α)/cos(α)); linearized (sin x ≈ x, cos x ≈ 1) the threshold is α.
+    A restrainer with no initial force does not change it (ntc.md, "Common").
+    """
+    return alpha if linearized else math.tan(alpha)
+
+
+def spring_elongation(r: float, phi: float, a: float, linearized: bool = False) -> float:
+    """Outward horizontal displacement u of the attachment point for a rotation a = |θ| [m].
+
+    Source: spec/rocking.md, u(θ) = r[sin φ − sin(φ − |θ|)]; paper Eq. (6) for r = 2R, φ = α.
+    Linearized: u = r cos φ · |θ|.
+    """
+    if linearized:
+        return r * math.cos(phi) * a
+    return r * (math.sin(phi) - math.sin(phi - a))
+
+
+def spring_moment(k: float, r: float, phi: float, a: float, linearized: bool = False) -> float:
+    """Restoring moment magnitude K·u·r·cos(φ − |θ|) of one spring about the active pivot [N·m].
+
+    Source: spec/rocking.md, M(θ) = s·K·u(θ)·r·cos(φ − |θ|); paper Eq. (4) and (8) for the top
+    corner (4KR² cos(α − θ)[sin α − sin(α − θ)]). Linearized: K r² cos²φ · |θ|.
+    """
+    u = spring_elongation(r, phi, a, linearized)
+    arm = r * math.cos(phi) if linearized else r * math.cos(phi - a)
+    return k * u * arm
+
+
+def spring_failure_rotation(r: float, phi: float, fails_at: float, linearized: bool = False) -> float:
+    """Rotation a = |θ| at which the spring elongation reaches ``fails_at`` [rad] (inf: never).
+
+    Inverse of :func:`spring_elongation`: sin(φ − a) = sin φ − u_f/r (u grows with a up to
+    a = φ + π/2, beyond any rotation a block survives).
+    """
+    if not math.isfinite(fails_at):
+        return math.inf
+    if linearized:
+        c = r * math.cos(phi)
+        return fails_at / c if c > 0.0 else math.inf
+    x = math.sin(phi) - fails_at / r
+    if x < -1.0:
+        return math.inf
+    return phi - math.asin(x)
+
+
+def gravity_moment_ratio(alpha: float, a: float, linearized: bool = False) -> float:
+    """Restoring moment of gravity divided by m g R: sin(α − |θ|) (α − |θ| linearized) [-].
+
+    Source: paper Eq. (1), (14).
+    """
+    return (alpha - a) if linearized else math.sin(alpha - a)
+
+
+def ground_moment_ratio(alpha: float, a: float, linearized: bool = False) -> float:
+    """Moment of a unit ground acceleration divided by m g R: cos(α − |θ|) (1 linearized) [-].
+
+    Source: paper Eq. (1), (13).
+    """
+    return 1.0 if linearized else math.cos(alpha - a)
+
+
+def restoring_moment(block: Block, s: int, a: float, alive: tuple[bool, ...] | None = None) -> float:
+    """Total restoring moment about the active pivot, gravity plus restrainers [N·m].
+
+    M_r = m g R sin(α − a) + Σ_k K_k u_k r_k cos(φ_k − a), a = |θ| ≥ 0 on side s (paper Eq. 14,
+    generalised to any attachment point as in spec/rocking.md). ``alive`` masks failed springs.
+    """
+    total = block.weight * block.R * gravity_moment_ratio(block.alpha, a, block.linearized)
+    for i, spring in enumerate(block.restrainers):
+        if alive is not None and not alive[i]:
+            continue
+        k, r, phi = spring.side(s)
+        total += spring_moment(k, r, phi, a, block.linearized)
+    return total
+
+
+def tie_rod_stiffness(diameter: float, length: float, modulus: float = 210e9) -> float:
+    """Axial stiffness of a steel tie-rod K = E·π·d²/4 / L [N/m].
+
+    Source: spec/README.md (model file, convenience forms); paper Table 2 (Ø20, L = 3 m:
+    2.2e7 N/m).
+    """
+    return modulus * math.pi * diameter**2 / 4.0 / length
+
+
+def point_polar(x: float, z: float) -> tuple[float, float]:
+    """(r, φ) of a point at horizontal distance x from the pivot and height z above the base.
+
+    Source: spec/rocking.md: r = √(x² + z²), φ = atan(x/z) (angle from the vertical, into the
+    block).
+    """
+    return math.hypot(x, z), math.atan2(x, z)
+
+
+def stiffness_coefficient(k: float, R: float, inertia: float) -> float:
+    """c_K = 4 K R² / I0 [1/s²], the paper's quick effectiveness term of a restrainer.
+
+    Source: paper §4.3 (c_K should exceed c_E = p² by one or two orders of magnitude).
+    """
+    return 4.0 * k * R * R / inertia
+
+
+def linear_global_stiffness(block: Block, s: int = POSITIVE, alive: tuple[bool, ...] | None = None) -> float:
+    """dM_r/dθ at θ = 0⁺ on side s [N·m/rad]: negative for the free block, positive if restrained.
+
+    Source: paper Eq. (16)–(18) for the top spring (positive iff 4KR/(mg) > 1/cos α); for any
+    attachment point the same derivative of :func:`restoring_moment`:
+    −m g R cos α + Σ K r² cos²φ (the spring's u is r cos φ·θ, its arm r cos φ, at θ = 0).
+    """
+    total = -block.weight * block.R * (1.0 if block.linearized else math.cos(block.alpha))
+    for i, spring in enumerate(block.restrainers):
+        if alive is not None and not alive[i]:
+            continue
+        k, r, phi = spring.side(s)
+        total += k * (r * math.cos(phi)) ** 2
+    return total
