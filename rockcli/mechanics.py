@@ -274,3 +274,12 @@ def linear_global_stiffness(block: Block, s: int = POSITIVE, alive: tuple[bool, 
         k, r, phi = spring.side(s)
         total += k * (r * math.cos(phi)) ** 2
     return total
+
+
+def restrainer_coefficient(k: float, r: float, inertia: float) -> float:
+    """c_K = K r² / I0 [1/s²] for a spring at distance r from the pivot.
+
+    Source: paper §4.3, c_K = 4KR²/I0 for the top spring (r = 2R): the coefficient of the
+    KSTAB term of Eq. (12), written for any attachment radius (spec/rocking.md, M(θ)).
+    """
+    return k * r * r / inertia

@@ -1,0 +1,65 @@
+"""`rock assess MODEL --record FILE`: the rocking time history, both polarities."""
+
+from __future__ import annotations
+
+import json
+
+import click
+
+from rockcli.cli.options import load_record, output_format, with_record_options
+
+#: Exit code of --fail-on-overturn when the block overturns (documented in the README).
+EXIT_OVERTURNS = 1
+
+
+@click.command()
+@click.argument("model_path", metavar="MODEL", type=click.Path(dir_okay=False))
+@with_record_options
+@click.option("--engine", type=click.Choice(["fast", "reference"]), default="fast",
+              show_default=True,
+              help="fast: compiled DP5(4); reference: scipy DOP853 at rtol 1e-10 (slow, for checks).")
+@click.option("--history", "history_path", type=click.Path(dir_okay=False), default=None,
+              help="Write t, θ, θ̇ of the worse polarity to this CSV file.")
+@click.option("--fail-on-overturn", is_flag=True,
+              help=f"Exit with code {EXIT_OVERTURNS} when the block overturns (for CI gates).")
+@output_format
+def assess(model_path, record_path, record_format, dt, units, scale, pga, engine,
+           history_path, fail_on_overturn, output):  # type: ignore[no-untyped-def]
+    """Rocking time history of MODEL under a record, both polarities, with the verdict."""
+    from rockcli.studies.assess import run_assessment
+
+    record = load_record(record_path, record_format, dt, units, scale, pga)
+    doc, worst = run_assessment(model_path, record, engine, history=history_path is not None)
+    if history_path:
+        write_history(history_path, worst)
+    show(doc, output)
+    if fail_on_overturn and doc["verdict"] == "overturns":
+        raise SystemExit(EXIT_OVERTURNS)
+
+
+def show(doc, output):  # type: ignore[no-untyped-def]
+    """Print the document as JSON or as the rich report."""
+    if output == "json":
+        click.echo(json.dumps(doc, indent=2, allow_nan=False))
+        return
+    from rich.console import Console
+
+    from rockcli.report.assess import assessment_report
+    from rockcli.report.table import render
+
+    render(assessment_report(doc), Console())
+
+
+def write_history(path, run):  # type: ignore[no-untyped-def]
+    """CSV of t [s], θ [rad], θ̇ [rad/s] at the sample times (tail included)."""
+    from rockcli.errors import InputError
+
+    hist = run.history
+    lines = [f"# polarity {run.polarity:+d}, {run.message}", "t_s,theta_rad,omega_rad_s"]
+    lines += [f"{t:.6f},{a:.10e},{w:.10e}" for t, a, w in zip(hist.time, hist.theta, hist.omega)]
+    try:
+        with open(path, "w", encoding="utf-8") as fh:
+            fh.write("\n".join(lines) + "\n")
+    except OSError as exc:
+        raise InputError("cannot write the history file", file=path,
+                         value=exc.strerror, allowed="a writable path") from None

@@ -1,0 +1,14 @@
+"""The list of commands of `rock` (each in its own module)."""
+
+from __future__ import annotations
+
+import click
+
+from rockcli.cli.assess import assess
+from rockcli.cli.init import init
+from rockcli.cli.record import record
+
+ALL: list[click.Command] = []
+ALL.append(record)
+ALL.append(init)
+ALL.append(assess)

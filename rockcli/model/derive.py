@@ -1,0 +1,234 @@
+"""From the validated model to the core's parameters: SI floats in frozen dataclasses.
+
+The rocking engine and the code check receive a :class:`rockcli.mechanics.Block` and an
+:class:`AnalysisOptions`, never the pydantic model (spec/style.md, principle 2). The rules
+that turn the file's convenient forms into r, φ, K and e live here, each in one function.
+
+Pure: only :mod:`math` and :mod:`rockcli.mechanics` (no numpy, scipy or numba, so that model
+validation starts fast; spec/engine.md, "Speed").
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+from rockcli.mechanics import (
+    NEGATIVE,
+    POSITIVE,
+    Block,
+    Restrainer,
+    frequency_parameter_sq,
+    housner_restitution,
+    point_polar,
+    tie_rod_stiffness,
+)
+from rockcli.model.schema import (
+    STEEL_MODULUS,
+    Acts,
+    Model,
+    Position,
+    RestitutionModel,
+    RestrainerKind,
+    Sides,
+    StoppedSide,
+)
+from rockcli.model.schema import Restrainer as RestrainerTable
+
+#: kN → N.
+NEWTONS_PER_KILONEWTON = 1e3
+
+
+@dataclass(frozen=True)
+class AnalysisOptions:
+    """Settings of a time-history run, as the dynamics engine consumes them.
+
+    Attributes:
+        tail: free-vibration time after the record [s] (``None``: the engine's default).
+        overturn_angle: |θ| at which the block counts as overturned [rad].
+        rtol: relative tolerance of the integration [-].
+        atol: absolute tolerance of the integration [rad].
+        rest_velocity: rest threshold on |θ̇⁺| after an impact [rad/s].
+    """
+
+    tail: float | None
+    overturn_angle: float
+    rtol: float
+    atol: float
+    rest_velocity: float
+
+
+@dataclass(frozen=True)
+class Description:
+    """The block's derived quantities, for reports (SI units).
+
+    Attributes:
+        b, h: half-thickness and half-height [m].
+        thickness, height: full thickness 2b and height 2h [m].
+        R: semi-diagonal [m].
+        alpha: slenderness [rad].
+        width: out-of-plane length [m] (``None`` when not given).
+        pivot_height: height of the pivot above ground [m] (``None`` when not given).
+        mass: mass [kg] (``None`` without a [mass] table).
+        weight: weight W = m g [N] (``None`` without a [mass] table).
+        e: coefficient of restitution in force [-].
+        e_rule: how e was obtained, e.g. "0.9 × Housner (1 − 1.5 sin²α)".
+        p: frequency parameter √(3g/(4R)) [rad/s].
+    """
+
+    b: float
+    h: float
+    thickness: float
+    height: float
+    R: float
+    alpha: float
+    width: float | None
+    pivot_height: float | None
+    mass: float | None
+    weight: float | None
+    e: float
+    e_rule: str
+    p: float
+
+
+def to_block(model: Model) -> Block:
+    """The rigid block with its restrainers, in SI floats (spec/rocking.md)."""
+    R, alpha = model.geometry.polar
+    motion = model.motion
+    one_sided = motion.sides is Sides.ONE
+    return Block(
+        R=R,
+        alpha=alpha,
+        mass=block_mass(model),
+        g=model.analysis.g,
+        e=restitution(model)[0],
+        one_sided=one_sided,
+        free_side=free_side(motion.stopped) if one_sided else POSITIVE,
+        rebound=motion.rebound if motion.rebound is not None else 1.0,
+        linearized=model.analysis.linearized,
+        restrainers=tuple(to_restrainer(model, i) for i in range(len(model.restrainers))),
+    )
+
+
+def solver_options(model: Model) -> AnalysisOptions:
+    """The run settings of the [analysis] table (defaults: spec/engine.md)."""
+    a = model.analysis
+    return AnalysisOptions(
+        tail=a.tail,
+        overturn_angle=a.overturn_angle,
+        rtol=a.rtol,
+        atol=a.atol,
+        rest_velocity=a.rest_velocity,
+    )
+
+
+def describe(model: Model) -> Description:
+    """Derived quantities of the block for reports: sizes, mass, weight, e and its rule, p."""
+    b, h = model.geometry.half_sizes
+    R, alpha = model.geometry.polar
+    mass = block_mass(model)
+    g = model.analysis.g
+    e, rule = restitution(model)
+    return Description(
+        b=b, h=h, thickness=2 * b, height=2 * h, R=R, alpha=alpha,
+        width=model.geometry.width, pivot_height=model.geometry.pivot_height,
+        mass=mass, weight=None if mass is None else mass * g,
+        e=e, e_rule=rule, p=math.sqrt(frequency_parameter_sq(R, g)),
+    )
+
+
+def block_weight(model: Model) -> float | None:
+    """W [N]: the weight given, or γ·2b·2h·width (spec/README.md, "mass"); None without mass."""
+    m = model.mass
+    if m is None:
+        return None
+    if m.weight is not None:
+        return m.weight * NEWTONS_PER_KILONEWTON
+    assert m.unit_weight is not None and model.geometry.width is not None
+    b, h = model.geometry.half_sizes
+    return m.unit_weight * NEWTONS_PER_KILONEWTON * (2 * b) * (2 * h) * model.geometry.width
+
+
+def block_mass(model: Model) -> float | None:
+    """m = W/g [kg] (g of the model's [analysis] table); None without a [mass] table."""
+    weight = block_weight(model)
+    return None if weight is None else weight / model.analysis.g
+
+
+def restitution(model: Model) -> tuple[float, str]:
+    """(e, rule): Housner's e = 1 − 1.5 sin²α times the factor (0 if ≤ 0), or e as given.
+
+    Source: paper Eq. (3) (Housner 1963); spec/rocking.md, "Two-sided impact": for
+    α ≥ 54.74° Housner's e ≤ 0, no rocking after the first impact, so e = 0.
+    """
+    table = model.restitution
+    if table.rule is RestitutionModel.EXPLICIT:
+        assert table.e is not None
+        return table.e, "explicit"
+    factor = 1.0 if table.factor is None else table.factor
+    e = max(housner_restitution(model.geometry.polar[1]), 0.0) * factor
+    rule = "Housner (1 − 1.5 sin²α)"
+    return e, rule if factor == 1.0 else f"{factor:g} × {rule}"
+
+
+def free_side(stopped: StoppedSide | None) -> int:
+    """The side a one-sided block can rotate to: the opposite of the stopped one.
+
+    Default stopped side: negative (spec of the model file), so the free side is +1.
+    """
+    return NEGATIVE if stopped is StoppedSide.POSITIVE else POSITIVE
+
+
+def to_restrainer(model: Model, index: int) -> Restrainer:
+    """Restrainer ``index`` of the model with per-side K, r, φ and its failure elongation."""
+    table = model.restrainers[index]
+    k_pos, k_neg = stiffness(table)
+    (r_pos, phi_pos), (r_neg, phi_neg) = attachment(model, table)
+    return Restrainer(
+        name=table.name or f"restrainer {index + 1}",
+        k_pos=k_pos,
+        k_neg=k_neg,
+        r_pos=r_pos,
+        phi_pos=phi_pos,
+        r_neg=r_neg,
+        phi_neg=phi_neg,
+        fails_at=math.inf if table.fails_at is None else table.fails_at,
+    )
+
+
+def stiffness(table: RestrainerTable) -> tuple[float, float]:
+    """(k_pos, k_neg) [N/m]: as given, k on both sides, or a tie-rod's E·π·d²/4 / L.
+
+    Source: spec/README.md (convenience form ``tie-rod``); paper Table 2.
+    """
+    if table.kind is RestrainerKind.TIE_ROD:
+        assert table.diameter is not None and table.length is not None
+        modulus = STEEL_MODULUS if table.E is None else table.E
+        k = tie_rod_stiffness(table.diameter, table.length, modulus)
+        acts = table.acts or Acts.BOTH
+        return (k if acts is not Acts.NEGATIVE else 0.0, k if acts is not Acts.POSITIVE else 0.0)
+    if table.k is not None:
+        return table.k, table.k
+    assert table.k_pos is not None and table.k_neg is not None
+    return table.k_pos, table.k_neg
+
+
+def attachment(
+    model: Model, table: RestrainerTable
+) -> tuple[tuple[float, float], tuple[float, float]]:
+    """((r⁺, φ⁺), (r⁻, φ⁻)) of the attachment point about pivot O (θ > 0) and O′ (θ < 0).
+
+    Source: spec/rocking.md, "Restrainers": radius + angle is the paper's form, the same for
+    both pivots; a point at height z and distance x from O is at 2b − x from O′
+    (r = √(x² + z²), φ = atan(x/z)); the top corner is r = 2R, φ = α (paper Eq. 4).
+    """
+    if table.position is Position.TOP:
+        R, alpha = model.geometry.polar
+        return (2 * R, alpha), (2 * R, alpha)
+    if table.radius is not None and table.angle is not None:
+        return (table.radius, table.angle), (table.radius, table.angle)
+    assert table.height is not None and table.from_pivot is not None
+    thickness = 2 * model.geometry.half_sizes[0]
+    # The schema allows x up to the thickness plus a rounding slack; clamp the other side at 0.
+    x_other = max(thickness - table.from_pivot, 0.0)
+    return point_polar(table.from_pivot, table.height), point_polar(x_other, table.height)

@@ -1,0 +1,406 @@
+"""The model file, as pydantic sees it: one macro-element, validated once at the edge.
+
+Every table forbids unknown keys and is frozen; every number carries its unit in the field
+description (``[m]``, ``[kN]``, ``[rad]``…), which the error translation in
+:mod:`rockcli.model.load` quotes back to the user. The either/or rules of the file (R + alpha
+or thickness + height, weight or unit_weight, the forms of a restrainer) raise
+:func:`rule_error`, which names the offending key, so a bad file gets one line naming the
+field, the value and what is allowed (spec/README.md, "The model file").
+
+Sources: spec/README.md (the model file), spec/rocking.md (restrainers, restitution,
+one-sided motion), the brief of the model package (the decisions listed on each field).
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Mapping
+from enum import StrEnum
+from typing import Any
+
+from pydantic import BaseModel, ConfigDict, Field, model_validator
+
+from rockcli.model.rules import choose_group, forbid, number, rule_error
+from rockcli.units import DEFAULT_GRAVITY
+
+#: Default steel modulus of a tie-rod [Pa] (paper Table 2: E = 210 GPa).
+STEEL_MODULUS = 210e9
+
+#: Default overturning angle |θ| [rad]: the paper's choice, π/2 (paper §3.1; spec/rocking.md).
+OVERTURN_ANGLE = math.pi / 2
+
+#: Default relative and absolute tolerance of the integration (spec/engine.md, "defaults").
+TOLERANCE = 1e-8
+
+#: Loosest tolerance accepted: looser runs are not trustworthy (spec/rocking.md, "Accuracy").
+LOOSEST_TOLERANCE = 1e-2
+
+#: Default rest threshold on |θ̇| after an impact [rad/s] (spec/engine.md, "Rest rule").
+REST_VELOCITY = 1e-4
+
+#: Relative slack when checking that a point lies within the thickness: the file's dimensions
+#: are rounded (the altar's R = 1.499, α = 0.163 give 2b = 0.4865 m for a 0.487 m wall: the
+#: half-unit of α's third decimal alone is 0.3 % of b).
+CONTAINMENT_RTOL = 1e-2
+
+
+class Kind(StrEnum):
+    """What the macro-element is (identity only: the mechanics are the same)."""
+
+    WALL = "wall"
+    ALTAR = "altar"
+    FACADE = "facade"
+
+
+class RestitutionModel(StrEnum):
+    """How the coefficient of restitution e is obtained."""
+
+    HOUSNER = "housner"
+    EXPLICIT = "explicit"
+
+
+class Sides(StrEnum):
+    """Whether the block can rock to both sides or is stopped on one."""
+
+    TWO = "two"
+    ONE = "one"
+
+
+class StoppedSide(StrEnum):
+    """The side of rotation the transverse walls block in one-sided motion."""
+
+    NEGATIVE = "negative"
+    POSITIVE = "positive"
+
+
+class RestrainerKind(StrEnum):
+    """A restrainer given by its stiffness, or a steel tie-rod given by its size."""
+
+    SPRING = "spring"
+    TIE_ROD = "tie-rod"
+
+
+class Acts(StrEnum):
+    """The side(s) of rotation on which a tie-rod works."""
+
+    BOTH = "both"
+    POSITIVE = "positive"
+    NEGATIVE = "negative"
+
+
+class Position(StrEnum):
+    """Named attachment points."""
+
+    TOP = "top"
+
+
+class Table(BaseModel):
+    """Base of every table of the file: unknown keys are errors, values are frozen."""
+
+    model_config = ConfigDict(extra="forbid", frozen=True)
+
+
+class Geometry(Table):
+    """The rocking block: either R + alpha, or thickness + height (spec/README.md)."""
+
+    R: float | None = number("Semi-diagonal R = √(b² + h²), with R + alpha [m]", gt=0)
+    alpha: float | None = number(
+        "Slenderness α = atan(b/h), strictly between 0 and π/2, with R [rad]",
+        gt=0,
+        lt=math.pi / 2,
+    )
+    thickness: float | None = number("Full thickness 2b, with height [m]", gt=0)
+    height: float | None = number("Full height 2h above the pivot, with thickness [m]", gt=0)
+    width: float | None = number(
+        "Out-of-plane length, needed only with mass.unit_weight (volume = 2b·2h·width) [m]", gt=0
+    )
+    pivot_height: float | None = number(
+        "Height of the pivot above ground when the block is the upper portion of a taller "
+        "wall; informational for now [m]",
+        ge=0,
+    )
+
+    @model_validator(mode="after")
+    def _one_form(self) -> Geometry:
+        """Exactly one of (R, alpha) and (thickness, height)."""
+        allowed = "either R + alpha, or thickness + height"
+        values = self.__dict__
+        if choose_group(values, [("R", "alpha"), ("thickness", "height")], allowed) is None:
+            raise rule_error(None, "missing the block's dimensions", allowed)
+        return self
+
+    @property
+    def half_sizes(self) -> tuple[float, float]:
+        """(b, h): half-thickness and half-height [m] (b = R sin α, h = R cos α)."""
+        if self.thickness is not None and self.height is not None:
+            return self.thickness / 2.0, self.height / 2.0
+        assert self.R is not None and self.alpha is not None
+        return self.R * math.sin(self.alpha), self.R * math.cos(self.alpha)
+
+    @property
+    def polar(self) -> tuple[float, float]:
+        """(R, α) [m, rad]: R = √(b² + h²), α = atan(b/h) (spec/rocking.md, notation)."""
+        if self.R is not None and self.alpha is not None:
+            return self.R, self.alpha
+        b, h = self.half_sizes
+        return math.hypot(b, h), math.atan2(b, h)
+
+
+class Mass(Table):
+    """The weight of the block: total weight, or unit weight × volume (spec/README.md)."""
+
+    weight: float | None = number("Total weight W of the block [kN]", gt=0)
+    unit_weight: float | None = number(
+        "Unit weight γ; W = γ·2b·2h·width, needs geometry.width [kN/m³]", gt=0
+    )
+
+    @model_validator(mode="after")
+    def _one_form(self) -> Mass:
+        """Exactly one of weight and unit_weight."""
+        allowed = "either weight [kN] or unit_weight [kN/m³]"
+        if choose_group(self.__dict__, [("weight",), ("unit_weight",)], allowed) is None:
+            raise rule_error(None, "missing the weight", allowed)
+        return self
+
+
+EITHER_E = 'model = "housner" with optional factor, or model = "explicit" with e'
+
+
+class Restitution(Table):
+    """Energy lost at impact: Housner's e (times a factor), or an explicit e (paper Eq. 3)."""
+
+    model: RestitutionModel | None = Field(
+        None,
+        description="'housner' (e = 1 − 1.5 sin²α, times factor; 0 when that is ≤ 0, "
+        "α ≥ 54.74°) or 'explicit' (e given); default: 'explicit' if e is given, else "
+        "'housner'",
+    )
+    factor: float | None = number(
+        "Factor on Housner's e, in (0, 1]; the paper's systemic study uses 0.9; default 1 [-]",
+        gt=0,
+        le=1,
+    )
+    e: float | None = number(
+        "Explicit coefficient of restitution (ratio of angular velocities), in [0, 1] [-]",
+        ge=0,
+        le=1,
+    )
+
+    @model_validator(mode="after")
+    def _consistent(self) -> Restitution:
+        """e and factor exclude each other; 'explicit' needs e, 'housner' refuses it."""
+        if self.e is not None and self.factor is not None:
+            raise rule_error("factor", "not allowed together with e", EITHER_E, self.factor)
+        if self.rule is RestitutionModel.HOUSNER:
+            forbid(self.__dict__, ["e"], 'not allowed with model = "housner"', EITHER_E)
+        elif self.e is None:
+            raise rule_error("e", 'required with model = "explicit"', "a number >= 0 and <= 1 [-]")
+        return self
+
+    @property
+    def rule(self) -> RestitutionModel:
+        """The model in force: the one given, else 'explicit' if e is given, else 'housner'."""
+        if self.model is not None:
+            return self.model
+        return RestitutionModel.EXPLICIT if self.e is not None else RestitutionModel.HOUSNER
+
+
+class Motion(Table):
+    """Two-sided rocking, or one-sided (a façade stopped by transverse walls; spec/rocking.md)."""
+
+    sides: Sides = Field(Sides.TWO, description="'two' (default) or 'one'")
+    stopped: StoppedSide | None = Field(
+        None,
+        description="With sides = 'one': the side the transverse walls block, 'negative' "
+        "(default) or 'positive'; the block rotates only towards the other side",
+    )
+    rebound: float | None = number(
+        "With sides = 'one': rebound reduction factor r_f in [0, 1], θ̇⁺ = −r_f·e·θ̇⁻; "
+        "default 1 (no additional damping) [-]",
+        ge=0,
+        le=1,
+    )
+
+    @model_validator(mode="after")
+    def _one_sided_keys(self) -> Motion:
+        """stopped and rebound belong to one-sided motion only."""
+        if self.sides is Sides.TWO:
+            forbid(self.__dict__, ["stopped", "rebound"], 'only allowed with sides = "one"',
+                   'sides = "one" with stopped and rebound, or remove it')
+        return self
+
+
+class Analysis(Table):
+    """Settings of the time-history run (spec/rocking.md; defaults from spec/engine.md)."""
+
+    tail: float | None = number(
+        "Free-vibration time after the end of the record; default: the engine's [s]", ge=0
+    )
+    overturn_angle: float = number(
+        "Rotation |θ| at which the block counts as overturned, in (0, π/2]; default π/2 [rad]",
+        OVERTURN_ANGLE,
+        gt=0,
+        le=OVERTURN_ANGLE,
+    )
+    rtol: float = number(
+        "Relative tolerance of the integration, in (0, 1e-2]; default 1e-8 [-]",
+        TOLERANCE,
+        gt=0,
+        le=LOOSEST_TOLERANCE,
+    )
+    atol: float = number(
+        "Absolute tolerance of the integration, in (0, 1e-2]; default 1e-8 [rad, rad/s]",
+        TOLERANCE,
+        gt=0,
+        le=LOOSEST_TOLERANCE,
+    )
+    rest_velocity: float = number(
+        "Rest rule: after an impact, |θ̇⁺| below this means rest; default 1e-4 [rad/s]",
+        REST_VELOCITY,
+        gt=0,
+    )
+    linearized: bool = Field(
+        False,
+        strict=True,
+        description="Use the linearized equation (sin x ≈ x, cos x ≈ 1); default false",
+    )
+    g: float = number("Gravity; default 9.81 [m/s²]", DEFAULT_GRAVITY, gt=0)
+
+
+#: The three ways of placing a restrainer's attachment point.
+PLACEMENTS = (("radius", "angle"), ("height", "from_pivot"), ("position",))
+PLACEMENT_ALLOWED = 'radius + angle, or height + from_pivot, or position = "top"'
+SPRING_ALLOWED = 'k or k_pos + k_neg [N/m]; or kind = "tie-rod" with diameter and length [m]'
+TIE_ROD_KEYS = ("diameter", "length", "E", "acts")
+TIE_ROD_ALLOWED = 'kind = "tie-rod" with diameter and length [m], optional E [Pa] and acts'
+
+
+class Restrainer(Table):
+    """A horizontal spring (tie-rod, vault, transverse wall) acting on the block.
+
+    Stiffness: k_pos + k_neg, or k (both sides), or kind = "tie-rod" with diameter, length,
+    E (K = E·π·d²/4 / L). Placement: radius + angle, height + from_pivot, or position = "top"
+    (spec/rocking.md, "Restrainers").
+    """
+
+    name: str | None = Field(None, min_length=1, description="Label; default 'restrainer N'")
+    kind: RestrainerKind = Field(
+        RestrainerKind.SPRING, description="'spring' (default: stiffness given) or 'tie-rod'"
+    )
+    k_pos: float | None = number("Stiffness while θ > 0, with k_neg [N/m]", ge=0)
+    k_neg: float | None = number("Stiffness while θ < 0, with k_pos [N/m]", ge=0)
+    k: float | None = number("Stiffness on both sides (instead of k_pos + k_neg) [N/m]", ge=0)
+    diameter: float | None = number("Tie-rod: bar diameter d [m]", gt=0)
+    length: float | None = number("Tie-rod: free length L [m]", gt=0)
+    E: float | None = number("Tie-rod: Young's modulus; default 210e9 [Pa]", gt=0)
+    acts: Acts | None = Field(
+        None, description="Tie-rod: side(s) it works on, 'both' (default), 'positive', "
+        "'negative'"
+    )
+    radius: float | None = number(
+        "Distance of the attachment point from the pivot, same for both pivots (paper's form; "
+        "with angle) [m]",
+        gt=0,
+    )
+    angle: float | None = number(
+        "Angle of that radius from the vertical, into the block, in [0, π/2] (with radius) [rad]",
+        ge=0,
+        le=math.pi / 2,
+    )
+    height: float | None = number(
+        "Height z of the attachment point above the base (with from_pivot) [m]", gt=0
+    )
+    from_pivot: float | None = number(
+        "Horizontal distance x of the point from the pivot of positive rotation, at most the "
+        "thickness; from the other pivot it is 2b − x (with height) [m]",
+        ge=0,
+    )
+    position: Position | None = Field(
+        None, description="'top': the corner at the top, r = 2R, φ = α (paper Eq. 4)"
+    )
+    fails_at: float | None = number(
+        "Spring elongation at which the restrainer is lost for the rest of the run; default "
+        "never [m]",
+        gt=0,
+    )
+
+    @model_validator(mode="after")
+    def _one_stiffness_one_place(self) -> Restrainer:
+        """One stiffness form matching the kind, and exactly one placement form."""
+        values = self.__dict__
+        if self.kind is RestrainerKind.TIE_ROD:
+            self._check_tie_rod(values)
+        else:
+            self._check_spring(values)
+        if choose_group(values, PLACEMENTS, PLACEMENT_ALLOWED) is None:
+            raise rule_error(None, "missing the attachment point", PLACEMENT_ALLOWED)
+        return self
+
+    @staticmethod
+    def _check_spring(values: Mapping[str, Any]) -> None:
+        forbid(values, TIE_ROD_KEYS, 'only allowed with kind = "tie-rod"', SPRING_ALLOWED)
+        if choose_group(values, [("k",), ("k_pos", "k_neg")], SPRING_ALLOWED) is None:
+            raise rule_error(None, "missing the stiffness", SPRING_ALLOWED)
+
+    @staticmethod
+    def _check_tie_rod(values: Mapping[str, Any]) -> None:
+        forbid(values, ["k", "k_pos", "k_neg"], 'not allowed with kind = "tie-rod"',
+               TIE_ROD_ALLOWED)
+        missing = [k for k in ("diameter", "length") if values.get(k) is None]
+        if missing:
+            raise rule_error(missing[0], 'required with kind = "tie-rod"', TIE_ROD_ALLOWED)
+
+    @property
+    def is_stiff(self) -> bool:
+        """True when the restrainer has a nonzero stiffness on some side (tie-rods always)."""
+        if self.kind is RestrainerKind.TIE_ROD:
+            return True
+        return any(v for v in (self.k, self.k_pos, self.k_neg))
+
+
+class Model(Table):
+    """One macro-element: identity, block, mass, restitution, motion, analysis, restrainers."""
+
+    name: str = Field(..., min_length=1, description="Name shown in reports")
+    kind: Kind = Field(..., description="'wall', 'altar' or 'facade'")
+    notes: str | None = Field(None, description="Free text")
+    geometry: Geometry = Field(..., description="The rocking block")
+    mass: Mass | None = Field(
+        None, description="Weight of the block; required when a restrainer has stiffness"
+    )
+    # Defaults are shared instances: the tables are frozen.
+    restitution: Restitution = Field(
+        Restitution.model_validate({}), description="Energy loss at impact"
+    )
+    motion: Motion = Field(Motion.model_validate({}), description="Two- or one-sided")
+    analysis: Analysis = Field(Analysis.model_validate({}), description="Run settings")
+    restrainers: tuple[Restrainer, ...] = Field((), description="Horizontal springs, any number")
+
+    @model_validator(mode="after")
+    def _cross_table_rules(self) -> Model:
+        """Rules that span tables: width for unit_weight, mass for springs, x within 2b."""
+        self._check_width()
+        self._check_mass()
+        self._check_points()
+        return self
+
+    def _check_width(self) -> None:
+        if self.mass is not None and self.mass.unit_weight is not None:
+            if self.geometry.width is None:
+                raise rule_error(("geometry", "width"), "required with mass.unit_weight",
+                                 "a number > 0 [m]")
+
+    def _check_mass(self) -> None:
+        stiff = [i for i, r in enumerate(self.restrainers) if r.is_stiff]
+        if stiff and self.mass is None:
+            raise rule_error("mass", f"required because restrainers[{stiff[0]}] has a "
+                             "stiffness (paper §4.3)",
+                             "a [mass] table with weight [kN] or unit_weight [kN/m³]")
+
+    def _check_points(self) -> None:
+        thickness = 2.0 * self.geometry.half_sizes[0]
+        for i, r in enumerate(self.restrainers):
+            if r.from_pivot is not None and r.from_pivot > thickness * (1 + CONTAINMENT_RTOL):
+                raise rule_error(("restrainers", i, "from_pivot"), "outside the block",
+                                 f"a number >= 0 and <= the thickness 2b = {thickness:.4g} [m]",
+                                 r.from_pivot)

@@ -1,0 +1,185 @@
+"""Commented model-file templates for `rock init wall|altar|facade`.
+
+Each template is a plain dict dumped by tomli-w (:func:`rockcli.model.load.dumps`); comments
+are added afterwards, line by line: a note above each table, and above each key the field's
+own description from the schema (one source for the units and the allowed values). The text
+loads unchanged through :func:`rockcli.model.load.load_model` (tested).
+
+Values: the altar and the façade are the source paper's cases (§3.2 and §4.2,
+spec/paper-cases.md); the wall is a generic free-standing wall with the paper's systemic-study
+settings (§3.3: 0.9 × Housner's e; §4.4: width 3 m, unit weight 18 kN/m³).
+"""
+
+from __future__ import annotations
+
+import re
+import textwrap
+from collections.abc import Iterator
+from typing import Any
+
+from rockcli.model.load import dumps, field_at
+from rockcli.model.schema import (
+    LOOSEST_TOLERANCE,
+    OVERTURN_ANGLE,
+    REST_VELOCITY,
+    TOLERANCE,
+    Kind,
+)
+from rockcli.units import DEFAULT_GRAVITY
+
+_HEADER = re.compile(r"^\[\[?(?P<table>[^\]]+)\]\]?$")
+_KEY = re.compile(r"^(?P<key>[A-Za-z0-9_-]+) = ")
+
+#: Width of the comment lines [characters].
+COMMENT_WIDTH = 92
+
+#: The [analysis] table with every default written out (tail left to the engine).
+_ANALYSIS = {
+    "overturn_angle": OVERTURN_ANGLE,
+    "rtol": TOLERANCE,
+    "atol": TOLERANCE,
+    "rest_velocity": REST_VELOCITY,
+    "linearized": False,
+    "g": DEFAULT_GRAVITY,
+}
+
+TEMPLATES: dict[Kind, dict[str, Any]] = {
+    Kind.WALL: {
+        "name": "Wall with a tie-rod",
+        "kind": "wall",
+        "notes": "Generic wall, restitution 0.9 x Housner as in the paper's systemic study "
+        "(section 3.3). Delete the [[restrainers]] table for a free-standing wall.",
+        "geometry": {"thickness": 0.5, "height": 4.0, "width": 3.0, "pivot_height": 0.0},
+        "mass": {"unit_weight": 18.0},
+        "restitution": {"model": "housner", "factor": 0.9},
+        "motion": {"sides": "two"},
+        "analysis": _ANALYSIS,
+        "restrainers": [
+            {
+                "name": "tie-rod near the top",
+                "kind": "tie-rod",
+                "diameter": 0.02,
+                "length": 3.0,
+                "E": 210e9,
+                "height": 3.8,
+                "from_pivot": 0.25,
+            }
+        ],
+    },
+    Kind.ALTAR: {
+        "name": "Altar, B.V. Annunziata",
+        "kind": "altar",
+        "notes": "Equivalent prism of the altar (paper section 3.2): base length 2.40 m, "
+        "height 2.96 m from the top to the crack, thickness 0.487 m.",
+        "geometry": {"R": 1.499, "alpha": 0.163, "width": 2.40},
+        "mass": {"unit_weight": 18.0},
+        "restitution": {"model": "housner", "factor": 1.0},
+        "motion": {"sides": "two"},
+        "analysis": _ANALYSIS,
+    },
+    Kind.FACADE: {
+        "name": "Church facade with vault and tie-rod",
+        "kind": "facade",
+        "notes": "Facade of B.V. Annunziata (paper section 4.2): transverse walls stop the "
+        "inward (negative) rotation; the facade rocks outward only.",
+        "geometry": {"R": 5.04, "alpha": 0.05},
+        "mass": {"weight": 1755.0},
+        "restitution": {"model": "housner"},
+        "motion": {"sides": "one", "stopped": "negative", "rebound": 1.0},
+        "analysis": _ANALYSIS,
+        "restrainers": [
+            {"name": "groin vault", "k": 4e6, "radius": 7.0, "angle": 0.072},
+            {
+                "name": "tie-rod",
+                "kind": "tie-rod",
+                "diameter": 0.02,
+                "length": 3.0,
+                "acts": "both",
+                "radius": 7.0,
+                "angle": 0.072,
+            },
+        ],
+    },
+}
+
+#: Notes written above each table header (and above the top-level keys, table "").
+TABLE_NOTES: dict[str, tuple[str, ...]] = {
+    "": (
+        "rock model file: one masonry macro-element rocking on its base.",
+        "SI units throughout (m, kN, N/m, s, rad). Check every value against your element.",
+        "Sign convention (the paper's, spec/rocking.md): a positive ground acceleration drives "
+        "a positive rotation.",
+    ),
+    "geometry": (
+        "The rocking block: either R + alpha, or thickness + height (full 2b and 2h).",
+    ),
+    "mass": (
+        "Either weight [kN] or unit_weight [kN/m³] (needs geometry.width).",
+        "Optional without restrainers; required when a restrainer has a stiffness.",
+    ),
+    "restitution": (
+        'model = "housner" (e = 1 − 1.5 sin²α, times factor), or e = value '
+        '(model = "explicit").',
+    ),
+    "motion": (
+        'sides = "two", or "one" with stopped = "negative"|"positive" (the side the '
+        "transverse walls block) and rebound = r_f.",
+    ),
+    "analysis": (
+        "Settings of the time-history run; all optional, shown here at their defaults.",
+        f"tail = 10.0 (s of free vibration after the record) overrides the engine's default; "
+        f"rtol and atol at most {LOOSEST_TOLERANCE:g}.",
+    ),
+    "restrainers": (
+        "Horizontal springs, any number, one [[restrainers]] table each.",
+        'Stiffness: k (both sides), or k_pos + k_neg, or kind = "tie-rod" with diameter, '
+        "length, E (K = E·π·d²/4 / L).",
+        'Point: radius + angle (same for both pivots), or height + from_pivot, or position = '
+        '"top" (r = 2R, φ = α).',
+        "Optional: fails_at = elongation [m] at which the spring is lost for good.",
+    ),
+}
+
+
+def render_template(kind: Kind) -> str:
+    """The commented TOML template of a macro-element kind."""
+    return annotate(dumps(TEMPLATES[kind]))
+
+
+def annotate(text: str) -> str:
+    """Add the table notes and, above each key, the field's description from the schema."""
+    return "\n".join(_annotated_lines(text.splitlines())) + "\n"
+
+
+def _annotated_lines(lines: list[str]) -> Iterator[str]:
+    table = ""
+    noted: set[str] = set()
+    yield from _notes(table, noted)
+    for line in lines:
+        header = _HEADER.match(line)
+        if header:
+            table = header["table"]
+            yield from _notes(table, noted)
+        key = _KEY.match(line)
+        if key:
+            yield from _key_comment(table, key["key"])
+        yield line
+
+
+def _notes(table: str, noted: set[str]) -> Iterator[str]:
+    if table in noted:
+        return
+    noted.add(table)
+    for note in TABLE_NOTES.get(table, ()):
+        yield from _comment(note)
+
+
+def _key_comment(table: str, key: str) -> Iterator[str]:
+    info = field_at((table, key) if table else (key,))
+    if info is not None and info.description:
+        yield from _comment(info.description)
+
+
+def _comment(text: str) -> Iterator[str]:
+    """``# `` lines of at most :data:`COMMENT_WIDTH` characters."""
+    yield from (f"# {line}" for line in textwrap.wrap(text, COMMENT_WIDTH - 2))

@@ -1,0 +1,84 @@
+"""The file edge of the records package: the only functions here that touch the disk.
+
+:func:`read_record` reads a file and hands its text to :mod:`rockcli.records.parse`;
+:func:`write_plain` writes the two-column plain text of :func:`rockcli.records.plain.format_plain`.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from rockcli.errors import InputError
+from rockcli.records.kinds import RecordFormat
+from rockcli.records.parse import parse_text
+from rockcli.records.plain import format_plain
+from rockcli.records.record import Record
+from rockcli.units import AccelUnit
+
+#: Compound suffixes dropped from the file name to name the record.
+_COMPOUND_SUFFIXES = (".cor.acc",)
+
+
+def record_name(path: Path) -> str:
+    """The record's label: the file name without its (compound) suffix."""
+    lower = path.name.lower()
+    for suffix in _COMPOUND_SUFFIXES:
+        if lower.endswith(suffix) and len(lower) > len(suffix):
+            return path.name[: -len(suffix)]
+    return path.stem
+
+
+def read_text(path: str | Path) -> str:
+    """The text of a file (UTF-8, or Latin-1 for older headers); InputError if unreadable."""
+    try:
+        data = Path(path).read_bytes()
+    except OSError as exc:
+        raise InputError(
+            "cannot read the record file",
+            file=str(path),
+            value=exc.strerror,
+            allowed="an existing, readable file",
+        ) from None
+    try:
+        return data.decode("utf-8-sig")
+    except UnicodeDecodeError:
+        return data.decode("latin-1")
+
+
+def read_record(
+    path: str | Path,
+    *,
+    fmt: str | RecordFormat | None = None,
+    dt: float | None = None,
+    units: str | AccelUnit | None = None,
+) -> Record:
+    """Read a ground-motion record file into a Record in g.
+
+    Args:
+        path: the file (AT2, ESM ASCII, cor.acc or plain text; spec/records.md).
+        fmt: force a format ("at2", "esm", "coracc", "plain"); None detects it.
+        dt: time step [s] of a one-column plain file.
+        units: acceleration unit of a plain file ("g", "m/s2", "cm/s2"; default g).
+
+    Raises:
+        InputError: the file cannot be read, its format is unknown, or its content is bad; the
+            error names the file, the line or header key, the value and what is allowed.
+    """
+    source = str(path)
+    text = read_text(path)
+    return parse_text(
+        text, fmt=fmt, name=record_name(Path(path)), source=source, dt=dt, units=units
+    )
+
+
+def write_plain(record: Record, path: str | Path) -> None:
+    """Write a record as two-column plain text that :func:`read_record` reads back exactly."""
+    try:
+        Path(path).write_text(format_plain(record), encoding="utf-8")
+    except OSError as exc:
+        raise InputError(
+            "cannot write the record file",
+            file=str(path),
+            value=exc.strerror,
+            allowed="a writable path",
+        ) from None

@@ -1,0 +1,214 @@
+"""The `rock assess` result as data: the JSON document and the Report for the terminal."""
+
+from __future__ import annotations
+
+import math
+from typing import Any
+
+from rockcli import __version__
+from rockcli.dynamics.result import Assessment, RockingRun
+from rockcli.mechanics import Block, linear_global_stiffness, restrainer_coefficient
+from rockcli.records.record import Record
+from rockcli.report.table import Column, Report, Table, format_value, key_value
+
+SCHEMA = 1
+
+
+def effectiveness(block: Block) -> list[dict[str, Any]]:
+    """The paper's §4.3 quick check of every restrainer, per side.
+
+    c_K = K r²/I0 against c_E = p² (c_K should exceed c_E by one or two orders of magnitude
+    to matter), and the sign of the linearized global stiffness on that side with all
+    restrainers acting (paper Eq. 16–18; mechanics.linear_global_stiffness).
+    """
+    if not block.restrainers or block.mass is None:
+        return []
+    rows = []
+    sides = ((block.free_side, "θ > 0" if block.free_side > 0 else "θ < 0"),) if block.one_sided \
+        else ((1, "θ > 0"), (-1, "θ < 0"))
+    for side, label in sides:
+        stiff = linear_global_stiffness(block, side)
+        for sp in block.restrainers:
+            k, r, _ = sp.side(side)
+            c_k = restrainer_coefficient(k, r, block.inertia)
+            rows.append(
+                {
+                    "name": sp.name, "side": label, "K": k, "c_K": c_k, "c_E": block.p2,
+                    "ratio": c_k / block.p2,
+                    "global_stiffness": "positive" if stiff > 0 else "negative",
+                }
+            )
+    return rows
+
+
+def run_document(run: RockingRun) -> dict[str, Any]:
+    """One polarity's results with full precision (JSON)."""
+    return {
+        "polarity": run.polarity,
+        "status": str(run.status),
+        "max_ratio": run.max_ratio,
+        "overturned": run.overturned,
+        "t_overturn": run.t_overturn,
+        "t_uplift": run.t_uplift,
+        "impacts": run.impacts,
+        "uplifts": run.uplifts,
+        "theta_max": run.theta_max,
+        "theta_min": run.theta_min,
+        "max_velocity": run.max_velocity,
+        "steps": run.steps,
+        "t_end": run.t_end,
+        "restrainers": [
+            {"name": p.name, "max_displacement": p.max_displacement, "max_force": p.max_force,
+             "t_fail": p.t_fail}
+            for p in run.restrainers
+        ],
+    }
+
+
+def model_document(name: str, kind: str, block: Block, e_rule: str) -> dict[str, Any]:
+    """The block as analysed (JSON)."""
+    return {
+        "name": name,
+        "kind": kind,
+        "R": block.R,
+        "alpha": block.alpha,
+        "b": block.b,
+        "h": block.h,
+        "p": block.p,
+        "e": block.e,
+        "e_rule": e_rule,
+        "mass": block.mass,
+        "g": block.g,
+        "sides": "one" if block.one_sided else "two",
+        "free_side": block.free_side if block.one_sided else None,
+        "rebound": block.rebound if block.one_sided else None,
+        "impact_rule": impact_rule(block),
+        "linearized": block.linearized,
+        "uplift_acceleration_g": block.uplift_acceleration,
+        "restrainers": [
+            {"name": r.name, "k_pos": r.k_pos, "k_neg": r.k_neg, "r_pos": r.r_pos,
+             "phi_pos": r.phi_pos, "r_neg": r.r_neg, "phi_neg": r.phi_neg,
+             "fails_at": r.fails_at if math.isfinite(r.fails_at) else None}
+            for r in block.restrainers
+        ],
+    }
+
+
+def impact_rule(block: Block) -> str:
+    """Which impact rule the run used (spec/rocking.md: say it in the output)."""
+    if block.one_sided:
+        return f"one-sided rebound: θ̇⁺ = −r_f·e·θ̇⁻ (r_f = {block.rebound:g}, e = {block.e:.4g})"
+    return f"two-sided: θ̇⁺ = e·θ̇⁻, pivot switches (e = {block.e:.4g})"
+
+
+def record_document(record: Record) -> dict[str, Any]:
+    """The record as used (JSON)."""
+    return {
+        "name": record.name,
+        "source": record.source,
+        "format": record.format,
+        "dt": record.dt,
+        "npts": record.npts,
+        "duration": record.duration,
+        "pga_g": record.pga,
+        "t_pga": record.t_pga,
+        "notes": list(record.notes),
+    }
+
+
+def assessment_document(model: dict[str, Any], record: Record, block: Block, result: Assessment) -> dict[str, Any]:
+    """The whole `rock assess --format json` document (schema 1)."""
+    first = result.runs[0]
+    return {
+        "schema": SCHEMA,
+        "rock_version": __version__,
+        "model": model,
+        "record": record_document(record),
+        "engine": {"name": first.engine, "rtol": first.rtol, "atol": first.atol,
+                   "rest_velocity": first.rest_velocity},
+        "runs": [run_document(r) for r in result.runs],
+        "effectiveness": effectiveness(block),
+        "verdict": str(result.verdict),
+        "max_ratio": result.max_ratio,
+        "warnings": [w for r in result.runs for w in r.warnings],
+    }
+
+
+RUN_ROWS = (
+    ("max_ratio", "max θ/α", "", "{:.4f}"),
+    ("theta_max", "θ max", "rad", "{:.5f}"),
+    ("theta_min", "θ min", "rad", "{:.5f}"),
+    ("max_velocity", "max |θ̇|", "rad/s", "{:.4f}"),
+    ("t_uplift", "first uplift", "s", "{:.3f}"),
+    ("impacts", "impacts", "", "{:d}"),
+    ("overturned", "overturned", "", ""),
+    ("t_overturn", "overturned at", "s", "{:.3f}"),
+    ("status", "status", "", ""),
+)
+
+
+def runs_table(runs: list[dict[str, Any]]) -> Table:
+    """Quantities down, polarities across."""
+    cols = (Column("label", ""), *(Column(f"p{r['polarity']}", f"polarity {r['polarity']:+d}")
+                                   for r in runs), Column("unit", "unit"))
+    rows = tuple(
+        {"label": label, "unit": unit,
+         **{f"p{r['polarity']}": format_value(r[key], fmt) for r in runs}}
+        for key, label, unit, fmt in RUN_ROWS
+    )
+    return Table("Rocking time history, both polarities", cols, rows)
+
+
+SPRING_COLUMNS = (
+    Column("polarity", "polarity", "", "{:+d}"),
+    Column("name", "restrainer", ""),
+    Column("max_displacement", "max displacement", "mm", "{:.2f}"),
+    Column("max_force", "max force", "kN", "{:.2f}"),
+    Column("t_fail", "failed at", "s", "{:.3f}"),
+)
+EFFECT_COLUMNS = (
+    Column("name", "restrainer", ""),
+    Column("side", "side", ""),
+    Column("K", "K", "N/m", "{:.3g}"),
+    Column("c_K", "c_K = K r²/I0", "1/s²", "{:.4g}"),
+    Column("c_E", "c_E = p²", "1/s²", "{:.4g}"),
+    Column("ratio", "c_K/c_E", "", "{:.3g}"),
+    Column("global_stiffness", "global stiffness", ""),
+)
+
+
+def assessment_report(doc: dict[str, Any]) -> Report:
+    """The terminal report of an assessment document."""
+    m, rec, eng = doc["model"], doc["record"], doc["engine"]
+    block = key_value(f"Block: {m['name']} ({m['kind']})", [
+        ("semi-diagonal R", m["R"], "m", "{:.4g}"),
+        ("slenderness α", m["alpha"], "rad", "{:.4g}"),
+        ("thickness 2b × height 2h", f"{2 * m['b']:.3f} × {2 * m['h']:.3f}", "m", ""),
+        ("frequency parameter p", m["p"], "rad/s", "{:.4g}"),
+        ("restitution e", f"{m['e']:.4f} ({m['e_rule']})", "", ""),
+        ("impact rule", m["impact_rule"], "", ""),
+        ("uplift acceleration", m["uplift_acceleration_g"], "g", "{:.4f}"),
+    ])
+    record = key_value(f"Record: {rec['name']} ({rec['format']})", [
+        ("samples × dt", f"{rec['npts']} × {rec['dt']:g}", "s", ""),
+        ("duration", rec["duration"], "s", "{:.2f}"),
+        ("PGA", rec["pga_g"], "g", "{:.4f}"),
+        ("time of PGA", rec["t_pga"], "s", "{:.3f}"),
+    ])
+    runs = runs_table(doc["runs"])
+    tables = [block, record, runs]
+    springs = tuple(
+        {**p, "polarity": r["polarity"], "max_displacement": p["max_displacement"] * 1e3,
+         "max_force": p["max_force"] / 1e3}
+        for r in doc["runs"] for p in r["restrainers"]
+    )
+    if springs:
+        tables.append(Table("Restrainer demands", SPRING_COLUMNS, springs))
+    if doc["effectiveness"]:
+        tables.append(Table("Restrainer effectiveness (paper §4.3)", EFFECT_COLUMNS,
+                            tuple(doc["effectiveness"])))
+    notes = [f"engine {eng['name']}, rtol {eng['rtol']:g}, atol {eng['atol']:g}, "
+             f"rest threshold {eng['rest_velocity']:g} rad/s", *rec["notes"], *doc["warnings"]]
+    verdict = f"{doc['verdict']} (max θ/α = {doc['max_ratio']:.4f} over both polarities)"
+    return Report(title=f"rock assess — {m['name']}", tables=tuple(tables), notes=tuple(notes),
+                  verdict=verdict)

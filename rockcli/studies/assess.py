@@ -1,0 +1,33 @@
+"""The assess workflow: model file + record → both polarities → result document."""
+
+from __future__ import annotations
+
+from typing import Any
+
+from rockcli.dynamics.result import RockingRun
+from rockcli.dynamics.settings import Engine, SolverSettings
+from rockcli.records.record import Record
+
+
+def settings_from(options: Any) -> SolverSettings:
+    """SolverSettings from the model's [analysis] options (model.derive.AnalysisOptions)."""
+    return SolverSettings(
+        rtol=options.rtol, atol=options.atol, rest_velocity=options.rest_velocity,
+        overturn_angle=options.overturn_angle, tail=options.tail,
+    )
+
+
+def run_assessment(model_path: str, record: Record, engine: str, *, history: bool = False) -> tuple[dict[str, Any], RockingRun]:
+    """Load the model, run both polarities, return (JSON document, the worse run)."""
+    from rockcli.dynamics.simulate import assess
+    from rockcli.model.derive import describe, solver_options, to_block
+    from rockcli.model.load import load_model
+    from rockcli.report.assess import assessment_document, model_document
+
+    model = load_model(model_path)
+    block = to_block(model)
+    result = assess(block, record.time, record.accel, record.dt,
+                    settings=settings_from(solver_options(model)), engine=Engine(engine),
+                    history=history)
+    info = model_document(model.name, str(model.kind), block, describe(model).e_rule)
+    return assessment_document(info, record, block, result), result.worst
