@@ -7,8 +7,10 @@ import click
 from rockcli.cli.assess import assess
 from rockcli.cli.init import init
 from rockcli.cli.record import record
+from rockcli.cli.warmup import warmup
 
 ALL: list[click.Command] = []
 ALL.append(record)
 ALL.append(init)
 ALL.append(assess)
+ALL.append(warmup)

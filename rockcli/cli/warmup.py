@@ -1,0 +1,14 @@
+"""`rock warmup`: compile the rocking engine into the numba cache."""
+
+from __future__ import annotations
+
+import click
+
+
+@click.command()
+def warmup() -> None:
+    """Compile the fast engine now, so that later runs start at once."""
+    from rockcli.dynamics.warmup import warmup as compile_engine
+
+    seconds = compile_engine()
+    click.echo(f"engine ready ({seconds:.1f} s)")

@@ -1,0 +1,20 @@
+"""Compile the fast engine into the numba cache ahead of time (CI images, workers)."""
+
+from __future__ import annotations
+
+import time
+
+import numpy as np
+
+from rockcli.dynamics.simulate import simulate
+from rockcli.mechanics import Block, Restrainer
+
+
+def warmup() -> float:
+    """Run one tiny case with a failing restrainer; returns the seconds it took."""
+    start = time.perf_counter()
+    spring = Restrainer("warmup", 1e5, 1e5, 2.0, 0.2, 2.0, 0.2, fails_at=0.01)
+    block = Block(R=1.0, alpha=0.2, mass=1000.0, e=0.9, restrainers=(spring,))
+    t = np.arange(0.0, 1.0, 0.01)
+    simulate(block, t, 0.5 * np.sin(2 * np.pi * t), 0.01)
+    return time.perf_counter() - start
