@@ -164,15 +164,49 @@ def uplift_threshold(alpha: float, linearized: bool = False) -> float:
     return alpha if linearized else math.tan(alpha)
 
 
+def sin_minus(sin_c: float, cos_c: float, sin_a: float, cos_a: float) -> float:
+    """sin(c − a) from the sines and cosines of c and a (angle-difference identity)."""
+    return sin_c * cos_a - cos_c * sin_a
+
+
+def cos_minus(sin_c: float, cos_c: float, sin_a: float, cos_a: float) -> float:
+    """cos(c − a) from the sines and cosines of c and a (angle-difference identity)."""
+    return cos_c * cos_a + sin_c * sin_a
+
+
+def spring_elongation_trig(
+    r: float, sin_phi: float, cos_phi: float, a: float, sin_a: float, cos_a: float,
+    linearized: bool = False,
+) -> float:
+    """u = r[sin φ − sin(φ − a)] from precomputed sines and cosines [m] (see spring_elongation).
+
+    The engine evaluates sin a and cos a once per right-hand side and every spring and gravity
+    reuse them; this is the same formula, not a second one.
+    """
+    if linearized:
+        return r * cos_phi * a
+    return r * (sin_phi - sin_minus(sin_phi, cos_phi, sin_a, cos_a))
+
+
+def spring_moment_trig(
+    k: float, r: float, sin_phi: float, cos_phi: float, a: float, sin_a: float, cos_a: float,
+    linearized: bool = False,
+) -> float:
+    """K·u·r·cos(φ − a) from precomputed sines and cosines [N·m] (see spring_moment)."""
+    u = spring_elongation_trig(r, sin_phi, cos_phi, a, sin_a, cos_a, linearized)
+    arm = r * cos_phi if linearized else r * cos_minus(sin_phi, cos_phi, sin_a, cos_a)
+    return k * u * arm
+
+
 def spring_elongation(r: float, phi: float, a: float, linearized: bool = False) -> float:
     """Outward horizontal displacement u of the attachment point for a rotation a = |θ| [m].
 
     Source: spec/rocking.md, u(θ) = r[sin φ − sin(φ − |θ|)]; paper Eq. (6) for r = 2R, φ = α.
     Linearized: u = r cos φ · |θ|.
     """
-    if linearized:
-        return r * math.cos(phi) * a
-    return r * (math.sin(phi) - math.sin(phi - a))
+    return spring_elongation_trig(
+        r, math.sin(phi), math.cos(phi), a, math.sin(a), math.cos(a), linearized
+    )
 
 
 def spring_moment(k: float, r: float, phi: float, a: float, linearized: bool = False) -> float:
@@ -181,9 +215,9 @@ def spring_moment(k: float, r: float, phi: float, a: float, linearized: bool = F
     Source: spec/rocking.md, M(θ) = s·K·u(θ)·r·cos(φ − |θ|); paper Eq. (4) and (8) for the top
     corner (4KR² cos(α − θ)[sin α − sin(α − θ)]). Linearized: K r² cos²φ · |θ|.
     """
-    u = spring_elongation(r, phi, a, linearized)
-    arm = r * math.cos(phi) if linearized else r * math.cos(phi - a)
-    return k * u * arm
+    return spring_moment_trig(
+        k, r, math.sin(phi), math.cos(phi), a, math.sin(a), math.cos(a), linearized
+    )
 
 
 def spring_failure_rotation(r: float, phi: float, fails_at: float, linearized: bool = False) -> float:
@@ -209,6 +243,21 @@ def gravity_moment_ratio(alpha: float, a: float, linearized: bool = False) -> fl
     Source: paper Eq. (1), (14).
     """
     return (alpha - a) if linearized else math.sin(alpha - a)
+
+
+def gravity_moment_ratio_trig(
+    alpha: float, sin_alpha: float, cos_alpha: float, a: float, sin_a: float, cos_a: float,
+    linearized: bool = False,
+) -> float:
+    """sin(α − a) (α − a linearized) from precomputed sines and cosines [-] (paper Eq. 1)."""
+    return (alpha - a) if linearized else sin_minus(sin_alpha, cos_alpha, sin_a, cos_a)
+
+
+def ground_moment_ratio_trig(
+    sin_alpha: float, cos_alpha: float, sin_a: float, cos_a: float, linearized: bool = False
+) -> float:
+    """cos(α − a) (1 linearized) from precomputed sines and cosines [-] (paper Eq. 1, 13)."""
+    return 1.0 if linearized else cos_minus(sin_alpha, cos_alpha, sin_a, cos_a)
 
 
 def ground_moment_ratio(alpha: float, a: float, linearized: bool = False) -> float:

@@ -34,13 +34,16 @@ from rockcli.dynamics import rules
 # arrays are inlined at the numba IR level (a call boundary costs atomic reference-count
 # updates per array argument); the scalar ones are left to LLVM.
 for _fn in (
-    mechanics.gravity_moment_ratio,
-    mechanics.ground_moment_ratio,
+    mechanics.sin_minus,
+    mechanics.cos_minus,
+    mechanics.gravity_moment_ratio_trig,
+    mechanics.ground_moment_ratio_trig,
+    mechanics.spring_elongation_trig,
+    mechanics.spring_moment_trig,
     mechanics.spring_elongation,
-    mechanics.spring_moment,
 ):
     register_jitable(_fn)
-for _fn in (rules.spring_on_side, rules.ground_acceleration):
+for _fn in (rules.spring_on_side, rules.spring_trig_on_side, rules.ground_acceleration):
     register_jitable(inline="always")(_fn)
 _rhs = njit(cache=True, inline="always")(rules.angular_acceleration)
 _ground = njit(cache=True, inline="always")(rules.ground_acceleration)
@@ -52,7 +55,7 @@ _elongation_on_side = njit(cache=True, inline="always")(rules.elongation_on_side
 from rockcli.dynamics.layout import (
     EV_FAIL, EV_IMPACT, EV_NONE, EV_OVERTURN, EV_SETTLE, I_IMPACTS, I_REJECTED, I_STEPS,
     I_UPLIFTS, I_STATUS, N_INT_OUT, O_MAX_A, O_MAX_OMEGA, O_T_END, O_T_OVERTURN, O_T_UPLIFT,
-    O_THETA_MAX, O_THETA_MIN, P_ALPHA, P_ATOL, P_E, P_FREE_SIDE, P_INV_I0, P_LINEAR,
+    O_THETA_MAX, O_THETA_MIN, P_ALPHA, P_ATOL, P_COS_ALPHA, P_SIN_ALPHA, P_E, P_FREE_SIDE, P_INV_I0, P_LINEAR,
     P_MAX_EVENTS, P_MAX_STEPS, P_OMEGA0, P_ONE_SIDED, P_OVERTURN, P_P2, P_REBOUND, P_REST, P_RTOL, P_THETA0,
     S_MAX_FORCE, S_MAX_U, S_T_FAIL, STATUS_COMPLETED, STATUS_EVENT_LIMIT, STATUS_OVERTURNED,
     STATUS_STEP_LIMIT,
@@ -111,7 +114,8 @@ DENSE_P = np.array(
 def _stage(th, s, ag, par, springs, alive):  # type: ignore[no-untyped-def]
     """θ̈ at rotation θ on side s under ground acceleration ag [g]."""
     return _rhs(
-        s * th, s, ag, par[P_ALPHA], par[P_P2], par[P_LINEAR] != 0.0, springs, alive, par[P_INV_I0]
+        s * th, s, ag, par[P_ALPHA], par[P_SIN_ALPHA], par[P_COS_ALPHA], par[P_P2],
+        par[P_LINEAR] != 0.0, springs, alive, par[P_INV_I0],
     )
 
 
@@ -130,6 +134,8 @@ def _dp5_step(th, om, f1, h, s, g0, gs, par, springs, alive, k_th, k_om):  # typ
     Error norm: RMS of err/(atol + rtol·max(|y0|, |y1|)) (Hairer et al. II.4 (4.11)).
     """
     alpha = par[P_ALPHA]
+    sin_alpha = par[P_SIN_ALPHA]
+    cos_alpha = par[P_COS_ALPHA]
     p2 = par[P_P2]
     lin = par[P_LINEAR] != 0.0
     inv_i0 = par[P_INV_I0]
@@ -137,27 +143,27 @@ def _dp5_step(th, om, f1, h, s, g0, gs, par, springs, alive, k_th, k_om):  # typ
     k_om[0] = f1
     w2, v2 = th + h * A21 * k_th[0], om + h * A21 * k_om[0]
     k_th[1] = v2
-    k_om[1] = _rhs(s * w2, s, g0 + gs * (C2 * h), alpha, p2, lin, springs, alive, inv_i0)
+    k_om[1] = _rhs(s * w2, s, g0 + gs * (C2 * h), alpha, sin_alpha, cos_alpha, p2, lin, springs, alive, inv_i0)
     w3 = th + h * (A31 * k_th[0] + A32 * k_th[1])
     v3 = om + h * (A31 * k_om[0] + A32 * k_om[1])
     k_th[2] = v3
-    k_om[2] = _rhs(s * w3, s, g0 + gs * (C3 * h), alpha, p2, lin, springs, alive, inv_i0)
+    k_om[2] = _rhs(s * w3, s, g0 + gs * (C3 * h), alpha, sin_alpha, cos_alpha, p2, lin, springs, alive, inv_i0)
     w4 = th + h * (A41 * k_th[0] + A42 * k_th[1] + A43 * k_th[2])
     v4 = om + h * (A41 * k_om[0] + A42 * k_om[1] + A43 * k_om[2])
     k_th[3] = v4
-    k_om[3] = _rhs(s * w4, s, g0 + gs * (C4 * h), alpha, p2, lin, springs, alive, inv_i0)
+    k_om[3] = _rhs(s * w4, s, g0 + gs * (C4 * h), alpha, sin_alpha, cos_alpha, p2, lin, springs, alive, inv_i0)
     w5 = th + h * (A51 * k_th[0] + A52 * k_th[1] + A53 * k_th[2] + A54 * k_th[3])
     v5 = om + h * (A51 * k_om[0] + A52 * k_om[1] + A53 * k_om[2] + A54 * k_om[3])
     k_th[4] = v5
-    k_om[4] = _rhs(s * w5, s, g0 + gs * (C5 * h), alpha, p2, lin, springs, alive, inv_i0)
+    k_om[4] = _rhs(s * w5, s, g0 + gs * (C5 * h), alpha, sin_alpha, cos_alpha, p2, lin, springs, alive, inv_i0)
     w6 = th + h * (A61 * k_th[0] + A62 * k_th[1] + A63 * k_th[2] + A64 * k_th[3] + A65 * k_th[4])
     v6 = om + h * (A61 * k_om[0] + A62 * k_om[1] + A63 * k_om[2] + A64 * k_om[3] + A65 * k_om[4])
     k_th[5] = v6
-    k_om[5] = _rhs(s * w6, s, g0 + gs * h, alpha, p2, lin, springs, alive, inv_i0)
+    k_om[5] = _rhs(s * w6, s, g0 + gs * h, alpha, sin_alpha, cos_alpha, p2, lin, springs, alive, inv_i0)
     th1 = th + h * (B1 * k_th[0] + B3 * k_th[2] + B4 * k_th[3] + B5 * k_th[4] + B6 * k_th[5])
     om1 = om + h * (B1 * k_om[0] + B3 * k_om[2] + B4 * k_om[3] + B5 * k_om[4] + B6 * k_om[5])
     k_th[6] = om1
-    f7 = _rhs(s * th1, s, g0 + gs * h, alpha, p2, lin, springs, alive, inv_i0)
+    f7 = _rhs(s * th1, s, g0 + gs * h, alpha, sin_alpha, cos_alpha, p2, lin, springs, alive, inv_i0)
     k_om[6] = f7
     rtol = par[P_RTOL]
     atol = par[P_ATOL]

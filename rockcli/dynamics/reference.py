@@ -23,7 +23,7 @@ from scipy.integrate import solve_ivp
 from rockcli.dynamics import rules
 from rockcli.dynamics.layout import (
     I_IMPACTS, I_REJECTED, I_STATUS, I_STEPS, I_UPLIFTS, O_MAX_A, O_MAX_OMEGA, O_T_END,
-    O_T_OVERTURN, O_T_UPLIFT, O_THETA_MAX, O_THETA_MIN, P_ALPHA, P_ATOL, P_E, P_FREE_SIDE,
+    O_T_OVERTURN, O_T_UPLIFT, O_THETA_MAX, O_THETA_MIN, P_ALPHA, P_ATOL, P_COS_ALPHA, P_SIN_ALPHA, P_E, P_FREE_SIDE,
     P_INV_I0, P_LINEAR, P_MAX_EVENTS, P_OMEGA0, P_ONE_SIDED, P_OVERTURN, P_P2, P_REBOUND,
     P_REST, P_RTOL, P_THETA0, S_MAX_FORCE, S_MAX_U, S_T_FAIL, STATUS_COMPLETED,
     STATUS_EVENT_LIMIT, STATUS_OVERTURNED,
@@ -53,8 +53,8 @@ def _rhs(phase: _Phase, t0: float, g0: float, gs: float):  # type: ignore[no-unt
     def f(t: float, y: np.ndarray) -> list[float]:
         ag = g0 + gs * (t - t0)
         acc = rules.angular_acceleration(
-            phase.s * y[0], phase.s, ag, par[P_ALPHA], par[P_P2], phase.lin, phase.springs,
-            phase.alive, par[P_INV_I0],
+            phase.s * y[0], phase.s, ag, par[P_ALPHA], par[P_SIN_ALPHA], par[P_COS_ALPHA],
+            par[P_P2], phase.lin, phase.springs, phase.alive, par[P_INV_I0],
         )
         return [y[1], acc]
 

@@ -11,22 +11,26 @@ a positive rotation; s = ±1 is the active pivot side, a = s·θ ≥ 0 the rotat
 
 Packed restrainer table (one row per restrainer), columns:
 ``K+ [N/m], K− [N/m], r+ [m], φ+ [rad], r− [m], φ− [rad], a_fail+ [rad], a_fail− [rad],
-fails_at [m]`` (a_fail: rotation about the pivot at which the elongation reaches fails_at).
+fails_at [m], sin φ+, cos φ+, sin φ−, cos φ−`` (a_fail: rotation about the pivot at which the
+elongation reaches fails_at; the sines and cosines are precomputed for the right-hand side).
 """
 
 from __future__ import annotations
 
+import math
+
 from rockcli.mechanics import (
-    gravity_moment_ratio,
-    ground_moment_ratio,
+    gravity_moment_ratio_trig,
+    ground_moment_ratio_trig,
     spring_elongation,
-    spring_moment,
+    spring_moment_trig,
 )
 
 #: Columns of the packed restrainer table.
 COL_K_POS, COL_K_NEG, COL_R_POS, COL_PHI_POS, COL_R_NEG, COL_PHI_NEG = 0, 1, 2, 3, 4, 5
 COL_A_FAIL_POS, COL_A_FAIL_NEG, COL_FAILS_AT = 6, 7, 8
-N_SPRING_COLS = 9
+COL_SIN_POS, COL_COS_POS, COL_SIN_NEG, COL_COS_NEG = 9, 10, 11, 12
+N_SPRING_COLS = 13
 
 
 def spring_on_side(springs, j, s):  # type: ignore[no-untyped-def]
@@ -40,28 +44,45 @@ def spring_on_side(springs, j, s):  # type: ignore[no-untyped-def]
     ]
 
 
-def angular_acceleration(a, s, ag, alpha, p2, linearized, springs, alive, inv_i0):  # type: ignore[no-untyped-def]
+def spring_trig_on_side(springs, j, s):  # type: ignore[no-untyped-def]
+    """(K, r, sin φ, cos φ) of restrainer row j for pivot side s = ±1."""
+    if s > 0:
+        return springs[j, COL_K_POS], springs[j, COL_R_POS], springs[j, COL_SIN_POS], springs[
+            j, COL_COS_POS
+        ]
+    return springs[j, COL_K_NEG], springs[j, COL_R_NEG], springs[j, COL_SIN_NEG], springs[
+        j, COL_COS_NEG
+    ]
+
+
+def angular_acceleration(a, s, ag, alpha, sin_alpha, cos_alpha, p2, linearized, springs, alive, inv_i0):  # type: ignore[no-untyped-def]
     """θ̈ of the block on pivot side s at rotation a = s·θ under ground acceleration ag [g].
 
     Source: spec/rocking.md, θ̈ = −s p² sin(α − sθ) − Σ_k M_k(θ)/I0 + p² üg cos(α − sθ), with
     M_k = s·K·u·r·cos(φ − |θ|) (paper Eq. 2 and 4; linearized: sin x ≈ x, cos x ≈ 1).
+    sin a and cos a are evaluated once; gravity and every spring reuse them.
 
     Args:
         a: rotation about the active pivot s·θ [rad].
         s: pivot side, +1 or −1.
         ag: ground acceleration, polarity applied [g].
-        alpha: slenderness [rad]. p2: p² [rad²/s²]. linearized: small-angle form.
+        alpha, sin_alpha, cos_alpha: slenderness [rad] and its sine and cosine.
+        p2: p² [rad²/s²]. linearized: small-angle form.
         springs: packed restrainer table. alive: 1 for a restrainer still acting, 0 if failed.
         inv_i0: 1/I0 [1/(kg·m²)] (0 when there are no restrainers and no mass).
     """
-    acc = -s * p2 * gravity_moment_ratio(alpha, a, linearized) + p2 * ag * ground_moment_ratio(
-        alpha, a, linearized
-    )
+    sin_a = math.sin(a)
+    cos_a = math.cos(a)
+    acc = -s * p2 * gravity_moment_ratio_trig(
+        alpha, sin_alpha, cos_alpha, a, sin_a, cos_a, linearized
+    ) + p2 * ag * ground_moment_ratio_trig(sin_alpha, cos_alpha, sin_a, cos_a, linearized)
     for j in range(springs.shape[0]):
         if alive[j] != 0:
-            k, r, phi, _ = spring_on_side(springs, j, s)
+            k, r, sin_phi, cos_phi = spring_trig_on_side(springs, j, s)
             if k != 0.0:
-                acc -= s * spring_moment(k, r, phi, a, linearized) * inv_i0
+                acc -= s * spring_moment_trig(
+                    k, r, sin_phi, cos_phi, a, sin_a, cos_a, linearized
+                ) * inv_i0
     return acc
 
 

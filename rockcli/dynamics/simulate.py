@@ -26,7 +26,7 @@ from rockcli.mechanics import Block, spring_failure_rotation
 from rockcli.dynamics.layout import (  # noqa: I001
     I_IMPACTS, I_REJECTED, I_STATUS, I_STEPS, I_UPLIFTS, N_FLOAT_OUT, N_INT_OUT, N_PARAMS,
     N_SPRING_OUT, O_MAX_A, O_MAX_OMEGA, O_T_END, O_T_OVERTURN, O_T_UPLIFT, O_THETA_MAX,
-    O_THETA_MIN, P_OMEGA0, P_THETA0, P_ALPHA, P_ATOL, P_E, P_FREE_SIDE, P_INV_I0, P_LINEAR, P_MAX_EVENTS,
+    O_THETA_MIN, P_OMEGA0, P_THETA0, P_ALPHA, P_COS_ALPHA, P_SIN_ALPHA, P_ATOL, P_E, P_FREE_SIDE, P_INV_I0, P_LINEAR, P_MAX_EVENTS,
     P_MAX_STEPS, P_ONE_SIDED, P_OVERTURN, P_P2, P_REBOUND, P_REST, P_RTOL, S_MAX_FORCE,
     S_MAX_U, S_T_FAIL, STATUS_NAMES,
 )
@@ -46,6 +46,8 @@ def pack_parameters(block: Block, settings: SolverSettings, rtol: float, atol: f
     """The kernel's parameter vector (layout P_* in layout.py)."""
     par = np.zeros(N_PARAMS)
     par[P_ALPHA] = block.alpha
+    par[P_SIN_ALPHA] = math.sin(block.alpha)
+    par[P_COS_ALPHA] = math.cos(block.alpha)
     par[P_P2] = block.p2
     par[P_E] = block.e
     par[P_ONE_SIDED] = 1.0 if block.one_sided else 0.0
@@ -81,6 +83,10 @@ def pack_springs(block: Block) -> np.ndarray:
             sp.r_neg, sp.phi_neg, sp.fails_at, block.linearized
         )
         table[j, rules.COL_FAILS_AT] = sp.fails_at
+        table[j, rules.COL_SIN_POS] = math.sin(sp.phi_pos)
+        table[j, rules.COL_COS_POS] = math.cos(sp.phi_pos)
+        table[j, rules.COL_SIN_NEG] = math.sin(sp.phi_neg)
+        table[j, rules.COL_COS_NEG] = math.cos(sp.phi_neg)
     return table
 
 
