@@ -2,8 +2,6 @@
 
 from __future__ import annotations
 
-import json
-
 import click
 
 from rockcli.cli.options import load_record, output_format, with_record_options
@@ -32,22 +30,12 @@ def assess(model_path, record_path, record_format, dt, units, scale, pga, engine
     doc, worst = run_assessment(model_path, record, engine, history=history_path is not None)
     if history_path:
         write_history(history_path, worst)
-    show(doc, output)
+    from rockcli.report.assess import assessment_report
+    from rockcli.report.table import show
+
+    show(doc, output, assessment_report)
     if fail_on_overturn and doc["verdict"] == "overturns":
         raise SystemExit(EXIT_OVERTURNS)
-
-
-def show(doc, output):  # type: ignore[no-untyped-def]
-    """Print the document as JSON or as the rich report."""
-    if output == "json":
-        click.echo(json.dumps(doc, indent=2, allow_nan=False))
-        return
-    from rich.console import Console
-
-    from rockcli.report.assess import assessment_report
-    from rockcli.report.table import render
-
-    render(assessment_report(doc), Console())
 
 
 def write_history(path, run):  # type: ignore[no-untyped-def]

@@ -7,83 +7,14 @@ starts without them (spec/engine.md, "Speed"). Bad input raises InputError, whic
 
 from __future__ import annotations
 
-import json
-from typing import TYPE_CHECKING
 
 import click
 
 from rockcli.records.kinds import FILE_FORMATS, PulseKind
 
-if TYPE_CHECKING:
-    from rockcli.records.record import Record
-
-#: Version of the JSON written by ``rock record info --format json``.
-INFO_SCHEMA = 1
-
-#: Display symbols of the acceleration units (rockcli.units.AccelUnit values).
-_SYMBOLS = {"g": "g", "m/s2": "m/s²", "cm/s2": "cm/s²"}
-
-
 @click.group()
 def record() -> None:
     """Ground-motion records: inspect a file, generate a pulse."""
-
-
-def info_data(rec: Record) -> dict[str, object]:
-    """The JSON document of ``record info`` (full precision, schema version)."""
-    return {
-        "schema": INFO_SCHEMA,
-        "name": rec.name,
-        "source": rec.source,
-        "format": rec.format,
-        "npts": rec.npts,
-        "dt": rec.dt,
-        "duration": rec.duration,
-        "pga_g": rec.pga,
-        "t_pga": rec.t_pga,
-        "unit": rec.unit,
-        "notes": list(rec.notes),
-    }
-
-
-def _pga_rows(rec: Record) -> list[tuple[str, str]]:
-    """PGA in g, in m/s² and in the file's unit (each unit once)."""
-    from rockcli.units import AccelUnit
-
-    units = dict.fromkeys([AccelUnit.G, AccelUnit.M_S2, AccelUnit(rec.unit)])
-    return [(f"PGA [{_SYMBOLS[unit]}]", f"{rec.pga / unit.to_g:.6g}") for unit in units]
-
-
-def _info_rows(rec: Record) -> list[tuple[str, str]]:
-    """Label and value of each line of the ``record info`` table."""
-    return [
-        ("Record", rec.name),
-        ("Source", rec.source),
-        ("Format", rec.format),
-        ("Unit in file", _SYMBOLS.get(rec.unit, rec.unit)),
-        ("Samples", str(rec.npts)),
-        ("dt [s]", f"{rec.dt:.6g}"),
-        ("Duration [s]", f"{rec.duration:.6g}"),
-        *_pga_rows(rec),
-        ("Time of PGA [s]", f"{rec.t_pga:.6g}"),
-    ]
-
-
-def _print_info(rec: Record) -> None:
-    """The rich table of ``record info``, notes under it."""
-    from rich.console import Console
-    from rich.table import Table
-    from rich.text import Text
-
-    table = Table(title=f"Record {rec.name}")
-    table.add_column("Quantity")
-    table.add_column("Value", justify="right")
-    for label, value in _info_rows(rec):
-        table.add_row(Text(label), Text(value))  # Text: "[s]" is not rich markup
-    console = Console(highlight=False)
-    console.print(table)
-    for note in rec.notes:
-        console.print(Text(f"note: {note}"))
 
 
 @record.command("info")
@@ -114,11 +45,11 @@ def info(file: str, fmt: str | None, dt: float | None, units: str | None, output
     """Format, samples, dt, duration and PGA of a record FILE (AT2, ESM, cor.acc, plain)."""
     from rockcli.records.files import read_record
 
-    rec = read_record(file, fmt=fmt, dt=dt, units=units)
-    if output == "json":
-        click.echo(json.dumps(info_data(rec), indent=2))
-    else:
-        _print_info(rec)
+    from rockcli.report.records import info_document, record_report
+    from rockcli.report.table import show
+
+    doc = info_document(read_record(file, fmt=fmt, dt=dt, units=units))
+    show(doc, output, record_report)
 
 
 @record.command("pulse")

@@ -9,6 +9,7 @@ from rockcli import __version__
 from rockcli.dynamics.result import Assessment, RockingRun
 from rockcli.mechanics import Block, linear_global_stiffness, restrainer_coefficient
 from rockcli.records.record import Record
+from rockcli.report.records import record_document, record_report
 from rockcli.report.table import Column, Report, Table, format_value, key_value
 
 SCHEMA = 1
@@ -101,21 +102,6 @@ def impact_rule(block: Block) -> str:
     return f"two-sided: θ̇⁺ = e·θ̇⁻, pivot switches (e = {block.e:.4g})"
 
 
-def record_document(record: Record) -> dict[str, Any]:
-    """The record as used (JSON)."""
-    return {
-        "name": record.name,
-        "source": record.source,
-        "format": record.format,
-        "dt": record.dt,
-        "npts": record.npts,
-        "duration": record.duration,
-        "pga_g": record.pga,
-        "t_pga": record.t_pga,
-        "notes": list(record.notes),
-    }
-
-
 def assessment_document(model: dict[str, Any], record: Record, block: Block, result: Assessment) -> dict[str, Any]:
     """The whole `rock assess --format json` document (schema 1)."""
     first = result.runs[0]
@@ -189,12 +175,7 @@ def assessment_report(doc: dict[str, Any]) -> Report:
         ("impact rule", m["impact_rule"], "", ""),
         ("uplift acceleration", m["uplift_acceleration_g"], "g", "{:.4f}"),
     ])
-    record = key_value(f"Record: {rec['name']} ({rec['format']})", [
-        ("samples × dt", f"{rec['npts']} × {rec['dt']:g}", "s", ""),
-        ("duration", rec["duration"], "s", "{:.2f}"),
-        ("PGA", rec["pga_g"], "g", "{:.4f}"),
-        ("time of PGA", rec["t_pga"], "s", "{:.3f}"),
-    ])
+    record = record_report(rec).tables[0]
     runs = runs_table(doc["runs"])
     tables = [block, record, runs]
     springs = tuple(

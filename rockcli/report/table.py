@@ -7,7 +7,9 @@ command formats numbers by hand.
 
 from __future__ import annotations
 
+import json
 import math
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -82,3 +84,11 @@ def _rich_table(table: Table) -> RichTable:
     for row in table.rows:
         out.add_row(*(escape(format_value(row.get(c.key), c.fmt)) for c in table.columns))
     return out
+
+
+def show(doc: dict[str, Any], output: str, to_report: Callable[[dict[str, Any]], Report]) -> None:
+    """Print a result document as JSON (``output == "json"``) or as its rich Report."""
+    if output == "json":
+        print(json.dumps(doc, indent=2, allow_nan=False))
+        return
+    render(to_report(doc), Console(highlight=False))
