@@ -19,6 +19,7 @@ from __future__ import annotations
 import statistics
 import sys
 import time
+from functools import partial
 from pathlib import Path
 
 import numpy as np
@@ -43,8 +44,9 @@ def block(R: float, alpha: float, factor: float = 1.0, k: float = 0.0) -> Block:
     """A block with Housner e × factor and, if k > 0, the paper's top spring on both sides."""
     springs = (Restrainer("top", k, k, 2 * R, alpha, 2 * R, alpha),) if k else ()
     mass = 18e3 * (2 * R) ** 2 * np.sin(alpha) * np.cos(alpha) * 3.0 / 9.81
-    return Block(R=R, alpha=alpha, e=factor * housner_restitution(alpha), mass=mass,
-                 restrainers=springs)
+    return Block(
+        R=R, alpha=alpha, e=factor * housner_restitution(alpha), mass=mass, restrainers=springs
+    )
 
 
 CASES = [
@@ -86,13 +88,17 @@ def main() -> None:
     if not SHARED.is_dir():
         sys.exit(f"benchmark needs the real records in {SHARED}")
     settings = SolverSettings()
-    print(f"{'case':34s} {'fast ms':>8s} {'port ms':>8s} {'ratio':>6s} {'port·dt':>8s} "
-          f"{'ratio':>6s} {'θ/α fast':>9s} {'θ/α ref':>9s} {'rel diff':>8s} {'self':>8s} "
-          f"{'θ/α port':>8s}")
+    print(
+        f"{'case':34s} {'fast ms':>8s} {'port ms':>8s} {'ratio':>6s} {'port·dt':>8s} "
+        f"{'ratio':>6s} {'θ/α fast':>9s} {'θ/α ref':>9s} {'rel diff':>8s} {'self':>8s} "
+        f"{'θ/α port':>8s}"
+    )
     ratios, ratios_dt = [], []
     cases = [(label, read_record(SHARED / name), blk) for label, name, blk in CASES]
-    cases += [(f"engine.md noise seed {k} R3 a0.20", noise_record(k), block(3.0, 0.2))
-              for k in range(NOISE_SEEDS)]
+    cases += [
+        (f"engine.md noise seed {k} R3 a0.20", noise_record(k), block(3.0, 0.2))
+        for k in range(NOISE_SEEDS)
+    ]
     for label, rec, blk in cases:
         if isinstance(rec, tuple):
             t, a, dt = rec
@@ -100,31 +106,40 @@ def main() -> None:
             t, a, dt = rec.time, rec.accel, rec.dt
         args = (blk, t, a, dt)
         simulate(*args, settings=settings)  # compile / load the cache
-        t_fast, fast = median_time(lambda: simulate(*args, settings=settings), FAST_REPEATS)
+        t_fast, fast = median_time(partial(simulate, *args, settings=settings), FAST_REPEATS)
         ref = simulate(*args, settings=settings, engine=Engine.REFERENCE)
         t_end = t[-1] + settings.tail_for(blk.p)
         times = np.concatenate([t, [t[-1] + dt, t_end]])
         accel = np.concatenate([a, [0.0, 0.0]])
-        t_port, port = median_time(lambda: run_port(blk, times, accel, t_end), PORT_REPEATS)
-        t_port_dt, _ = median_time(lambda: run_port(blk, times, accel, t_end, max_step=dt),
-                                   PORT_REPEATS)
+        port_args = (blk, times, accel, t_end)
+        t_port, port = median_time(partial(run_port, *port_args), PORT_REPEATS)
+        t_port_dt, _ = median_time(partial(run_port, *port_args, max_step=dt), PORT_REPEATS)
         tight = simulate(*args, settings=SolverSettings(rtol=1e-12, atol=1e-12))
         rel = abs(fast.max_ratio - ref.max_ratio) / ref.max_ratio
         self_rel = abs(fast.max_ratio - tight.max_ratio) / tight.max_ratio
         ratios.append(t_port / t_fast)
         ratios_dt.append(t_port_dt / t_fast)
-        print(f"{label:34s} {t_fast * 1e3:8.3f} {t_port * 1e3:8.1f} {t_port / t_fast:5.0f}× "
-              f"{t_port_dt * 1e3:8.1f} {t_port_dt / t_fast:5.0f}× {fast.max_ratio:9.5f} "
-              f"{ref.max_ratio:9.5f} {rel:8.1e} {self_rel:8.1e} {port['max_ratio']:8.4f}"
-              f"{'  ill-conditioned' if self_rel > 1e-3 else ''}")
+        print(
+            f"{label:34s} {t_fast * 1e3:8.3f} {t_port * 1e3:8.1f} {t_port / t_fast:5.0f}× "
+            f"{t_port_dt * 1e3:8.1f} {t_port_dt / t_fast:5.0f}× {fast.max_ratio:9.5f} "
+            f"{ref.max_ratio:9.5f} {rel:8.1e} {self_rel:8.1e} {port['max_ratio']:8.4f}"
+            f"{'  ill-conditioned' if self_rel > 1e-3 else ''}"
+        )
     n_real = len(CASES)
     for name, values in (("port", ratios), ("port with max_step = dt", ratios_dt)):
-        for label, part in (("real records", values[:n_real]),
-                            ("engine.md noise", values[n_real:]), ("all cases", values)):
-            print(f"median ratio {name}/fast, {label}: {statistics.median(part):.0f}× "
-                  f"(min {min(part):.0f}×, max {max(part):.0f}×)")
-    print("rel diff: |fast − reference|/reference of max θ/α; self: fast at rtol 1e-8 vs 1e-12 "
-          "(> 1e-3: the case itself is ill-conditioned, engine.md 'Sensitivity')")
+        for label, part in (
+            ("real records", values[:n_real]),
+            ("engine.md noise", values[n_real:]),
+            ("all cases", values),
+        ):
+            print(
+                f"median ratio {name}/fast, {label}: {statistics.median(part):.0f}× "
+                f"(min {min(part):.0f}×, max {max(part):.0f}×)"
+            )
+    print(
+        "rel diff: |fast − reference|/reference of max θ/α; self: fast at rtol 1e-8 vs 1e-12 "
+        "(> 1e-3: the case itself is ill-conditioned, engine.md 'Sensitivity')"
+    )
 
 
 if __name__ == "__main__":

@@ -54,9 +54,15 @@ def _next_uplift(times: np.ndarray, accel: np.ndarray, t: float, thr: float) -> 
     return float(times[k]), int(np.sign(accel[k]))
 
 
-def run_port(block: Block, times: np.ndarray, accel: np.ndarray, t_end: float,
-             overturn: float = math.pi / 2, rtol: float = 1e-6,
-             max_step: float = math.inf) -> dict[str, float]:
+def run_port(
+    block: Block,
+    times: np.ndarray,
+    accel: np.ndarray,
+    t_end: float,
+    overturn: float = math.pi / 2,
+    rtol: float = 1e-6,
+    max_step: float = math.inf,
+) -> dict[str, float]:
     """Max |θ|/α and overturning of one run, the MATLAB-loop way.
 
     ``max_step = dt`` is the usual first attempt at fixing its accuracy (engine.md: it does
@@ -70,8 +76,16 @@ def run_port(block: Block, times: np.ndarray, accel: np.ndarray, t_end: float,
             if s == 0 or t >= t_end:
                 break
             y = [0.0, 0.0]
-        sol = solve_ivp(_rhs(block, times, accel, s), (t, t_end), y, method="RK45", rtol=rtol,
-                        atol=rtol, events=_events(s, overturn), max_step=max_step)
+        sol = solve_ivp(
+            _rhs(block, times, accel, s),
+            (t, t_end),
+            y,
+            method="RK45",
+            rtol=rtol,
+            atol=rtol,
+            events=_events(s, overturn),
+            max_step=max_step,
+        )
         peak = max(peak, float(np.max(np.abs(sol.y[0]))))
         if sol.status != 1:
             break

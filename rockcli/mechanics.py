@@ -175,7 +175,12 @@ def cos_minus(sin_c: float, cos_c: float, sin_a: float, cos_a: float) -> float:
 
 
 def spring_elongation_trig(
-    r: float, sin_phi: float, cos_phi: float, a: float, sin_a: float, cos_a: float,
+    r: float,
+    sin_phi: float,
+    cos_phi: float,
+    a: float,
+    sin_a: float,
+    cos_a: float,
     linearized: bool = False,
 ) -> float:
     """u = r[sin φ − sin(φ − a)] from precomputed sines and cosines [m] (see spring_elongation).
@@ -189,7 +194,13 @@ def spring_elongation_trig(
 
 
 def spring_moment_trig(
-    k: float, r: float, sin_phi: float, cos_phi: float, a: float, sin_a: float, cos_a: float,
+    k: float,
+    r: float,
+    sin_phi: float,
+    cos_phi: float,
+    a: float,
+    sin_a: float,
+    cos_a: float,
     linearized: bool = False,
 ) -> float:
     """K·u·r·cos(φ − a) from precomputed sines and cosines [N·m] (see spring_moment)."""
@@ -220,7 +231,9 @@ def spring_moment(k: float, r: float, phi: float, a: float, linearized: bool = F
     )
 
 
-def spring_failure_rotation(r: float, phi: float, fails_at: float, linearized: bool = False) -> float:
+def spring_failure_rotation(
+    r: float, phi: float, fails_at: float, linearized: bool = False
+) -> float:
     """Rotation a = |θ| at which the spring elongation reaches ``fails_at`` [rad] (inf: never).
 
     Inverse of :func:`spring_elongation`: sin(φ − a) = sin φ − u_f/r (u grows with a up to
@@ -246,7 +259,12 @@ def gravity_moment_ratio(alpha: float, a: float, linearized: bool = False) -> fl
 
 
 def gravity_moment_ratio_trig(
-    alpha: float, sin_alpha: float, cos_alpha: float, a: float, sin_a: float, cos_a: float,
+    alpha: float,
+    sin_alpha: float,
+    cos_alpha: float,
+    a: float,
+    sin_a: float,
+    cos_a: float,
     linearized: bool = False,
 ) -> float:
     """sin(α − a) (α − a linearized) from precomputed sines and cosines [-] (paper Eq. 1)."""
@@ -268,7 +286,9 @@ def ground_moment_ratio(alpha: float, a: float, linearized: bool = False) -> flo
     return 1.0 if linearized else math.cos(alpha - a)
 
 
-def restoring_moment(block: Block, s: int, a: float, alive: tuple[bool, ...] | None = None) -> float:
+def restoring_moment(
+    block: Block, s: int, a: float, alive: tuple[bool, ...] | None = None
+) -> float:
     """Total restoring moment about the active pivot, gravity plus restrainers [N·m].
 
     M_r = m g R sin(α − a) + Σ_k K_k u_k r_k cos(φ_k − a), a = |θ| ≥ 0 on side s (paper Eq. 14,
@@ -309,7 +329,9 @@ def stiffness_coefficient(k: float, R: float, inertia: float) -> float:
     return 4.0 * k * R * R / inertia
 
 
-def linear_global_stiffness(block: Block, s: int = POSITIVE, alive: tuple[bool, ...] | None = None) -> float:
+def linear_global_stiffness(
+    block: Block, s: int = POSITIVE, alive: tuple[bool, ...] | None = None
+) -> float:
     """dM_r/dθ at θ = 0⁺ on side s [N·m/rad]: negative for the free block, positive if restrained.
 
     Source: paper Eq. (16)–(18) for the top spring (positive iff 4KR/(mg) > 1/cos α); for any

@@ -13,16 +13,39 @@ EXIT_OVERTURNS = 1
 @click.command()
 @click.argument("model_path", metavar="MODEL", type=click.Path(dir_okay=False))
 @with_record_options
-@click.option("--engine", type=click.Choice(["fast", "reference"]), default="fast",
-              show_default=True,
-              help="fast: compiled DP5(4); reference: scipy DOP853 at rtol 1e-10 (slow, for checks).")
-@click.option("--history", "history_path", type=click.Path(dir_okay=False), default=None,
-              help="Write t, θ, θ̇ of the worse polarity to this CSV file.")
-@click.option("--fail-on-overturn", is_flag=True,
-              help=f"Exit with code {EXIT_OVERTURNS} when the block overturns (for CI gates).")
+@click.option(
+    "--engine",
+    type=click.Choice(["fast", "reference"]),
+    default="fast",
+    show_default=True,
+    help="fast: compiled DP5(4); reference: scipy DOP853 at rtol 1e-10 (slow, for checks).",
+)
+@click.option(
+    "--history",
+    "history_path",
+    type=click.Path(dir_okay=False),
+    default=None,
+    help="Write t, θ, θ̇ of the worse polarity to this CSV file.",
+)
+@click.option(
+    "--fail-on-overturn",
+    is_flag=True,
+    help=f"Exit with code {EXIT_OVERTURNS} when the block overturns (for CI gates).",
+)
 @output_format
-def assess(model_path, record_path, record_format, dt, units, scale, pga, engine,
-           history_path, fail_on_overturn, output):  # type: ignore[no-untyped-def]
+def assess(
+    model_path,
+    record_path,
+    record_format,
+    dt,
+    units,
+    scale,
+    pga,
+    engine,
+    history_path,
+    fail_on_overturn,
+    output,
+):  # type: ignore[no-untyped-def]
     """Rocking time history of MODEL under a record, both polarities, with the verdict."""
     from rockcli.studies.assess import run_assessment
 
@@ -44,10 +67,17 @@ def write_history(path, run):  # type: ignore[no-untyped-def]
 
     hist = run.history
     lines = [f"# polarity {run.polarity:+d}, {run.message}", "t_s,theta_rad,omega_rad_s"]
-    lines += [f"{t:.6f},{a:.10e},{w:.10e}" for t, a, w in zip(hist.time, hist.theta, hist.omega)]
+    lines += [
+        f"{t:.6f},{a:.10e},{w:.10e}"
+        for t, a, w in zip(hist.time, hist.theta, hist.omega, strict=True)
+    ]
     try:
         with open(path, "w", encoding="utf-8") as fh:
             fh.write("\n".join(lines) + "\n")
     except OSError as exc:
-        raise InputError("cannot write the history file", file=path,
-                         value=exc.strerror, allowed="a writable path") from None
+        raise InputError(
+            "cannot write the history file",
+            file=path,
+            value=exc.strerror,
+            allowed="a writable path",
+        ) from None

@@ -5,18 +5,36 @@ from __future__ import annotations
 import click
 
 output_format = click.option(
-    "--format", "output", type=click.Choice(["table", "json"]), default="table",
-    show_default=True, help="Rich tables for people, one JSON document for machines.",
+    "--format",
+    "output",
+    type=click.Choice(["table", "json"]),
+    default="table",
+    show_default=True,
+    help="Rich tables for people, one JSON document for machines.",
 )
 record_options = [
-    click.option("--record", "record_path", required=True, type=click.Path(dir_okay=False),
-                 help="Accelerogram: PEER AT2, ESM ASCII, ITACA cor.acc or plain text."),
-    click.option("--as", "record_format", default=None,
-                 help="Force the record format (at2, esm, coracc, plain) instead of detecting it."),
-    click.option("--dt", type=float, default=None,
-                 help="Sample interval [s] of a one-column plain-text record."),
-    click.option("--units", default=None,
-                 help="Unit of a plain-text record: g (default), m/s2, cm/s2."),
+    click.option(
+        "--record",
+        "record_path",
+        required=True,
+        type=click.Path(dir_okay=False),
+        help="Accelerogram: PEER AT2, ESM ASCII, ITACA cor.acc or plain text.",
+    ),
+    click.option(
+        "--as",
+        "record_format",
+        default=None,
+        help="Force the record format (at2, esm, coracc, plain) instead of detecting it.",
+    ),
+    click.option(
+        "--dt",
+        type=float,
+        default=None,
+        help="Sample interval [s] of a one-column plain-text record.",
+    ),
+    click.option(
+        "--units", default=None, help="Unit of a plain-text record: g (default), m/s2, cm/s2."
+    ),
     click.option("--scale", type=float, default=None, help="Multiply the record by this factor."),
     click.option("--pga", type=float, default=None, help="Scale the record to this PGA [g]."),
 ]

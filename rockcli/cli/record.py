@@ -7,10 +7,10 @@ starts without them (spec/engine.md, "Speed"). Bad input raises InputError, whic
 
 from __future__ import annotations
 
-
 import click
 
 from rockcli.records.kinds import FILE_FORMATS, PulseKind
+
 
 @click.group()
 def record() -> None:
@@ -44,7 +44,6 @@ def record() -> None:
 def info(file: str, fmt: str | None, dt: float | None, units: str | None, output: str) -> None:
     """Format, samples, dt, duration and PGA of a record FILE (AT2, ESM, cor.acc, plain)."""
     from rockcli.records.files import read_record
-
     from rockcli.report.records import info_document, record_report
     from rockcli.report.table import show
 

@@ -29,6 +29,51 @@ from numba.extending import register_jitable
 
 from rockcli import mechanics
 from rockcli.dynamics import rules
+from rockcli.dynamics.layout import (
+    EV_FAIL,
+    EV_IMPACT,
+    EV_NONE,
+    EV_OVERTURN,
+    EV_SETTLE,
+    I_IMPACTS,
+    I_REJECTED,
+    I_STATUS,
+    I_STEPS,
+    I_UPLIFTS,
+    N_INT_OUT,
+    O_MAX_A,
+    O_MAX_OMEGA,
+    O_T_END,
+    O_T_OVERTURN,
+    O_T_UPLIFT,
+    O_THETA_MAX,
+    O_THETA_MIN,
+    P_ALPHA,
+    P_ATOL,
+    P_COS_ALPHA,
+    P_E,
+    P_FREE_SIDE,
+    P_INV_I0,
+    P_LINEAR,
+    P_MAX_EVENTS,
+    P_MAX_STEPS,
+    P_OMEGA0,
+    P_ONE_SIDED,
+    P_OVERTURN,
+    P_P2,
+    P_REBOUND,
+    P_REST,
+    P_RTOL,
+    P_SIN_ALPHA,
+    P_THETA0,
+    S_MAX_FORCE,
+    S_MAX_U,
+    S_T_FAIL,
+    STATUS_COMPLETED,
+    STATUS_EVENT_LIMIT,
+    STATUS_OVERTURNED,
+    STATUS_STEP_LIMIT,
+)
 
 # The shared formulas are compiled from the very same Python functions. Those that take
 # arrays are inlined at the numba IR level (a call boundary costs atomic reference-count
@@ -52,14 +97,6 @@ _after_impact = njit(cache=True, inline="always")(rules.velocity_after_impact)
 _spring_on_side = njit(cache=True, inline="always")(rules.spring_on_side)
 _elongation_on_side = njit(cache=True, inline="always")(rules.elongation_on_side)
 
-from rockcli.dynamics.layout import (
-    EV_FAIL, EV_IMPACT, EV_NONE, EV_OVERTURN, EV_SETTLE, I_IMPACTS, I_REJECTED, I_STEPS,
-    I_UPLIFTS, I_STATUS, N_INT_OUT, O_MAX_A, O_MAX_OMEGA, O_T_END, O_T_OVERTURN, O_T_UPLIFT,
-    O_THETA_MAX, O_THETA_MIN, P_ALPHA, P_ATOL, P_COS_ALPHA, P_SIN_ALPHA, P_E, P_FREE_SIDE, P_INV_I0, P_LINEAR,
-    P_MAX_EVENTS, P_MAX_STEPS, P_OMEGA0, P_ONE_SIDED, P_OVERTURN, P_P2, P_REBOUND, P_REST, P_RTOL, P_THETA0,
-    S_MAX_FORCE, S_MAX_U, S_T_FAIL, STATUS_COMPLETED, STATUS_EVENT_LIMIT, STATUS_OVERTURNED,
-    STATUS_STEP_LIMIT,
-)
 
 #: Numba IR inlining of the small helpers that take arrays: a call boundary costs atomic
 #: reference-count updates per array argument (measured: ≈ 45 ns for a 4-array helper, more
@@ -114,8 +151,17 @@ DENSE_P = np.array(
 def _stage(th, s, ag, par, springs, alive):  # type: ignore[no-untyped-def]
     """θ̈ at rotation θ on side s under ground acceleration ag [g]."""
     return _rhs(
-        s * th, s, ag, par[P_ALPHA], par[P_SIN_ALPHA], par[P_COS_ALPHA], par[P_P2],
-        par[P_LINEAR] != 0.0, springs, alive, par[P_INV_I0],
+        s * th,
+        s,
+        ag,
+        par[P_ALPHA],
+        par[P_SIN_ALPHA],
+        par[P_COS_ALPHA],
+        par[P_P2],
+        par[P_LINEAR] != 0.0,
+        springs,
+        alive,
+        par[P_INV_I0],
     )
 
 
@@ -143,23 +189,33 @@ def _dp5_step(th, om, f1, h, s, g0, gs, par, springs, alive, k_th, k_om):  # typ
     k_om[0] = f1
     w2, v2 = th + h * A21 * k_th[0], om + h * A21 * k_om[0]
     k_th[1] = v2
-    k_om[1] = _rhs(s * w2, s, g0 + gs * (C2 * h), alpha, sin_alpha, cos_alpha, p2, lin, springs, alive, inv_i0)
+    k_om[1] = _rhs(
+        s * w2, s, g0 + gs * (C2 * h), alpha, sin_alpha, cos_alpha, p2, lin, springs, alive, inv_i0
+    )
     w3 = th + h * (A31 * k_th[0] + A32 * k_th[1])
     v3 = om + h * (A31 * k_om[0] + A32 * k_om[1])
     k_th[2] = v3
-    k_om[2] = _rhs(s * w3, s, g0 + gs * (C3 * h), alpha, sin_alpha, cos_alpha, p2, lin, springs, alive, inv_i0)
+    k_om[2] = _rhs(
+        s * w3, s, g0 + gs * (C3 * h), alpha, sin_alpha, cos_alpha, p2, lin, springs, alive, inv_i0
+    )
     w4 = th + h * (A41 * k_th[0] + A42 * k_th[1] + A43 * k_th[2])
     v4 = om + h * (A41 * k_om[0] + A42 * k_om[1] + A43 * k_om[2])
     k_th[3] = v4
-    k_om[3] = _rhs(s * w4, s, g0 + gs * (C4 * h), alpha, sin_alpha, cos_alpha, p2, lin, springs, alive, inv_i0)
+    k_om[3] = _rhs(
+        s * w4, s, g0 + gs * (C4 * h), alpha, sin_alpha, cos_alpha, p2, lin, springs, alive, inv_i0
+    )
     w5 = th + h * (A51 * k_th[0] + A52 * k_th[1] + A53 * k_th[2] + A54 * k_th[3])
     v5 = om + h * (A51 * k_om[0] + A52 * k_om[1] + A53 * k_om[2] + A54 * k_om[3])
     k_th[4] = v5
-    k_om[4] = _rhs(s * w5, s, g0 + gs * (C5 * h), alpha, sin_alpha, cos_alpha, p2, lin, springs, alive, inv_i0)
+    k_om[4] = _rhs(
+        s * w5, s, g0 + gs * (C5 * h), alpha, sin_alpha, cos_alpha, p2, lin, springs, alive, inv_i0
+    )
     w6 = th + h * (A61 * k_th[0] + A62 * k_th[1] + A63 * k_th[2] + A64 * k_th[3] + A65 * k_th[4])
     v6 = om + h * (A61 * k_om[0] + A62 * k_om[1] + A63 * k_om[2] + A64 * k_om[3] + A65 * k_om[4])
     k_th[5] = v6
-    k_om[5] = _rhs(s * w6, s, g0 + gs * h, alpha, sin_alpha, cos_alpha, p2, lin, springs, alive, inv_i0)
+    k_om[5] = _rhs(
+        s * w6, s, g0 + gs * h, alpha, sin_alpha, cos_alpha, p2, lin, springs, alive, inv_i0
+    )
     th1 = th + h * (B1 * k_th[0] + B3 * k_th[2] + B4 * k_th[3] + B5 * k_th[4] + B6 * k_th[5])
     om1 = om + h * (B1 * k_om[0] + B3 * k_om[2] + B4 * k_om[3] + B5 * k_om[4] + B6 * k_om[5])
     k_th[6] = om1
@@ -167,8 +223,12 @@ def _dp5_step(th, om, f1, h, s, g0, gs, par, springs, alive, k_th, k_om):  # typ
     k_om[6] = f7
     rtol = par[P_RTOL]
     atol = par[P_ATOL]
-    e_th = h * (E1 * k_th[0] + E3 * k_th[2] + E4 * k_th[3] + E5 * k_th[4] + E6 * k_th[5] + E7 * k_th[6])
-    e_om = h * (E1 * k_om[0] + E3 * k_om[2] + E4 * k_om[3] + E5 * k_om[4] + E6 * k_om[5] + E7 * k_om[6])
+    e_th = h * (
+        E1 * k_th[0] + E3 * k_th[2] + E4 * k_th[3] + E5 * k_th[4] + E6 * k_th[5] + E7 * k_th[6]
+    )
+    e_om = h * (
+        E1 * k_om[0] + E3 * k_om[2] + E4 * k_om[3] + E5 * k_om[4] + E6 * k_om[5] + E7 * k_om[6]
+    )
     sc_th = atol + rtol * max(abs(th), abs(th1))
     sc_om = atol + rtol * max(abs(om), abs(om1))
     err = math.sqrt(0.5 * ((e_th / sc_th) ** 2 + (e_om / sc_om) ** 2))
@@ -305,7 +365,9 @@ def _lowest_level(s, par, springs, alive):  # type: ignore[no-untyped-def]
 
 
 @njit(cache=True)
-def _scan_sampled(th0, om0, th1, h, q_th, q_om, s, par, springs, alive, peaks, spring_out, levels, kinds):  # type: ignore[no-untyped-def]
+def _scan_sampled(
+    th0, om0, th1, h, q_th, q_om, s, par, springs, alive, peaks, spring_out, levels, kinds
+):  # type: ignore[no-untyped-def]
     """Scan a step that may hold an event or a turning point; record the peaks before it.
 
     The step is sampled at SCAN_POINTS points of the dense output; a crossing of 0 (impact) or
@@ -491,7 +553,9 @@ def integrate(times, accel, pol, par, springs, alive, hist_th, hist_om, out_f, o
             continue
         out_i[I_STEPS] += 1
         if not (clipped and err <= KEEP_STEP_ERROR):
-            h = h_try * (MAX_FACTOR if err == 0.0 else min(MAX_FACTOR, SAFETY * err**ERROR_EXPONENT))
+            h = h_try * (
+                MAX_FACTOR if err == 0.0 else min(MAX_FACTOR, SAFETY * err**ERROR_EXPONENT)
+            )
         trend = _stage_trend(k_th, s)
         a1 = s * th1
         if (trend > 0 and a1 < lowest) or (trend < 0 and a1 > 0.0):
@@ -500,7 +564,19 @@ def integrate(times, accel, pol, par, springs, alive, hist_th, hist_om, out_f, o
             _dense_coefficients(k_th, q_th)
             _dense_coefficients(k_om, q_om)
             x_ev, kind, row = _scan_sampled(
-                th, om, th1, h_try, q_th, q_om, s, par, springs, alive, out_f, spring_out, levels,
+                th,
+                om,
+                th1,
+                h_try,
+                q_th,
+                q_om,
+                s,
+                par,
+                springs,
+                alive,
+                out_f,
+                spring_out,
+                levels,
                 kinds,
             )
         if kind == EV_NONE:

@@ -22,11 +22,41 @@ from scipy.integrate import solve_ivp
 
 from rockcli.dynamics import rules
 from rockcli.dynamics.layout import (
-    I_IMPACTS, I_REJECTED, I_STATUS, I_STEPS, I_UPLIFTS, O_MAX_A, O_MAX_OMEGA, O_T_END,
-    O_T_OVERTURN, O_T_UPLIFT, O_THETA_MAX, O_THETA_MIN, P_ALPHA, P_ATOL, P_COS_ALPHA, P_SIN_ALPHA, P_E, P_FREE_SIDE,
-    P_INV_I0, P_LINEAR, P_MAX_EVENTS, P_OMEGA0, P_ONE_SIDED, P_OVERTURN, P_P2, P_REBOUND,
-    P_REST, P_RTOL, P_THETA0, S_MAX_FORCE, S_MAX_U, S_T_FAIL, STATUS_COMPLETED,
-    STATUS_EVENT_LIMIT, STATUS_OVERTURNED,
+    I_IMPACTS,
+    I_REJECTED,
+    I_STATUS,
+    I_STEPS,
+    I_UPLIFTS,
+    O_MAX_A,
+    O_MAX_OMEGA,
+    O_T_END,
+    O_T_OVERTURN,
+    O_T_UPLIFT,
+    O_THETA_MAX,
+    O_THETA_MIN,
+    P_ALPHA,
+    P_ATOL,
+    P_COS_ALPHA,
+    P_E,
+    P_FREE_SIDE,
+    P_INV_I0,
+    P_LINEAR,
+    P_MAX_EVENTS,
+    P_OMEGA0,
+    P_ONE_SIDED,
+    P_OVERTURN,
+    P_P2,
+    P_REBOUND,
+    P_REST,
+    P_RTOL,
+    P_SIN_ALPHA,
+    P_THETA0,
+    S_MAX_FORCE,
+    S_MAX_U,
+    S_T_FAIL,
+    STATUS_COMPLETED,
+    STATUS_EVENT_LIMIT,
+    STATUS_OVERTURNED,
 )
 
 #: First step after a restart at θ = 0 [s] (keeps the impact event off the start point).
@@ -53,8 +83,17 @@ def _rhs(phase: _Phase, t0: float, g0: float, gs: float):  # type: ignore[no-unt
     def f(t: float, y: np.ndarray) -> list[float]:
         ag = g0 + gs * (t - t0)
         acc = rules.angular_acceleration(
-            phase.s * y[0], phase.s, ag, par[P_ALPHA], par[P_SIN_ALPHA], par[P_COS_ALPHA],
-            par[P_P2], phase.lin, phase.springs, phase.alive, par[P_INV_I0],
+            phase.s * y[0],
+            phase.s,
+            ag,
+            par[P_ALPHA],
+            par[P_SIN_ALPHA],
+            par[P_COS_ALPHA],
+            par[P_P2],
+            phase.lin,
+            phase.springs,
+            phase.alive,
+            par[P_INV_I0],
         )
         return [y[1], acc]
 
@@ -120,8 +159,14 @@ def _solve(phase: _Phase, t: float, t1: float, g0: float, gs: float):  # type: i
     events, rows = _events(phase)
     first = min(REFERENCE_FIRST_STEP, (t1 - t) / 2) if phase.restart else None
     sol = solve_ivp(
-        _rhs(phase, t, g0, gs), (t, t1), [phase.th, phase.om], method="DOP853",
-        rtol=phase.par[P_RTOL], atol=phase.par[P_ATOL], events=events, first_step=first,
+        _rhs(phase, t, g0, gs),
+        (t, t1),
+        [phase.th, phase.om],
+        method="DOP853",
+        rtol=phase.par[P_RTOL],
+        atol=phase.par[P_ATOL],
+        events=events,
+        first_step=first,
     )
     phase.restart = False
     return sol, rows
@@ -204,7 +249,9 @@ def _apply_event(phase, t, y, kind, row, out_f, out_i, spring_out):  # type: ign
     return None
 
 
-def integrate_reference(times, accel, pol, par, springs, alive, hist_th, hist_om, out_f, out_i, spring_out):  # type: ignore[no-untyped-def]
+def integrate_reference(
+    times, accel, pol, par, springs, alive, hist_th, hist_om, out_f, out_i, spring_out
+):  # type: ignore[no-untyped-def]
     """Same contract as :func:`rockcli.dynamics.kernel.integrate` (arrays filled in place)."""
     phase = _Phase(par, springs, alive)
     out_f[:] = 0.0

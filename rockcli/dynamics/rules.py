@@ -36,26 +36,40 @@ N_SPRING_COLS = 13
 def spring_on_side(springs, j, s):  # type: ignore[no-untyped-def]
     """(K, r, φ, a_fail) of restrainer row j for pivot side s = ±1."""
     if s > 0:
-        return springs[j, COL_K_POS], springs[j, COL_R_POS], springs[j, COL_PHI_POS], springs[
-            j, COL_A_FAIL_POS
-        ]
-    return springs[j, COL_K_NEG], springs[j, COL_R_NEG], springs[j, COL_PHI_NEG], springs[
-        j, COL_A_FAIL_NEG
-    ]
+        return (
+            springs[j, COL_K_POS],
+            springs[j, COL_R_POS],
+            springs[j, COL_PHI_POS],
+            springs[j, COL_A_FAIL_POS],
+        )
+    return (
+        springs[j, COL_K_NEG],
+        springs[j, COL_R_NEG],
+        springs[j, COL_PHI_NEG],
+        springs[j, COL_A_FAIL_NEG],
+    )
 
 
 def spring_trig_on_side(springs, j, s):  # type: ignore[no-untyped-def]
     """(K, r, sin φ, cos φ) of restrainer row j for pivot side s = ±1."""
     if s > 0:
-        return springs[j, COL_K_POS], springs[j, COL_R_POS], springs[j, COL_SIN_POS], springs[
-            j, COL_COS_POS
-        ]
-    return springs[j, COL_K_NEG], springs[j, COL_R_NEG], springs[j, COL_SIN_NEG], springs[
-        j, COL_COS_NEG
-    ]
+        return (
+            springs[j, COL_K_POS],
+            springs[j, COL_R_POS],
+            springs[j, COL_SIN_POS],
+            springs[j, COL_COS_POS],
+        )
+    return (
+        springs[j, COL_K_NEG],
+        springs[j, COL_R_NEG],
+        springs[j, COL_SIN_NEG],
+        springs[j, COL_COS_NEG],
+    )
 
 
-def angular_acceleration(a, s, ag, alpha, sin_alpha, cos_alpha, p2, linearized, springs, alive, inv_i0):  # type: ignore[no-untyped-def]
+def angular_acceleration(
+    a, s, ag, alpha, sin_alpha, cos_alpha, p2, linearized, springs, alive, inv_i0
+):  # type: ignore[no-untyped-def]
     """θ̈ of the block on pivot side s at rotation a = s·θ under ground acceleration ag [g].
 
     Source: spec/rocking.md, θ̈ = −s p² sin(α − sθ) − Σ_k M_k(θ)/I0 + p² üg cos(α − sθ), with
@@ -80,9 +94,11 @@ def angular_acceleration(a, s, ag, alpha, sin_alpha, cos_alpha, p2, linearized, 
         if alive[j] != 0:
             k, r, sin_phi, cos_phi = spring_trig_on_side(springs, j, s)
             if k != 0.0:
-                acc -= s * spring_moment_trig(
-                    k, r, sin_phi, cos_phi, a, sin_a, cos_a, linearized
-                ) * inv_i0
+                acc -= (
+                    s
+                    * spring_moment_trig(k, r, sin_phi, cos_phi, a, sin_a, cos_a, linearized)
+                    * inv_i0
+                )
     return acc
 
 

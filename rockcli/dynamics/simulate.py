@@ -12,6 +12,48 @@ import math
 import numpy as np
 
 from rockcli.dynamics import rules
+
+# Kernel layouts, duplicated here as plain ints so that packing does not import numba.
+from rockcli.dynamics.layout import (  # noqa: I001
+    I_IMPACTS,
+    I_REJECTED,
+    I_STATUS,
+    I_STEPS,
+    I_UPLIFTS,
+    N_FLOAT_OUT,
+    N_INT_OUT,
+    N_PARAMS,
+    N_SPRING_OUT,
+    O_MAX_A,
+    O_MAX_OMEGA,
+    O_T_END,
+    O_T_OVERTURN,
+    O_T_UPLIFT,
+    O_THETA_MAX,
+    O_THETA_MIN,
+    P_ALPHA,
+    P_ATOL,
+    P_COS_ALPHA,
+    P_E,
+    P_FREE_SIDE,
+    P_INV_I0,
+    P_LINEAR,
+    P_MAX_EVENTS,
+    P_MAX_STEPS,
+    P_OMEGA0,
+    P_ONE_SIDED,
+    P_OVERTURN,
+    P_P2,
+    P_REBOUND,
+    P_REST,
+    P_RTOL,
+    P_SIN_ALPHA,
+    P_THETA0,
+    S_MAX_FORCE,
+    S_MAX_U,
+    S_T_FAIL,
+    STATUS_NAMES,
+)
 from rockcli.dynamics.result import (
     Assessment,
     History,
@@ -22,17 +64,10 @@ from rockcli.dynamics.result import (
 from rockcli.dynamics.settings import Engine, SolverSettings
 from rockcli.mechanics import Block, spring_failure_rotation
 
-# Kernel layouts, duplicated here as plain ints so that packing does not import numba.
-from rockcli.dynamics.layout import (  # noqa: I001
-    I_IMPACTS, I_REJECTED, I_STATUS, I_STEPS, I_UPLIFTS, N_FLOAT_OUT, N_INT_OUT, N_PARAMS,
-    N_SPRING_OUT, O_MAX_A, O_MAX_OMEGA, O_T_END, O_T_OVERTURN, O_T_UPLIFT, O_THETA_MAX,
-    O_THETA_MIN, P_OMEGA0, P_THETA0, P_ALPHA, P_COS_ALPHA, P_SIN_ALPHA, P_ATOL, P_E, P_FREE_SIDE, P_INV_I0, P_LINEAR, P_MAX_EVENTS,
-    P_MAX_STEPS, P_ONE_SIDED, P_OVERTURN, P_P2, P_REBOUND, P_REST, P_RTOL, S_MAX_FORCE,
-    S_MAX_U, S_T_FAIL, STATUS_NAMES,
-)
 
-
-def extend_with_tail(time: np.ndarray, accel: np.ndarray, dt: float, tail: float) -> tuple[np.ndarray, np.ndarray]:
+def extend_with_tail(
+    time: np.ndarray, accel: np.ndarray, dt: float, tail: float
+) -> tuple[np.ndarray, np.ndarray]:
     """Sample times and accelerations [g] with `tail` seconds of zeros after the record."""
     n_tail = max(1, int(math.ceil(tail / dt - 1e-9)))
     t_tail = time[-1] + dt * np.arange(1, n_tail + 1)
@@ -115,12 +150,16 @@ def simulate(
         theta0, omega0: initial rotation [rad] and velocity [rad/s] (default: at rest).
     """
     settings = settings or SolverSettings()
-    times, acc = extend_with_tail(np.asarray(time, float), np.asarray(accel, float), dt, settings.tail_for(block.p))
+    times, acc = extend_with_tail(
+        np.asarray(time, float), np.asarray(accel, float), dt, settings.tail_for(block.p)
+    )
     if engine is Engine.REFERENCE:
         from rockcli.dynamics.reference import integrate_reference as run
+
         rtol, atol = _reference_tolerances()
     else:
         from rockcli.dynamics.kernel import integrate as run
+
         rtol, atol = settings.rtol, settings.atol
     par = pack_parameters(block, settings, rtol, atol)
     par[P_THETA0] = theta0
@@ -134,7 +173,9 @@ def simulate(
     out_i = np.zeros(N_INT_OUT, dtype=np.int64)
     spring_out = np.zeros((len(block.restrainers), N_SPRING_OUT))
     spring_out[:, S_T_FAIL] = np.nan
-    run(times, acc, float(polarity), par, springs, alive, hist_th, hist_om, out_f, out_i, spring_out)
+    run(
+        times, acc, float(polarity), par, springs, alive, hist_th, hist_om, out_f, out_i, spring_out
+    )
     hist = _history(times, hist_th, hist_om, out_f[O_T_END]) if history else None
     return _unpack(block, settings, engine, rtol, atol, polarity, out_f, out_i, spring_out, hist)
 
@@ -154,7 +195,9 @@ def _optional(x: float) -> float | None:
     return None if math.isnan(x) else float(x)
 
 
-def _unpack(block, settings, engine, rtol, atol, polarity, out_f, out_i, spring_out, hist) -> RockingRun:  # type: ignore[no-untyped-def]
+def _unpack(
+    block, settings, engine, rtol, atol, polarity, out_f, out_i, spring_out, hist
+) -> RockingRun:  # type: ignore[no-untyped-def]
     status = RunStatus(STATUS_NAMES[int(out_i[I_STATUS])])
     peaks = tuple(
         RestrainerPeak(
@@ -206,9 +249,10 @@ def _with_warnings(run: RockingRun) -> RockingRun:
     notes = []
     if run.chattering:
         notes.append(
-            f"polarity {run.polarity:+d}: small-amplitude chattering (max θ/α = {run.max_ratio:.3g} "
-            f"with {run.impacts} impacts): the peak is sensitive to α and e; read it as an order of "
-            f"magnitude; impact count depends on the rest threshold {run.rest_velocity:g} rad/s"
+            f"polarity {run.polarity:+d}: small-amplitude chattering "
+            f"(max θ/α = {run.max_ratio:.3g} with {run.impacts} impacts): the peak is sensitive "
+            f"to α and e; read it as an order of magnitude; impact count depends on the rest "
+            f"threshold {run.rest_velocity:g} rad/s"
         )
     if run.status in (RunStatus.EVENT_LIMIT, RunStatus.STEP_LIMIT):
         notes.append(f"polarity {run.polarity:+d}: {run.message}")
@@ -231,7 +275,9 @@ def assess(
 ) -> Assessment:
     """Both polarities of the record (the response to +üg and −üg differ: spec/rocking.md)."""
     runs = tuple(
-        simulate(block, time, accel, dt, polarity=pol, settings=settings, engine=engine, history=history)
+        simulate(
+            block, time, accel, dt, polarity=pol, settings=settings, engine=engine, history=history
+        )
         for pol in (1, -1)
     )
     return Assessment(runs=runs)

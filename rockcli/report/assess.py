@@ -25,8 +25,11 @@ def effectiveness(block: Block) -> list[dict[str, Any]]:
     if not block.restrainers or block.mass is None:
         return []
     rows = []
-    sides = ((block.free_side, "θ > 0" if block.free_side > 0 else "θ < 0"),) if block.one_sided \
+    sides = (
+        ((block.free_side, "θ > 0" if block.free_side > 0 else "θ < 0"),)
+        if block.one_sided
         else ((1, "θ > 0"), (-1, "θ < 0"))
+    )
     for side, label in sides:
         stiff = linear_global_stiffness(block, side)
         for sp in block.restrainers:
@@ -34,7 +37,11 @@ def effectiveness(block: Block) -> list[dict[str, Any]]:
             c_k = restrainer_coefficient(k, r, block.inertia)
             rows.append(
                 {
-                    "name": sp.name, "side": label, "K": k, "c_K": c_k, "c_E": block.p2,
+                    "name": sp.name,
+                    "side": label,
+                    "K": k,
+                    "c_K": c_k,
+                    "c_E": block.p2,
                     "ratio": c_k / block.p2,
                     "global_stiffness": "positive" if stiff > 0 else "negative",
                 }
@@ -59,8 +66,12 @@ def run_document(run: RockingRun) -> dict[str, Any]:
         "steps": run.steps,
         "t_end": run.t_end,
         "restrainers": [
-            {"name": p.name, "max_displacement": p.max_displacement, "max_force": p.max_force,
-             "t_fail": p.t_fail}
+            {
+                "name": p.name,
+                "max_displacement": p.max_displacement,
+                "max_force": p.max_force,
+                "t_fail": p.t_fail,
+            }
             for p in run.restrainers
         ],
     }
@@ -87,9 +98,16 @@ def model_document(name: str, kind: str, block: Block, e_rule: str) -> dict[str,
         "linearized": block.linearized,
         "uplift_acceleration_g": block.uplift_acceleration,
         "restrainers": [
-            {"name": r.name, "k_pos": r.k_pos, "k_neg": r.k_neg, "r_pos": r.r_pos,
-             "phi_pos": r.phi_pos, "r_neg": r.r_neg, "phi_neg": r.phi_neg,
-             "fails_at": r.fails_at if math.isfinite(r.fails_at) else None}
+            {
+                "name": r.name,
+                "k_pos": r.k_pos,
+                "k_neg": r.k_neg,
+                "r_pos": r.r_pos,
+                "phi_pos": r.phi_pos,
+                "r_neg": r.r_neg,
+                "phi_neg": r.phi_neg,
+                "fails_at": r.fails_at if math.isfinite(r.fails_at) else None,
+            }
             for r in block.restrainers
         ],
     }
@@ -102,7 +120,9 @@ def impact_rule(block: Block) -> str:
     return f"two-sided: θ̇⁺ = e·θ̇⁻, pivot switches (e = {block.e:.4g})"
 
 
-def assessment_document(model: dict[str, Any], record: Record, block: Block, result: Assessment) -> dict[str, Any]:
+def assessment_document(
+    model: dict[str, Any], record: Record, block: Block, result: Assessment
+) -> dict[str, Any]:
     """The whole `rock assess --format json` document (schema 1)."""
     first = result.runs[0]
     return {
@@ -110,8 +130,12 @@ def assessment_document(model: dict[str, Any], record: Record, block: Block, res
         "rock_version": __version__,
         "model": model,
         "record": record_document(record),
-        "engine": {"name": first.engine, "rtol": first.rtol, "atol": first.atol,
-                   "rest_velocity": first.rest_velocity},
+        "engine": {
+            "name": first.engine,
+            "rtol": first.rtol,
+            "atol": first.atol,
+            "rest_velocity": first.rest_velocity,
+        },
         "runs": [run_document(r) for r in result.runs],
         "effectiveness": effectiveness(block),
         "verdict": str(result.verdict),
@@ -135,11 +159,17 @@ RUN_ROWS = (
 
 def runs_table(runs: list[dict[str, Any]]) -> Table:
     """Quantities down, polarities across."""
-    cols = (Column("label", ""), *(Column(f"p{r['polarity']}", f"polarity {r['polarity']:+d}")
-                                   for r in runs), Column("unit", "unit"))
+    cols = (
+        Column("label", ""),
+        *(Column(f"p{r['polarity']}", f"polarity {r['polarity']:+d}") for r in runs),
+        Column("unit", "unit"),
+    )
     rows = tuple(
-        {"label": label, "unit": unit,
-         **{f"p{r['polarity']}": format_value(r[key], fmt) for r in runs}}
+        {
+            "label": label,
+            "unit": unit,
+            **{f"p{r['polarity']}": format_value(r[key], fmt) for r in runs},
+        }
         for key, label, unit, fmt in RUN_ROWS
     )
     return Table("Rocking time history, both polarities", cols, rows)
@@ -166,30 +196,49 @@ EFFECT_COLUMNS = (
 def assessment_report(doc: dict[str, Any]) -> Report:
     """The terminal report of an assessment document."""
     m, rec, eng = doc["model"], doc["record"], doc["engine"]
-    block = key_value(f"Block: {m['name']} ({m['kind']})", [
-        ("semi-diagonal R", m["R"], "m", "{:.4g}"),
-        ("slenderness α", m["alpha"], "rad", "{:.4g}"),
-        ("thickness 2b × height 2h", f"{2 * m['b']:.3f} × {2 * m['h']:.3f}", "m", ""),
-        ("frequency parameter p", m["p"], "rad/s", "{:.4g}"),
-        ("restitution e", f"{m['e']:.4f} ({m['e_rule']})", "", ""),
-        ("impact rule", m["impact_rule"], "", ""),
-        ("uplift acceleration", m["uplift_acceleration_g"], "g", "{:.4f}"),
-    ])
+    block = key_value(
+        f"Block: {m['name']} ({m['kind']})",
+        [
+            ("semi-diagonal R", m["R"], "m", "{:.4g}"),
+            ("slenderness α", m["alpha"], "rad", "{:.4g}"),
+            ("thickness 2b × height 2h", f"{2 * m['b']:.3f} × {2 * m['h']:.3f}", "m", ""),
+            ("frequency parameter p", m["p"], "rad/s", "{:.4g}"),
+            ("restitution e", f"{m['e']:.4f} ({m['e_rule']})", "", ""),
+            ("impact rule", m["impact_rule"], "", ""),
+            ("uplift acceleration", m["uplift_acceleration_g"], "g", "{:.4f}"),
+        ],
+    )
     record = record_report(rec).tables[0]
     runs = runs_table(doc["runs"])
     tables = [block, record, runs]
     springs = tuple(
-        {**p, "polarity": r["polarity"], "max_displacement": p["max_displacement"] * 1e3,
-         "max_force": p["max_force"] / 1e3}
-        for r in doc["runs"] for p in r["restrainers"]
+        {
+            **p,
+            "polarity": r["polarity"],
+            "max_displacement": p["max_displacement"] * 1e3,
+            "max_force": p["max_force"] / 1e3,
+        }
+        for r in doc["runs"]
+        for p in r["restrainers"]
     )
     if springs:
         tables.append(Table("Restrainer demands", SPRING_COLUMNS, springs))
     if doc["effectiveness"]:
-        tables.append(Table("Restrainer effectiveness (paper §4.3)", EFFECT_COLUMNS,
-                            tuple(doc["effectiveness"])))
-    notes = [f"engine {eng['name']}, rtol {eng['rtol']:g}, atol {eng['atol']:g}, "
-             f"rest threshold {eng['rest_velocity']:g} rad/s", *rec["notes"], *doc["warnings"]]
+        tables.append(
+            Table(
+                "Restrainer effectiveness (paper §4.3)", EFFECT_COLUMNS, tuple(doc["effectiveness"])
+            )
+        )
+    notes = [
+        f"engine {eng['name']}, rtol {eng['rtol']:g}, atol {eng['atol']:g}, "
+        f"rest threshold {eng['rest_velocity']:g} rad/s",
+        *rec["notes"],
+        *doc["warnings"],
+    ]
     verdict = f"{doc['verdict']} (max θ/α = {doc['max_ratio']:.4f} over both polarities)"
-    return Report(title=f"rock assess — {m['name']}", tables=tuple(tables), notes=tuple(notes),
-                  verdict=verdict)
+    return Report(
+        title=f"rock assess — {m['name']}",
+        tables=tuple(tables),
+        notes=tuple(notes),
+        verdict=verdict,
+    )

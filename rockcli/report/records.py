@@ -40,15 +40,19 @@ def record_report(doc: dict[str, Any]) -> Report:
     """The table of a record document: samples, dt, duration, PGA in g, m/s² and its own unit."""
     units = dict.fromkeys([AccelUnit.G, AccelUnit.M_S2, AccelUnit(doc["unit"])])
     pga = [(f"PGA ({SYMBOLS[u]})", doc["pga_g"] / u.to_g, SYMBOLS[u], "{:.6g}") for u in units]
-    table = key_value(f"Record {doc['name']}", [
-        ("source", doc["source"], "", ""),
-        ("format", doc["format"], "", ""),
-        ("unit in file", SYMBOLS.get(doc["unit"], doc["unit"]), "", ""),
-        ("samples", doc["npts"], "", "{:d}"),
-        ("dt", doc["dt"], "s", "{:.6g}"),
-        ("duration", doc["duration"], "s", "{:.6g}"),
-        *pga,
-        ("time of PGA", doc["t_pga"], "s", "{:.6g}"),
-    ])
-    return Report(title=f"rock record info — {doc['name']}", tables=(table,),
-                  notes=tuple(doc["notes"]))
+    table = key_value(
+        f"Record {doc['name']}",
+        [
+            ("source", doc["source"], "", ""),
+            ("format", doc["format"], "", ""),
+            ("unit in file", SYMBOLS.get(doc["unit"], doc["unit"]), "", ""),
+            ("samples", doc["npts"], "", "{:d}"),
+            ("dt", doc["dt"], "s", "{:.6g}"),
+            ("duration", doc["duration"], "s", "{:.6g}"),
+            *pga,
+            ("time of PGA", doc["t_pga"], "s", "{:.6g}"),
+        ],
+    )
+    return Report(
+        title=f"rock record info — {doc['name']}", tables=(table,), notes=tuple(doc["notes"])
+    )

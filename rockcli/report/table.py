@@ -50,7 +50,9 @@ class Report:
 def key_value(title: str, items: list[tuple[str, Any, str, str]]) -> Table:
     """A two-column table (quantity, value [unit]) from (label, value, unit, fmt) items."""
     cols = (Column("label", ""), Column("value", "value"), Column("unit", "unit"))
-    rows = tuple({"label": lab, "value": format_value(v, fmt), "unit": u} for lab, v, u, fmt in items)
+    rows = tuple(
+        {"label": lab, "value": format_value(v, fmt), "unit": u} for lab, v, u, fmt in items
+    )
     return Table(title=title, columns=cols, rows=rows)
 
 

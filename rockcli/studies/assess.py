@@ -12,12 +12,17 @@ from rockcli.records.record import Record
 def settings_from(options: Any) -> SolverSettings:
     """SolverSettings from the model's [analysis] options (model.derive.AnalysisOptions)."""
     return SolverSettings(
-        rtol=options.rtol, atol=options.atol, rest_velocity=options.rest_velocity,
-        overturn_angle=options.overturn_angle, tail=options.tail,
+        rtol=options.rtol,
+        atol=options.atol,
+        rest_velocity=options.rest_velocity,
+        overturn_angle=options.overturn_angle,
+        tail=options.tail,
     )
 
 
-def run_assessment(model_path: str, record: Record, engine: str, *, history: bool = False) -> tuple[dict[str, Any], RockingRun]:
+def run_assessment(
+    model_path: str, record: Record, engine: str, *, history: bool = False
+) -> tuple[dict[str, Any], RockingRun]:
     """Load the model, run both polarities, return (JSON document, the worse run)."""
     from rockcli.dynamics.simulate import assess
     from rockcli.model.derive import describe, solver_options, to_block
@@ -26,8 +31,14 @@ def run_assessment(model_path: str, record: Record, engine: str, *, history: boo
 
     model = load_model(model_path)
     block = to_block(model)
-    result = assess(block, record.time, record.accel, record.dt,
-                    settings=settings_from(solver_options(model)), engine=Engine(engine),
-                    history=history)
+    result = assess(
+        block,
+        record.time,
+        record.accel,
+        record.dt,
+        settings=settings_from(solver_options(model)),
+        engine=Engine(engine),
+        history=history,
+    )
     info = model_document(model.name, str(model.kind), block, describe(model).e_rule)
     return assessment_document(info, record, block, result), result.worst

@@ -15,8 +15,15 @@ from click.testing import CliRunner
 from rockcli.cli.main import cli
 from tests.cli.conftest import EXAMPLES, PULSES, ROOT
 
-RUN_KEYS = {"polarity", "max_ratio", "overturned", "t_overturn", "t_uplift", "impacts",
-            "restrainers"}
+RUN_KEYS = {
+    "polarity",
+    "max_ratio",
+    "overturned",
+    "t_overturn",
+    "t_uplift",
+    "impacts",
+    "restrainers",
+}
 
 
 def run(*args: str) -> tuple[int, str, str]:
@@ -81,23 +88,37 @@ def test_history_csv_of_the_worse_polarity(tmp_path: Path) -> None:
 def test_fail_on_overturn_exit_code(tmp_path: Path) -> None:
     # A slender free wall under a 0.6 g, 2 s one-sine pulse overturns (far past tan α = 0.1).
     pulse = tmp_path / "p.txt"
-    code, _, err = run("record", "pulse", "one-sine", "--amplitude", "0.6", "--period", "2",
-                       "--duration", "6", "-o", str(pulse))
+    code, _, err = run(
+        "record",
+        "pulse",
+        "one-sine",
+        "--amplitude",
+        "0.6",
+        "--period",
+        "2",
+        "--duration",
+        "6",
+        "-o",
+        str(pulse),
+    )
     assert code == 0, err
     model = tmp_path / "m.toml"
     model.write_text('name = "slender"\nkind = "wall"\n[geometry]\nR = 1.0\nalpha = 0.1\n')
     code, out, _ = run("assess", str(model), "--record", str(pulse), "--format", "json")
     assert code == 0 and json.loads(out)["verdict"] == "overturns"
-    code, _, _ = run("assess", str(model), "--record", str(pulse), "--fail-on-overturn",
-                     "--format", "json")
+    code, _, _ = run(
+        "assess", str(model), "--record", str(pulse), "--fail-on-overturn", "--format", "json"
+    )
     assert code == 1
 
 
 @pytest.mark.parametrize(
     ("model_text", "fragment"),
     [
-        ('name = "x"\nkind = "wall"\n[geometry]\nthickness = -0.5\nheight = 3.0\n',
-         "geometry.thickness"),
+        (
+            'name = "x"\nkind = "wall"\n[geometry]\nthickness = -0.5\nheight = 3.0\n',
+            "geometry.thickness",
+        ),
         ('name = "x"\nkind = "wall"\n[geometry]\nR = 1.0\nalpha = 2.0\n', "geometry.alpha"),
         ('name = "x"\nkind = "tower"\n[geometry]\nR = 1.0\nalpha = 0.2\n', "kind"),
         ('name = "x"\nkind = "wall"\n[geometry\nR = 1.0\n', "line 3"),
@@ -124,11 +145,18 @@ def test_bad_record_is_one_error_line(tmp_path: Path) -> None:
 def test_missing_files_and_unknown_unit(tmp_path: Path) -> None:
     code, _, err = run("assess", str(tmp_path / "none.toml"), "--record", str(PULSES[0]))
     assert code == 2 and "none.toml" in err
-    code, _, err = run("assess", str(ROOT / "examples" / "altar.toml"), "--record",
-                       str(tmp_path / "none.txt"))
+    code, _, err = run(
+        "assess", str(ROOT / "examples" / "altar.toml"), "--record", str(tmp_path / "none.txt")
+    )
     assert code == 2 and "none.txt" in err
-    code, _, err = run("assess", str(ROOT / "examples" / "altar.toml"), "--record",
-                       str(PULSES[0]), "--units", "furlongs/s2")
+    code, _, err = run(
+        "assess",
+        str(ROOT / "examples" / "altar.toml"),
+        "--record",
+        str(PULSES[0]),
+        "--units",
+        "furlongs/s2",
+    )
     assert code == 2 and "furlongs/s2" in err
 
 
@@ -148,8 +176,9 @@ def test_elc180_fast_and_reference_agree(shared_records: Path, tmp_path: Path) -
 
 
 def _imported_by(code: str) -> set[str]:
-    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
-                         check=True, cwd=ROOT)
+    out = subprocess.run(
+        [sys.executable, "-c", code], capture_output=True, text=True, check=True, cwd=ROOT
+    )
     return set(out.stdout.split())
 
 
@@ -167,8 +196,17 @@ def test_second_start_is_fast() -> None:
     # Issue #2: with the numba cache warm, a second `rock assess` starts in well under a
     # second. Measured here ≈ 0.5 s for the whole process; the bound leaves room for a loaded
     # CI machine.
-    cmd = [sys.executable, "-m", "rockcli", "assess", "examples/altar.toml", "--record",
-           str(PULSES[0].relative_to(ROOT)), "--format", "json"]
+    cmd = [
+        sys.executable,
+        "-m",
+        "rockcli",
+        "assess",
+        "examples/altar.toml",
+        "--record",
+        str(PULSES[0].relative_to(ROOT)),
+        "--format",
+        "json",
+    ]
     subprocess.run(cmd, cwd=ROOT, check=True, capture_output=True)  # compile or load
     start = time.perf_counter()
     subprocess.run(cmd, cwd=ROOT, check=True, capture_output=True)
