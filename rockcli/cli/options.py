@@ -12,6 +12,22 @@ output_format = click.option(
     show_default=True,
     help="Rich tables for people, one JSON document for machines.",
 )
+record_format = click.option(
+    "--as",
+    "record_format",
+    type=click.Choice(["at2", "esm", "coracc", "plain"]),
+    default=None,
+    help="Force the record format instead of detecting it from the content.",
+)
+plain_dt = click.option(
+    "--dt", type=float, default=None, help="Sample interval [s] of a one-column plain-text record."
+)
+plain_units = click.option(
+    "--units",
+    default=None,
+    metavar="g|m/s2|cm/s2",
+    help="Acceleration unit of a plain-text record (default g).",
+)
 record_options = [
     click.option(
         "--record",
@@ -20,21 +36,9 @@ record_options = [
         type=click.Path(dir_okay=False),
         help="Accelerogram: PEER AT2, ESM ASCII, ITACA cor.acc or plain text.",
     ),
-    click.option(
-        "--as",
-        "record_format",
-        default=None,
-        help="Force the record format (at2, esm, coracc, plain) instead of detecting it.",
-    ),
-    click.option(
-        "--dt",
-        type=float,
-        default=None,
-        help="Sample interval [s] of a one-column plain-text record.",
-    ),
-    click.option(
-        "--units", default=None, help="Unit of a plain-text record: g (default), m/s2, cm/s2."
-    ),
+    record_format,
+    plain_dt,
+    plain_units,
     click.option("--scale", type=float, default=None, help="Multiply the record by this factor."),
     click.option("--pga", type=float, default=None, help="Scale the record to this PGA [g]."),
 ]

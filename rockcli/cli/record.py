@@ -9,7 +9,8 @@ from __future__ import annotations
 
 import click
 
-from rockcli.records.kinds import FILE_FORMATS, PulseKind
+from rockcli.cli.options import output_format, plain_dt, plain_units, record_format
+from rockcli.records.kinds import PulseKind
 
 
 @click.group()
@@ -19,35 +20,19 @@ def record() -> None:
 
 @record.command("info")
 @click.argument("file", type=click.Path())
-@click.option(
-    "--as",
-    "fmt",
-    type=click.Choice([str(f) for f in FILE_FORMATS]),
-    default=None,
-    help="Force the record format (default: detected from the content).",
-)
-@click.option("--dt", type=float, default=None, help="Time step [s] of a one-column plain file.")
-@click.option(
-    "--units",
-    default=None,
-    metavar="g|m/s2|cm/s2",
-    help="Acceleration unit of a plain file (default g).",
-)
-@click.option(
-    "--format",
-    "output",
-    type=click.Choice(["table", "json"]),
-    default="table",
-    show_default=True,
-    help="Output: a table, or JSON with full precision.",
-)
-def info(file: str, fmt: str | None, dt: float | None, units: str | None, output: str) -> None:
+@record_format
+@plain_dt
+@plain_units
+@output_format
+def info(
+    file: str, record_format: str | None, dt: float | None, units: str | None, output: str
+) -> None:
     """Format, samples, dt, duration and PGA of a record FILE (AT2, ESM, cor.acc, plain)."""
     from rockcli.records.files import read_record
     from rockcli.report.records import info_document, record_report
     from rockcli.report.table import show
 
-    doc = info_document(read_record(file, fmt=fmt, dt=dt, units=units))
+    doc = info_document(read_record(file, fmt=record_format, dt=dt, units=units))
     show(doc, output, record_report)
 
 

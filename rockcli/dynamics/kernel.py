@@ -28,52 +28,8 @@ from numba import njit
 from numba.extending import register_jitable
 
 from rockcli import mechanics
+from rockcli.dynamics import layout as L
 from rockcli.dynamics import rules
-from rockcli.dynamics.layout import (
-    EV_FAIL,
-    EV_IMPACT,
-    EV_NONE,
-    EV_OVERTURN,
-    EV_SETTLE,
-    I_IMPACTS,
-    I_REJECTED,
-    I_STATUS,
-    I_STEPS,
-    I_UPLIFTS,
-    N_INT_OUT,
-    O_MAX_A,
-    O_MAX_OMEGA,
-    O_T_END,
-    O_T_OVERTURN,
-    O_T_UPLIFT,
-    O_THETA_MAX,
-    O_THETA_MIN,
-    P_ALPHA,
-    P_ATOL,
-    P_COS_ALPHA,
-    P_E,
-    P_FREE_SIDE,
-    P_INV_I0,
-    P_LINEAR,
-    P_MAX_EVENTS,
-    P_MAX_STEPS,
-    P_OMEGA0,
-    P_ONE_SIDED,
-    P_OVERTURN,
-    P_P2,
-    P_REBOUND,
-    P_REST,
-    P_RTOL,
-    P_SIN_ALPHA,
-    P_THETA0,
-    S_MAX_FORCE,
-    S_MAX_U,
-    S_T_FAIL,
-    STATUS_COMPLETED,
-    STATUS_EVENT_LIMIT,
-    STATUS_OVERTURNED,
-    STATUS_STEP_LIMIT,
-)
 
 # The shared formulas are compiled from the very same Python functions. Those that take
 # arrays are inlined at the numba IR level (a call boundary costs atomic reference-count
@@ -154,14 +110,14 @@ def _stage(th, s, ag, par, springs, alive):  # type: ignore[no-untyped-def]
         s * th,
         s,
         ag,
-        par[P_ALPHA],
-        par[P_SIN_ALPHA],
-        par[P_COS_ALPHA],
-        par[P_P2],
-        par[P_LINEAR] != 0.0,
+        par[L.P_ALPHA],
+        par[L.P_SIN_ALPHA],
+        par[L.P_COS_ALPHA],
+        par[L.P_P2],
+        par[L.P_LINEAR] != 0.0,
         springs,
         alive,
-        par[P_INV_I0],
+        par[L.P_INV_I0],
     )
 
 
@@ -179,12 +135,12 @@ def _dp5_step(th, om, f1, h, s, g0, gs, par, springs, alive, k_th, k_om):  # typ
     acceleration is g0 + gs·τ at time τ into the step (linear inside a sample interval).
     Error norm: RMS of err/(atol + rtol·max(|y0|, |y1|)) (Hairer et al. II.4 (4.11)).
     """
-    alpha = par[P_ALPHA]
-    sin_alpha = par[P_SIN_ALPHA]
-    cos_alpha = par[P_COS_ALPHA]
-    p2 = par[P_P2]
-    lin = par[P_LINEAR] != 0.0
-    inv_i0 = par[P_INV_I0]
+    alpha = par[L.P_ALPHA]
+    sin_alpha = par[L.P_SIN_ALPHA]
+    cos_alpha = par[L.P_COS_ALPHA]
+    p2 = par[L.P_P2]
+    lin = par[L.P_LINEAR] != 0.0
+    inv_i0 = par[L.P_INV_I0]
     k_th[0] = om
     k_om[0] = f1
     w2, v2 = th + h * A21 * k_th[0], om + h * A21 * k_om[0]
@@ -221,8 +177,8 @@ def _dp5_step(th, om, f1, h, s, g0, gs, par, springs, alive, k_th, k_om):  # typ
     k_th[6] = om1
     f7 = _rhs(s * th1, s, g0 + gs * h, alpha, sin_alpha, cos_alpha, p2, lin, springs, alive, inv_i0)
     k_om[6] = f7
-    rtol = par[P_RTOL]
-    atol = par[P_ATOL]
+    rtol = par[L.P_RTOL]
+    atol = par[L.P_ATOL]
     e_th = h * (
         E1 * k_th[0] + E3 * k_th[2] + E4 * k_th[3] + E5 * k_th[4] + E6 * k_th[5] + E7 * k_th[6]
     )
@@ -297,29 +253,29 @@ def _turning_point(om0, h, q_om, s, xl, xr):  # type: ignore[no-untyped-def]
 @njit(cache=True)
 def _update_peak(a, s, peaks, spring_out, springs, alive, linearized):  # type: ignore[no-untyped-def]
     """Record the rotation a about pivot s: amplitude, signed extremes, restrainer demands."""
-    if a > peaks[O_MAX_A]:
-        peaks[O_MAX_A] = a
+    if a > peaks[L.O_MAX_A]:
+        peaks[L.O_MAX_A] = a
     if s > 0:
-        if a > peaks[O_THETA_MAX]:
-            peaks[O_THETA_MAX] = a
-    elif -a < peaks[O_THETA_MIN]:
-        peaks[O_THETA_MIN] = -a
+        if a > peaks[L.O_THETA_MAX]:
+            peaks[L.O_THETA_MAX] = a
+    elif -a < peaks[L.O_THETA_MIN]:
+        peaks[L.O_THETA_MIN] = -a
     for j in range(springs.shape[0]):
         if alive[j] != 0:
             k, _, _, _ = _spring_on_side(springs, j, s)
             if k != 0.0:
                 u = _elongation_on_side(springs, j, s, a, linearized)
-                if u > spring_out[j, S_MAX_U]:
-                    spring_out[j, S_MAX_U] = u
-                if k * u > spring_out[j, S_MAX_FORCE]:
-                    spring_out[j, S_MAX_FORCE] = k * u
+                if u > spring_out[j, L.S_MAX_U]:
+                    spring_out[j, L.S_MAX_U] = u
+                if k * u > spring_out[j, L.S_MAX_FORCE]:
+                    spring_out[j, L.S_MAX_FORCE] = k * u
 
 
 @njit(cache=True)
 def _event_levels(s, par, springs, alive, levels, kinds):  # type: ignore[no-untyped-def]
     """Fill the upward levels of a that end the phase: overturning and each live failure."""
     n = 0
-    levels[n] = par[P_OVERTURN]
+    levels[n] = par[L.P_OVERTURN]
     kinds[n] = -1
     n += 1
     for j in range(springs.shape[0]):
@@ -355,7 +311,7 @@ def _stage_trend(k_th, s):  # type: ignore[no-untyped-def]
 @njit(cache=True)
 def _lowest_level(s, par, springs, alive):  # type: ignore[no-untyped-def]
     """The lowest upward event level of a on side s: overturning or a live failure [rad]."""
-    lowest = par[P_OVERTURN]
+    lowest = par[L.P_OVERTURN]
     for j in range(springs.shape[0]):
         if alive[j] != 0:
             k, _, _, a_fail = _spring_on_side(springs, j, s)
@@ -378,7 +334,7 @@ def _scan_sampled(
     Returns (x_event, kind, spring_row): x_event in [0, 1] (2.0 when nothing happens),
     kind EV_*, spring_row the failing restrainer (−1 otherwise).
     """
-    lin = par[P_LINEAR] != 0.0
+    lin = par[L.P_LINEAR] != 0.0
     n_levels = _event_levels(s, par, springs, alive, levels, kinds)
     x_prev = 0.0
     a_prev = s * th0
@@ -386,33 +342,33 @@ def _scan_sampled(
         x = step / SCAN_POINTS
         a = s * th1 if step == SCAN_POINTS else s * _dense(x, th0, h, q_th)
         x_best = 2.0
-        kind = EV_NONE
+        kind = L.EV_NONE
         row = -1
         if a <= 0.0:
             x_left = x_prev
             if a_prev <= 0.0:
                 x_left = _turning_point(om0, h, q_om, s, x_prev, x)
                 if x_left < 0.0 or s * _dense(x_left, th0, h, q_th) <= 0.0:
-                    return x_prev, EV_SETTLE, -1  # excursion below resolution: at rest
+                    return x_prev, L.EV_SETTLE, -1  # excursion below resolution: at rest
             x_best = _root(th0, h, q_th, 0.0, s, x_left, x)
-            kind = EV_IMPACT
+            kind = L.EV_IMPACT
         for m in range(n_levels):
             if a >= levels[m] and a_prev < levels[m]:
                 xe = _root(th0, h, q_th, levels[m], s, x_prev, x)
                 if xe < x_best:
                     x_best = xe
-                    kind = EV_OVERTURN if kinds[m] < 0 else EV_FAIL
+                    kind = L.EV_OVERTURN if kinds[m] < 0 else L.EV_FAIL
                     row = kinds[m]
-        x_end = x if kind == EV_NONE else x_best
+        x_end = x if kind == L.EV_NONE else x_best
         xp = _turning_point(om0, h, q_om, s, x_prev, x_end)
         if xp >= 0.0:
             _update_peak(s * _dense(xp, th0, h, q_th), s, peaks, spring_out, springs, alive, lin)
-        if kind != EV_NONE:
+        if kind != L.EV_NONE:
             return x_best, kind, row
         _update_peak(a, s, peaks, spring_out, springs, alive, lin)
         x_prev = x
         a_prev = a
-    return 2.0, EV_NONE, -1
+    return 2.0, L.EV_NONE, -1
 
 
 @njit(cache=True)
@@ -423,9 +379,9 @@ def _next_uplift(t, i, times, accel, pol, par):  # type: ignore[no-untyped-def]
     an interval only if it does at the interval's end sample: the samples are scanned, and the
     crossing is located exactly in the first interval whose end exceeds it.
     """
-    thr = par[P_ALPHA] if par[P_LINEAR] != 0.0 else math.tan(par[P_ALPHA])
-    one_sided = int(par[P_ONE_SIDED])
-    free_side = int(par[P_FREE_SIDE])
+    thr = par[L.P_ALPHA] if par[L.P_LINEAR] != 0.0 else math.tan(par[L.P_ALPHA])
+    one_sided = int(par[L.P_ONE_SIDED])
+    free_side = int(par[L.P_FREE_SIDE])
     n = times.size
     tau, side = _uplift_in_interval(t, i, times, accel, pol, thr, one_sided, free_side)
     if side != 0:
@@ -483,33 +439,33 @@ def integrate(times, accel, pol, par, springs, alive, hist_th, hist_om, out_f, o
     q_om = np.empty(4)
     levels = np.empty(springs.shape[0] + 1)
     kinds = np.empty(springs.shape[0] + 1, dtype=np.int64)
-    out_f[O_MAX_A] = 0.0
-    out_f[O_THETA_MAX] = 0.0
-    out_f[O_THETA_MIN] = 0.0
-    out_f[O_MAX_OMEGA] = 0.0
-    out_f[O_T_OVERTURN] = np.nan
-    out_f[O_T_UPLIFT] = np.nan
-    for r in range(N_INT_OUT):
+    out_f[L.O_MAX_A] = 0.0
+    out_f[L.O_THETA_MAX] = 0.0
+    out_f[L.O_THETA_MIN] = 0.0
+    out_f[L.O_MAX_OMEGA] = 0.0
+    out_f[L.O_T_OVERTURN] = np.nan
+    out_f[L.O_T_UPLIFT] = np.nan
+    for r in range(L.N_INT_OUT):
         out_i[r] = 0
-    lin = par[P_LINEAR] != 0.0
-    max_events = int(par[P_MAX_EVENTS])
-    max_steps = int(par[P_MAX_STEPS])
+    lin = par[L.P_LINEAR] != 0.0
+    max_events = int(par[L.P_MAX_EVENTS])
+    max_steps = int(par[L.P_MAX_STEPS])
     t = times[0]
     i = 0
-    th = par[P_THETA0]
-    om = par[P_OMEGA0]
+    th = par[L.P_THETA0]
+    om = par[L.P_OMEGA0]
     s = _initial_side(th, om)
     f = 0.0
     h = times[1] - times[0]
     _store_rest(hist_th, hist_om, 0, 0)
     if s != 0:
-        out_f[O_T_UPLIFT] = t
-        _update_peak(s * th, s, out_f, spring_out, springs, alive, par[P_LINEAR] != 0.0)
+        out_f[L.O_T_UPLIFT] = t
+        _update_peak(s * th, s, out_f, spring_out, springs, alive, par[L.P_LINEAR] != 0.0)
         f = _stage_at(t, th, s, i, times, accel, pol, par, springs, alive)
         if hist_th.size > 1:
             hist_th[0] = th
             hist_om[0] = om
-    status = STATUS_COMPLETED
+    status = L.STATUS_COMPLETED
     lowest = _lowest_level(s, par, springs, alive)
     while i < n - 1:
         if s == 0:
@@ -523,14 +479,14 @@ def integrate(times, accel, pol, par, springs, alive, hist_th, hist_om, out_f, o
             s = side
             th = 0.0
             om = 0.0
-            out_i[I_UPLIFTS] += 1
-            if out_i[I_UPLIFTS] == 1:
-                out_f[O_T_UPLIFT] = tau
+            out_i[L.I_UPLIFTS] += 1
+            if out_i[L.I_UPLIFTS] == 1:
+                out_f[L.O_T_UPLIFT] = tau
             f = _stage_at(t, th, s, i, times, accel, pol, par, springs, alive)
             lowest = _lowest_level(s, par, springs, alive)
             continue
-        if out_i[I_STEPS] + out_i[I_REJECTED] >= max_steps:
-            status = STATUS_STEP_LIMIT
+        if out_i[L.I_STEPS] + out_i[L.I_REJECTED] >= max_steps:
+            status = L.STATUS_STEP_LIMIT
             break
         t_next = times[i + 1]
         gap = t_next - t
@@ -548,10 +504,10 @@ def integrate(times, accel, pol, par, springs, alive, hist_th, hist_om, out_f, o
         g0 = pol * accel[i] + gs * (t - times[i])
         th1, om1, f1, err = _dp5_step(th, om, f, h_try, s, g0, gs, par, springs, alive, k_th, k_om)
         if err > 1.0:
-            out_i[I_REJECTED] += 1
+            out_i[L.I_REJECTED] += 1
             h = h_try * max(MIN_FACTOR, SAFETY * err**ERROR_EXPONENT)
             continue
-        out_i[I_STEPS] += 1
+        out_i[L.I_STEPS] += 1
         if not (clipped and err <= KEEP_STEP_ERROR):
             h = h_try * (
                 MAX_FACTOR if err == 0.0 else min(MAX_FACTOR, SAFETY * err**ERROR_EXPONENT)
@@ -559,7 +515,7 @@ def integrate(times, accel, pol, par, springs, alive, hist_th, hist_om, out_f, o
         trend = _stage_trend(k_th, s)
         a1 = s * th1
         if (trend > 0 and a1 < lowest) or (trend < 0 and a1 > 0.0):
-            x_ev, kind, row = 2.0, EV_NONE, -1
+            x_ev, kind, row = 2.0, L.EV_NONE, -1
         else:
             _dense_coefficients(k_th, q_th)
             _dense_coefficients(k_om, q_om)
@@ -579,10 +535,10 @@ def integrate(times, accel, pol, par, springs, alive, hist_th, hist_om, out_f, o
                 levels,
                 kinds,
             )
-        if kind == EV_NONE:
+        if kind == L.EV_NONE:
             t = t_next if h_try == gap else t + h_try
             th, om, f = th1, om1, f1
-            out_f[O_MAX_OMEGA] = max(out_f[O_MAX_OMEGA], abs(om))
+            out_f[L.O_MAX_OMEGA] = max(out_f[L.O_MAX_OMEGA], abs(om))
             if t == t_next:
                 i += 1
                 if hist_th.size > 1:
@@ -592,41 +548,41 @@ def integrate(times, accel, pol, par, springs, alive, hist_th, hist_om, out_f, o
         t_ev = t + x_ev * h_try
         om_ev = _dense(x_ev, om, h_try, q_om)
         th_ev = _dense(x_ev, th, h_try, q_th)
-        out_f[O_MAX_OMEGA] = max(out_f[O_MAX_OMEGA], abs(om_ev))
+        out_f[L.O_MAX_OMEGA] = max(out_f[L.O_MAX_OMEGA], abs(om_ev))
         t = t_ev
-        if kind == EV_OVERTURN:
-            _update_peak(par[P_OVERTURN], s, out_f, spring_out, springs, alive, lin)
-            out_f[O_T_OVERTURN] = t_ev
-            th = s * par[P_OVERTURN]
+        if kind == L.EV_OVERTURN:
+            _update_peak(par[L.P_OVERTURN], s, out_f, spring_out, springs, alive, lin)
+            out_f[L.O_T_OVERTURN] = t_ev
+            th = s * par[L.P_OVERTURN]
             om = om_ev
-            status = STATUS_OVERTURNED
+            status = L.STATUS_OVERTURNED
             break
-        if kind == EV_FAIL:
+        if kind == L.EV_FAIL:
             _update_peak(s * th_ev, s, out_f, spring_out, springs, alive, lin)
             alive[row] = 0
             lowest = _lowest_level(s, par, springs, alive)
-            spring_out[row, S_T_FAIL] = t_ev
+            spring_out[row, L.S_T_FAIL] = t_ev
             th = th_ev
             om = om_ev
             f = _stage_at(t, th, s, i, times, accel, pol, par, springs, alive)
             continue
-        if kind == EV_SETTLE:
+        if kind == L.EV_SETTLE:
             th, om, s = 0.0, 0.0, 0
             continue
         # impact at θ = 0
-        out_i[I_IMPACTS] += 1
-        om, s = _after_impact(om_ev, s, par[P_E], int(par[P_ONE_SIDED]), par[P_REBOUND])
+        out_i[L.I_IMPACTS] += 1
+        om, s = _after_impact(om_ev, s, par[L.P_E], int(par[L.P_ONE_SIDED]), par[L.P_REBOUND])
         th = 0.0
-        if abs(om) < par[P_REST]:
+        if abs(om) < par[L.P_REST]:
             s = 0
             om = 0.0
-        elif out_i[I_IMPACTS] >= max_events:
-            status = STATUS_EVENT_LIMIT
+        elif out_i[L.I_IMPACTS] >= max_events:
+            status = L.STATUS_EVENT_LIMIT
             break
         else:
             f = _stage_at(t, th, s, i, times, accel, pol, par, springs, alive)
             lowest = _lowest_level(s, par, springs, alive)
-    if s != 0 and status != STATUS_OVERTURNED:
+    if s != 0 and status != L.STATUS_OVERTURNED:
         _update_peak(s * th, s, out_f, spring_out, springs, alive, lin)
-    out_f[O_T_END] = t
-    out_i[I_STATUS] = status
+    out_f[L.O_T_END] = t
+    out_i[L.I_STATUS] = status

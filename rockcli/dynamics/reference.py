@@ -20,44 +20,8 @@ import math
 import numpy as np
 from scipy.integrate import solve_ivp
 
+from rockcli.dynamics import layout as L
 from rockcli.dynamics import rules
-from rockcli.dynamics.layout import (
-    I_IMPACTS,
-    I_REJECTED,
-    I_STATUS,
-    I_STEPS,
-    I_UPLIFTS,
-    O_MAX_A,
-    O_MAX_OMEGA,
-    O_T_END,
-    O_T_OVERTURN,
-    O_T_UPLIFT,
-    O_THETA_MAX,
-    O_THETA_MIN,
-    P_ALPHA,
-    P_ATOL,
-    P_COS_ALPHA,
-    P_E,
-    P_FREE_SIDE,
-    P_INV_I0,
-    P_LINEAR,
-    P_MAX_EVENTS,
-    P_OMEGA0,
-    P_ONE_SIDED,
-    P_OVERTURN,
-    P_P2,
-    P_REBOUND,
-    P_REST,
-    P_RTOL,
-    P_SIN_ALPHA,
-    P_THETA0,
-    S_MAX_FORCE,
-    S_MAX_U,
-    S_T_FAIL,
-    STATUS_COMPLETED,
-    STATUS_EVENT_LIMIT,
-    STATUS_OVERTURNED,
-)
 
 #: First step after a restart at θ = 0 [s] (keeps the impact event off the start point).
 REFERENCE_FIRST_STEP = 1e-7
@@ -70,7 +34,7 @@ class _Phase:
         self.par = par
         self.springs = springs
         self.alive = alive
-        self.lin = bool(par[P_LINEAR])
+        self.lin = bool(par[L.P_LINEAR])
         self.s = 0
         self.th = 0.0
         self.om = 0.0
@@ -86,14 +50,14 @@ def _rhs(phase: _Phase, t0: float, g0: float, gs: float):  # type: ignore[no-unt
             phase.s * y[0],
             phase.s,
             ag,
-            par[P_ALPHA],
-            par[P_SIN_ALPHA],
-            par[P_COS_ALPHA],
-            par[P_P2],
+            par[L.P_ALPHA],
+            par[L.P_SIN_ALPHA],
+            par[L.P_COS_ALPHA],
+            par[L.P_P2],
             phase.lin,
             phase.springs,
             phase.alive,
-            par[P_INV_I0],
+            par[L.P_INV_I0],
         )
         return [y[1], acc]
 
@@ -111,7 +75,7 @@ def _events(phase: _Phase):  # type: ignore[no-untyped-def]
     impact.direction = -1  # type: ignore[attr-defined]
 
     def overturn(t: float, y: np.ndarray) -> float:
-        return s * y[0] - phase.par[P_OVERTURN]
+        return s * y[0] - phase.par[L.P_OVERTURN]
 
     overturn.terminal = True  # type: ignore[attr-defined]
     overturn.direction = 1  # type: ignore[attr-defined]
@@ -142,17 +106,17 @@ def _failure_event(s: int, a_fail: float):  # type: ignore[no-untyped-def]
 
 def _peak(phase: _Phase, a: float, out_f: np.ndarray, spring_out: np.ndarray) -> None:
     s = phase.s
-    out_f[O_MAX_A] = max(out_f[O_MAX_A], a)
+    out_f[L.O_MAX_A] = max(out_f[L.O_MAX_A], a)
     if s > 0:
-        out_f[O_THETA_MAX] = max(out_f[O_THETA_MAX], a)
+        out_f[L.O_THETA_MAX] = max(out_f[L.O_THETA_MAX], a)
     else:
-        out_f[O_THETA_MIN] = min(out_f[O_THETA_MIN], -a)
+        out_f[L.O_THETA_MIN] = min(out_f[L.O_THETA_MIN], -a)
     for j in range(phase.springs.shape[0]):
         k, _, _, _ = rules.spring_on_side(phase.springs, j, s)
         if phase.alive[j] and k != 0.0:
             u = rules.elongation_on_side(phase.springs, j, s, a, phase.lin)
-            spring_out[j, S_MAX_U] = max(spring_out[j, S_MAX_U], u)
-            spring_out[j, S_MAX_FORCE] = max(spring_out[j, S_MAX_FORCE], k * u)
+            spring_out[j, L.S_MAX_U] = max(spring_out[j, L.S_MAX_U], u)
+            spring_out[j, L.S_MAX_FORCE] = max(spring_out[j, L.S_MAX_FORCE], k * u)
 
 
 def _solve(phase: _Phase, t: float, t1: float, g0: float, gs: float):  # type: ignore[no-untyped-def]
@@ -163,8 +127,8 @@ def _solve(phase: _Phase, t: float, t1: float, g0: float, gs: float):  # type: i
         (t, t1),
         [phase.th, phase.om],
         method="DOP853",
-        rtol=phase.par[P_RTOL],
-        atol=phase.par[P_ATOL],
+        rtol=phase.par[L.P_RTOL],
+        atol=phase.par[L.P_ATOL],
         events=events,
         first_step=first,
     )
@@ -191,26 +155,26 @@ def _interval(phase, i, times, accel, pol, out_f, out_i, spring_out):  # type: i
     t = times[i]
     t1 = times[i + 1]
     gs = pol * (accel[i + 1] - accel[i]) / (t1 - t)
-    thr = par[P_ALPHA] if phase.lin else math.tan(par[P_ALPHA])
+    thr = par[L.P_ALPHA] if phase.lin else math.tan(par[L.P_ALPHA])
     while t1 - t > 1e-12 * (abs(t1) + 1.0):
         if phase.s == 0:
             tau, side = rules.uplift_in_interval(
-                t, i, times, accel, pol, thr, int(par[P_ONE_SIDED]), int(par[P_FREE_SIDE])
+                t, i, times, accel, pol, thr, int(par[L.P_ONE_SIDED]), int(par[L.P_FREE_SIDE])
             )
             if side == 0:
                 return None
             phase.s, phase.th, phase.om, phase.restart = side, 0.0, 0.0, True
-            out_i[I_UPLIFTS] += 1
-            if out_i[I_UPLIFTS] == 1:
-                out_f[O_T_UPLIFT] = tau
+            out_i[L.I_UPLIFTS] += 1
+            if out_i[L.I_UPLIFTS] == 1:
+                out_f[L.O_T_UPLIFT] = tau
             t = tau
             continue
         g0 = rules.ground_acceleration(t, i, times, accel, pol)
         sol, rows = _solve(phase, t, t1, g0, gs)
-        out_i[I_STEPS] += sol.nfev // 12
+        out_i[L.I_STEPS] += sol.nfev // 12
         for y in sol.y_events[2]:
             _peak(phase, phase.s * y[0], out_f, spring_out)
-        out_f[O_MAX_OMEGA] = max(out_f[O_MAX_OMEGA], float(np.max(np.abs(sol.y[1]))))
+        out_f[L.O_MAX_OMEGA] = max(out_f[L.O_MAX_OMEGA], float(np.max(np.abs(sol.y[1]))))
         hit = _first_terminal(sol, rows)
         if hit is None:
             phase.th, phase.om = float(sol.y[0, -1]), float(sol.y[1, -1])
@@ -226,26 +190,26 @@ def _interval(phase, i, times, accel, pol, out_f, out_i, spring_out):  # type: i
 def _apply_event(phase, t, y, kind, row, out_f, out_i, spring_out):  # type: ignore[no-untyped-def]
     par = phase.par
     if kind == 1:  # overturning
-        _peak(phase, par[P_OVERTURN], out_f, spring_out)
-        out_f[O_T_OVERTURN] = t
-        out_f[O_T_END] = t
-        return STATUS_OVERTURNED
+        _peak(phase, par[L.P_OVERTURN], out_f, spring_out)
+        out_f[L.O_T_OVERTURN] = t
+        out_f[L.O_T_END] = t
+        return L.STATUS_OVERTURNED
     if kind >= 3:  # restrainer failure
         _peak(phase, phase.s * y[0], out_f, spring_out)
         phase.alive[row] = 0
-        spring_out[row, S_T_FAIL] = t
+        spring_out[row, L.S_T_FAIL] = t
         phase.th, phase.om, phase.restart = float(y[0]), float(y[1]), True
         return None
-    out_i[I_IMPACTS] += 1
+    out_i[L.I_IMPACTS] += 1
     om, s = rules.velocity_after_impact(
-        float(y[1]), phase.s, par[P_E], int(par[P_ONE_SIDED]), par[P_REBOUND]
+        float(y[1]), phase.s, par[L.P_E], int(par[L.P_ONE_SIDED]), par[L.P_REBOUND]
     )
     phase.th, phase.om, phase.s, phase.restart = 0.0, om, s, True
-    if abs(om) < par[P_REST]:
+    if abs(om) < par[L.P_REST]:
         phase.s, phase.om = 0, 0.0
-    elif out_i[I_IMPACTS] >= int(par[P_MAX_EVENTS]):
-        out_f[O_T_END] = t
-        return STATUS_EVENT_LIMIT
+    elif out_i[L.I_IMPACTS] >= int(par[L.P_MAX_EVENTS]):
+        out_f[L.O_T_END] = t
+        return L.STATUS_EVENT_LIMIT
     return None
 
 
@@ -255,25 +219,25 @@ def integrate_reference(
     """Same contract as :func:`rockcli.dynamics.kernel.integrate` (arrays filled in place)."""
     phase = _Phase(par, springs, alive)
     out_f[:] = 0.0
-    out_f[O_T_OVERTURN] = math.nan
-    out_f[O_T_UPLIFT] = math.nan
+    out_f[L.O_T_OVERTURN] = math.nan
+    out_f[L.O_T_UPLIFT] = math.nan
     out_i[:] = 0
-    th0, om0 = par[P_THETA0], par[P_OMEGA0]
+    th0, om0 = par[L.P_THETA0], par[L.P_OMEGA0]
     if th0 != 0.0 or om0 != 0.0:
         phase.s = int(math.copysign(1, th0 if th0 != 0.0 else om0))
         phase.th, phase.om = th0, om0
-        out_f[O_T_UPLIFT] = times[0]
+        out_f[L.O_T_UPLIFT] = times[0]
         _peak(phase, phase.s * th0, out_f, spring_out)
     _store(hist_th, hist_om, 0, phase)
-    out_i[I_STATUS] = STATUS_COMPLETED
-    out_f[O_T_END] = times[-1]
+    out_i[L.I_STATUS] = L.STATUS_COMPLETED
+    out_f[L.O_T_END] = times[-1]
     for i in range(times.size - 1):
         status = _interval(phase, i, times, accel, pol, out_f, out_i, spring_out)
         if status is not None:
-            out_i[I_STATUS] = status
+            out_i[L.I_STATUS] = status
             return
         _store(hist_th, hist_om, i + 1, phase)
-    out_i[I_REJECTED] = 0
+    out_i[L.I_REJECTED] = 0
 
 
 def _store(hist_th: np.ndarray, hist_om: np.ndarray, i: int, phase: _Phase) -> None:

@@ -11,49 +11,8 @@ import math
 
 import numpy as np
 
+from rockcli.dynamics import layout as L
 from rockcli.dynamics import rules
-
-# Kernel layouts, duplicated here as plain ints so that packing does not import numba.
-from rockcli.dynamics.layout import (  # noqa: I001
-    I_IMPACTS,
-    I_REJECTED,
-    I_STATUS,
-    I_STEPS,
-    I_UPLIFTS,
-    N_FLOAT_OUT,
-    N_INT_OUT,
-    N_PARAMS,
-    N_SPRING_OUT,
-    O_MAX_A,
-    O_MAX_OMEGA,
-    O_T_END,
-    O_T_OVERTURN,
-    O_T_UPLIFT,
-    O_THETA_MAX,
-    O_THETA_MIN,
-    P_ALPHA,
-    P_ATOL,
-    P_COS_ALPHA,
-    P_E,
-    P_FREE_SIDE,
-    P_INV_I0,
-    P_LINEAR,
-    P_MAX_EVENTS,
-    P_MAX_STEPS,
-    P_OMEGA0,
-    P_ONE_SIDED,
-    P_OVERTURN,
-    P_P2,
-    P_REBOUND,
-    P_REST,
-    P_RTOL,
-    P_SIN_ALPHA,
-    P_THETA0,
-    S_MAX_FORCE,
-    S_MAX_U,
-    S_T_FAIL,
-    STATUS_NAMES,
-)
 from rockcli.dynamics.result import (
     Assessment,
     History,
@@ -79,23 +38,23 @@ def extend_with_tail(
 
 def pack_parameters(block: Block, settings: SolverSettings, rtol: float, atol: float) -> np.ndarray:
     """The kernel's parameter vector (layout P_* in layout.py)."""
-    par = np.zeros(N_PARAMS)
-    par[P_ALPHA] = block.alpha
-    par[P_SIN_ALPHA] = math.sin(block.alpha)
-    par[P_COS_ALPHA] = math.cos(block.alpha)
-    par[P_P2] = block.p2
-    par[P_E] = block.e
-    par[P_ONE_SIDED] = 1.0 if block.one_sided else 0.0
-    par[P_FREE_SIDE] = float(block.free_side)
-    par[P_REBOUND] = block.rebound
-    par[P_LINEAR] = 1.0 if block.linearized else 0.0
-    par[P_OVERTURN] = settings.overturn_angle
-    par[P_RTOL] = rtol
-    par[P_ATOL] = atol
-    par[P_REST] = settings.rest_velocity
-    par[P_INV_I0] = 1.0 / block.inertia if block.mass is not None else 0.0
-    par[P_MAX_EVENTS] = float(settings.max_events)
-    par[P_MAX_STEPS] = float(settings.max_steps)
+    par = np.zeros(L.N_PARAMS)
+    par[L.P_ALPHA] = block.alpha
+    par[L.P_SIN_ALPHA] = math.sin(block.alpha)
+    par[L.P_COS_ALPHA] = math.cos(block.alpha)
+    par[L.P_P2] = block.p2
+    par[L.P_E] = block.e
+    par[L.P_ONE_SIDED] = 1.0 if block.one_sided else 0.0
+    par[L.P_FREE_SIDE] = float(block.free_side)
+    par[L.P_REBOUND] = block.rebound
+    par[L.P_LINEAR] = 1.0 if block.linearized else 0.0
+    par[L.P_OVERTURN] = settings.overturn_angle
+    par[L.P_RTOL] = rtol
+    par[L.P_ATOL] = atol
+    par[L.P_REST] = settings.rest_velocity
+    par[L.P_INV_I0] = 1.0 / block.inertia if block.mass is not None else 0.0
+    par[L.P_MAX_EVENTS] = float(settings.max_events)
+    par[L.P_MAX_STEPS] = float(settings.max_steps)
     return par
 
 
@@ -162,21 +121,21 @@ def simulate(
 
         rtol, atol = settings.rtol, settings.atol
     par = pack_parameters(block, settings, rtol, atol)
-    par[P_THETA0] = theta0
-    par[P_OMEGA0] = omega0
+    par[L.P_THETA0] = theta0
+    par[L.P_OMEGA0] = omega0
     springs = pack_springs(block)
     alive = np.ones(len(block.restrainers), dtype=np.int64)
     n_hist = times.size if history else 1
     hist_th = np.full(n_hist, np.nan)
     hist_om = np.full(n_hist, np.nan)
-    out_f = np.zeros(N_FLOAT_OUT)
-    out_i = np.zeros(N_INT_OUT, dtype=np.int64)
-    spring_out = np.zeros((len(block.restrainers), N_SPRING_OUT))
-    spring_out[:, S_T_FAIL] = np.nan
+    out_f = np.zeros(L.N_FLOAT_OUT)
+    out_i = np.zeros(L.N_INT_OUT, dtype=np.int64)
+    spring_out = np.zeros((len(block.restrainers), L.N_SPRING_OUT))
+    spring_out[:, L.S_T_FAIL] = np.nan
     run(
         times, acc, float(polarity), par, springs, alive, hist_th, hist_om, out_f, out_i, spring_out
     )
-    hist = _history(times, hist_th, hist_om, out_f[O_T_END]) if history else None
+    hist = _history(times, hist_th, hist_om, out_f[L.O_T_END]) if history else None
     return _unpack(block, settings, engine, rtol, atol, polarity, out_f, out_i, spring_out, hist)
 
 
@@ -198,13 +157,13 @@ def _optional(x: float) -> float | None:
 def _unpack(
     block, settings, engine, rtol, atol, polarity, out_f, out_i, spring_out, hist
 ) -> RockingRun:  # type: ignore[no-untyped-def]
-    status = RunStatus(STATUS_NAMES[int(out_i[I_STATUS])])
+    status = RunStatus(L.STATUS_NAMES[int(out_i[L.I_STATUS])])
     peaks = tuple(
         RestrainerPeak(
             name=sp.name,
-            max_displacement=float(spring_out[j, S_MAX_U]),
-            max_force=float(spring_out[j, S_MAX_FORCE]),
-            t_fail=_optional(spring_out[j, S_T_FAIL]),
+            max_displacement=float(spring_out[j, L.S_MAX_U]),
+            max_force=float(spring_out[j, L.S_MAX_FORCE]),
+            t_fail=_optional(spring_out[j, L.S_T_FAIL]),
         )
         for j, sp in enumerate(block.restrainers)
     )
@@ -212,17 +171,17 @@ def _unpack(
         polarity=polarity,
         status=status,
         message=_message(status, out_f),
-        max_ratio=float(out_f[O_MAX_A] / block.alpha),
-        theta_max=float(out_f[O_THETA_MAX]),
-        theta_min=float(out_f[O_THETA_MIN]),
-        max_velocity=float(out_f[O_MAX_OMEGA]),
-        t_overturn=_optional(out_f[O_T_OVERTURN]),
-        t_uplift=_optional(out_f[O_T_UPLIFT]),
-        impacts=int(out_i[I_IMPACTS]),
-        uplifts=int(out_i[I_UPLIFTS]),
-        steps=int(out_i[I_STEPS]),
-        rejected=int(out_i[I_REJECTED]),
-        t_end=float(out_f[O_T_END]),
+        max_ratio=float(out_f[L.O_MAX_A] / block.alpha),
+        theta_max=float(out_f[L.O_THETA_MAX]),
+        theta_min=float(out_f[L.O_THETA_MIN]),
+        max_velocity=float(out_f[L.O_MAX_OMEGA]),
+        t_overturn=_optional(out_f[L.O_T_OVERTURN]),
+        t_uplift=_optional(out_f[L.O_T_UPLIFT]),
+        impacts=int(out_i[L.I_IMPACTS]),
+        uplifts=int(out_i[L.I_UPLIFTS]),
+        steps=int(out_i[L.I_STEPS]),
+        rejected=int(out_i[L.I_REJECTED]),
+        t_end=float(out_f[L.O_T_END]),
         engine=str(engine),
         rtol=rtol,
         atol=atol,
@@ -235,14 +194,14 @@ def _unpack(
 
 def _message(status: RunStatus, out_f: np.ndarray) -> str:
     if status is RunStatus.OVERTURNED:
-        return f"overturned at t = {out_f[O_T_OVERTURN]:.3f} s"
+        return f"overturned at t = {out_f[L.O_T_OVERTURN]:.3f} s"
     if status is RunStatus.COMPLETED:
-        if math.isnan(out_f[O_T_UPLIFT]):
+        if math.isnan(out_f[L.O_T_UPLIFT]):
             return "never uplifted"
         return "survived"
     if status is RunStatus.EVENT_LIMIT:
-        return f"stopped at t = {out_f[O_T_END]:.3f} s: too many impacts (raise max_events)"
-    return f"stopped at t = {out_f[O_T_END]:.3f} s: too many steps (raise max_steps)"
+        return f"stopped at t = {out_f[L.O_T_END]:.3f} s: too many impacts (raise max_events)"
+    return f"stopped at t = {out_f[L.O_T_END]:.3f} s: too many steps (raise max_steps)"
 
 
 def _with_warnings(run: RockingRun) -> RockingRun:

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import dataclasses
 from typing import Any
 
 from rockcli.dynamics.result import RockingRun
@@ -10,14 +11,8 @@ from rockcli.records.record import Record
 
 
 def settings_from(options: Any) -> SolverSettings:
-    """SolverSettings from the model's [analysis] options (model.derive.AnalysisOptions)."""
-    return SolverSettings(
-        rtol=options.rtol,
-        atol=options.atol,
-        rest_velocity=options.rest_velocity,
-        overturn_angle=options.overturn_angle,
-        tail=options.tail,
-    )
+    """SolverSettings from the model's [analysis] options (same field names by design)."""
+    return SolverSettings(**dataclasses.asdict(options))
 
 
 def run_assessment(
