@@ -61,6 +61,12 @@ INLINE = "always"
 #: With a clipped step, the controller keeps its step unless the error asks to shrink it:
 #: SAFETY·err^(−1/5) ≥ 1 ⇔ err ≤ SAFETY⁵ (saves the power on most steps).
 KEEP_STEP_ERROR = 0.9**5
+#: A step that starts at θ = 0 and whose first sub-sample is already back at θ ≤ 0 without a
+#: resolvable turning point is retried with the step shrunk by UNRESOLVED_FACTOR, down to
+#: UNRESOLVED_MIN_STEP [s]; below that the excursion is taken as none (rest) and the uplift
+#: search resumes after it (tests/dynamics/test_uplift.py: uplift while |üg| > tan α for 0.1 ms).
+UNRESOLVED_FACTOR = 0.125
+UNRESOLVED_MIN_STEP = 1e-9
 #: Sub-samples of each accepted step scanned for level crossings and turning points.
 SCAN_POINTS = 8
 #: Interior points where θ̇ is probed to accept a step as monotone (fast path of the scan).
@@ -349,7 +355,7 @@ def _scan_sampled(
             if a_prev <= 0.0:
                 x_left = _turning_point(om0, h, q_om, s, x_prev, x)
                 if x_left < 0.0 or s * _dense(x_left, th0, h, q_th) <= 0.0:
-                    return x_prev, L.EV_SETTLE, -1  # excursion below resolution: at rest
+                    return x_prev, L.EV_UNRESOLVED, -1  # excursion shorter than a sample
             x_best = _root(th0, h, q_th, 0.0, s, x_left, x)
             kind = L.EV_IMPACT
         for m in range(n_levels):
@@ -507,11 +513,6 @@ def integrate(times, accel, pol, par, springs, alive, hist_th, hist_om, out_f, o
             out_i[L.I_REJECTED] += 1
             h = h_try * max(MIN_FACTOR, SAFETY * err**ERROR_EXPONENT)
             continue
-        out_i[L.I_STEPS] += 1
-        if not (clipped and err <= KEEP_STEP_ERROR):
-            h = h_try * (
-                MAX_FACTOR if err == 0.0 else min(MAX_FACTOR, SAFETY * err**ERROR_EXPONENT)
-            )
         trend = _stage_trend(k_th, s)
         a1 = s * th1
         if (trend > 0 and a1 < lowest) or (trend < 0 and a1 > 0.0):
@@ -534,6 +535,15 @@ def integrate(times, accel, pol, par, springs, alive, hist_th, hist_om, out_f, o
                 spring_out,
                 levels,
                 kinds,
+            )
+        if kind == L.EV_UNRESOLVED and h_try > UNRESOLVED_MIN_STEP:
+            out_i[L.I_REJECTED] += 1
+            h = h_try * UNRESOLVED_FACTOR
+            continue
+        out_i[L.I_STEPS] += 1
+        if not (clipped and err <= KEEP_STEP_ERROR):
+            h = h_try * (
+                MAX_FACTOR if err == 0.0 else min(MAX_FACTOR, SAFETY * err**ERROR_EXPONENT)
             )
         if kind == L.EV_NONE:
             t = t_next if h_try == gap else t + h_try
@@ -566,8 +576,11 @@ def integrate(times, accel, pol, par, springs, alive, hist_th, hist_om, out_f, o
             om = om_ev
             f = _stage_at(t, th, s, i, times, accel, pol, par, springs, alive)
             continue
-        if kind == L.EV_SETTLE:
+        if kind == L.EV_UNRESOLVED:
+            # An excursion shorter than UNRESOLVED_MIN_STEP: rest, and look for the next uplift
+            # after it, so that the run always moves on.
             th, om, s = 0.0, 0.0, 0
+            t = min(t + UNRESOLVED_MIN_STEP, t_next)
             continue
         # impact at θ = 0
         out_i[L.I_IMPACTS] += 1
