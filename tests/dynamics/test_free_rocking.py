@@ -17,15 +17,15 @@ How the amplitudes are read:
   (the run ends at the second impact; `theta_max` is θ0 itself);
 - the later amplitudes come from the history: the extreme sample of each half-cycle (runs of
   samples with the same sign of θ) refined by the vertex of the parabola through it and its two
-  neighbours. With dt = 1e-3 s that vertex is off by O(dt⁴·p⁴·α) ≈ 1e-12 rad, far below the
-  tolerance;
+  neighbours. d³θ/dt³ = p² cos(α − θ)·θ̇ vanishes at the peak, so that vertex is off by
+  O(dt⁴·p⁴·α) ≈ 1e-11 rad for dt = 1e-3 s, far below the tolerance;
 - an impact time is `t_end` of a run stopped by `max_events = k`: the run ends at the k-th
   impact (rockcli.dynamics.kernel.integrate: status EVENT_LIMIT at the event time).
 
 Tolerances: the closed forms are exact for the equation the engine integrates (the linearized
 ones for the linearized equation), so the only error is the integrator's, bounded by the default
-rtol = atol = 1e-8; 1e-6 relative (the brief's criterion) leaves a factor 100 for the error
-growth over a few half-cycles. Event times: 1e-7 relative, rtol × a condition factor ≤ 10
+rtol = atol = 1e-8; 1e-6 relative leaves a factor 100 for the error growth over a few
+half-cycles. Event times: 1e-7 relative, rtol × a condition factor ≤ 10
 (δt ≈ δθ/|θ̇| at impact for these φ0 ≤ 0.9).
 """
 
@@ -36,7 +36,7 @@ import math
 import numpy as np
 import pytest
 
-from rockcli.dynamics.result import RunStatus
+from rockcli.dynamics.result import RockingRun, RunStatus
 from rockcli.dynamics.settings import SolverSettings
 from rockcli.dynamics.simulate import simulate
 from rockcli.mechanics import Block, housner_restitution
@@ -56,8 +56,15 @@ def quiet_record(dt: float = 0.01) -> tuple[np.ndarray, np.ndarray, float]:
     return np.array([0.0, dt]), np.zeros(2), dt
 
 
-def release(block: Block, theta0: float, *, tail: float, dt: float = 0.01, history: bool = False,
-            max_events: int = 1_000_000):  # type: ignore[no-untyped-def]
+def release(
+    block: Block,
+    theta0: float,
+    *,
+    tail: float,
+    dt: float = 0.01,
+    history: bool = False,
+    max_events: int = 1_000_000,
+) -> RockingRun:
     """Free rocking from rest at θ0 for `tail` seconds (no ground motion)."""
     time, accel, dt = quiet_record(dt)
     settings = SolverSettings(tail=tail, max_events=max_events)
@@ -182,3 +189,88 @@ def test_linearized_amplitude_after_n_impacts(phi0: float, e: float) -> None:
     assert len(peaks) >= 4, f"only {len(peaks)} complete half-cycles in the history"
     expected = [alpha * linear_amplitude_ratio(phi0, e, n) for n in range(1, 5)]
     assert peaks[:4] == pytest.approx(expected, rel=AMPLITUDE_RTOL)
+
+
+@pytest.mark.parametrize("sign", [1, -1])
+def test_release_on_the_negative_side_is_the_mirror(sign: int) -> None:
+    """Released at ±θ0: the first rebound has the same amplitude on the other side."""
+    alpha = 0.2
+    block = Block(R=R_TEST, alpha=alpha, e=housner_restitution(alpha))
+    theta0 = 0.5 * alpha
+    run = release(block, sign * theta0, tail=20.0, max_events=2)
+    first_rebound = -run.theta_min if sign > 0 else run.theta_max
+    assert first_rebound == pytest.approx(
+        nonlinear_amplitude(alpha, theta0, block.e, 1), rel=AMPLITUDE_RTOL
+    )
+
+
+@pytest.mark.parametrize("sign", [1, -1])
+def test_start_from_the_ground_with_a_velocity(sign: int) -> None:
+    """From θ = 0 with θ̇0: it rocks to the side of θ̇0 up to cos(α − θ1) − cos α = θ̇0²/(2p²)."""
+    alpha, omega0 = 0.2, 0.3
+    block = Block(R=R_TEST, alpha=alpha, e=1.0)
+    time, accel, dt = quiet_record()
+    run = simulate(
+        block,
+        time,
+        accel,
+        dt,
+        omega0=sign * omega0,
+        settings=SolverSettings(tail=20.0, max_events=1),
+    )
+    expected = alpha - math.acos(math.cos(alpha) + omega0**2 / (2.0 * block.p2))
+    reached = run.theta_max if sign > 0 else -run.theta_min
+    untouched = run.theta_min if sign > 0 else run.theta_max
+    assert reached == pytest.approx(expected, rel=AMPLITUDE_RTOL)
+    assert untouched == 0.0
+    assert run.max_velocity == pytest.approx(omega0, rel=AMPLITUDE_RTOL)  # energy: back at θ = 0
+
+
+def test_one_sided_rebound_recursion() -> None:
+    """One-sided: θ̇⁺ = −r_f·e·θ̇⁻ about the same pivot: the recursion with (r_f·e)² (rocking.md)."""
+    alpha = 0.2
+    block = Block(R=R_TEST, alpha=alpha, e=0.9, one_sided=True, free_side=1, rebound=0.8)
+    theta0 = 0.5 * alpha
+    run = release(block, theta0, tail=5.0, dt=HISTORY_DT, history=True)
+    assert run.theta_min == 0.0  # never on the stopped side
+    assert run.history is not None
+    # Every half-cycle is on the free side: split the history at the impacts (θ = 0 samples are
+    # rare), i.e. at the local minima of θ; the peaks between them are the amplitudes.
+    theta = run.history.theta
+    minima = np.flatnonzero((theta[1:-1] < theta[:-2]) & (theta[1:-1] <= theta[2:])) + 1
+    pieces = np.split(theta, minima)[1:-1]  # skip the release and the cut end
+    peaks = [half_cycle_amplitudes(run.history.time, piece)[0] for piece in pieces[:4]]
+    rf_e = block.rebound * block.e
+    expected = [nonlinear_amplitude(alpha, theta0, rf_e, n) for n in range(1, 5)]
+    assert peaks == pytest.approx(expected, rel=AMPLITUDE_RTOL)
+
+
+def test_zero_restitution_stops_at_the_first_impact() -> None:
+    """e = 0 (Housner e ≤ 0 for α ≥ 54.74°): no rocking after the first impact (rocking.md)."""
+    block = Block(R=R_TEST, alpha=0.2, e=0.0)
+    run = release(block, 0.1, tail=5.0)
+    assert run.impacts == 1
+    assert run.theta_min == 0.0 and run.theta_max == 0.1
+
+
+@pytest.mark.parametrize(("factor", "overturns"), [(1 - 1e-3, False), (1 + 1e-3, True)])
+def test_static_stability_limit_is_alpha(factor: float, overturns: bool) -> None:
+    """Non-linear, from rest: θ0 < α falls back, θ0 > α falls over (at θ = α the CG is above O)."""
+    alpha = 0.2
+    block = Block(R=R_TEST, alpha=alpha, e=1.0)
+    run = release(block, factor * alpha, tail=20.0)
+    assert run.overturned is overturns
+    if overturns:
+        assert run.max_ratio == pytest.approx(math.pi / 2 / alpha, rel=1e-15)  # stops at π/2
+        assert run.impacts == 0
+
+
+def test_linearized_overturning_time() -> None:
+    """From θ0 = 1.1α, θ = α + (θ0 − α) cosh(pt) reaches π/2 at arccosh((π/2 − α)/(θ0 − α))/p."""
+    alpha = 0.2
+    block = Block(R=R_TEST, alpha=alpha, e=1.0, linearized=True)
+    theta0 = 1.1 * alpha
+    run = release(block, theta0, tail=10.0)
+    assert run.overturned
+    expected = math.acosh((math.pi / 2 - alpha) / (theta0 - alpha)) / block.p
+    assert run.t_overturn == pytest.approx(expected, rel=TIME_RTOL)

@@ -66,11 +66,15 @@ def linear_block(R: float, e: float = 0.9) -> Block:
 
 @pytest.mark.parametrize("overturn_angle", [math.pi / 2, ALPHA], ids=["pi/2", "alpha"])
 @pytest.mark.parametrize(("R", "p_t1"), CASES)
-def test_pulse_just_above_the_threshold_overturns(R: float, p_t1: float, overturn_angle: float) -> None:
+def test_pulse_just_above_the_threshold_overturns(
+    R: float, p_t1: float, overturn_angle: float
+) -> None:
     block = linear_block(R)
     t1 = p_t1 / block.p
     a = JUST_ABOVE * housner_threshold(ALPHA, p_t1)
-    run = simulate(block, *rectangular_pulse(a, t1), settings=SolverSettings(overturn_angle=overturn_angle))
+    run = simulate(
+        block, *rectangular_pulse(a, t1), settings=SolverSettings(overturn_angle=overturn_angle)
+    )
     assert run.overturned
     assert run.t_overturn is not None and run.t_overturn > t1  # past α only after the pulse
     assert run.impacts == 0
@@ -78,12 +82,16 @@ def test_pulse_just_above_the_threshold_overturns(R: float, p_t1: float, overtur
 
 @pytest.mark.parametrize("overturn_angle", [math.pi / 2, ALPHA], ids=["pi/2", "alpha"])
 @pytest.mark.parametrize(("R", "p_t1"), CASES)
-def test_pulse_just_below_the_threshold_survives(R: float, p_t1: float, overturn_angle: float) -> None:
+def test_pulse_just_below_the_threshold_survives(
+    R: float, p_t1: float, overturn_angle: float
+) -> None:
     block = linear_block(R)
     t1 = p_t1 / block.p
     a = JUST_BELOW * housner_threshold(ALPHA, p_t1)
     assert a > ALPHA, "the pulse must exceed the linearized uplift threshold α to rock at all"
-    run = simulate(block, *rectangular_pulse(a, t1), settings=SolverSettings(overturn_angle=overturn_angle))
+    run = simulate(
+        block, *rectangular_pulse(a, t1), settings=SolverSettings(overturn_angle=overturn_angle)
+    )
     assert not run.overturned
     assert run.t_uplift == 0.0
     assert 0.0 < run.max_ratio < 1.0

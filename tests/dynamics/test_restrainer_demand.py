@@ -21,6 +21,7 @@ import math
 import numpy as np
 import pytest
 
+from rockcli.dynamics.result import RockingRun
 from rockcli.dynamics.simulate import simulate
 from rockcli.mechanics import (
     Block,
@@ -40,7 +41,9 @@ M_FACADE = W_FACADE / G
 SAME_FORMULA_RTOL = 1e-12
 
 
-def sine_pulse(amplitude: float, period: float, dt: float = 0.01) -> tuple[np.ndarray, np.ndarray, float]:
+def sine_pulse(
+    amplitude: float, period: float, dt: float = 0.01
+) -> tuple[np.ndarray, np.ndarray, float]:
     """One full sine cycle of `amplitude` [g] and `period` [s], sampled at dt."""
     time = np.arange(int(round(period / dt)) + 1) * dt
     return time, amplitude * np.sin(2.0 * np.pi * time / period), dt
@@ -48,8 +51,13 @@ def sine_pulse(amplitude: float, period: float, dt: float = 0.01) -> tuple[np.nd
 
 def facade(*restrainers: Restrainer, linearized: bool = False) -> Block:
     return Block(
-        R=R_FACADE, alpha=ALPHA_FACADE, mass=M_FACADE, g=G, e=housner_restitution(ALPHA_FACADE),
-        linearized=linearized, restrainers=restrainers,
+        R=R_FACADE,
+        alpha=ALPHA_FACADE,
+        mass=M_FACADE,
+        g=G,
+        e=housner_restitution(ALPHA_FACADE),
+        linearized=linearized,
+        restrainers=restrainers,
     )
 
 
@@ -60,7 +68,7 @@ def top_spring(k_pos: float, k_neg: float | None = None, fails_at: float = math.
     return Restrainer("top", k_pos, k_neg, r, phi, r, phi, fails_at)
 
 
-def expected_demand(block: Block, run) -> tuple[float, float]:  # type: ignore[no-untyped-def]
+def expected_demand(block: Block, run: RockingRun) -> tuple[float, float]:
     """(peak u [m], peak K·u [N]) of the block's only restrainer from the run's signed extremes."""
     spring = block.restrainers[0]
     sides = [

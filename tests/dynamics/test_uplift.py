@@ -18,7 +18,8 @@ import math
 import numpy as np
 import pytest
 
-from rockcli.dynamics.settings import SolverSettings
+from rockcli.dynamics.result import RunStatus
+from rockcli.dynamics.settings import Engine, SolverSettings
 from rockcli.dynamics.simulate import simulate
 from rockcli.mechanics import Block, Restrainer, housner_restitution
 
@@ -53,10 +54,17 @@ BLOCKS = {
     "free": Block(R=R_BLOCK, alpha=ALPHA, e=housner_restitution(ALPHA)),
     "linearized": Block(R=R_BLOCK, alpha=ALPHA, e=housner_restitution(ALPHA), linearized=True),
     "restrained": Block(
-        R=R_BLOCK, alpha=ALPHA, mass=1.0e4, e=housner_restitution(ALPHA), restrainers=(top_spring(1e7),)
+        R=R_BLOCK,
+        alpha=ALPHA,
+        mass=1.0e4,
+        e=housner_restitution(ALPHA),
+        restrainers=(top_spring(1e7),),
     ),
     "one-way spring": Block(
-        R=R_BLOCK, alpha=ALPHA, mass=1.0e4, e=housner_restitution(ALPHA),
+        R=R_BLOCK,
+        alpha=ALPHA,
+        mass=1.0e4,
+        e=housner_restitution(ALPHA),
         restrainers=(top_spring(1e7, k_neg=0.0),),
     ),
 }
@@ -134,8 +142,12 @@ def test_one_sample_spike_is_never_skipped(sign: int) -> None:
 def test_one_sided_block_uplifts_only_towards_the_free_side(free_side: int) -> None:
     """One-sided: 1.001·tan α towards the free side uplifts; 3·tan α towards the walls does not."""
     block = Block(
-        R=R_BLOCK, alpha=ALPHA, e=housner_restitution(ALPHA), one_sided=True,
-        free_side=free_side, rebound=0.9,
+        R=R_BLOCK,
+        alpha=ALPHA,
+        e=housner_restitution(ALPHA),
+        one_sided=True,
+        free_side=free_side,
+        rebound=0.9,
     )
     towards_free = simulate(block, *constant(free_side * ABOVE * math.tan(ALPHA)))
     assert towards_free.t_uplift == 0.0
@@ -146,3 +158,55 @@ def test_one_sided_block_uplifts_only_towards_the_free_side(free_side: int) -> N
     towards_walls = simulate(block, *constant(-free_side * 3.0 * math.tan(ALPHA)))
     assert towards_walls.t_uplift is None
     assert towards_walls.max_ratio == 0.0
+
+
+# --- uplift from rest while |üg| already exceeds the threshold ----------------------------------
+#
+# The block can be at rest while the ground acceleration already exceeds tan α: at the start of
+# a record whose first sample does, or right after the rest rule stops it (rocking.md, "Rest":
+# "then wait for the next uplift"). It must uplift at once, and when |üg| drops back below tan α
+# a fraction of a millisecond later, make a tiny excursion, come back to rest and go on with the
+# record. Budget: these runs need a few hundred steps (the reference engine: one uplift); a
+# budget of 1e5 steps (STEP_BUDGET) makes a zero-progress loop fail in milliseconds instead of
+# burning the default 5e7 steps (≈ 20 s).
+
+STEP_BUDGET = 100_000
+#: Bound on the excursion: |üg| exceeds tan α by ≤ 1 % for ≤ 0.5 ms, so
+#: θ ≤ ½·p²·(0.01 tan α)·(5e-4 s)² ≈ 2e-9 rad ≈ 1e-8 α; 1e-6 α is a generous bound.
+TINY_RATIO = 1e-6
+
+
+@pytest.mark.parametrize("engine", [Engine.FAST, Engine.REFERENCE])
+def test_record_starting_just_above_the_threshold(engine: Engine) -> None:
+    """üg(0) = 1.01·tan α falling to 0 at t = 0.01 s: beyond tan α for the first 0.1 ms only."""
+    block = Block(R=1.0, alpha=ALPHA, e=0.9)
+    time = np.array([0.0, 0.01])
+    accel = np.array([1.01 * math.tan(ALPHA), 0.0])
+    settings = SolverSettings(tail=1.0, max_steps=STEP_BUDGET)
+    run = simulate(block, time, accel, 0.01, settings=settings, engine=engine)
+    assert run.status is RunStatus.COMPLETED, run.message
+    assert run.t_uplift == 0.0
+    assert run.uplifts == 1
+    assert 0.0 < run.max_ratio < TINY_RATIO
+    assert run.t_end == pytest.approx(1.01, abs=1e-9)
+
+
+@pytest.mark.parametrize("engine", [Engine.FAST, Engine.REFERENCE])
+def test_uplift_right_after_the_rest_rule(engine: Engine) -> None:
+    """Linearized, e = 0, released at α/2: the impact at t_i = arccosh(2)/p brings it to rest
+    (rocking.md, free rocking: t_i = T/4) while üg = −1.01·α, which ramps to 0 by t_i + 0.01 s.
+
+    The record is zero until 2 µs before t_i (its effect on the fall is ≈ 1e-12 s), so the
+    block comes to rest inside the window where üg is beyond −α; it must uplift to the negative
+    side once, come back to rest, and finish the record and the tail.
+    """
+    block = Block(R=1.0, alpha=ALPHA, e=0.0, linearized=True)
+    t_i = math.acosh(2.0) / block.p
+    time = np.array([0.0, t_i - 2e-6, t_i - 1e-6, t_i + 0.01, t_i + 0.02])
+    accel = np.array([0.0, 0.0, -1.01 * ALPHA, 0.0, 0.0])
+    settings = SolverSettings(tail=1.0, max_steps=STEP_BUDGET)
+    run = simulate(block, time, accel, 0.01, theta0=ALPHA / 2, settings=settings, engine=engine)
+    assert run.status is RunStatus.COMPLETED, run.message
+    assert run.uplifts == 1
+    assert -TINY_RATIO * ALPHA < run.theta_min < 0.0
+    assert run.t_end == pytest.approx(t_i + 1.02, abs=1e-9)
