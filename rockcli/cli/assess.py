@@ -45,7 +45,7 @@ def assess(
     history_path,
     fail_on_overturn,
     output,
-):  # type: ignore[no-untyped-def]
+):
     """Rocking time history of MODEL under a record, both polarities, with the verdict."""
     from rockcli.studies.assess import run_assessment
 
@@ -61,7 +61,7 @@ def assess(
         raise SystemExit(EXIT_OVERTURNS)
 
 
-def write_history(path, run):  # type: ignore[no-untyped-def]
+def write_history(path, run):
     """CSV of t [s], θ [rad], θ̇ [rad/s] at the sample times (tail included)."""
     from rockcli.errors import InputError
 

@@ -44,14 +44,14 @@ record_options = [
 ]
 
 
-def with_record_options(func):  # type: ignore[no-untyped-def]
+def with_record_options(func):
     """Decorate a command with the record options."""
     for option in reversed(record_options):
         func = option(func)
     return func
 
 
-def load_record(record_path, record_format, dt, units, scale, pga):  # type: ignore[no-untyped-def]
+def load_record(record_path, record_format, dt, units, scale, pga):
     """Read and transform the record the options describe (InputError on bad input)."""
     from rockcli.records import files, transform
 

@@ -22,6 +22,7 @@ unpacks the outputs.
 from __future__ import annotations
 
 import math
+from typing import Literal
 
 import numpy as np
 from numba import njit
@@ -44,8 +45,8 @@ for _fn in (
     mechanics.spring_elongation,
 ):
     register_jitable(_fn)
-for _fn in (rules.spring_on_side, rules.spring_trig_on_side, rules.ground_acceleration):
-    register_jitable(inline="always")(_fn)
+for _array_fn in (rules.spring_on_side, rules.spring_trig_on_side, rules.ground_acceleration):
+    register_jitable(inline="always")(_array_fn)
 _rhs = njit(cache=True, inline="always")(rules.angular_acceleration)
 _ground = njit(cache=True, inline="always")(rules.ground_acceleration)
 _uplift_in_interval = njit(cache=True, inline="always")(rules.uplift_in_interval)
@@ -57,7 +58,7 @@ _elongation_on_side = njit(cache=True, inline="always")(rules.elongation_on_side
 #: Numba IR inlining of the small helpers that take arrays: a call boundary costs atomic
 #: reference-count updates per array argument (measured: ≈ 45 ns for a 4-array helper, more
 #: than the right-hand side itself).
-INLINE = "always"
+INLINE: Literal["always"] = "always"
 #: With a clipped step, the controller keeps its step unless the error asks to shrink it:
 #: SAFETY·err^(−1/5) ≥ 1 ⇔ err ≤ SAFETY⁵ (saves the power on most steps).
 KEEP_STEP_ERROR = 0.9**5
@@ -110,7 +111,7 @@ DENSE_P = np.array(
 
 
 @njit(cache=True, inline=INLINE)
-def _stage(th, s, ag, par, springs, alive):  # type: ignore[no-untyped-def]
+def _stage(th, s, ag, par, springs, alive):
     """θ̈ at rotation θ on side s under ground acceleration ag [g]."""
     return _rhs(
         s * th,
@@ -128,13 +129,13 @@ def _stage(th, s, ag, par, springs, alive):  # type: ignore[no-untyped-def]
 
 
 @njit(cache=True, inline=INLINE)
-def _stage_at(t, th, s, i, times, accel, pol, par, springs, alive):  # type: ignore[no-untyped-def]
+def _stage_at(t, th, s, i, times, accel, pol, par, springs, alive):
     """θ̈ at (t, θ) on side s, t inside sample interval i."""
     return _stage(th, s, _ground(t, i, times, accel, pol), par, springs, alive)
 
 
 @njit(cache=True, inline=INLINE)
-def _dp5_step(th, om, f1, h, s, g0, gs, par, springs, alive, k_th, k_om):  # type: ignore[no-untyped-def]
+def _dp5_step(th, om, f1, h, s, g0, gs, par, springs, alive, k_th, k_om):
     """One Dormand–Prince step of size h; fills the stage slopes; returns (θ, θ̇, θ̈, error norm).
 
     The state is (θ, θ̇); slopes of θ are θ̇ at the stages, slopes of θ̇ are θ̈. The ground
@@ -198,7 +199,7 @@ def _dp5_step(th, om, f1, h, s, g0, gs, par, springs, alive, k_th, k_om):  # typ
 
 
 @njit(cache=True, inline=INLINE)
-def _dense_coefficients(k, q):  # type: ignore[no-untyped-def]
+def _dense_coefficients(k, q):
     """q[j] = Σ_i k[i]·P[i, j]: the dense-output polynomial of one component (Shampine 1986)."""
     for j in range(4):
         acc = 0.0
@@ -208,13 +209,13 @@ def _dense_coefficients(k, q):  # type: ignore[no-untyped-def]
 
 
 @njit(cache=True, inline=INLINE)
-def _dense(x, y0, h, q):  # type: ignore[no-untyped-def]
+def _dense(x, y0, h, q):
     """y(t0 + x·h) = y0 + h·(q0 x + q1 x² + q2 x³ + q3 x⁴), 0 ≤ x ≤ 1."""
     return y0 + h * x * (q[0] + x * (q[1] + x * (q[2] + x * q[3])))
 
 
 @njit(cache=True)
-def _root(y0, h, q, level, s, xl, xr):  # type: ignore[no-untyped-def]
+def _root(y0, h, q, level, s, xl, xr):
     """x in [xl, xr] where s·y(x) = level, given a sign change; Illinois false position.
 
     Dowell & Jarratt (1971), the Illinois modification of regula falsi: superlinear and
@@ -247,7 +248,7 @@ def _root(y0, h, q, level, s, xl, xr):  # type: ignore[no-untyped-def]
 
 
 @njit(cache=True)
-def _turning_point(om0, h, q_om, s, xl, xr):  # type: ignore[no-untyped-def]
+def _turning_point(om0, h, q_om, s, xl, xr):
     """x of the root of s·θ̇ (from + to −) in [xl, xr], or −1 when θ̇ keeps its sign."""
     vl = s * _dense(xl, om0, h, q_om)
     vr = s * _dense(xr, om0, h, q_om)
@@ -257,7 +258,7 @@ def _turning_point(om0, h, q_om, s, xl, xr):  # type: ignore[no-untyped-def]
 
 
 @njit(cache=True)
-def _update_peak(a, s, peaks, spring_out, springs, alive, linearized):  # type: ignore[no-untyped-def]
+def _update_peak(a, s, peaks, spring_out, springs, alive, linearized):
     """Record the rotation a about pivot s: amplitude, signed extremes, restrainer demands."""
     if a > peaks[L.O_MAX_A]:
         peaks[L.O_MAX_A] = a
@@ -278,7 +279,7 @@ def _update_peak(a, s, peaks, spring_out, springs, alive, linearized):  # type: 
 
 
 @njit(cache=True)
-def _event_levels(s, par, springs, alive, levels, kinds):  # type: ignore[no-untyped-def]
+def _event_levels(s, par, springs, alive, levels, kinds):
     """Fill the upward levels of a that end the phase: overturning and each live failure."""
     n = 0
     levels[n] = par[L.P_OVERTURN]
@@ -295,7 +296,7 @@ def _event_levels(s, par, springs, alive, levels, kinds):  # type: ignore[no-unt
 
 
 @njit(cache=True, inline=INLINE)
-def _stage_trend(k_th, s):  # type: ignore[no-untyped-def]
+def _stage_trend(k_th, s):
     """+1 if s·θ̇ > 0 at all seven stages of the step, −1 if < 0 at all, else 0.
 
     The stage slopes of θ are θ̇ at t0, t0 + c_i·h and t1: a step on which they all keep one
@@ -315,7 +316,7 @@ def _stage_trend(k_th, s):  # type: ignore[no-untyped-def]
 
 
 @njit(cache=True)
-def _lowest_level(s, par, springs, alive):  # type: ignore[no-untyped-def]
+def _lowest_level(s, par, springs, alive):
     """The lowest upward event level of a on side s: overturning or a live failure [rad]."""
     lowest = par[L.P_OVERTURN]
     for j in range(springs.shape[0]):
@@ -329,7 +330,7 @@ def _lowest_level(s, par, springs, alive):  # type: ignore[no-untyped-def]
 @njit(cache=True)
 def _scan_sampled(
     th0, om0, th1, h, q_th, q_om, s, par, springs, alive, peaks, spring_out, levels, kinds
-):  # type: ignore[no-untyped-def]
+):
     """Scan a step that may hold an event or a turning point; record the peaks before it.
 
     The step is sampled at SCAN_POINTS points of the dense output; a crossing of 0 (impact) or
@@ -378,7 +379,7 @@ def _scan_sampled(
 
 
 @njit(cache=True)
-def _next_uplift(t, i, times, accel, pol, par):  # type: ignore[no-untyped-def]
+def _next_uplift(t, i, times, accel, pol, par):
     """From rest at time t in interval i: (τ, side, interval) of the next uplift, side 0 if none.
 
     The acceleration is linear between samples, so it can first exceed the threshold inside
@@ -405,7 +406,7 @@ def _next_uplift(t, i, times, accel, pol, par):  # type: ignore[no-untyped-def]
 
 
 @njit(cache=True)
-def _store_rest(hist_th, hist_om, i_from, i_to):  # type: ignore[no-untyped-def]
+def _store_rest(hist_th, hist_om, i_from, i_to):
     """History at rest: θ = θ̇ = 0 at samples i_from..i_to (inclusive)."""
     if hist_th.size > 1:
         for k in range(i_from, i_to + 1):
@@ -414,7 +415,7 @@ def _store_rest(hist_th, hist_om, i_from, i_to):  # type: ignore[no-untyped-def]
 
 
 @njit(cache=True)
-def _initial_side(th, om):  # type: ignore[no-untyped-def]
+def _initial_side(th, om):
     """Pivot side of the initial state: sign of θ0, else of θ̇0, else 0 (at rest)."""
     if th != 0.0:
         return 1 if th > 0.0 else -1
@@ -424,7 +425,7 @@ def _initial_side(th, om):  # type: ignore[no-untyped-def]
 
 
 @njit(cache=True)
-def integrate(times, accel, pol, par, springs, alive, hist_th, hist_om, out_f, out_i, spring_out):  # type: ignore[no-untyped-def]
+def integrate(times, accel, pol, par, springs, alive, hist_th, hist_om, out_f, out_i, spring_out):
     """Integrate one rocking run over the sample times, from rest at times[0].
 
     Args:

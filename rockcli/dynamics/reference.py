@@ -41,7 +41,7 @@ class _Phase:
         self.restart = True
 
 
-def _rhs(phase: _Phase, t0: float, g0: float, gs: float):  # type: ignore[no-untyped-def]
+def _rhs(phase: _Phase, t0: float, g0: float, gs: float):
     par = phase.par
 
     def f(t: float, y: np.ndarray) -> list[float]:
@@ -64,7 +64,7 @@ def _rhs(phase: _Phase, t0: float, g0: float, gs: float):  # type: ignore[no-unt
     return f
 
 
-def _events(phase: _Phase):  # type: ignore[no-untyped-def]
+def _events(phase: _Phase):
     """Impact, overturning, failures (terminal) and the turning point (peak, not terminal)."""
     s = phase.s
 
@@ -95,7 +95,7 @@ def _events(phase: _Phase):  # type: ignore[no-untyped-def]
     return events, rows
 
 
-def _failure_event(s: int, a_fail: float):  # type: ignore[no-untyped-def]
+def _failure_event(s: int, a_fail: float):
     def fail(t: float, y: np.ndarray) -> float:
         return s * y[0] - a_fail
 
@@ -119,7 +119,7 @@ def _peak(phase: _Phase, a: float, out_f: np.ndarray, spring_out: np.ndarray) ->
             spring_out[j, L.S_MAX_FORCE] = max(spring_out[j, L.S_MAX_FORCE], k * u)
 
 
-def _solve(phase: _Phase, t: float, t1: float, g0: float, gs: float):  # type: ignore[no-untyped-def]
+def _solve(phase: _Phase, t: float, t1: float, g0: float, gs: float):
     events, rows = _events(phase)
     first = min(REFERENCE_FIRST_STEP, (t1 - t) / 2) if phase.restart else None
     sol = solve_ivp(
@@ -136,7 +136,7 @@ def _solve(phase: _Phase, t: float, t1: float, g0: float, gs: float):  # type: i
     return sol, rows
 
 
-def _first_terminal(sol, rows):  # type: ignore[no-untyped-def]
+def _first_terminal(sol, rows):
     """(time, state, kind, row) of the terminal event that stopped the solve, or None."""
     if sol.status != 1:
         return None
@@ -149,7 +149,7 @@ def _first_terminal(sol, rows):  # type: ignore[no-untyped-def]
     return best
 
 
-def _interval(phase, i, times, accel, pol, out_f, out_i, spring_out):  # type: ignore[no-untyped-def]
+def _interval(phase, i, times, accel, pol, out_f, out_i, spring_out):
     """Advance through sample interval i; returns a status code or None to go on."""
     par = phase.par
     t = times[i]
@@ -187,7 +187,7 @@ def _interval(phase, i, times, accel, pol, out_f, out_i, spring_out):  # type: i
     return None
 
 
-def _apply_event(phase, t, y, kind, row, out_f, out_i, spring_out):  # type: ignore[no-untyped-def]
+def _apply_event(phase, t, y, kind, row, out_f, out_i, spring_out):
     par = phase.par
     if kind == 1:  # overturning
         _peak(phase, par[L.P_OVERTURN], out_f, spring_out)
@@ -215,7 +215,7 @@ def _apply_event(phase, t, y, kind, row, out_f, out_i, spring_out):  # type: ign
 
 def integrate_reference(
     times, accel, pol, par, springs, alive, hist_th, hist_om, out_f, out_i, spring_out
-):  # type: ignore[no-untyped-def]
+):
     """Same contract as :func:`rockcli.dynamics.kernel.integrate` (arrays filled in place)."""
     phase = _Phase(par, springs, alive)
     out_f[:] = 0.0

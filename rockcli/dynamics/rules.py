@@ -33,7 +33,7 @@ COL_SIN_POS, COL_COS_POS, COL_SIN_NEG, COL_COS_NEG = 9, 10, 11, 12
 N_SPRING_COLS = 13
 
 
-def spring_on_side(springs, j, s):  # type: ignore[no-untyped-def]
+def spring_on_side(springs, j, s):
     """(K, r, φ, a_fail) of restrainer row j for pivot side s = ±1."""
     if s > 0:
         return (
@@ -50,7 +50,7 @@ def spring_on_side(springs, j, s):  # type: ignore[no-untyped-def]
     )
 
 
-def spring_trig_on_side(springs, j, s):  # type: ignore[no-untyped-def]
+def spring_trig_on_side(springs, j, s):
     """(K, r, sin φ, cos φ) of restrainer row j for pivot side s = ±1."""
     if s > 0:
         return (
@@ -69,7 +69,7 @@ def spring_trig_on_side(springs, j, s):  # type: ignore[no-untyped-def]
 
 def angular_acceleration(
     a, s, ag, alpha, sin_alpha, cos_alpha, p2, linearized, springs, alive, inv_i0
-):  # type: ignore[no-untyped-def]
+):
     """θ̈ of the block on pivot side s at rotation a = s·θ under ground acceleration ag [g].
 
     Source: spec/rocking.md, θ̈ = −s p² sin(α − sθ) − Σ_k M_k(θ)/I0 + p² üg cos(α − sθ), with
@@ -102,7 +102,7 @@ def angular_acceleration(
     return acc
 
 
-def ground_acceleration(t, i, times, accel, polarity):  # type: ignore[no-untyped-def]
+def ground_acceleration(t, i, times, accel, polarity):
     """Ground acceleration at time t inside sample interval i, linear between samples [g].
 
     Source: spec/rocking.md, "The ground motion between samples is linear".
@@ -113,7 +113,7 @@ def ground_acceleration(t, i, times, accel, polarity):  # type: ignore[no-untype
     return polarity * (accel[i] + (accel[i + 1] - accel[i]) * w)
 
 
-def uplift_in_interval(t, i, times, accel, polarity, threshold, one_sided, free_side):  # type: ignore[no-untyped-def]
+def uplift_in_interval(t, i, times, accel, polarity, threshold, one_sided, free_side):
     """Earliest time τ ≥ t in sample interval i at which the block at rest starts to rock.
 
     The block leaves rest when the ground acceleration exceeds the threshold (tan α, in g)
@@ -148,7 +148,7 @@ def uplift_in_interval(t, i, times, accel, polarity, threshold, one_sided, free_
     return best_t, best_side
 
 
-def velocity_after_impact(omega, s, e, one_sided, rebound):  # type: ignore[no-untyped-def]
+def velocity_after_impact(omega, s, e, one_sided, rebound):
     """(θ̇⁺, new side) at θ = 0 from θ̇⁻ on side s.
 
     Source: spec/rocking.md, "Impacts": two-sided θ̇⁺ = e·θ̇⁻, sign kept, the pivot switches
@@ -160,7 +160,7 @@ def velocity_after_impact(omega, s, e, one_sided, rebound):  # type: ignore[no-u
     return e * omega, -s
 
 
-def elongation_on_side(springs, j, s, a, linearized):  # type: ignore[no-untyped-def]
+def elongation_on_side(springs, j, s, a, linearized):
     """Spring elongation u of restrainer row j on pivot side s at rotation a [m]."""
     _, r, phi, _ = spring_on_side(springs, j, s)
     return spring_elongation(r, phi, a, linearized)

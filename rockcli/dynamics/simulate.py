@@ -156,7 +156,7 @@ def _optional(x: float) -> float | None:
 
 def _unpack(
     block, settings, engine, rtol, atol, polarity, out_f, out_i, spring_out, hist
-) -> RockingRun:  # type: ignore[no-untyped-def]
+) -> RockingRun:
     status = RunStatus(L.STATUS_NAMES[int(out_i[L.I_STATUS])])
     peaks = tuple(
         RestrainerPeak(

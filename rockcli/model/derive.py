@@ -130,10 +130,19 @@ def describe(model: Model) -> Description:
     g = model.analysis.g
     e, rule = restitution(model)
     return Description(
-        b=b, h=h, thickness=2 * b, height=2 * h, R=R, alpha=alpha,
-        width=model.geometry.width, pivot_height=model.geometry.pivot_height,
-        mass=mass, weight=None if mass is None else mass * g,
-        e=e, e_rule=rule, p=math.sqrt(frequency_parameter_sq(R, g)),
+        b=b,
+        h=h,
+        thickness=2 * b,
+        height=2 * h,
+        R=R,
+        alpha=alpha,
+        width=model.geometry.width,
+        pivot_height=model.geometry.pivot_height,
+        mass=mass,
+        weight=None if mass is None else mass * g,
+        e=e,
+        e_rule=rule,
+        p=math.sqrt(frequency_parameter_sq(R, g)),
     )
 
 

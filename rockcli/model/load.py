@@ -126,9 +126,13 @@ def dumps(data: Mapping[str, Any]) -> str:
 
 def _is_array_of_tables(value: Any) -> bool:
     """A non-empty array of flat tables (tables of values, no sub-tables)."""
-    return isinstance(value, list | tuple) and bool(value) and all(
-        isinstance(row, Mapping) and not any(isinstance(v, Mapping) for v in row.values())
-        for row in value
+    return (
+        isinstance(value, list | tuple)
+        and bool(value)
+        and all(
+            isinstance(row, Mapping) and not any(isinstance(v, Mapping) for v in row.values())
+            for row in value
+        )
     )
 
 

@@ -225,8 +225,12 @@ class Motion(Table):
     def _one_sided_keys(self) -> Motion:
         """stopped and rebound belong to one-sided motion only."""
         if self.sides is Sides.TWO:
-            forbid(self.__dict__, ["stopped", "rebound"], 'only allowed with sides = "one"',
-                   'sides = "one" with stopped and rebound, or remove it')
+            forbid(
+                self.__dict__,
+                ["stopped", "rebound"],
+                'only allowed with sides = "one"',
+                'sides = "one" with stopped and rebound, or remove it',
+            )
         return self
 
 
@@ -294,8 +298,7 @@ class Restrainer(Table):
     length: float | None = number("Tie-rod: free length L [m]", gt=0)
     E: float | None = number("Tie-rod: Young's modulus; default 210e9 [Pa]", gt=0)
     acts: Acts | None = Field(
-        None, description="Tie-rod: side(s) it works on, 'both' (default), 'positive', "
-        "'negative'"
+        None, description="Tie-rod: side(s) it works on, 'both' (default), 'positive', 'negative'"
     )
     radius: float | None = number(
         "Distance of the attachment point from the pivot, same for both pivots (paper's form; "
@@ -344,8 +347,9 @@ class Restrainer(Table):
 
     @staticmethod
     def _check_tie_rod(values: Mapping[str, Any]) -> None:
-        forbid(values, ["k", "k_pos", "k_neg"], 'not allowed with kind = "tie-rod"',
-               TIE_ROD_ALLOWED)
+        forbid(
+            values, ["k", "k_pos", "k_neg"], 'not allowed with kind = "tie-rod"', TIE_ROD_ALLOWED
+        )
         missing = [k for k in ("diameter", "length") if values.get(k) is None]
         if missing:
             raise rule_error(missing[0], 'required with kind = "tie-rod"', TIE_ROD_ALLOWED)
@@ -387,20 +391,26 @@ class Model(Table):
     def _check_width(self) -> None:
         if self.mass is not None and self.mass.unit_weight is not None:
             if self.geometry.width is None:
-                raise rule_error(("geometry", "width"), "required with mass.unit_weight",
-                                 "a number > 0 [m]")
+                raise rule_error(
+                    ("geometry", "width"), "required with mass.unit_weight", "a number > 0 [m]"
+                )
 
     def _check_mass(self) -> None:
         stiff = [i for i, r in enumerate(self.restrainers) if r.is_stiff]
         if stiff and self.mass is None:
-            raise rule_error("mass", f"required because restrainers[{stiff[0]}] has a "
-                             "stiffness (paper §4.3)",
-                             "a [mass] table with weight [kN] or unit_weight [kN/m³]")
+            raise rule_error(
+                "mass",
+                f"required because restrainers[{stiff[0]}] has a stiffness (paper §4.3)",
+                "a [mass] table with weight [kN] or unit_weight [kN/m³]",
+            )
 
     def _check_points(self) -> None:
         thickness = 2.0 * self.geometry.half_sizes[0]
         for i, r in enumerate(self.restrainers):
             if r.from_pivot is not None and r.from_pivot > thickness * (1 + CONTAINMENT_RTOL):
-                raise rule_error(("restrainers", i, "from_pivot"), "outside the block",
-                                 f"a number >= 0 and <= the thickness 2b = {thickness:.4g} [m]",
-                                 r.from_pivot)
+                raise rule_error(
+                    ("restrainers", i, "from_pivot"),
+                    "outside the block",
+                    f"a number >= 0 and <= the thickness 2b = {thickness:.4g} [m]",
+                    r.from_pivot,
+                )

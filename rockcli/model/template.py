@@ -110,16 +110,13 @@ TABLE_NOTES: dict[str, tuple[str, ...]] = {
         "Sign convention (the paper's, spec/rocking.md): a positive ground acceleration drives "
         "a positive rotation.",
     ),
-    "geometry": (
-        "The rocking block: either R + alpha, or thickness + height (full 2b and 2h).",
-    ),
+    "geometry": ("The rocking block: either R + alpha, or thickness + height (full 2b and 2h).",),
     "mass": (
         "Either weight [kN] or unit_weight [kN/m³] (needs geometry.width).",
         "Optional without restrainers; required when a restrainer has a stiffness.",
     ),
     "restitution": (
-        'model = "housner" (e = 1 − 1.5 sin²α, times factor), or e = value '
-        '(model = "explicit").',
+        'model = "housner" (e = 1 − 1.5 sin²α, times factor), or e = value (model = "explicit").',
     ),
     "motion": (
         'sides = "two", or "one" with stopped = "negative"|"positive" (the side the '
@@ -134,7 +131,7 @@ TABLE_NOTES: dict[str, tuple[str, ...]] = {
         "Horizontal springs, any number, one [[restrainers]] table each.",
         'Stiffness: k (both sides), or k_pos + k_neg, or kind = "tie-rod" with diameter, '
         "length, E (K = E·π·d²/4 / L).",
-        'Point: radius + angle (same for both pivots), or height + from_pivot, or position = '
+        "Point: radius + angle (same for both pivots), or height + from_pivot, or position = "
         '"top" (r = 2R, φ = α).',
         "Optional: fails_at = elongation [m] at which the spring is lost for good.",
     ),

@@ -59,11 +59,13 @@ def put(name: str, **keys: Any) -> Edit:
 
 def drop(*path: str) -> Edit:
     """Remove a key (a top-level key, or a key of a table)."""
+
     def edit(d: dict[str, Any]) -> None:
         target = d
         for key in path[:-1]:
             target = target[key]
         del target[path[-1]]
+
     return edit
 
 
@@ -74,6 +76,7 @@ def test_valid_model_loads(tmp_path: Path) -> None:
 
 
 # --- exact lines: the format users see --------------------------------------------------------
+
 
 def test_unknown_table_at_top_level_exact_line(tmp_path: Path) -> None:
     # [ntc] is reserved for the code-check settings, not defined yet: unknown for now.
@@ -108,142 +111,333 @@ def test_missing_name_exact_line(tmp_path: Path) -> None:
 # --- contents: field path, value, allowed ------------------------------------------------------
 
 CASES: list[tuple[str, Edit, list[str]]] = [
-    ("unknown key in a table", put("geometry", thikness=0.5),
-     ["geometry.thikness", "unknown key", "got 0.5",
-      "one of: R, alpha, thickness, height, width, pivot_height"]),
-    ("unknown key in a restrainer", restrainer(k=1.0, position="top", stiffness=3.0),
-     ["restrainers[0].stiffness", "unknown key", "one of: name, kind, k_pos, k_neg, k,"]),
+    (
+        "unknown key in a table",
+        put("geometry", thikness=0.5),
+        [
+            "geometry.thikness",
+            "unknown key",
+            "got 0.5",
+            "one of: R, alpha, thickness, height, width, pivot_height",
+        ],
+    ),
+    (
+        "unknown key in a restrainer",
+        restrainer(k=1.0, position="top", stiffness=3.0),
+        ["restrainers[0].stiffness", "unknown key", "one of: name, kind, k_pos, k_neg, k,"],
+    ),
     ("missing kind", drop("kind"), ["kind", "missing key", "required"]),
     ("missing geometry", drop("geometry"), ["geometry", "missing key", "required"]),
-    ("missing dimensions", table("geometry", width=3.0),
-     ["geometry: missing the block's dimensions", "either R + alpha, or thickness + height"]),
-    ("zero height", put("geometry", height=0.0),
-     ["geometry.height", "got 0.0", "a number > 0 [m]"]),
-    ("negative width", put("geometry", width=-3),
-     ["geometry.width", "got -3", "a number > 0 [m]"]),
-    ("negative pivot height", put("geometry", pivot_height=-1.0),
-     ["geometry.pivot_height", "got -1.0", "a number >= 0 [m]"]),
-    ("zero R", table("geometry", R=0.0, alpha=0.1),
-     ["geometry.R", "got 0.0", "a number > 0 [m]"]),
-    ("alpha zero", table("geometry", R=1.0, alpha=0.0),
-     ["geometry.alpha", "got 0.0", "a number > 0 and < pi/2 [rad]"]),
-    ("alpha negative", table("geometry", R=1.0, alpha=-0.1),
-     ["geometry.alpha", "got -0.1", "a number > 0 and < pi/2 [rad]"]),
-    ("alpha pi/2", table("geometry", R=1.0, alpha=math.pi / 2),
-     ["geometry.alpha", f"got {math.pi / 2!r}", "a number > 0 and < pi/2 [rad]"]),
-    ("alpha in degrees", table("geometry", R=1.0, alpha=9.34),
-     ["geometry.alpha", "got 9.34", "a number > 0 and < pi/2 [rad]"]),
-    ("both geometry forms", put("geometry", R=1.499, alpha=0.163),
-     ["geometry.thickness", "not allowed together with R", "got 0.5",
-      "either R + alpha, or thickness + height"]),
-    ("R without alpha", table("geometry", R=1.499, width=3.0),
-     ["geometry.alpha", "required with R", "either R + alpha, or thickness + height"]),
-    ("height without thickness", table("geometry", height=4.0, width=3.0),
-     ["geometry.thickness", "required with height"]),
-    ("unit_weight without width", drop("geometry", "width"),
-     ["geometry.width", "required with mass.unit_weight", "a number > 0 [m]"]),
-    ("weight and unit_weight", put("mass", weight=100.0),
-     ["mass.unit_weight", "not allowed together with weight", "got 18.0",
-      "either weight [kN] or unit_weight [kN/m³]"]),
+    (
+        "missing dimensions",
+        table("geometry", width=3.0),
+        ["geometry: missing the block's dimensions", "either R + alpha, or thickness + height"],
+    ),
+    (
+        "zero height",
+        put("geometry", height=0.0),
+        ["geometry.height", "got 0.0", "a number > 0 [m]"],
+    ),
+    ("negative width", put("geometry", width=-3), ["geometry.width", "got -3", "a number > 0 [m]"]),
+    (
+        "negative pivot height",
+        put("geometry", pivot_height=-1.0),
+        ["geometry.pivot_height", "got -1.0", "a number >= 0 [m]"],
+    ),
+    ("zero R", table("geometry", R=0.0, alpha=0.1), ["geometry.R", "got 0.0", "a number > 0 [m]"]),
+    (
+        "alpha zero",
+        table("geometry", R=1.0, alpha=0.0),
+        ["geometry.alpha", "got 0.0", "a number > 0 and < pi/2 [rad]"],
+    ),
+    (
+        "alpha negative",
+        table("geometry", R=1.0, alpha=-0.1),
+        ["geometry.alpha", "got -0.1", "a number > 0 and < pi/2 [rad]"],
+    ),
+    (
+        "alpha pi/2",
+        table("geometry", R=1.0, alpha=math.pi / 2),
+        ["geometry.alpha", f"got {math.pi / 2!r}", "a number > 0 and < pi/2 [rad]"],
+    ),
+    (
+        "alpha in degrees",
+        table("geometry", R=1.0, alpha=9.34),
+        ["geometry.alpha", "got 9.34", "a number > 0 and < pi/2 [rad]"],
+    ),
+    (
+        "both geometry forms",
+        put("geometry", R=1.499, alpha=0.163),
+        [
+            "geometry.thickness",
+            "not allowed together with R",
+            "got 0.5",
+            "either R + alpha, or thickness + height",
+        ],
+    ),
+    (
+        "R without alpha",
+        table("geometry", R=1.499, width=3.0),
+        ["geometry.alpha", "required with R", "either R + alpha, or thickness + height"],
+    ),
+    (
+        "height without thickness",
+        table("geometry", height=4.0, width=3.0),
+        ["geometry.thickness", "required with height"],
+    ),
+    (
+        "unit_weight without width",
+        drop("geometry", "width"),
+        ["geometry.width", "required with mass.unit_weight", "a number > 0 [m]"],
+    ),
+    (
+        "weight and unit_weight",
+        put("mass", weight=100.0),
+        [
+            "mass.unit_weight",
+            "not allowed together with weight",
+            "got 18.0",
+            "either weight [kN] or unit_weight [kN/m³]",
+        ],
+    ),
     ("empty mass table", table("mass"), ["mass: missing the weight"]),
     ("zero weight", table("mass", weight=0), ["mass.weight", "got 0", "a number > 0 [kN]"]),
-    ("restrainer without mass", drop("mass"),
-     ["mass: required because restrainers[0] has a stiffness",
-      "a [mass] table with weight [kN] or unit_weight [kN/m³]"]),
-    ("tie-rod without mass",
-     lambda d: (d.pop("mass"), d.update(restrainers=[
-         {"kind": "tie-rod", "diameter": 0.02, "length": 3.0, "position": "top"}])),
-     ["mass: required because restrainers[0] has a stiffness"]),
-    ("e above 1", table("restitution", e=1.2),
-     ["restitution.e", "got 1.2", "a number >= 0 and <= 1 [-]"]),
-    ("e below 0", table("restitution", e=-0.1),
-     ["restitution.e", "got -0.1", "a number >= 0 and <= 1 [-]"]),
-    ("factor zero", table("restitution", factor=0.0),
-     ["restitution.factor", "got 0.0", "a number > 0 and <= 1 [-]"]),
-    ("factor above 1", table("restitution", factor=1.1),
-     ["restitution.factor", "got 1.1", "a number > 0 and <= 1 [-]"]),
-    ("e and factor", table("restitution", e=0.8, factor=0.9),
-     ["restitution.factor", "not allowed together with e", "got 0.9"]),
-    ("explicit without e", table("restitution", model="explicit"),
-     ["restitution.e", 'required with model = "explicit"']),
-    ("housner with e", table("restitution", model="housner", e=0.8),
-     ["restitution.e", 'not allowed with model = "housner"', "got 0.8"]),
-    ("unknown restitution model", table("restitution", model="kelvin"),
-     ["restitution.model", "unknown value", "got 'kelvin'", "one of: housner, explicit"]),
-    ("stopped with two sides", table("motion", stopped="negative"),
-     ["motion.stopped", 'only allowed with sides = "one"', "got 'negative'"]),
-    ("rebound with two sides", table("motion", sides="two", rebound=0.5),
-     ["motion.rebound", 'only allowed with sides = "one"', "got 0.5"]),
-    ("rebound above 1", table("motion", sides="one", rebound=1.5),
-     ["motion.rebound", "got 1.5", "a number >= 0 and <= 1 [-]"]),
-    ("unknown side", table("motion", sides="one", stopped="left"),
-     ["motion.stopped", "got 'left'", "one of: negative, positive"]),
-    ("unknown kind", lambda d: d.update(kind="tower"),
-     ["kind", "unknown value", "got 'tower'", "one of: wall, altar, facade"]),
+    (
+        "restrainer without mass",
+        drop("mass"),
+        [
+            "mass: required because restrainers[0] has a stiffness",
+            "a [mass] table with weight [kN] or unit_weight [kN/m³]",
+        ],
+    ),
+    (
+        "tie-rod without mass",
+        lambda d: (
+            d.pop("mass"),
+            d.update(
+                restrainers=[
+                    {"kind": "tie-rod", "diameter": 0.02, "length": 3.0, "position": "top"}
+                ]
+            ),
+        ),
+        ["mass: required because restrainers[0] has a stiffness"],
+    ),
+    (
+        "e above 1",
+        table("restitution", e=1.2),
+        ["restitution.e", "got 1.2", "a number >= 0 and <= 1 [-]"],
+    ),
+    (
+        "e below 0",
+        table("restitution", e=-0.1),
+        ["restitution.e", "got -0.1", "a number >= 0 and <= 1 [-]"],
+    ),
+    (
+        "factor zero",
+        table("restitution", factor=0.0),
+        ["restitution.factor", "got 0.0", "a number > 0 and <= 1 [-]"],
+    ),
+    (
+        "factor above 1",
+        table("restitution", factor=1.1),
+        ["restitution.factor", "got 1.1", "a number > 0 and <= 1 [-]"],
+    ),
+    (
+        "e and factor",
+        table("restitution", e=0.8, factor=0.9),
+        ["restitution.factor", "not allowed together with e", "got 0.9"],
+    ),
+    (
+        "explicit without e",
+        table("restitution", model="explicit"),
+        ["restitution.e", 'required with model = "explicit"'],
+    ),
+    (
+        "housner with e",
+        table("restitution", model="housner", e=0.8),
+        ["restitution.e", 'not allowed with model = "housner"', "got 0.8"],
+    ),
+    (
+        "unknown restitution model",
+        table("restitution", model="kelvin"),
+        ["restitution.model", "unknown value", "got 'kelvin'", "one of: housner, explicit"],
+    ),
+    (
+        "stopped with two sides",
+        table("motion", stopped="negative"),
+        ["motion.stopped", 'only allowed with sides = "one"', "got 'negative'"],
+    ),
+    (
+        "rebound with two sides",
+        table("motion", sides="two", rebound=0.5),
+        ["motion.rebound", 'only allowed with sides = "one"', "got 0.5"],
+    ),
+    (
+        "rebound above 1",
+        table("motion", sides="one", rebound=1.5),
+        ["motion.rebound", "got 1.5", "a number >= 0 and <= 1 [-]"],
+    ),
+    (
+        "unknown side",
+        table("motion", sides="one", stopped="left"),
+        ["motion.stopped", "got 'left'", "one of: negative, positive"],
+    ),
+    (
+        "unknown kind",
+        lambda d: d.update(kind="tower"),
+        ["kind", "unknown value", "got 'tower'", "one of: wall, altar, facade"],
+    ),
     ("empty name", lambda d: d.update(name=""), ["name", "empty", "a non-empty text string"]),
-    ("number as text", put("geometry", thickness="0.5"),
-     ["geometry.thickness", "not a number", "got '0.5'", "a number > 0 [m]"]),
-    ("boolean as number", put("geometry", thickness=True),
-     ["geometry.thickness", "not a number", "got True"]),
-    ("infinite number", put("geometry", height=math.inf),
-     ["geometry.height", "not a finite number", "got inf"]),
-    ("table as number", lambda d: d.update(geometry=2.0),
-     ["geometry", "not a table", "got 2.0", "a [geometry] table"]),
-    ("rtol too loose", table("analysis", rtol=0.1),
-     ["analysis.rtol", "got 0.1", "a number > 0 and <= 0.01 [-]"]),
+    (
+        "number as text",
+        put("geometry", thickness="0.5"),
+        ["geometry.thickness", "not a number", "got '0.5'", "a number > 0 [m]"],
+    ),
+    (
+        "boolean as number",
+        put("geometry", thickness=True),
+        ["geometry.thickness", "not a number", "got True"],
+    ),
+    (
+        "infinite number",
+        put("geometry", height=math.inf),
+        ["geometry.height", "not a finite number", "got inf"],
+    ),
+    (
+        "table as number",
+        lambda d: d.update(geometry=2.0),
+        ["geometry", "not a table", "got 2.0", "a [geometry] table"],
+    ),
+    (
+        "rtol too loose",
+        table("analysis", rtol=0.1),
+        ["analysis.rtol", "got 0.1", "a number > 0 and <= 0.01 [-]"],
+    ),
     ("atol zero", table("analysis", atol=0.0), ["analysis.atol", "a number > 0 and <= 0.01"]),
-    ("overturn angle above pi/2", table("analysis", overturn_angle=2.0),
-     ["analysis.overturn_angle", "got 2.0", "a number > 0 and <= pi/2 [rad]"]),
-    ("negative tail", table("analysis", tail=-1.0),
-     ["analysis.tail", "got -1.0", "a number >= 0 [s]"]),
-    ("zero rest velocity", table("analysis", rest_velocity=0.0),
-     ["analysis.rest_velocity", "a number > 0 [rad/s]"]),
+    (
+        "overturn angle above pi/2",
+        table("analysis", overturn_angle=2.0),
+        ["analysis.overturn_angle", "got 2.0", "a number > 0 and <= pi/2 [rad]"],
+    ),
+    (
+        "negative tail",
+        table("analysis", tail=-1.0),
+        ["analysis.tail", "got -1.0", "a number >= 0 [s]"],
+    ),
+    (
+        "zero rest velocity",
+        table("analysis", rest_velocity=0.0),
+        ["analysis.rest_velocity", "a number > 0 [rad/s]"],
+    ),
     ("zero gravity", table("analysis", g=0.0), ["analysis.g", "a number > 0 [m/s²]"]),
-    ("linearized as text", table("analysis", linearized="yes"),
-     ["analysis.linearized", "not a boolean", "got 'yes'", "true or false"]),
-    ("restrainer without stiffness", restrainer(position="top"),
-     ["restrainers[0]: missing the stiffness", "k or k_pos + k_neg [N/m]"]),
-    ("k_pos without k_neg", restrainer(k_pos=1e6, position="top"),
-     ["restrainers[0].k_neg", "required with k_pos"]),
-    ("k and k_pos", restrainer(k=1e6, k_pos=1e6, k_neg=0.0, position="top"),
-     ["restrainers[0].k_pos", "not allowed together with k", "got 1000000.0"]),
-    ("negative k", restrainer(k=-5.0, position="top"),
-     ["restrainers[0].k", "got -5.0", "a number >= 0 [N/m]"]),
-    ("tie-rod without length", restrainer(kind="tie-rod", diameter=0.02, position="top"),
-     ["restrainers[0].length", 'required with kind = "tie-rod"']),
-    ("tie-rod with k", restrainer(kind="tie-rod", diameter=0.02, length=3.0, k=1.0,
-                                  position="top"),
-     ["restrainers[0].k", 'not allowed with kind = "tie-rod"', "got 1.0"]),
-    ("spring with diameter", restrainer(k=1.0, diameter=0.02, position="top"),
-     ["restrainers[0].diameter", 'only allowed with kind = "tie-rod"', "got 0.02"]),
-    ("zero diameter", restrainer(kind="tie-rod", diameter=0.0, length=3.0, position="top"),
-     ["restrainers[0].diameter", "got 0.0", "a number > 0 [m]"]),
-    ("unknown acts", restrainer(kind="tie-rod", diameter=0.02, length=3.0, acts="up",
-                                position="top"),
-     ["restrainers[0].acts", "got 'up'", "one of: both, positive, negative"]),
-    ("no attachment point", restrainer(k=1.0),
-     ["restrainers[0]: missing the attachment point",
-      'radius + angle, or height + from_pivot, or position = "top"']),
-    ("two attachment points", restrainer(k=1.0, radius=7.0, angle=0.07, position="top"),
-     ["restrainers[0].position", "not allowed together with radius", "got 'top'"]),
-    ("radius without angle", restrainer(k=1.0, radius=7.0),
-     ["restrainers[0].angle", "required with radius"]),
-    ("zero radius", restrainer(k=1.0, radius=0.0, angle=0.07),
-     ["restrainers[0].radius", "got 0.0", "a number > 0 [m]"]),
-    ("angle above pi/2", restrainer(k=1.0, radius=1.0, angle=2.0),
-     ["restrainers[0].angle", "got 2.0", "a number >= 0 and <= pi/2 [rad]"]),
-    ("from_pivot beyond the thickness", restrainer(k=1.0, height=3.0, from_pivot=0.6),
-     ["restrainers[0].from_pivot", "outside the block", "got 0.6",
-      "<= the thickness 2b = 0.5 [m]"]),
-    ("zero fails_at", restrainer(k=1.0, position="top", fails_at=0.0),
-     ["restrainers[0].fails_at", "got 0.0", "a number > 0 [m]"]),
-    ("unknown position", restrainer(k=1.0, position="middle"),
-     ["restrainers[0].position", "got 'middle'", "one of: top"]),
-    ("second restrainer", lambda d: d["restrainers"].append({"k": 1.0, "radius": -1.0,
-                                                             "angle": 0.1}),
-     ["restrainers[1].radius", "got -1.0"]),
-    ("restrainers not an array", lambda d: d.update(restrainers=5),
-     ["restrainers", "not an array of tables", "got 5"]),
+    (
+        "linearized as text",
+        table("analysis", linearized="yes"),
+        ["analysis.linearized", "not a boolean", "got 'yes'", "true or false"],
+    ),
+    (
+        "restrainer without stiffness",
+        restrainer(position="top"),
+        ["restrainers[0]: missing the stiffness", "k or k_pos + k_neg [N/m]"],
+    ),
+    (
+        "k_pos without k_neg",
+        restrainer(k_pos=1e6, position="top"),
+        ["restrainers[0].k_neg", "required with k_pos"],
+    ),
+    (
+        "k and k_pos",
+        restrainer(k=1e6, k_pos=1e6, k_neg=0.0, position="top"),
+        ["restrainers[0].k_pos", "not allowed together with k", "got 1000000.0"],
+    ),
+    (
+        "negative k",
+        restrainer(k=-5.0, position="top"),
+        ["restrainers[0].k", "got -5.0", "a number >= 0 [N/m]"],
+    ),
+    (
+        "tie-rod without length",
+        restrainer(kind="tie-rod", diameter=0.02, position="top"),
+        ["restrainers[0].length", 'required with kind = "tie-rod"'],
+    ),
+    (
+        "tie-rod with k",
+        restrainer(kind="tie-rod", diameter=0.02, length=3.0, k=1.0, position="top"),
+        ["restrainers[0].k", 'not allowed with kind = "tie-rod"', "got 1.0"],
+    ),
+    (
+        "spring with diameter",
+        restrainer(k=1.0, diameter=0.02, position="top"),
+        ["restrainers[0].diameter", 'only allowed with kind = "tie-rod"', "got 0.02"],
+    ),
+    (
+        "zero diameter",
+        restrainer(kind="tie-rod", diameter=0.0, length=3.0, position="top"),
+        ["restrainers[0].diameter", "got 0.0", "a number > 0 [m]"],
+    ),
+    (
+        "unknown acts",
+        restrainer(kind="tie-rod", diameter=0.02, length=3.0, acts="up", position="top"),
+        ["restrainers[0].acts", "got 'up'", "one of: both, positive, negative"],
+    ),
+    (
+        "no attachment point",
+        restrainer(k=1.0),
+        [
+            "restrainers[0]: missing the attachment point",
+            'radius + angle, or height + from_pivot, or position = "top"',
+        ],
+    ),
+    (
+        "two attachment points",
+        restrainer(k=1.0, radius=7.0, angle=0.07, position="top"),
+        ["restrainers[0].position", "not allowed together with radius", "got 'top'"],
+    ),
+    (
+        "radius without angle",
+        restrainer(k=1.0, radius=7.0),
+        ["restrainers[0].angle", "required with radius"],
+    ),
+    (
+        "zero radius",
+        restrainer(k=1.0, radius=0.0, angle=0.07),
+        ["restrainers[0].radius", "got 0.0", "a number > 0 [m]"],
+    ),
+    (
+        "angle above pi/2",
+        restrainer(k=1.0, radius=1.0, angle=2.0),
+        ["restrainers[0].angle", "got 2.0", "a number >= 0 and <= pi/2 [rad]"],
+    ),
+    (
+        "from_pivot beyond the thickness",
+        restrainer(k=1.0, height=3.0, from_pivot=0.6),
+        [
+            "restrainers[0].from_pivot",
+            "outside the block",
+            "got 0.6",
+            "<= the thickness 2b = 0.5 [m]",
+        ],
+    ),
+    (
+        "zero fails_at",
+        restrainer(k=1.0, position="top", fails_at=0.0),
+        ["restrainers[0].fails_at", "got 0.0", "a number > 0 [m]"],
+    ),
+    (
+        "unknown position",
+        restrainer(k=1.0, position="middle"),
+        ["restrainers[0].position", "got 'middle'", "one of: top"],
+    ),
+    (
+        "second restrainer",
+        lambda d: d["restrainers"].append({"k": 1.0, "radius": -1.0, "angle": 0.1}),
+        ["restrainers[1].radius", "got -1.0"],
+    ),
+    (
+        "restrainers not an array",
+        lambda d: d.update(restrainers=5),
+        ["restrainers", "not an array of tables", "got 5"],
+    ),
 ]
 
 
@@ -307,11 +501,15 @@ def test_error_carries_structured_fields(tmp_path: Path) -> None:
         validate_model({**VALID, "geometry": {"thickness": -0.5, "height": 4.0}}, file="f.toml")
     err = info.value
     assert (err.file, err.where, err.value, err.allowed) == (
-        "f.toml", "geometry.thickness", -0.5, "a number > 0 [m]"
+        "f.toml",
+        "geometry.thickness",
+        -0.5,
+        "a number > 0 [m]",
     )
 
 
 # --- the file itself ----------------------------------------------------------------------------
+
 
 def test_malformed_toml_names_line_and_column(tmp_path: Path) -> None:
     path = tmp_path / "bad.toml"

@@ -52,23 +52,27 @@ motion = st.one_of(
     ),
 )
 
-analysis = optional({
-    "tail": floats(0.0, 100.0),
-    "overturn_angle": floats(1e-3, math.pi / 2),
-    "rtol": floats(1e-14, 1e-2),
-    "atol": floats(1e-14, 1e-2),
-    "rest_velocity": floats(1e-9, 1.0),
-    "linearized": st.booleans(),
-    "g": floats(1.0, 20.0),
-})
+analysis = optional(
+    {
+        "tail": floats(0.0, 100.0),
+        "overturn_angle": floats(1e-3, math.pi / 2),
+        "rtol": floats(1e-14, 1e-2),
+        "atol": floats(1e-14, 1e-2),
+        "rest_velocity": floats(1e-9, 1.0),
+        "linearized": st.booleans(),
+        "g": floats(1.0, 20.0),
+    }
+)
 
 spring_stiffness = st.one_of(
     st.fixed_dictionaries({"k": stiffness}),
     st.fixed_dictionaries({"k_pos": stiffness, "k_neg": stiffness}),
     st.fixed_dictionaries(
         {"kind": st.just("tie-rod"), "diameter": floats(1e-3, 0.1), "length": floats(0.5, 30.0)},
-        optional={"E": floats(1e9, 3e11), "acts": st.sampled_from(["both", "positive",
-                                                                      "negative"])},
+        optional={
+            "E": floats(1e9, 3e11),
+            "acts": st.sampled_from(["both", "positive", "negative"]),
+        },
     ),
 )
 
@@ -97,9 +101,13 @@ def models(draw: st.DrawFn) -> dict[str, Any]:
     thickness = 2 * validate_model({**data}).geometry.half_sizes[0]
     n = draw(st.integers(0, 3))
     restrainers = [
-        {**draw(spring_stiffness), **draw(placement(thickness)),
-         **draw(optional({"name": st.text(min_size=1, max_size=20),
-                          "fails_at": floats(1e-4, 1.0)}))}
+        {
+            **draw(spring_stiffness),
+            **draw(placement(thickness)),
+            **draw(
+                optional({"name": st.text(min_size=1, max_size=20), "fails_at": floats(1e-4, 1.0)})
+            ),
+        }
         for _ in range(n)
     ]
     if restrainers:
@@ -110,8 +118,11 @@ def models(draw: st.DrawFn) -> dict[str, Any]:
     elif mass == "unit_weight":
         data["mass"] = {"unit_weight": draw(floats(1.0, 30.0))}
         data["geometry"]["width"] = draw(positive)
-    for name, strategy in (("restitution", restitution), ("motion", motion),
-                           ("analysis", analysis)):
+    for name, strategy in (
+        ("restitution", restitution),
+        ("motion", motion),
+        ("analysis", analysis),
+    ):
         table = draw(st.none() | strategy)
         if table is not None:
             data[name] = table
@@ -139,9 +150,14 @@ def test_every_valid_model_derives_a_block(data: dict[str, Any]) -> None:
 
 
 def test_round_trip_through_a_file(tmp_path: Path) -> None:
-    data = {"name": "Façade", "kind": "facade", "geometry": {"R": 5.04, "alpha": 0.05},
-            "mass": {"weight": 1755.0}, "motion": {"sides": "one"},
-            "restrainers": [{"k": 4e6, "radius": 7.0, "angle": 0.072}]}
+    data = {
+        "name": "Façade",
+        "kind": "facade",
+        "geometry": {"R": 5.04, "alpha": 0.05},
+        "mass": {"weight": 1755.0},
+        "motion": {"sides": "one"},
+        "restrainers": [{"k": 4e6, "radius": 7.0, "angle": 0.072}],
+    }
     model = validate_model(data)
     path = tmp_path / "m.toml"
     path.write_text(to_toml(model), encoding="utf-8")

@@ -43,6 +43,7 @@ def sig(x: float, digits: int) -> float:
 
 # --- geometry ------------------------------------------------------------------------------------
 
+
 def test_altar_thickness_and_height_give_the_papers_R_and_alpha() -> None:
     # Paper §3.2: equivalent prism 0.487 m thick, 2.96 m high → R = 1.499 m, α = 0.163 rad
     # (9.34°). The paper prints 3 decimals (R exact 1.49990, truncated to 1.499 by the paper):
@@ -71,6 +72,7 @@ def test_frequency_parameter_of_the_validation_blocks(R: float, p: float) -> Non
 
 # --- mass ---------------------------------------------------------------------------------------
 
+
 def test_weight_in_kN_gives_the_mass_in_kg() -> None:
     # Block.mass = W·1e3/g [kg]: 1755 kN / 9.81 m/s² (paper §4.2 weight; §4.3 "175-tons façade").
     m = block_mass(model(FACADE_GEOMETRY, mass={"weight": 1755.0}))
@@ -80,8 +82,7 @@ def test_weight_in_kN_gives_the_mass_in_kg() -> None:
 
 def test_unit_weight_times_volume() -> None:
     # W = γ·2b·2h·width: 18 kN/m³ × 0.5 × 4 × 3 m³ = 108 kN (paper §4.4 values).
-    d = describe(model({"thickness": 0.5, "height": 4.0, "width": 3.0},
-                       mass={"unit_weight": 18.0}))
+    d = describe(model({"thickness": 0.5, "height": 4.0, "width": 3.0}, mass={"unit_weight": 18.0}))
     assert d.weight == pytest.approx(108e3, rel=1e-12)
     assert d.mass == pytest.approx(108e3 / 9.81, rel=1e-12)
 
@@ -109,6 +110,7 @@ def test_stiffness_terms_of_the_facade_match_the_paper() -> None:
 
 
 # --- restitution -------------------------------------------------------------------------------
+
 
 def test_housner_restitution_of_the_altar() -> None:
     # Paper Eq. (3): e = 1 − 1.5 sin²α; α = 0.163 → 0.96050 (closed form, to rounding).
@@ -140,14 +142,16 @@ def test_explicit_restitution() -> None:
 
 # --- restrainers --------------------------------------------------------------------------------
 
+
 @pytest.mark.parametrize(
     ("diameter_mm", "k_paper"),
     [(2, 2.2e5), (5, 1.4e6), (10, 5.5e6), (20, 2.2e7), (30, 4.9e7), (40, 8.8e7), (50, 1.4e8)],
 )
 def test_tie_rod_stiffness_of_paper_table_2(diameter_mm: int, k_paper: float) -> None:
     # Paper Table 2: steel tie-rod, L = 3 m, E = 210 GPa; K printed to 2 significant digits.
-    m = with_restrainer(FACADE_GEOMETRY, kind="tie-rod", diameter=diameter_mm / 1e3,
-                        length=3.0, position="top")
+    m = with_restrainer(
+        FACADE_GEOMETRY, kind="tie-rod", diameter=diameter_mm / 1e3, length=3.0, position="top"
+    )
     spring = to_block(m).restrainers[0]
     assert sig(spring.k_pos, 2) == k_paper
     assert spring.k_neg == spring.k_pos
@@ -155,20 +159,29 @@ def test_tie_rod_stiffness_of_paper_table_2(diameter_mm: int, k_paper: float) ->
 
 def test_tie_rod_of_the_facade_case() -> None:
     # Paper §4.2: Ø 20 mm, 3.00 m → K_tie = 22.0E6 N/m (3 significant digits).
-    m = with_restrainer(FACADE_GEOMETRY, kind="tie-rod", diameter=0.020, length=3.0,
-                        radius=7.0, angle=0.072)
+    m = with_restrainer(
+        FACADE_GEOMETRY, kind="tie-rod", diameter=0.020, length=3.0, radius=7.0, angle=0.072
+    )
     assert sig(to_block(m).restrainers[0].k_pos, 3) == 22.0e6
 
 
 def test_tie_rod_modulus_and_acting_side() -> None:
     # K = E·π·d²/4 / L (spec/README.md); acts = "positive" → no stiffness while θ < 0.
-    m = with_restrainer(FACADE_GEOMETRY, kind="tie-rod", diameter=0.02, length=2.0, E=200e9,
-                        acts="positive", position="top")
+    m = with_restrainer(
+        FACADE_GEOMETRY,
+        kind="tie-rod",
+        diameter=0.02,
+        length=2.0,
+        E=200e9,
+        acts="positive",
+        position="top",
+    )
     spring = to_block(m).restrainers[0]
     assert spring.k_pos == pytest.approx(200e9 * math.pi * 0.02**2 / 4 / 2.0, rel=1e-12)
     assert spring.k_neg == 0.0
-    negative = with_restrainer(FACADE_GEOMETRY, kind="tie-rod", diameter=0.02, length=2.0,
-                               acts="negative", position="top")
+    negative = with_restrainer(
+        FACADE_GEOMETRY, kind="tie-rod", diameter=0.02, length=2.0, acts="negative", position="top"
+    )
     assert to_block(negative).restrainers[0].k_pos == 0.0
 
 
@@ -193,8 +206,9 @@ def test_top_position_is_the_papers_top_corner(geometry: dict[str, float]) -> No
 
 def test_radius_and_angle_are_the_same_for_both_pivots() -> None:
     # Paper §4.2: the vault at R_vault = 7.00 m, α_vault = 0.072 rad from the pivot.
-    spring = to_block(with_restrainer(FACADE_GEOMETRY, k=4e6, radius=7.0, angle=0.072)
-                      ).restrainers[0]
+    spring = to_block(with_restrainer(FACADE_GEOMETRY, k=4e6, radius=7.0, angle=0.072)).restrainers[
+        0
+    ]
     assert (spring.r_pos, spring.phi_pos, spring.r_neg, spring.phi_neg) == (7.0, 0.072, 7.0, 0.072)
 
 
@@ -202,8 +216,7 @@ def test_point_on_the_mid_plane_is_symmetric() -> None:
     # spec/rocking.md: x differs for θ > 0 and θ < 0 unless the point lies on the mid-plane
     # (x = b): there r = √(b² + z²), φ = atan(b/z) for both pivots.
     geometry = {"thickness": 0.5, "height": 4.0}
-    spring = to_block(with_restrainer(geometry, k=1e6, height=3.0, from_pivot=0.25)
-                      ).restrainers[0]
+    spring = to_block(with_restrainer(geometry, k=1e6, height=3.0, from_pivot=0.25)).restrainers[0]
     assert (spring.r_pos, spring.phi_pos) == (spring.r_neg, spring.phi_neg)
     assert spring.r_pos == pytest.approx(math.hypot(0.25, 3.0), rel=1e-12)
     assert spring.phi_pos == pytest.approx(math.atan(0.25 / 3.0), rel=1e-12)
@@ -213,8 +226,7 @@ def test_point_on_the_pivot_face_is_2b_from_the_other_pivot() -> None:
     # spec/rocking.md: a point on the pivot face (x = 0) at height z has r = z, φ = 0 about O;
     # about O′ it is 2b away horizontally.
     geometry = {"thickness": 0.5, "height": 4.0}
-    spring = to_block(with_restrainer(geometry, k=1e6, height=3.0, from_pivot=0.0)
-                      ).restrainers[0]
+    spring = to_block(with_restrainer(geometry, k=1e6, height=3.0, from_pivot=0.0)).restrainers[0]
     assert (spring.r_pos, spring.phi_pos) == (3.0, 0.0)
     assert (spring.r_neg, spring.phi_neg) == pytest.approx(point_polar(0.5, 3.0), rel=1e-12)
 
@@ -228,11 +240,15 @@ def test_point_on_the_top_corner_by_coordinates_equals_position_top() -> None:
 
 
 def test_failure_elongation_and_default_names() -> None:
-    m = model(FACADE_GEOMETRY, mass={"weight": 100.0}, restrainers=[
-        {"k": 4e6, "radius": 7.0, "angle": 0.072, "fails_at": 0.001},
-        {"name": "tie", "k": 1.0, "position": "top"},
-        {"k": 1.0, "position": "top"},
-    ])
+    m = model(
+        FACADE_GEOMETRY,
+        mass={"weight": 100.0},
+        restrainers=[
+            {"k": 4e6, "radius": 7.0, "angle": 0.072, "fails_at": 0.001},
+            {"name": "tie", "k": 1.0, "position": "top"},
+            {"k": 1.0, "position": "top"},
+        ],
+    )
     springs = to_block(m).restrainers
     assert [s.name for s in springs] == ["restrainer 1", "tie", "restrainer 3"]
     assert springs[0].fails_at == 0.001 and springs[0].can_fail
@@ -241,12 +257,14 @@ def test_failure_elongation_and_default_names() -> None:
 
 # --- motion and analysis ------------------------------------------------------------------------
 
+
 def test_one_sided_motion_frees_the_side_opposite_the_stopped_one() -> None:
     # spec/rocking.md, one-sided motion; model contract: stopped defaults to "negative".
     default = to_block(model(FACADE_GEOMETRY, motion={"sides": "one"}))
     assert (default.one_sided, default.free_side, default.rebound) == (True, POSITIVE, 1.0)
-    stopped_pos = to_block(model(FACADE_GEOMETRY, motion={"sides": "one", "stopped": "positive",
-                                                          "rebound": 0.6}))
+    stopped_pos = to_block(
+        model(FACADE_GEOMETRY, motion={"sides": "one", "stopped": "positive", "rebound": 0.6})
+    )
     assert (stopped_pos.free_side, stopped_pos.rebound) == (NEGATIVE, 0.6)
     assert to_block(model(FACADE_GEOMETRY)).one_sided is False
 
@@ -256,8 +274,16 @@ def test_solver_options_defaults_and_values() -> None:
     assert solver_options(model(FACADE_GEOMETRY)) == AnalysisOptions(
         tail=None, overturn_angle=math.pi / 2, rtol=1e-8, atol=1e-8, rest_velocity=1e-4
     )
-    given = model(FACADE_GEOMETRY, analysis={"tail": 20, "overturn_angle": 1.0, "rtol": 1e-6,
-                                             "atol": 1e-7, "rest_velocity": 1e-5,
-                                             "linearized": True})
+    given = model(
+        FACADE_GEOMETRY,
+        analysis={
+            "tail": 20,
+            "overturn_angle": 1.0,
+            "rtol": 1e-6,
+            "atol": 1e-7,
+            "rest_velocity": 1e-5,
+            "linearized": True,
+        },
+    )
     assert solver_options(given) == AnalysisOptions(20.0, 1.0, 1e-6, 1e-7, 1e-5)
     assert to_block(given).linearized is True
