@@ -12,7 +12,7 @@ EXIT_OVERTURNS = 1
 
 @click.command()
 @click.argument("model_path", metavar="MODEL", type=click.Path(dir_okay=False))
-@with_record_options
+@with_record_options()
 @click.option(
     "--engine",
     type=click.Choice(["fast", "reference"]),

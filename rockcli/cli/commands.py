@@ -6,6 +6,7 @@ import click
 
 from rockcli.cli.assess import assess
 from rockcli.cli.init import init
+from rockcli.cli.kinematic import kinematic
 from rockcli.cli.record import record
 from rockcli.cli.warmup import warmup
 
@@ -13,4 +14,5 @@ ALL: list[click.Command] = []
 ALL.append(record)
 ALL.append(init)
 ALL.append(assess)
+ALL.append(kinematic)
 ALL.append(warmup)

@@ -28,27 +28,38 @@ plain_units = click.option(
     metavar="g|m/s2|cm/s2",
     help="Acceleration unit of a plain-text record (default g).",
 )
-record_options = [
-    click.option(
-        "--record",
-        "record_path",
-        required=True,
-        type=click.Path(dir_okay=False),
-        help="Accelerogram: PEER AT2, ESM ASCII, ITACA cor.acc or plain text.",
-    ),
-    record_format,
-    plain_dt,
-    plain_units,
-    click.option("--scale", type=float, default=None, help="Multiply the record by this factor."),
-    click.option("--pga", type=float, default=None, help="Scale the record to this PGA [g]."),
-]
 
 
-def with_record_options(func):
+def record_options(required: bool) -> list:  # type: ignore[type-arg]
+    """The options that name a record and transform it."""
+    return [
+        click.option(
+            "--record",
+            "record_path",
+            required=required,
+            type=click.Path(dir_okay=False),
+            help="Accelerogram: PEER AT2, ESM ASCII, ITACA cor.acc or plain text"
+            + ("." if required else " (its response spectrum becomes the demand)."),
+        ),
+        record_format,
+        plain_dt,
+        plain_units,
+        click.option(
+            "--scale", type=float, default=None, help="Multiply the record by this factor."
+        ),
+        click.option("--pga", type=float, default=None, help="Scale the record to this PGA [g]."),
+    ]
+
+
+def with_record_options(required: bool = True):  # type: ignore[no-untyped-def]
     """Decorate a command with the record options."""
-    for option in reversed(record_options):
-        func = option(func)
-    return func
+
+    def decorate(func):  # type: ignore[no-untyped-def]
+        for option in reversed(record_options(required)):
+            func = option(func)
+        return func
+
+    return decorate
 
 
 def load_record(record_path, record_format, dt, units, scale, pga):

@@ -18,9 +18,11 @@ from collections.abc import Mapping
 from enum import StrEnum
 from typing import Any
 
-from pydantic import BaseModel, ConfigDict, Field, model_validator
+from pydantic import Field, model_validator
 
+from rockcli.model.ntc import Ntc
 from rockcli.model.rules import choose_group, forbid, number, rule_error
+from rockcli.model.schema_base import Table
 from rockcli.units import DEFAULT_GRAVITY
 
 #: Default steel modulus of a tie-rod [Pa] (paper Table 2: E = 210 GPa).
@@ -92,12 +94,6 @@ class Position(StrEnum):
     """Named attachment points."""
 
     TOP = "top"
-
-
-class Table(BaseModel):
-    """Base of every table of the file: unknown keys are errors, values are frozen."""
-
-    model_config = ConfigDict(extra="forbid", frozen=True)
 
 
 class Geometry(Table):
@@ -379,6 +375,7 @@ class Model(Table):
     motion: Motion = Field(Motion.model_validate({}), description="Two- or one-sided")
     analysis: Analysis = Field(Analysis.model_validate({}), description="Run settings")
     restrainers: tuple[Restrainer, ...] = Field((), description="Horizontal springs, any number")
+    ntc: Ntc | None = Field(None, description="Settings of the NTC kinematic check")
 
     @model_validator(mode="after")
     def _cross_table_rules(self) -> Model:

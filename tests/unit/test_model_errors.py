@@ -79,11 +79,10 @@ def test_valid_model_loads(tmp_path: Path) -> None:
 
 
 def test_unknown_table_at_top_level_exact_line(tmp_path: Path) -> None:
-    # [ntc] is reserved for the code-check settings, not defined yet: unknown for now.
-    line = message_for(tmp_path, table("ntc", edition=2019))
+    line = message_for(tmp_path, table("results", edition=2019))
     assert line == (
-        f"{tmp_path / 'm.toml'}: ntc: unknown key (allowed: one of: name, kind, notes, "
-        "geometry, mass, restitution, motion, analysis, restrainers)"
+        f"{tmp_path / 'm.toml'}: results: unknown key (allowed: one of: name, kind, notes, "
+        "geometry, mass, restitution, motion, analysis, restrainers, ntc)"
     )
 
 

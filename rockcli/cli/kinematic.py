@@ -1,0 +1,64 @@
+"""`rock kinematic MODEL`: the NTC kinematic analysis of the mechanism (spec/ntc.md)."""
+
+from __future__ import annotations
+
+import click
+
+from rockcli.cli.options import load_record, output_format, with_record_options
+
+
+def _site(value: str | None) -> tuple[float, float] | None:
+    from rockcli.errors import InputError
+
+    if value is None:
+        return None
+    try:
+        lon, lat = (float(x) for x in value.split(","))
+    except ValueError:
+        raise InputError(
+            "not a site",
+            where="--site",
+            value=value,
+            allowed="LON,LAT in decimal degrees, e.g. 13.40,42.35",
+        ) from None
+    return lon, lat
+
+
+@click.command()
+@click.argument("model_path", metavar="MODEL", type=click.Path(dir_okay=False))
+@click.option(
+    "--edition",
+    type=click.Choice(["2009", "2019"]),
+    default=None,
+    help="Override [ntc].edition: 2009 (NTC 2008 + Circ. 617/2009) or 2019.",
+)
+@with_record_options(required=False)
+@click.option(
+    "--site",
+    default=None,
+    metavar="LON,LAT",
+    help="Take the demand from the hazard grid at this site (overrides the model).",
+)
+@click.option(
+    "--hazard-grid",
+    "grid_file",
+    default=None,
+    type=click.Path(dir_okay=False),
+    help="NTC Allegato B grid file (default: $ROCK_HAZARD_GRID).",
+)
+@output_format
+def kinematic(
+    model_path, edition, record_path, record_format, dt, units, scale, pga, site, grid_file, output
+):  # type: ignore[no-untyped-def]
+    """NTC kinematic analysis of MODEL: α0, e*, a0*, capacity curve, DLS and ULS checks."""
+    from rockcli.report.kinematic import kinematic_report
+    from rockcli.report.table import show
+    from rockcli.studies.kinematic import run_kinematic
+
+    record = None
+    if record_path is not None:
+        record = load_record(record_path, record_format, dt, units, scale, pga)
+    doc = run_kinematic(
+        model_path, edition=edition, record=record, site=_site(site), grid_file=grid_file
+    )
+    show(doc, output, kinematic_report)

@@ -1,0 +1,109 @@
+"""The seismic demand of each limit state: a spectrum, and how it grows with ag.
+
+Either the code's elastic spectrum (NTC §3.2.3.2) from (ag, F0, Tc*) per limit state, or the
+elastic response spectrum of a record, its PGA in place of ag·S (spec/ntc.md, last
+paragraph of "Elastic response spectrum"). The 2019 rules turn demand into a capacity ground
+acceleration by root search over ag with F0 and Tc* fixed; a record scales linearly.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass
+from typing import Protocol
+
+#: Root search bounds on ag [g] for the 2019 capacities (beyond, the capacity is reported as
+#: "more than" the bound).
+AG_MIN, AG_MAX = 1e-4, 5.0
+#: Bisection iterations on ag (resolution AG_MAX·2⁻⁶⁰).
+AG_STEPS = 60
+
+
+class Spectrum(Protocol):
+    """A 5 %-damped (or ξ) elastic spectrum: acceleration in g, displacement in m."""
+
+    def Se(self, T: float, xi: float = 5.0) -> float: ...  # noqa: N802 (the code's symbol)
+
+    def SDe(self, T: float, xi: float = 5.0) -> float: ...  # noqa: N802
+
+    @property
+    def pga_ground(self) -> float: ...
+
+
+@dataclass(frozen=True)
+class ScaledSpectrum:
+    """A spectrum multiplied by a factor (a scaled record)."""
+
+    base: Spectrum
+    factor: float
+
+    def Se(self, T: float, xi: float = 5.0) -> float:  # noqa: N802
+        """Se of the base times the factor [g]."""
+        return self.factor * self.base.Se(T, xi)
+
+    def SDe(self, T: float, xi: float = 5.0) -> float:  # noqa: N802
+        """SDe of the base times the factor [m]."""
+        return self.factor * self.base.SDe(T, xi)
+
+    @property
+    def pga_ground(self) -> float:
+        """PGA of the base times the factor [g]."""
+        return self.factor * self.base.pga_ground
+
+
+@dataclass(frozen=True)
+class LimitStateDemand:
+    """The demand of one limit state.
+
+    Attributes:
+        limit_state: "SLO", "SLD", "SLV" or "SLC".
+        ag: the code's ag for it, or the record's PGA [g].
+        at_ag: the spectrum for another ag (same F0, Tc*, soil; or the record scaled).
+        source: how it was obtained, for the report.
+        parameters: (ag, F0, Tc*) when from the code, None for a record.
+    """
+
+    limit_state: str
+    ag: float
+    at_ag: Callable[[float], Spectrum]
+    source: str
+    parameters: tuple[float, float, float] | None = None
+
+    @property
+    def spectrum(self) -> Spectrum:
+        """The spectrum at the limit state's own ag."""
+        return self.at_ag(self.ag)
+
+
+def record_demand(limit_state: str, spectrum: Spectrum, name: str) -> LimitStateDemand:
+    """A record as the demand: ag ↔ its PGA, scaling linearly (spec/ntc.md)."""
+    pga = spectrum.pga_ground
+    return LimitStateDemand(
+        limit_state=limit_state,
+        ag=pga,
+        at_ag=lambda ag: ScaledSpectrum(spectrum, ag / pga),
+        source=f"record {name} (its response spectrum; PGA {pga:.4g} g in place of ag·S)",
+    )
+
+
+def capacity_ag(
+    demand: LimitStateDemand, measure: Callable[[Spectrum], float], capacity: float
+) -> float | None:
+    """The ag at which measure(spectrum(ag)) equals the capacity [g], by bisection.
+
+    Circolare 7/2019 §C8.7.1.2.1: the capacity of each check is the ground acceleration that
+    makes the demand equal to it. measure must grow with ag. None when even AG_MAX does not
+    reach the capacity (capacity beyond the search range).
+    """
+    lo, hi = AG_MIN, AG_MAX
+    if measure(demand.at_ag(hi)) < capacity:
+        return None
+    if measure(demand.at_ag(lo)) >= capacity:
+        return lo
+    for _ in range(AG_STEPS):
+        mid = 0.5 * (lo + hi)
+        if measure(demand.at_ag(mid)) < capacity:
+            lo = mid
+        else:
+            hi = mid
+    return 0.5 * (lo + hi)

@@ -1,0 +1,315 @@
+"""The kinematic analysis of the rocking mechanism: α0, M*, e*, a0*, the capacity curve, d0*.
+
+Circolare 617/2009 §C8A.4 and Circolare 7/2019 §C8.7.1.1–C8.7.1.5 (the same formulas in both
+editions; spec/ntc.md, "Common"). The block turns about its base edge on side s; weights P_i
+at points (x_i, z_i) from the pivot (x into the block, z up) have virtual displacements
+δx_i = z_i·δθ (horizontal) and δy_i = x_i·δθ (up). The restoring moment of the restrainers is
+the one the rocking engine uses (:mod:`rockcli.mechanics`), so a0*·e*·FC = g·tan α equals
+the engine's uplift threshold by construction.
+
+Pure and silent: only :mod:`math`.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+from rockcli.mechanics import Block, spring_failure_rotation, spring_moment
+
+#: Rotation searched for the zero of the capacity curve [rad]: beyond π/2 the block is flat.
+THETA_MAX = math.pi / 2
+#: Points used to bracket sign changes of α(θ) before bisection.
+BRACKET_POINTS = 400
+#: Bisection iterations (θ resolved to π/2·2⁻⁶⁰, far below any printed digit).
+BISECTION_STEPS = 60
+#: Share of the capacity a restrainer failure must remove to end the mechanism in the 2019
+#: rules (Circolare 7/2019 §C8.7.1.2.1: "riduzione della capacità superiore al 50%").
+FAILURE_DROP = 0.5
+
+
+@dataclass(frozen=True)
+class PointLoad:
+    """A weight acting on the mechanism.
+
+    Attributes:
+        name: label. weight: P [N]. x: horizontal distance from the pivot, into the block [m].
+        z: height above the pivot [m]. bears: True if it rests on the block (restoring and
+        overturning); False for a weight Q_k that only pushes it (C8A.4.1; C8.7.1.1).
+    """
+
+    name: str
+    weight: float
+    x: float
+    z: float
+    bears: bool = True
+
+
+@dataclass(frozen=True)
+class Mechanism:
+    """The block turning about one base edge, with its extra weights.
+
+    Attributes:
+        block: the rigid block and its restrainers (mass required).
+        side: the side it overturns to (+1: θ > 0, pivot O; −1: θ < 0, pivot O′).
+        loads: extra weights (floors, roof).
+        distributed: True when the block's mass is spread over its height for M* and e*
+            (e* = 0.75 for a lone rectangle), False when lumped at the centroid (e* = 1).
+    """
+
+    block: Block
+    side: int = 1
+    loads: tuple[PointLoad, ...] = ()
+    distributed: bool = False
+
+    @property
+    def weights(self) -> tuple[PointLoad, ...]:
+        """The block's own weight at its centroid (b, h), then the extra loads."""
+        own = PointLoad("block", self.block.weight, self.block.b, self.block.h)
+        return (own, *self.loads)
+
+
+def alpha0(mech: Mechanism) -> float:
+    """Load multiplier at activation α0 = Σ_bearing P_i x_i / Σ_all P_i z_i [-].
+
+    Circolare 617/2009 Eq. C8A.4.1 (virtual work α0 ΣP δx − ΣP δy = 0 with δx = z δθ,
+    δy = x δθ; external forces and internal work zero); Circolare 7/2019 §C8.7.1.1 (weights
+    that do not bear on the block only in the denominator). The block alone: tan α.
+    Restrainers without initial force do no virtual work at θ = 0 (spec/ntc.md).
+    """
+    num = sum(p.weight * p.x for p in mech.weights if p.bears)
+    den = sum(p.weight * p.z for p in mech.weights)
+    return num / den
+
+
+def _moments(mech: Mechanism) -> tuple[float, float]:
+    """(Σ P δx, Σ P δx²) per unit virtual rotation [N·m, N·m²], the block lumped or spread.
+
+    Spread over the height 2h: Σ P δx = W h, Σ P δx² = W (2h)²/3 (integrals of z and z²).
+    """
+    b = mech.block
+    own_1, own_2 = (
+        (b.weight * b.h, b.weight * 4.0 * b.h**2 / 3.0)
+        if mech.distributed
+        else (
+            b.weight * b.h,
+            b.weight * b.h**2,
+        )
+    )
+    first = own_1 + sum(p.weight * p.z for p in mech.loads)
+    second = own_2 + sum(p.weight * p.z**2 for p in mech.loads)
+    return first, second
+
+
+def participating_mass(mech: Mechanism) -> float:
+    """M* = (Σ P_i δx,i)² / (g Σ P_i δx,i²) [kg].
+
+    Circolare 617/2009 Eq. C8A.4.2; Circolare 7/2019 Eq. C8.7.1.2.
+    """
+    first, second = _moments(mech)
+    return first**2 / (mech.block.g * second)
+
+
+def e_star(mech: Mechanism) -> float:
+    """Participating mass fraction e* = g M* / Σ P_i [-].
+
+    Circolare 617/2009 Eq. C8A.4.3; Circolare 7/2019 Eq. C8.7.1.3. Block alone: 1 lumped,
+    0.75 spread over the height (spec/ntc.md).
+    """
+    total = sum(p.weight for p in mech.weights)
+    return mech.block.g * participating_mass(mech) / total
+
+
+def a0_star(alpha_0: float, e_s: float, FC: float, g: float) -> float:
+    """Spectral acceleration of activation a0* = α0 g / (e* FC) [m/s²].
+
+    Circolare 617/2009 Eq. C8A.4.4; Circolare 7/2019 Eq. C8.7.1.4.
+    """
+    return alpha_0 * g / (e_s * FC)
+
+
+def displacement_factor(mech: Mechanism) -> float:
+    """d*/d_k = Σ P δx² / (δx_k Σ P δx), control point the block's centroid (δx_k = h) [-].
+
+    Circolare 617/2009 Eq. C8A.4.5; Circolare 7/2019 Eq. C8.7.1.5.
+    """
+    first, second = _moments(mech)
+    return second / (mech.block.h * first)
+
+
+def control_displacement(mech: Mechanism, theta: float) -> float:
+    """Horizontal displacement of the centroid d_k = R[sin α − sin(α − θ)] [m] (spec/ntc.md)."""
+    b = mech.block
+    return b.R * (math.sin(b.alpha) - math.sin(b.alpha - theta))
+
+
+def rotation_at(mech: Mechanism, d_k: float) -> float:
+    """The rotation θ at which the centroid has moved d_k [m] (inverse of control_displacement)."""
+    b = mech.block
+    return b.alpha - math.asin(max(-1.0, min(1.0, math.sin(b.alpha) - d_k / b.R)))
+
+
+def _spring_moments(mech: Mechanism, theta: float, sure_only: bool, intact: bool) -> float:
+    """Σ restrainer moments at rotation θ on the mechanism's side [N·m].
+
+    sure_only: leave out every restrainer that can fail (spec/ntc.md: d0* on actions sure to
+    last until collapse). intact: ignore failure (the curve just before it).
+    """
+    total = 0.0
+    for sp in mech.block.restrainers:
+        k, r, phi = sp.side(mech.side)
+        if k == 0.0 or (sure_only and sp.can_fail):
+            continue
+        if not intact and theta > spring_failure_rotation(r, phi, sp.fails_at):
+            continue
+        total += spring_moment(k, r, phi, theta)
+    return total
+
+
+def load_multiplier(
+    mech: Mechanism, theta: float, *, sure_only: bool = False, intact: bool = False
+) -> float:
+    """α(θ): the horizontal load multiplier in equilibrium at rotation θ [-].
+
+    α(θ) = [Σ_bearing P_i (x_i cos θ − z_i sin θ) + Σ_k M_k(θ)] / Σ_all P_i (x_i sin θ + z_i cos θ)
+    (spec/ntc.md, "Capacity curve"; equilibrium in the rotated position, Circolare 617/2009
+    §C8A.4.2.3). The block alone: tan(α − θ). M_k: mechanics.spring_moment, as in the engine.
+    """
+    c, s = math.cos(theta), math.sin(theta)
+    restoring = sum(p.weight * (p.x * c - p.z * s) for p in mech.weights if p.bears)
+    overturning = sum(p.weight * (p.x * s + p.z * c) for p in mech.weights)
+    return (restoring + _spring_moments(mech, theta, sure_only, intact)) / overturning
+
+
+def _bisect(f, lo: float, hi: float) -> float:  # type: ignore[no-untyped-def]
+    """Root of f in [lo, hi] given f(lo) > 0 ≥ f(hi)."""
+    for _ in range(BISECTION_STEPS):
+        mid = 0.5 * (lo + hi)
+        if f(mid) > 0.0:
+            lo = mid
+        else:
+            hi = mid
+    return 0.5 * (lo + hi)
+
+
+def zero_rotation(mech: Mechanism) -> float | None:
+    """θ0 where the sure capacity curve first reaches α = 0, or None (positive stiffness).
+
+    The sure curve leaves out restrainers that can fail (spec/ntc.md, d0*).
+    """
+
+    def f(t: float) -> float:
+        return load_multiplier(mech, t, sure_only=True)
+
+    prev = 0.0
+    for k in range(1, BRACKET_POINTS + 1):
+        t = THETA_MAX * k / BRACKET_POINTS
+        if f(t) <= 0.0:
+            return _bisect(f, prev, t)
+        prev = t
+    return None
+
+
+def failure_rotations(mech: Mechanism) -> list[tuple[str, float, float]]:
+    """(name, θ_f, capacity drop) of each restrainer that fails on the mechanism's side.
+
+    The drop is the share of α lost when it fails: 1 − α_after/α_before at θ_f.
+    """
+    out = []
+    for sp in mech.block.restrainers:
+        k, r, phi = sp.side(mech.side)
+        theta_f = spring_failure_rotation(r, phi, sp.fails_at)
+        if k == 0.0 or not math.isfinite(theta_f) or theta_f >= THETA_MAX:
+            continue
+        before = load_multiplier(mech, theta_f, intact=True)
+        after = before - spring_moment(k, r, phi, theta_f) / _overturning(mech, theta_f)
+        out.append((sp.name, theta_f, 1.0 - after / before if before > 0 else 1.0))
+    return out
+
+
+def _overturning(mech: Mechanism, theta: float) -> float:
+    c, s = math.cos(theta), math.sin(theta)
+    return sum(p.weight * (p.x * s + p.z * c) for p in mech.weights)
+
+
+@dataclass(frozen=True)
+class Capacity:
+    """The equivalent SDOF capacity of a mechanism (Circolare 617/2009 §C8A.4.2.3).
+
+    Attributes:
+        alpha0, e_star, FC, g: as in the Circolare. a0_star [m/s²].
+        factor: d*/d_k. d0_star: d* where a* vanishes [m] (None: positive global stiffness).
+        linear: True when the curve is the code's straight line a0*(1 − d*/d0*) (constant
+            forces: no restrainers); False when it is the curve α(θ) itself.
+    """
+
+    mech: Mechanism
+    alpha0: float
+    e_star: float
+    FC: float
+    a0_star: float
+    factor: float
+    d0_star: float | None
+    linear: bool
+
+    def a_star(self, d_star: float) -> float:
+        """Spectral acceleration a*(d*) on the capacity curve [m/s²] (Eq. C8A.4.4 on α(d))."""
+        if self.linear and self.d0_star is not None:
+            return self.a0_star * (1.0 - d_star / self.d0_star)
+        theta = rotation_at(self.mech, d_star / self.factor)
+        alpha = load_multiplier(self.mech, theta, sure_only=True)
+        return alpha * self.mech.block.g / (self.e_star * self.FC)
+
+    def d_star_at(self, theta: float) -> float:
+        """Spectral displacement d* at rotation θ [m] (Eq. C8A.4.5)."""
+        return control_displacement(self.mech, theta) * self.factor
+
+
+def capacity(mech: Mechanism, FC: float) -> Capacity:
+    """α0, e*, a0*, d*/d_k and d0* of a mechanism, and which curve the code uses.
+
+    The straight line a0*(1 − d*/d0*) is the Circolare's curve under constant forces
+    (§C8A.4.2.3: "può essere assunta lineare"); with restrainers the curve α(θ) itself
+    (spec/ntc.md). d0* is the zero of the sure curve (restrainers that can fail left out).
+    """
+    a_0 = alpha0(mech)
+    e_s = e_star(mech)
+    theta0 = zero_rotation(mech)
+    factor = displacement_factor(mech)
+    d0 = None if theta0 is None else control_displacement(mech, theta0) * factor
+    linear = not any(sp.side(mech.side)[0] and not sp.can_fail for sp in mech.block.restrainers)
+    return Capacity(
+        mech=mech,
+        alpha0=a_0,
+        e_star=e_s,
+        FC=FC,
+        a0_star=a0_star(a_0, e_s, FC, mech.block.g),
+        factor=factor,
+        d0_star=d0,
+        linear=linear,
+    )
+
+
+def curve_points(cap: Capacity, n: int = 11) -> list[dict[str, float]]:
+    """The capacity curve as rows: θ, d_k, d*, α (all restrainers until failure), α sure, a*.
+
+    Sampled uniformly in d* from 0 to d0* (or to the rotation at which α of the sure curve
+    halves its growth limit, π/4, when there is no d0*).
+    """
+    mech = cap.mech
+    d_end = cap.d0_star if cap.d0_star is not None else cap.d_star_at(math.pi / 4)
+    rows = []
+    for k in range(n):
+        d_star = d_end * k / (n - 1)
+        theta = rotation_at(mech, d_star / cap.factor)
+        rows.append(
+            {
+                "theta": theta,
+                "d_k": d_star / cap.factor,
+                "d_star": d_star,
+                "alpha": load_multiplier(mech, theta),
+                "alpha_sure": load_multiplier(mech, theta, sure_only=True),
+                "a_star": cap.a_star(d_star),
+            }
+        )
+    return rows

@@ -1,0 +1,131 @@
+"""Results of the kinematic check: data, rendered elsewhere (spec/style.md, principle 6)."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from enum import StrEnum
+
+
+class Method(StrEnum):
+    """Linear (acceleration) or non-linear (displacement) kinematic analysis."""
+
+    LINEAR = "linear"
+    NONLINEAR = "nonlinear"
+
+
+class Location(StrEnum):
+    """Where the demand is taken: at the ground, or at the height of the mechanism."""
+
+    GROUND = "ground"
+    HEIGHT = "height"
+
+
+@dataclass(frozen=True)
+class Check:
+    """One verification: demand against capacity, the clause, any interpretation made.
+
+    Attributes:
+        limit_state: "DLS"/"ULS" (2009) or "SLD"/"SLV"/"SLC" (2019).
+        method, location: which check.
+        demand, capacity: in `unit`; capacity None when it cannot be computed (see note).
+        unit: "m/s²", "m" or "g".
+        passed: capacity ≥ demand; None when not evaluated.
+        clause: the article of the Circolare.
+        note: an interpretation or a reason it was not evaluated.
+    """
+
+    limit_state: str
+    method: Method
+    location: Location
+    demand: float | None
+    capacity: float | None
+    unit: str
+    clause: str
+    note: str = ""
+
+    @property
+    def passed(self) -> bool | None:
+        """capacity ≥ demand (None when either is missing)."""
+        if self.capacity is None or self.demand is None:
+            return None
+        return self.capacity >= self.demand
+
+    @property
+    def ratio(self) -> float | None:
+        """ζ = capacity / demand (≥ 1 passes)."""
+        if self.capacity is None or not self.demand:
+            return None
+        return self.capacity / self.demand
+
+
+@dataclass(frozen=True)
+class KinematicResult:
+    """The whole kinematic analysis of one mechanism under one demand.
+
+    Attributes:
+        edition: "2009" or "2019".
+        side: the side of overturning analysed (+1 or −1).
+        alpha0, e_star, a0_star [m/s²], FC, d0_star [m] (None: positive global stiffness),
+        linear_curve: which capacity curve the code's rules used.
+        quantities: the edition's derived quantities (du_star, ds_star, as_star, Ts; or d_SLV,
+            T_SLV, d_SLC, T_SLC …), by name, SI units.
+        checks: every verification.
+        curve: the capacity curve as rows (θ, d_k, d*, α, α sure, a*).
+        demand: a description of the demand (parameters per limit state, or the record).
+        notes: interpretations and warnings to show with the result.
+    """
+
+    edition: str
+    side: int
+    alpha0: float
+    e_star: float
+    a0_star: float
+    FC: float
+    d0_star: float | None
+    linear_curve: bool
+    quantities: dict[str, float | None]
+    checks: tuple[Check, ...]
+    curve: tuple[dict[str, float], ...]
+    demand: dict[str, object]
+    notes: tuple[str, ...] = field(default_factory=tuple)
+
+    def verdict(self) -> dict[str, bool | None]:
+        """DLS and ULS satisfied? (None: not evaluated).
+
+        DLS: every damage check. ULS: the non-linear checks when evaluated (the more refined
+        method, the paper's §3.3 choice), else the linear ones. 2019 also gives each limit
+        state (SLD, SLV, SLC).
+        """
+        out: dict[str, bool | None] = {
+            "DLS": _all(c for c in self.checks if c.limit_state in ("DLS", "SLD")),
+            "ULS": _uls(self.checks),
+        }
+        if self.edition == "2019":
+            for ls in ("SLD", "SLV", "SLC"):
+                out[ls] = _all(
+                    c for c in self.checks if c.limit_state == ls and _governs(c, self.checks)
+                )
+        return out
+
+
+def _governs(check: Check, checks: tuple[Check, ...]) -> bool:
+    """A check counts for its limit state: non-linear ones when present, else linear."""
+    if check.method is Method.NONLINEAR:
+        return True
+    return not any(
+        c.limit_state == check.limit_state and c.method is Method.NONLINEAR and c.passed is not None
+        for c in checks
+    )
+
+
+def _uls(checks: tuple[Check, ...]) -> bool | None:
+    uls = [c for c in checks if c.limit_state in ("ULS", "SLV", "SLC")]
+    nonlinear = [c for c in uls if c.method is Method.NONLINEAR and c.passed is not None]
+    return _all(nonlinear if nonlinear else uls)
+
+
+def _all(checks) -> bool | None:  # type: ignore[no-untyped-def]
+    results = [c.passed for c in checks]
+    if not results or any(r is None for r in results):
+        return None
+    return all(results)

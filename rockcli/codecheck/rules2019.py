@@ -1,0 +1,208 @@
+"""The 2019 rules: NTC 2018 + Circolare 7/2019 §C8.7.1 (in force).
+
+Every check is turned into the ground acceleration that brings the demand to the capacity
+(ag,SLD, ag,SLV, ag,SLC), compared with the code's ag of the limit state (or the record's
+PGA); ζ_E = capacity/demand. At height the demand is the floor spectrum of §C7.2.3
+(C7.2.5–C7.2.10 in spec/ntc.md). spec/ntc.md, "2019 rules".
+"""
+
+from __future__ import annotations
+
+import math
+
+from rockcli.codecheck import spectra
+from rockcli.codecheck.demand import LimitStateDemand, Spectrum, capacity_ag
+from rockcli.codecheck.kinematic import FAILURE_DROP, Capacity, failure_rotations
+from rockcli.codecheck.position import Position
+from rockcli.codecheck.result import Check, Location, Method
+
+CLAUSE = "Circ. 7/2019 §C8.7.1.2.1"
+CLAUSE_FLOOR = "Circ. 7/2019 §C7.2.3 (floor spectra)"
+#: d_SLV = 0.4·d0 and d_SLC = 0.6·d0 (§C8.7.1.2.1).
+SLV_SHARE, SLC_SHARE = 0.4, 0.6
+#: T_SLV = 1.68π √(d/a), T_SLC = 1.56π √(d/a) (§C8.7.1.2.1).
+SLV_PERIOD, SLC_PERIOD = 1.68 * math.pi, 1.56 * math.pi
+#: Damping of the mechanism in the demand spectrum [%] (§C8.7.1.2.1): 5 (SLD), 8 (SLV), 10 (SLC).
+DAMPING = {"SLD": 5.0, "SLV": 8.0, "SLC": 10.0}
+#: Damping of the building's mode in the floor spectrum [%] (§C7.2.3: ξ_k, 5 % unless given).
+BUILDING_DAMPING = 5.0
+#: Plateau limits of the floor spectrum, a·T_k ≤ T < b·T_k (§C7.2.3).
+PLATEAU_A, PLATEAU_B = 0.8, 1.1
+#: Reading adopted for ξ_k (spec/ntc.md, "Ambiguity"): a fraction in 1.1·ξ_k^−0.5, a
+#: percentage in √(1 + 0.0004·ξ_k²).
+FLOOR_READING = (
+    "floor spectrum: ξ_k as a fraction (0.05) in 1.1·ξ_k^−0.5 (plateau factor 4.92 at 5 %) and "
+    "in percent (5) in √(1 + 0.0004·ξ_k²); the text says percent for both, which would give a "
+    "plateau factor of 0.49 (spec/ntc.md, 'Ambiguity')"
+)
+
+
+def floor_acceleration(spec: Spectrum, pos: Position) -> float:
+    """a_Z = Se(T1, ξ_k)·|γ ψ(Z)|·√(1 + 0.0004 ξ_k²) [g], ξ_k in percent (§C7.2.3)."""
+    assert pos.T1 is not None
+    return (
+        spec.Se(pos.T1, BUILDING_DAMPING)
+        * abs(pos.gamma * pos.psi)
+        * math.sqrt(1.0 + 0.0004 * BUILDING_DAMPING**2)
+    )
+
+
+def floor_plateau(xi_mechanism: float) -> float:
+    """1.1·ξ_k^−0.5·η(ξ) [-], ξ_k as a fraction, η of the mechanism's damping ξ [%] (§C7.2.3)."""
+    return 1.1 * (BUILDING_DAMPING / 100.0) ** -0.5 * spectra.damping_correction(xi_mechanism)
+
+
+def floor_spectrum(T: float, a_z: float, T1: float, xi_mechanism: float) -> float:
+    """S_eZ(T) [g]: the floor spectrum at height for a mechanism of period T (§C7.2.3).
+
+    a_z·A on the plateau a·T1 ≤ T < b·T1 (A = floor_plateau), a_z·A/{1 + (A − 1)(1 − T/(a T1))^1.6}
+    below it, a_z·A/{1 + (A − 1)(T/(b T1) − 1)^1.2} above it.
+    """
+    amp = floor_plateau(xi_mechanism)
+    if T < PLATEAU_A * T1:
+        return a_z * amp / (1.0 + (amp - 1.0) * (1.0 - T / (PLATEAU_A * T1)) ** 1.6)
+    if T < PLATEAU_B * T1:
+        return a_z * amp
+    return a_z * amp / (1.0 + (amp - 1.0) * (T / (PLATEAU_B * T1) - 1.0) ** 1.2)
+
+
+def floor_displacement(T: float, a_z: float, T1: float, xi_mechanism: float, g: float) -> float:
+    """S_eZ(T)·T²/4π² [m], not less than S_eZ(T1)·(b T1)²/4π² for T > b·T1 (§C8.7.1.2.1)."""
+    d = floor_spectrum(T, a_z, T1, xi_mechanism) * g * T**2 / (4.0 * math.pi**2)
+    if T > PLATEAU_B * T1:
+        floor = (
+            floor_spectrum(T1, a_z, T1, xi_mechanism)
+            * g
+            * (PLATEAU_B * T1) ** 2
+            / (4.0 * math.pi**2)
+        )
+        d = max(d, floor)
+    return d
+
+
+def limit_displacements(
+    cap: Capacity, limit: float | None
+) -> tuple[float | None, float | None, str]:
+    """(d_SLV, d_SLC, note): 0.4·d0 and 0.6·d0 capped by a restrainer failure that removes more
+    than half the capacity (d_SLV) and by the given local limit (both) [m] (§C8.7.1.2.1)."""
+    note = ""
+    slv = [] if cap.d0_star is None else [SLV_SHARE * cap.d0_star]
+    slc = [] if cap.d0_star is None else [SLC_SHARE * cap.d0_star]
+    for name, theta_f, drop in failure_rotations(cap.mech):
+        if drop > FAILURE_DROP:
+            slv.append(cap.d_star_at(theta_f))
+            note = f"d_SLV capped by the failure of {name} ({100 * drop:.0f} % capacity drop)"
+    if limit is not None:
+        slv.append(limit)
+        slc.append(limit)
+    return (min(slv) if slv else None, min(slc) if slc else None, note)
+
+
+def _period(
+    share_period: float, d: float | None, cap: Capacity
+) -> tuple[float | None, float | None]:
+    if d is None:
+        return None, None
+    a = cap.a_star(d)
+    return a, (share_period * math.sqrt(d / a) if a > 0 else None)
+
+
+def sld_check(cap: Capacity, sld: LimitStateDemand, pos: Position, g: float) -> Check:
+    """ag,SLD: the ag at which the acceleration demand reaches a0* (rigid until activation).
+
+    Ground: ag·S = a0*/g; at height: a_Z = a0*/g (S_eZ at T = 0 is a_Z). §C8.7.1.2.1 (C8.7.1.8).
+    """
+    if pos.at_height:
+        ag = capacity_ag(sld, lambda sp: floor_acceleration(sp, pos) * g, cap.a0_star)
+        where, note = Location.HEIGHT, "capacity: a_Z(ag) = a0*, floor spectrum at T = 0"
+    else:
+        ag = capacity_ag(sld, lambda sp: sp.pga_ground * g, cap.a0_star)
+        where, note = Location.GROUND, "capacity: ag·S(ag) = a0*"
+    return Check("SLD", Method.LINEAR, where, sld.ag, ag, "g", CLAUSE, note)
+
+
+def slv_linear_check(
+    sld_cap: float | None, slv: LimitStateDemand, q: float, where: Location
+) -> Check:
+    """ag,SLV = q·ag,SLD (§C8.7.1.2.1, linear analysis)."""
+    cap = None if sld_cap is None else q * sld_cap
+    return Check(
+        "SLV", Method.LINEAR, where, slv.ag, cap, "g", CLAUSE, f"capacity q·ag,SLD, q = {q:g}"
+    )
+
+
+def displacement_check(
+    ls: str,
+    d: float | None,
+    T: float | None,
+    dem: LimitStateDemand,
+    pos: Position,
+    g: float,
+    sld_cap: float | None,
+) -> Check:
+    """ag at which the displacement demand at period T reaches d (root search), §C8.7.1.2.1.
+
+    Ground: SDe(T, ξ); at height: S_eZ(T)·T²/4π² (floor spectrum). If the capacity is below
+    ag,SLD it is taken as ag,SLD.
+    """
+    where = Location.HEIGHT if pos.at_height else Location.GROUND
+    if d is None or T is None:
+        return Check(
+            ls,
+            Method.NONLINEAR,
+            where,
+            dem.ag,
+            None,
+            "g",
+            CLAUSE,
+            "no limit displacement: positive global stiffness and no limit given",
+        )
+    xi = DAMPING[ls]
+    if pos.at_height:
+        assert pos.T1 is not None
+        T1 = pos.T1
+
+        def measure(sp: Spectrum) -> float:
+            return floor_displacement(T, floor_acceleration(sp, pos), T1, xi, g)
+    else:
+
+        def measure(sp: Spectrum) -> float:
+            return sp.SDe(T, xi)
+
+    ag = capacity_ag(dem, measure, d)
+    note = f"T = {T:.4f} s, ξ = {xi:g} %, d = {d:.5f} m"
+    if ag is not None and sld_cap is not None and ag < sld_cap:
+        ag, note = sld_cap, note + "; below ag,SLD: ag,SLD taken"
+    return Check(ls, Method.NONLINEAR, where, dem.ag, ag, "g", CLAUSE, note)
+
+
+def check_2019(
+    cap: Capacity,
+    demands: dict[str, LimitStateDemand],
+    pos: Position,
+    q: float,
+    limit: float | None,
+) -> tuple[dict[str, float | None], list[Check], list[str]]:
+    """Every 2019 check: SLD, SLV linear, SLV and SLC non-linear."""
+    g = cap.mech.block.g
+    d_slv, d_slc, cap_note = limit_displacements(cap, limit)
+    a_slv, T_slv = _period(SLV_PERIOD, d_slv, cap)
+    a_slc, T_slc = _period(SLC_PERIOD, d_slc, cap)
+    sld = sld_check(cap, demands["SLD"], pos, g)
+    checks = [
+        sld,
+        slv_linear_check(sld.capacity, demands["SLV"], q, sld.location),
+        displacement_check("SLV", d_slv, T_slv, demands["SLV"], pos, g, sld.capacity),
+        displacement_check("SLC", d_slc, T_slc, demands["SLC"], pos, g, sld.capacity),
+    ]
+    values = {
+        "d_SLV": d_slv,
+        "a_SLV": a_slv,
+        "T_SLV": T_slv,
+        "d_SLC": d_slc,
+        "a_SLC": a_slc,
+        "T_SLC": T_slc,
+        "ag_SLD": sld.capacity,
+    }
+    notes = [n for n in (cap_note, FLOOR_READING if pos.at_height else "") if n]
+    return values, checks, notes

@@ -1,0 +1,202 @@
+"""The `[ntc]` table of the model file: settings of the NTC kinematic check (spec/ntc.md).
+
+Validated here at the edge like every other table (unknown keys are errors, every number has
+its unit); :mod:`rockcli.model.derive` turns it into the code check's plain settings.
+"""
+
+from __future__ import annotations
+
+from enum import StrEnum
+
+from pydantic import Field, model_validator
+
+from rockcli.model.rules import choose_group, number, rule_error
+from rockcli.model.schema_base import Table
+
+#: Confidence factor of each knowledge level (Circolare 617/2009 §C8A.1.A.4, Tab. C8A.1.1;
+#: Circolare 7/2019 §C8.5.4, Tab. C8.5.IV): LC1 1.35, LC2 1.20, LC3 1.00.
+KNOWLEDGE_LEVEL_FC = {"LC1": 1.35, "LC2": 1.20, "LC3": 1.00}
+#: Range of FC accepted: the LC values and, for cultural heritage, 1 + ΣF_Ck (DPCM 9/2/2011).
+FC_MIN, FC_MAX = 1.0, 1.35
+#: Behaviour factor of the linear kinematic check (Circolare 617/2009 §C8A.4.2.2; C8.7.1.2.1).
+DEFAULT_Q = 2.0
+
+
+class Edition(StrEnum):
+    """Which code text the checks follow."""
+
+    E2009 = "2009"  # NTC 2008 + Circolare 617/2009 §C8A.4
+    E2019 = "2019"  # NTC 2018 + Circolare 7/2019 §C8.7.1
+
+
+class KnowledgeLevel(StrEnum):
+    """Knowledge level of the building (sets FC)."""
+
+    LC1 = "LC1"
+    LC2 = "LC2"
+    LC3 = "LC3"
+
+
+class SoilClass(StrEnum):
+    """Subsoil category (NTC §3.2.2, Tab. 3.2.II)."""
+
+    A = "A"
+    B = "B"
+    C = "C"
+    D = "D"
+    E = "E"
+
+
+class TopographyClass(StrEnum):
+    """Topographic category (NTC §3.2.2, Tab. 3.2.III)."""
+
+    T1 = "T1"
+    T2 = "T2"
+    T3 = "T3"
+    T4 = "T4"
+
+
+class MassDistribution(StrEnum):
+    """How the block's mass enters M* and e* (spec/ntc.md: lumped by default, e* = 1)."""
+
+    LUMPED = "lumped"
+    DISTRIBUTED = "distributed"
+
+
+class Site(Table):
+    """Site coordinates for the hazard grid (DM 14/01/2008, Allegato B)."""
+
+    lon: float = number("Longitude, east [deg]", ..., ge=-180, le=180)
+    lat: float = number("Latitude, north [deg]", ..., ge=-90, le=90)
+
+
+class SpectrumParameters(Table):
+    """Spectrum parameters of one limit state, given directly (NTC §3.2, Allegato B)."""
+
+    ag: float = number("Peak ground acceleration on rock ag [g]", ..., gt=0, le=2)
+    F0: float = number("Maximum spectral amplification F0 [-]", ..., ge=1.5, le=4)
+    Tc_star: float = number(
+        "Period Tc* at the start of the constant-velocity branch [s]", ..., gt=0, le=2
+    )
+
+
+class Demand(Table):
+    """Spectrum parameters per limit state (SLO, SLD, SLV, SLC), instead of a site."""
+
+    SLO: SpectrumParameters | None = Field(None, description="Operational limit state")
+    SLD: SpectrumParameters | None = Field(None, description="Damage limit state (DLS)")
+    SLV: SpectrumParameters | None = Field(None, description="Life-safety limit state (ULS)")
+    SLC: SpectrumParameters | None = Field(None, description="Collapse limit state")
+
+
+class Load(Table):
+    """An extra weight acting on the mechanism (floor, roof) for α0, M* and e*.
+
+    Circolare 617/2009 §C8A.4.1 (and C8.7.1.1): weights P_i applied at their points; a weight
+    that does not bear on the block but pushes it (Q_k, e.g. a floor resting on another wall
+    and tied to this one) adds a horizontal inertial force but no restoring moment.
+    """
+
+    name: str | None = Field(None, min_length=1, description="Label")
+    weight: float = number("Weight [kN]", ..., gt=0)
+    height: float = number("Height of its point of application above the pivot [m]", ..., ge=0)
+    from_pivot: float | None = number(
+        "Horizontal distance of its point of application from the pivot, inside the block; "
+        "default: the mid-plane b [m]",
+        ge=0,
+    )
+    bears: bool = Field(
+        True,
+        strict=True,
+        description="true: it bears on the block (restoring and overturning); false: it only "
+        "pushes it (Q_k, denominator of α0 only)",
+    )
+
+
+class Ntc(Table):
+    """Settings of the NTC kinematic check (spec/ntc.md)."""
+
+    edition: Edition = Field(
+        Edition.E2019,
+        description="'2009' (NTC 2008 + Circ. 617/2009) or '2019' (NTC 2018 + Circ. 7/2019, "
+        "in force); default '2019'",
+    )
+    FC: float | None = number(
+        "Confidence factor in [1, 1.35] (or knowledge_level); default 1.35 (LC1) [-]",
+        ge=FC_MIN,
+        le=FC_MAX,
+    )
+    knowledge_level: KnowledgeLevel | None = Field(
+        None, description="'LC1' (FC 1.35), 'LC2' (1.20) or 'LC3' (1.00), instead of FC"
+    )
+    q: float = number("Behaviour factor of the linear check; default 2.0 [-]", DEFAULT_Q, ge=1)
+    soil: SoilClass = Field(SoilClass.A, description="Subsoil category A–E; default A")
+    topography: TopographyClass = Field(
+        TopographyClass.T1, description="Topographic category T1–T4; default T1"
+    )
+    VN: float = number("Nominal life VN; default 50 [years]", 50.0, gt=0)
+    CU: float = number(
+        "Use coefficient CU (class I 0.7, II 1.0, III 1.5, IV 2.0); default 1 [-]", 1.0, gt=0
+    )
+    Z: float = number(
+        "Height of the base of the mechanism above the foundation; 0 on the ground [m]", 0.0, ge=0
+    )
+    H: float | None = number("Height of the building above the foundation, with Z > 0 [m]", gt=0)
+    N: int | None = Field(
+        None, strict=True, ge=1, description="Number of storeys, with Z > 0 (for γ = 3N/(2N+1))"
+    )
+    T1: float | None = number(
+        "First period of the building, with Z > 0; default C1·H^0.75 with C1 = 0.05 "
+        "(NTC §7.3.3.2) [s]",
+        gt=0,
+    )
+    gamma: float | None = number("Modal participation factor γ; default 3N/(2N+1) [-]", gt=0)
+    psi: float | None = number("First mode shape ψ(Z); default Z/H [-]", gt=0)
+    mass_distribution: MassDistribution = Field(
+        MassDistribution.LUMPED,
+        description="'lumped' (weight at the centroid, e* = 1; default) or 'distributed' "
+        "(over the height, e* = 0.75 for a rectangle)",
+    )
+    ultimate_displacement: float | None = number(
+        "Displacement of the control point at which a local incompatibility (or, with a "
+        "positive global stiffness, the designer's limit) ends the mechanism; caps du* "
+        "(2009), d_SLV and d_SLC (2019) [m]",
+        gt=0,
+    )
+    site: Site | None = Field(None, description="Site coordinates, demand from the hazard grid")
+    demand: Demand | None = Field(None, description="Spectrum parameters per limit state")
+    loads: tuple[Load, ...] = Field((), description="Extra weights on the mechanism")
+
+    @model_validator(mode="after")
+    def _consistent(self) -> Ntc:
+        """FC or knowledge_level; the position in the building complete when Z > 0."""
+        allowed = "FC in [1, 1.35], or knowledge_level = 'LC1' | 'LC2' | 'LC3'"
+        choose_group(self.__dict__, [("FC",), ("knowledge_level",)], allowed)
+        if self.site is not None and self.demand is not None:
+            raise rule_error(
+                "demand", "not allowed together with site", "[ntc.site] or [ntc.demand.*]"
+            )
+        if self.Z > 0:
+            self._check_height()
+        return self
+
+    def _check_height(self) -> None:
+        if self.H is None:
+            raise rule_error("H", "required when Z > 0 (element at height)", "a number > 0 [m]")
+        if self.Z > self.H:
+            raise rule_error(
+                "Z", f"above the building height H = {self.H:g} m", "0 <= Z <= H [m]", self.Z
+            )
+        if self.N is None and self.gamma is None:
+            raise rule_error(
+                "N", "required when Z > 0 (for γ = 3N/(2N+1)), or give gamma", "an integer >= 1"
+            )
+
+    @property
+    def confidence_factor(self) -> float:
+        """FC: as given, from the knowledge level, or 1.35 (LC1) by default."""
+        if self.FC is not None:
+            return self.FC
+        if self.knowledge_level is not None:
+            return KNOWLEDGE_LEVEL_FC[self.knowledge_level.value]
+        return KNOWLEDGE_LEVEL_FC["LC1"]

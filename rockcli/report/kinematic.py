@@ -1,0 +1,128 @@
+"""The `rock kinematic` result as data: the JSON document and the Report for the terminal."""
+
+from __future__ import annotations
+
+from typing import Any
+
+from rockcli import __version__
+from rockcli.codecheck.result import Check, KinematicResult
+from rockcli.report.table import Column, Report, Table, key_value
+
+SCHEMA = 1
+
+
+def check_document(c: Check) -> dict[str, Any]:
+    """One check, full precision."""
+    return {
+        "limit_state": c.limit_state,
+        "method": str(c.method),
+        "location": str(c.location),
+        "demand": c.demand,
+        "capacity": c.capacity,
+        "unit": c.unit,
+        "ratio": c.ratio,
+        "passed": c.passed,
+        "clause": c.clause,
+        "note": c.note,
+    }
+
+
+def kinematic_document(name: str, result: KinematicResult) -> dict[str, Any]:
+    """The whole `rock kinematic --format json` document (schema 1)."""
+    return {
+        "schema": SCHEMA,
+        "rock_version": __version__,
+        "model": {"name": name},
+        "edition": result.edition,
+        "side": result.side,
+        "alpha0": result.alpha0,
+        "e_star": result.e_star,
+        "a0_star": result.a0_star,
+        "FC": result.FC,
+        "d0_star": result.d0_star,
+        **result.quantities,
+        "linear_curve": result.linear_curve,
+        "checks": [check_document(c) for c in result.checks],
+        "curve": list(result.curve),
+        "demand": result.demand,
+        "notes": list(result.notes),
+        "verdict": result.verdict(),
+    }
+
+
+CHECK_COLUMNS = (
+    Column("limit_state", "limit state"),
+    Column("method", "method"),
+    Column("location", "at"),
+    Column("demand", "demand", "", "{:.4g}"),
+    Column("capacity", "capacity", "", "{:.4g}"),
+    Column("unit", "unit"),
+    Column("ratio", "ζ = C/D", "", "{:.3f}"),
+    Column("passed", "passed"),
+    Column("clause", "clause"),
+)
+CURVE_COLUMNS = (
+    Column("theta", "θ", "rad", "{:.5f}"),
+    Column("d_star", "d*", "m", "{:.5f}"),
+    Column("alpha", "α", "", "{:.5f}"),
+    Column("alpha_sure", "α sure", "", "{:.5f}"),
+    Column("a_star", "a*", "m/s²", "{:.4f}"),
+)
+QUANTITIES = {
+    "du_star": ("ultimate displacement du*", "m"),
+    "ds_star": ("ds* = 0.4 du*", "m"),
+    "as_star": ("as* = a*(ds*)", "m/s²"),
+    "Ts": ("secant period Ts", "s"),
+    "d_SLV": ("d_SLV", "m"),
+    "T_SLV": ("T_SLV", "s"),
+    "d_SLC": ("d_SLC", "m"),
+    "T_SLC": ("T_SLC", "s"),
+    "ag_SLD": ("capacity ag,SLD", "g"),
+}
+
+
+def kinematic_report(doc: dict[str, Any]) -> Report:
+    """The terminal report of a kinematic document."""
+    edition = {"2009": "NTC 2008 + Circ. 617/2009", "2019": "NTC 2018 + Circ. 7/2019"}[
+        doc["edition"]
+    ]
+    items = [
+        ("edition", edition, "", ""),
+        ("side of overturning", "θ > 0" if doc["side"] > 0 else "θ < 0", "", ""),
+        ("load multiplier α0", doc["alpha0"], "", "{:.5f}"),
+        ("participating mass fraction e*", doc["e_star"], "", "{:.4f}"),
+        ("confidence factor FC", doc["FC"], "", "{:.3g}"),
+        ("activation acceleration a0*", doc["a0_star"], "m/s²", "{:.4f}"),
+        ("d0* (a* = 0)", doc["d0_star"], "m", "{:.5f}"),
+        *(
+            (label, doc[key], unit, "{:.5g}")
+            for key, (label, unit) in QUANTITIES.items()
+            if key in doc
+        ),
+    ]
+    demand = key_value("Demand", [(ls, src, "", "") for ls, src in doc["demand"].items()])
+    tables = (
+        key_value("Mechanism and equivalent oscillator", items),
+        Table("Capacity curve", CURVE_COLUMNS, tuple(doc["curve"])),
+        demand,
+        Table("Checks", CHECK_COLUMNS, tuple(doc["checks"])),
+    )
+    notes = [
+        *doc["notes"],
+        *(
+            f"{c['limit_state']} {c['method']} {c['location']}: {c['note']}"
+            for c in doc["checks"]
+            if c["note"]
+        ),
+    ]
+    verdict = ", ".join(f"{k} {_word(v)}" for k, v in doc["verdict"].items())
+    return Report(
+        title=f"rock kinematic — {doc['model']['name']}",
+        tables=tables,
+        notes=tuple(notes),
+        verdict=verdict,
+    )
+
+
+def _word(value: bool | None) -> str:
+    return "not evaluated" if value is None else ("satisfied" if value else "NOT satisfied")

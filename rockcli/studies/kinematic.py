@@ -1,0 +1,208 @@
+"""The kinematic workflow: model file (+ record or site) → mechanism → demand → checks → result.
+
+Composition only: the formulas live in :mod:`rockcli.codecheck`; the settings come from
+:mod:`rockcli.model.derive_ntc`. The demand of each limit state is, in this order: the record
+given on the command line (its response spectrum), a site given on the command line, the
+model's [ntc.demand.*] parameters, the model's [ntc.site] with the hazard grid.
+"""
+
+from __future__ import annotations
+
+from dataclasses import replace
+
+from rockcli.codecheck import rules2009, rules2019
+from rockcli.codecheck.demand import LimitStateDemand, record_demand
+from rockcli.codecheck.kinematic import Capacity, Mechanism, PointLoad, capacity, curve_points
+from rockcli.codecheck.position import position
+from rockcli.codecheck.result import KinematicResult
+from rockcli.errors import InputError
+from rockcli.mechanics import Block
+from rockcli.model.derive_ntc import NtcSettings
+from rockcli.records.record import Record
+
+#: Limit states each edition checks.
+LIMIT_STATES = {"2009": ("SLD", "SLV"), "2019": ("SLD", "SLV", "SLC")}
+#: Unit mass given to a block without a [mass] table: the kinematic ratios (α0, e*, a0*, d0*)
+#: of a block alone do not depend on its mass [kg].
+UNIT_MASS = 1.0
+
+
+def mechanism(block: Block, settings: NtcSettings, side: int) -> Mechanism:
+    """The mechanism on one side, with the extra loads placed on it."""
+    if block.mass is None:
+        if settings.loads:
+            raise InputError(
+                "extra loads need the block's own weight",
+                where="mass",
+                allowed="a [mass] table with weight [kN] or unit_weight [kN/m³]",
+            )
+        block = replace(block, mass=UNIT_MASS)
+    loads = tuple(
+        PointLoad(ld.name, ld.weight, block.b if ld.x is None else ld.x, ld.z, ld.bears)
+        for ld in settings.loads
+    )
+    return Mechanism(block=block, side=side, loads=loads, distributed=settings.distributed)
+
+
+def governing_capacity(block: Block, settings: NtcSettings) -> Capacity:
+    """The capacity of the side the block overturns to most easily.
+
+    One-sided motion: the free side. Two-sided: both sides, the one with the smaller d0*
+    (a side without d0*, positive stiffness, is the stronger; ties: θ > 0).
+    """
+    sides = (block.free_side,) if block.one_sided else (1, -1)
+    caps = [capacity(mechanism(block, settings, s), settings.FC) for s in sides]
+    return min(caps, key=lambda c: (c.d0_star is None, c.d0_star or 0.0, -c.mech.side))
+
+
+def code_demand(
+    ls: str, params: tuple[float, float, float], settings: NtcSettings, g: float, source: str
+) -> LimitStateDemand:
+    """The code's elastic spectrum of one limit state, for any ag with F0 and Tc* fixed."""
+    from rockcli.codecheck.spectra import ElasticSpectrum, Soil, Topography
+
+    ag, F0, Tc = params
+    soil, topo = Soil(settings.soil), Topography(settings.topography)
+    return LimitStateDemand(
+        limit_state=ls,
+        ag=ag,
+        parameters=params,
+        source=source,
+        at_ag=lambda a: ElasticSpectrum(ag=a, F0=F0, Tc_star=Tc, soil=soil, topography=topo, g=g),
+    )
+
+
+def site_demands(
+    settings: NtcSettings, site: tuple[float, float], grid_file: str | None, g: float
+) -> dict[str, LimitStateDemand]:
+    """Each limit state's spectrum at a site: TR from VN·CU, (ag, F0, Tc*) from the grid."""
+    from rockcli.codecheck.hazard import grid_path, read_grid, site_parameters
+    from rockcli.codecheck.spectra import LimitState, return_period
+
+    grid = read_grid(grid_path(grid_file))
+    out = {}
+    for ls in LIMIT_STATES[settings.edition]:
+        TR = return_period(settings.VN, settings.CU, LimitState(ls), settings.edition)
+        params = site_parameters(grid, site[0], site[1], TR)
+        out[ls] = code_demand(
+            ls, params, settings, g, f"site {site[0]:.4f} E {site[1]:.4f} N, TR = {TR:.0f} years"
+        )
+    return out
+
+
+def given_demands(settings: NtcSettings, g: float) -> dict[str, LimitStateDemand]:
+    """Each limit state's spectrum from the model's [ntc.demand.*] parameters."""
+    out = {}
+    for ls in LIMIT_STATES[settings.edition]:
+        if ls not in settings.demand:
+            raise InputError(
+                "missing the spectrum parameters of this limit state",
+                where=f"ntc.demand.{ls}",
+                allowed="ag [g], F0, Tc_star [s]",
+            )
+        out[ls] = code_demand(ls, settings.demand[ls], settings, g, "[ntc.demand] parameters")
+    return out
+
+
+def demands(
+    settings: NtcSettings,
+    g: float,
+    record: Record | None,
+    site: tuple[float, float] | None,
+    grid_file: str | None,
+) -> dict[str, LimitStateDemand]:
+    """The demand of every limit state the edition checks (order: record, site, model)."""
+    if record is not None:
+        from rockcli.codecheck.response import RecordSpectrum
+
+        spec = RecordSpectrum.from_record(record, g=g)
+        return {ls: record_demand(ls, spec, record.name) for ls in LIMIT_STATES[settings.edition]}
+    if site is not None:
+        return site_demands(settings, site, grid_file, g)
+    if settings.demand:
+        return given_demands(settings, g)
+    if settings.site is not None:
+        return site_demands(settings, settings.site, grid_file, g)
+    raise InputError(
+        "no seismic demand",
+        where="ntc",
+        allowed="[ntc.site] with a hazard grid, [ntc.demand.SLD/SLV/SLC], --site LON,LAT or --record FILE",
+    )
+
+
+def analyse(
+    block: Block, settings: NtcSettings, dem: dict[str, LimitStateDemand]
+) -> KinematicResult:
+    """The kinematic analysis and the checks of the settings' edition."""
+    cap = governing_capacity(block, settings)
+    pos = position(settings.Z, settings.H, settings.N, settings.T1, settings.gamma, settings.psi)
+    notes = [*pos.notes, *(f"default {d}" for d in settings.defaults)]
+    notes.append(
+        "capacity curve: "
+        + (
+            "linear a0*(1 − d*/d0*), constant forces (§C8A.4.2.3)"
+            if cap.linear
+            else "α(θ) with the restrainers (spec/ntc.md)"
+        )
+    )
+    if cap.d0_star is None:
+        notes.append("positive global stiffness: α never vanishes, no d0*")
+    if settings.edition == "2009":
+        values, checks = rules2009.check_2009(
+            cap, dem["SLD"], dem["SLV"], pos, settings.q, _limit(cap, settings)
+        )
+    else:
+        values, checks, extra = rules2019.check_2019(
+            cap, dem, pos, settings.q, _limit(cap, settings)
+        )
+        notes += extra
+        notes.append(
+            "rigid until activation: the elastic branch of free elements (§C8.7.1.6–7) is not modelled"
+        )
+    return KinematicResult(
+        edition=settings.edition,
+        side=cap.mech.side,
+        alpha0=cap.alpha0,
+        e_star=cap.e_star,
+        a0_star=cap.a0_star,
+        FC=cap.FC,
+        d0_star=cap.d0_star,
+        linear_curve=cap.linear,
+        quantities=values,
+        checks=tuple(checks),
+        curve=tuple(curve_points(cap)),
+        demand={ls: d.source for ls, d in dem.items()},
+        notes=tuple(notes),
+    )
+
+
+def _limit(cap: Capacity, settings: NtcSettings) -> float | None:
+    """The local ultimate displacement as a spectral displacement d* [m]."""
+    return None if settings.limit is None else settings.limit * cap.factor
+
+
+def run_kinematic(
+    model_path: str,
+    *,
+    edition: str | None = None,
+    record: Record | None = None,
+    site: tuple[float, float] | None = None,
+    grid_file: str | None = None,
+) -> dict:  # type: ignore[type-arg]
+    """Load the model, build the demand, run the checks; the JSON document."""
+    from rockcli.model.derive import to_block
+    from rockcli.model.derive_ntc import ntc_settings
+    from rockcli.model.load import load_model
+    from rockcli.report.kinematic import kinematic_document
+
+    model = load_model(model_path)
+    settings = ntc_settings(model)
+    if edition is not None:
+        settings = replace(
+            settings,
+            edition=edition,
+            defaults=tuple(d for d in settings.defaults if not d.startswith("edition")),
+        )
+    block = to_block(model)
+    result = analyse(block, settings, demands(settings, block.g, record, site, grid_file))
+    return kinematic_document(model.name, result)
