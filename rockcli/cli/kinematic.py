@@ -49,7 +49,7 @@ def _site(value: str | None) -> tuple[float, float] | None:
 @output_format
 def kinematic(
     model_path, edition, record_path, record_format, dt, units, scale, pga, site, grid_file, output
-):  # type: ignore[no-untyped-def]
+):
     """NTC kinematic analysis of MODEL: α0, e*, a0*, capacity curve, DLS and ULS checks."""
     from rockcli.report.kinematic import kinematic_report
     from rockcli.report.table import show

@@ -30,7 +30,7 @@ plain_units = click.option(
 )
 
 
-def record_options(required: bool) -> list:  # type: ignore[type-arg]
+def record_options(required: bool) -> list:
     """The options that name a record and transform it."""
     return [
         click.option(
@@ -51,10 +51,10 @@ def record_options(required: bool) -> list:  # type: ignore[type-arg]
     ]
 
 
-def with_record_options(required: bool = True):  # type: ignore[no-untyped-def]
+def with_record_options(required: bool = True):
     """Decorate a command with the record options."""
 
-    def decorate(func):  # type: ignore[no-untyped-def]
+    def decorate(func):
         for option in reversed(record_options(required)):
             func = option(func)
         return func

@@ -181,7 +181,7 @@ def load_multiplier(
     return (restoring + _spring_moments(mech, theta, sure_only, intact)) / overturning
 
 
-def _bisect(f, lo: float, hi: float) -> float:  # type: ignore[no-untyped-def]
+def _bisect(f, lo: float, hi: float) -> float:
     """Root of f in [lo, hi] given f(lo) > 0 ≥ f(hi)."""
     for _ in range(BISECTION_STEPS):
         mid = 0.5 * (lo + hi)

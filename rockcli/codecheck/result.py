@@ -48,14 +48,14 @@ class Check:
         """capacity ≥ demand (None when either is missing)."""
         if self.capacity is None or self.demand is None:
             return None
-        return self.capacity >= self.demand
+        return bool(self.capacity >= self.demand)
 
     @property
     def ratio(self) -> float | None:
         """ζ = capacity / demand (≥ 1 passes)."""
         if self.capacity is None or not self.demand:
             return None
-        return self.capacity / self.demand
+        return float(self.capacity / self.demand)
 
 
 @dataclass(frozen=True)
@@ -124,7 +124,7 @@ def _uls(checks: tuple[Check, ...]) -> bool | None:
     return _all(nonlinear if nonlinear else uls)
 
 
-def _all(checks) -> bool | None:  # type: ignore[no-untyped-def]
+def _all(checks) -> bool | None:
     results = [c.passed for c in checks]
     if not results or any(r is None for r in results):
         return None

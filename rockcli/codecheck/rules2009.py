@@ -17,9 +17,9 @@ ACC = "m/s²"
 #: du* = 0.4·d0* and ds* = 0.4·du* (Circolare 617/2009 §C8A.4.2.3).
 DU_SHARE = 0.4
 DS_SHARE = 0.4
-CLAUSE_SLD = "Circ. 617/2009 §C8A.4.2.1"
-CLAUSE_SLV_LINEAR = "Circ. 617/2009 §C8A.4.2.2"
-CLAUSE_SLV_NONLINEAR = "Circ. 617/2009 §C8A.4.2.3"
+CLAUSE_SLD = "§C8A.4.2.1"
+CLAUSE_SLV_LINEAR = "§C8A.4.2.2"
+CLAUSE_SLV_NONLINEAR = "§C8A.4.2.3"
 
 
 def du_star(d0: float | None, limit: float | None) -> float | None:

@@ -16,8 +16,8 @@ from rockcli.codecheck.kinematic import FAILURE_DROP, Capacity, failure_rotation
 from rockcli.codecheck.position import Position
 from rockcli.codecheck.result import Check, Location, Method
 
-CLAUSE = "Circ. 7/2019 §C8.7.1.2.1"
-CLAUSE_FLOOR = "Circ. 7/2019 §C7.2.3 (floor spectra)"
+CLAUSE = "§C8.7.1.2.1"
+CLAUSE_FLOOR = "§C7.2.3"
 #: d_SLV = 0.4·d0 and d_SLC = 0.6·d0 (§C8.7.1.2.1).
 SLV_SHARE, SLC_SHARE = 0.4, 0.6
 #: T_SLV = 1.68π √(d/a), T_SLC = 1.56π √(d/a) (§C8.7.1.2.1).

@@ -11,18 +11,25 @@ from rockcli.report.table import Column, Report, Table, key_value
 SCHEMA = 1
 
 
-def check_document(c: Check) -> dict[str, Any]:
+CIRCOLARE = {"2009": "Circolare 617/2009", "2019": "Circolare 7/2019"}
+
+
+def _number(x: float | None) -> float | None:
+    return None if x is None else float(x)
+
+
+def check_document(c: Check, edition: str) -> dict[str, Any]:
     """One check, full precision."""
     return {
         "limit_state": c.limit_state,
         "method": str(c.method),
         "location": str(c.location),
-        "demand": c.demand,
-        "capacity": c.capacity,
+        "demand": _number(c.demand),
+        "capacity": _number(c.capacity),
         "unit": c.unit,
         "ratio": c.ratio,
         "passed": c.passed,
-        "clause": c.clause,
+        "clause": f"{CIRCOLARE[edition]} {c.clause}",
         "note": c.note,
     }
 
@@ -40,9 +47,9 @@ def kinematic_document(name: str, result: KinematicResult) -> dict[str, Any]:
         "a0_star": result.a0_star,
         "FC": result.FC,
         "d0_star": result.d0_star,
-        **result.quantities,
+        **{k: _number(v) for k, v in result.quantities.items()},
         "linear_curve": result.linear_curve,
-        "checks": [check_document(c) for c in result.checks],
+        "checks": [check_document(c, result.edition) for c in result.checks],
         "curve": list(result.curve),
         "demand": result.demand,
         "notes": list(result.notes),
@@ -51,15 +58,15 @@ def kinematic_document(name: str, result: KinematicResult) -> dict[str, Any]:
 
 
 CHECK_COLUMNS = (
-    Column("limit_state", "limit state"),
+    Column("limit_state", "LS"),
     Column("method", "method"),
     Column("location", "at"),
-    Column("demand", "demand", "", "{:.4g}"),
-    Column("capacity", "capacity", "", "{:.4g}"),
+    Column("demand", "demand", "", "{:.5g}"),
+    Column("capacity", "capacity", "", "{:.5g}"),
     Column("unit", "unit"),
     Column("ratio", "ζ = C/D", "", "{:.3f}"),
-    Column("passed", "passed"),
-    Column("clause", "clause"),
+    Column("passed", "ok"),
+    Column("clause_short", "clause"),
 )
 CURVE_COLUMNS = (
     Column("theta", "θ", "rad", "{:.5f}"),
@@ -105,7 +112,11 @@ def kinematic_report(doc: dict[str, Any]) -> Report:
         key_value("Mechanism and equivalent oscillator", items),
         Table("Capacity curve", CURVE_COLUMNS, tuple(doc["curve"])),
         demand,
-        Table("Checks", CHECK_COLUMNS, tuple(doc["checks"])),
+        Table(
+            f"Checks ({CIRCOLARE[doc['edition']]})",
+            CHECK_COLUMNS,
+            tuple({**c, "clause_short": c["clause"].split(" ")[-1]} for c in doc["checks"]),
+        ),
     )
     notes = [
         *doc["notes"],

@@ -126,7 +126,8 @@ def demands(
     raise InputError(
         "no seismic demand",
         where="ntc",
-        allowed="[ntc.site] with a hazard grid, [ntc.demand.SLD/SLV/SLC], --site LON,LAT or --record FILE",
+        allowed="[ntc.site] with a hazard grid, [ntc.demand.SLD/SLV/SLC], --site LON,LAT "
+        "or --record FILE",
     )
 
 
@@ -136,7 +137,9 @@ def analyse(
     """The kinematic analysis and the checks of the settings' edition."""
     cap = governing_capacity(block, settings)
     pos = position(settings.Z, settings.H, settings.N, settings.T1, settings.gamma, settings.psi)
-    notes = [*pos.notes, *(f"default {d}" for d in settings.defaults)]
+    notes = list(pos.notes)
+    if settings.defaults:
+        notes.append("defaults (not in the model's [ntc]): " + ", ".join(settings.defaults))
     notes.append(
         "capacity curve: "
         + (
@@ -157,7 +160,8 @@ def analyse(
         )
         notes += extra
         notes.append(
-            "rigid until activation: the elastic branch of free elements (§C8.7.1.6–7) is not modelled"
+            "rigid until activation: the elastic branch of free elements (§C8.7.1.6–7) "
+            "is not modelled"
         )
     return KinematicResult(
         edition=settings.edition,
@@ -188,7 +192,7 @@ def run_kinematic(
     record: Record | None = None,
     site: tuple[float, float] | None = None,
     grid_file: str | None = None,
-) -> dict:  # type: ignore[type-arg]
+) -> dict[str, object]:
     """Load the model, build the demand, run the checks; the JSON document."""
     from rockcli.model.derive import to_block
     from rockcli.model.derive_ntc import ntc_settings
