@@ -9,7 +9,7 @@ from __future__ import annotations
 import math
 
 from rockcli.codecheck.demand import LimitStateDemand
-from rockcli.codecheck.kinematic import Capacity
+from rockcli.codecheck.kinematic import Capacity, failure_rotations
 from rockcli.codecheck.position import Position, height_amplification
 from rockcli.codecheck.result import Check, Location, Method
 
@@ -22,13 +22,16 @@ CLAUSE_SLV_LINEAR = "§C8A.4.2.2"
 CLAUSE_SLV_NONLINEAR = "§C8A.4.2.3"
 
 
-def du_star(d0: float | None, limit: float | None) -> float | None:
+def du_star(d0: float | None, limit: float | None, failures: list[float]) -> float | None:
     """Ultimate displacement du* = 0.4·d0*, or a smaller local limit if given [m].
 
-    Circolare 617/2009 §C8A.4.2.3. With a positive global stiffness (no d0*) only the given
-    limit (restrainer failure or the designer's value) can define it (spec/ntc.md).
+    Circolare 617/2009 §C8A.4.2.3. With a positive global stiffness (no d0*) the first
+    restrainer failure (its d*) or the designer's limit defines it (spec/ntc.md, "Common").
     """
-    candidates = [x for x in (None if d0 is None else DU_SHARE * d0, limit) if x is not None]
+    if d0 is not None:
+        candidates = [DU_SHARE * d0] + ([limit] if limit is not None else [])
+    else:
+        candidates = failures + ([limit] if limit is not None else [])
     return min(candidates) if candidates else None
 
 
@@ -39,7 +42,8 @@ def secant_period(ds: float, as_: float) -> float:
 
 def quantities(cap: Capacity, limit: float | None) -> dict[str, float | None]:
     """du*, ds*, as*, Ts of the non-linear analysis (None where they do not exist)."""
-    du = du_star(cap.d0_star, limit)
+    failures = [cap.d_star_at(theta) for _, theta, _ in failure_rotations(cap.mech)]
+    du = du_star(cap.d0_star, limit, failures)
     if du is None:
         return {"du_star": None, "ds_star": None, "as_star": None, "Ts": None}
     ds = DS_SHARE * du

@@ -9,6 +9,7 @@ PGA); ζ_E = capacity/demand. At height the demand is the floor spectrum of §C7
 from __future__ import annotations
 
 import math
+from dataclasses import replace
 
 from rockcli.codecheck import spectra
 from rockcli.codecheck.demand import LimitStateDemand, Spectrum, capacity_ag
@@ -204,5 +205,7 @@ def check_2019(
         "T_SLC": T_slc,
         "ag_SLD": sld.capacity,
     }
+    if pos.at_height:
+        checks = [replace(c, note=f"{c.note}; ξ_k reading in the notes") for c in checks]
     notes = [n for n in (cap_note, FLOOR_READING if pos.at_height else "") if n]
     return values, checks, notes

@@ -43,6 +43,25 @@ _ANALYSIS = {
     "g": DEFAULT_GRAVITY,
 }
 
+#: The [ntc] table: the code check's settings, demand given per limit state (a site needs the
+#: user's copy of the hazard grid, which rock does not ship).
+_NTC = {
+    "edition": "2019",
+    "FC": 1.35,
+    "q": 2.0,
+    "soil": "B",
+    "topography": "T1",
+    "VN": 50.0,
+    "CU": 1.0,
+    "Z": 0.0,
+    "mass_distribution": "lumped",
+    "demand": {
+        "SLD": {"ag": 0.06, "F0": 2.5, "Tc_star": 0.27},
+        "SLV": {"ag": 0.15, "F0": 2.5, "Tc_star": 0.29},
+        "SLC": {"ag": 0.19, "F0": 2.5, "Tc_star": 0.30},
+    },
+}
+
 TEMPLATES: dict[Kind, dict[str, Any]] = {
     Kind.WALL: {
         "name": "Wall with a tie-rod",
@@ -54,6 +73,7 @@ TEMPLATES: dict[Kind, dict[str, Any]] = {
         "restitution": {"model": "housner", "factor": 0.9},
         "motion": {"sides": "two"},
         "analysis": _ANALYSIS,
+        "ntc": _NTC,
         "restrainers": [
             {
                 "name": "tie-rod near the top",
@@ -76,6 +96,7 @@ TEMPLATES: dict[Kind, dict[str, Any]] = {
         "restitution": {"model": "housner", "factor": 1.0},
         "motion": {"sides": "two"},
         "analysis": _ANALYSIS,
+        "ntc": _NTC,
     },
     Kind.FACADE: {
         "name": "Church facade with vault and tie-rod",
@@ -87,6 +108,7 @@ TEMPLATES: dict[Kind, dict[str, Any]] = {
         "restitution": {"model": "housner"},
         "motion": {"sides": "one", "stopped": "negative", "rebound": 1.0},
         "analysis": _ANALYSIS,
+        "ntc": _NTC,
         "restrainers": [
             {"name": "groin vault", "k": 4e6, "radius": 7.0, "angle": 0.072},
             {
@@ -135,6 +157,12 @@ TABLE_NOTES: dict[str, tuple[str, ...]] = {
         '"top" (r = 2R, φ = α).',
         "Optional: fails_at = elongation [m] at which the spring is lost for good.",
     ),
+    "ntc": (
+        "Settings of the NTC kinematic check (rock kinematic). The demand below is an example:",
+        "replace it with your site's parameters, or use [ntc.site] lon, lat with a hazard grid "
+        "(--hazard-grid or ROCK_HAZARD_GRID), or --record FILE.",
+        "An element at height: Z > 0 with H, N (or gamma), T1 (default 0.05·H^0.75), psi.",
+    ),
 }
 
 
@@ -172,7 +200,7 @@ def _notes(table: str, noted: set[str]) -> Iterator[str]:
 
 
 def _key_comment(table: str, key: str) -> Iterator[str]:
-    info = field_at((table, key) if table else (key,))
+    info = field_at((*table.split("."), key) if table else (key,))
     if info is not None and info.description:
         yield from _comment(info.description)
 

@@ -155,3 +155,23 @@ def test_position_defaults() -> None:
     assert psi(3.0, 12.0) == 0.25
     assert gamma(3) == pytest.approx(9 / 7)
     assert building_period(16.0) == pytest.approx(0.05 * 8.0)
+
+
+def test_positive_stiffness_needs_a_limit_2009() -> None:
+    # spec/ntc.md: with a positive global stiffness there is no d0*; the ultimate displacement
+    # comes from a restrainer failure or a user limit, else the non-linear check is not
+    # evaluated (reported, never a silently wrong number).
+    block = Block(R=3.0, alpha=0.05, mass=1e4, g=G)
+    k = 50 * block.mass * G / (4 * block.R * math.cos(block.alpha))
+    stiff = Block(**{**block.__dict__, "restrainers": (top_spring(block, k),)})
+    cap = capacity(Mechanism(stiff), FC=1.0)
+    assert quantities(cap, None)["du_star"] is None
+    assert quantities(cap, 0.05)["du_star"] == 0.05
+    both = Block(
+        **{**stiff.__dict__, "restrainers": (top_spring(block, k), top_spring(block, k, 0.02))}
+    )
+    cap2 = capacity(Mechanism(both), FC=1.0)
+    theta_f = 0.02 / (
+        2 * block.R * math.cos(block.alpha)
+    )  # u = 2R[sin α − sin(α − θ)] ≈ 2R cos α θ
+    assert quantities(cap2, None)["du_star"] == pytest.approx(cap2.d_star_at(theta_f), rel=1e-3)
