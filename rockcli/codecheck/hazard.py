@@ -40,6 +40,7 @@ from typing import NamedTuple
 import numpy as np
 
 from rockcli.errors import InputError
+from rockcli.textfile import read_text
 
 #: Environment variable naming the user's copy of the grid file.
 ROCK_HAZARD_GRID = "ROCK_HAZARD_GRID"
@@ -126,20 +127,7 @@ def read_grid(path: str | Path) -> HazardGrid:
     Raises:
         InputError: the file cannot be read, or a line is malformed (names file and line).
     """
-    try:
-        data = Path(path).read_bytes()
-    except OSError as exc:
-        raise InputError(
-            "cannot read the hazard grid file",
-            file=str(path),
-            value=exc.strerror,
-            allowed="an existing, readable file",
-        ) from None
-    try:
-        text = data.decode("utf-8-sig")
-    except UnicodeDecodeError:
-        text = data.decode("latin-1")
-    return parse_grid(text, source=str(path))
+    return parse_grid(read_text(path, "hazard grid file"), source=str(path))
 
 
 def parse_grid(text: str, *, source: str = "<text>") -> HazardGrid:

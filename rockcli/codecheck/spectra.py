@@ -24,45 +24,11 @@ from typing import NamedTuple, Protocol, TypeVar
 import numpy as np
 from numpy.typing import ArrayLike
 
+from rockcli.codecheck.categories import Edition, LimitState, Soil, Topography
 from rockcli.errors import InputError
 from rockcli.units import DEFAULT_GRAVITY
 
 _E = TypeVar("_E", bound=StrEnum)
-
-
-class Soil(StrEnum):
-    """Subsoil category (NTC §3.2.2, Tab. 3.2.II)."""
-
-    A = "A"
-    B = "B"
-    C = "C"
-    D = "D"
-    E = "E"
-
-
-class Topography(StrEnum):
-    """Topographic category (NTC §3.2.2, Tab. 3.2.III)."""
-
-    T1 = "T1"
-    T2 = "T2"
-    T3 = "T3"
-    T4 = "T4"
-
-
-class LimitState(StrEnum):
-    """Seismic limit state (NTC §3.2.1, Tab. 3.2.I)."""
-
-    SLO = "SLO"
-    SLD = "SLD"
-    SLV = "SLV"
-    SLC = "SLC"
-
-
-class Edition(StrEnum):
-    """Code edition, in rock's vocabulary (spec/ntc.md)."""
-
-    E2009 = "2009"  # NTC 2008 + Circolare 617/2009
-    E2019 = "2019"  # NTC 2018 + Circolare 7/2019
 
 
 #: S_S = clip(c0 − c1·F0·ag/g, low, high) per soil (NTC §3.2.3.2.1, Tab. 3.2.V).

@@ -10,6 +10,7 @@ from enum import StrEnum
 
 from pydantic import Field, model_validator
 
+from rockcli.codecheck.categories import Edition, Soil, Topography
 from rockcli.model.rules import choose_group, number, rule_error
 from rockcli.model.schema_base import Table
 
@@ -22,38 +23,12 @@ FC_MIN, FC_MAX = 1.0, 1.35
 DEFAULT_Q = 2.0
 
 
-class Edition(StrEnum):
-    """Which code text the checks follow."""
-
-    E2009 = "2009"  # NTC 2008 + Circolare 617/2009 §C8A.4
-    E2019 = "2019"  # NTC 2018 + Circolare 7/2019 §C8.7.1
-
-
 class KnowledgeLevel(StrEnum):
     """Knowledge level of the building (sets FC)."""
 
     LC1 = "LC1"
     LC2 = "LC2"
     LC3 = "LC3"
-
-
-class SoilClass(StrEnum):
-    """Subsoil category (NTC §3.2.2, Tab. 3.2.II)."""
-
-    A = "A"
-    B = "B"
-    C = "C"
-    D = "D"
-    E = "E"
-
-
-class TopographyClass(StrEnum):
-    """Topographic category (NTC §3.2.2, Tab. 3.2.III)."""
-
-    T1 = "T1"
-    T2 = "T2"
-    T3 = "T3"
-    T4 = "T4"
 
 
 class MassDistribution(StrEnum):
@@ -130,9 +105,9 @@ class Ntc(Table):
         None, description="'LC1' (FC 1.35), 'LC2' (1.20) or 'LC3' (1.00), instead of FC"
     )
     q: float = number("Behaviour factor of the linear check; default 2.0 [-]", DEFAULT_Q, ge=1)
-    soil: SoilClass = Field(SoilClass.A, description="Subsoil category A–E; default A")
-    topography: TopographyClass = Field(
-        TopographyClass.T1, description="Topographic category T1–T4; default T1"
+    soil: Soil = Field(Soil.A, description="Subsoil category A–E; default A")
+    topography: Topography = Field(
+        Topography.T1, description="Topographic category T1–T4; default T1"
     )
     VN: float = number("Nominal life VN; default 50 [years]", 50.0, gt=0)
     CU: float = number(

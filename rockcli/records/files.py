@@ -8,6 +8,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
+from rockcli import textfile
 from rockcli.errors import InputError
 from rockcli.records.kinds import RecordFormat
 from rockcli.records.parse import parse_text
@@ -29,20 +30,8 @@ def record_name(path: Path) -> str:
 
 
 def read_text(path: str | Path) -> str:
-    """The text of a file (UTF-8, or Latin-1 for older headers); InputError if unreadable."""
-    try:
-        data = Path(path).read_bytes()
-    except OSError as exc:
-        raise InputError(
-            "cannot read the record file",
-            file=str(path),
-            value=exc.strerror,
-            allowed="an existing, readable file",
-        ) from None
-    try:
-        return data.decode("utf-8-sig")
-    except UnicodeDecodeError:
-        return data.decode("latin-1")
+    """The text of a record file; InputError if unreadable."""
+    return textfile.read_text(path, "record file")
 
 
 def read_record(
