@@ -5,6 +5,7 @@ from __future__ import annotations
 import click
 
 from rockcli.cli.assess import assess
+from rockcli.cli.compare import compare
 from rockcli.cli.init import init
 from rockcli.cli.kinematic import kinematic
 from rockcli.cli.record import record
@@ -15,4 +16,5 @@ ALL.append(record)
 ALL.append(init)
 ALL.append(assess)
 ALL.append(kinematic)
+ALL.append(compare)
 ALL.append(warmup)

@@ -93,7 +93,8 @@ class KinematicResult:
         """DLS and ULS satisfied? (None: not evaluated).
 
         DLS: every damage check. ULS: the non-linear checks when evaluated (the more refined
-        method, the paper's §3.3 choice), else the linear ones. 2019 also gives each limit
+        method, the paper's §3.3 choice), else the linear ones (a positive global stiffness
+        without a limit displacement leaves only the linear analysis). 2019 also gives each limit
         state (SLD, SLV, SLC).
         """
         out: dict[str, bool | None] = {
@@ -119,8 +120,9 @@ def _governs(check: Check, checks: tuple[Check, ...]) -> bool:
 
 
 def _uls(checks: tuple[Check, ...]) -> bool | None:
-    uls = [c for c in checks if c.limit_state in ("ULS", "SLV", "SLC")]
-    nonlinear = [c for c in uls if c.method is Method.NONLINEAR and c.passed is not None]
+    """Non-linear ULS checks when evaluated, else the evaluated linear ones."""
+    uls = [c for c in checks if c.limit_state in ("ULS", "SLV", "SLC") and c.passed is not None]
+    nonlinear = [c for c in uls if c.method is Method.NONLINEAR]
     return _all(nonlinear if nonlinear else uls)
 
 

@@ -26,6 +26,7 @@ class Column:
     label: str
     unit: str = ""
     fmt: str = "{:.4g}"
+    align: str = ""  # "left" or "right"; default: left for labels and names, right otherwise
 
 
 @dataclass(frozen=True)
@@ -82,7 +83,8 @@ def _rich_table(table: Table) -> RichTable:
     out = RichTable(title=escape(table.title), title_justify="left")
     for col in table.columns:
         label = escape(f"{col.label} [{col.unit}]" if col.unit else col.label)
-        out.add_column(label, justify="left" if col.key in ("label", "unit", "name") else "right")
+        default = "left" if col.key in ("label", "unit", "name") else "right"
+        out.add_column(label, justify=col.align or default)  # type: ignore[arg-type]
     for row in table.rows:
         out.add_row(*(escape(format_value(row.get(c.key), c.fmt)) for c in table.columns))
     return out

@@ -9,15 +9,17 @@ model's [ntc.demand.*] parameters, the model's [ntc.site] with the hazard grid.
 from __future__ import annotations
 
 from dataclasses import replace
+from typing import Any
 
 from rockcli.codecheck import rules2009, rules2019
-from rockcli.codecheck.demand import LimitStateDemand, record_demand
+from rockcli.codecheck.demand import LimitStateDemand, Spectrum, record_demand
 from rockcli.codecheck.kinematic import Capacity, Mechanism, PointLoad, capacity, curve_points
 from rockcli.codecheck.position import position
 from rockcli.codecheck.result import KinematicResult
 from rockcli.errors import InputError
 from rockcli.mechanics import Block
 from rockcli.model.derive_ntc import NtcSettings
+from rockcli.model.schema import Model
 from rockcli.records.record import Record
 
 #: Limit states each edition checks.
@@ -110,13 +112,16 @@ def demands(
     record: Record | None,
     site: tuple[float, float] | None,
     grid_file: str | None,
+    spectrum: Spectrum | None = None,
 ) -> dict[str, LimitStateDemand]:
     """The demand of every limit state the edition checks (order: record, site, model)."""
     if record is not None:
-        from rockcli.codecheck.response import RecordSpectrum
+        if spectrum is None:
+            from rockcli.codecheck.response import RecordSpectrum
 
-        spec = RecordSpectrum.from_record(record, g=g)
-        return {ls: record_demand(ls, spec, record.name) for ls in LIMIT_STATES[settings.edition]}
+            spectrum = RecordSpectrum.from_record(record, g=g)
+        states = LIMIT_STATES[settings.edition]
+        return {ls: record_demand(ls, spectrum, record.name) for ls in states}
     if site is not None:
         return site_demands(settings, site, grid_file, g)
     if settings.demand:
@@ -185,21 +190,24 @@ def _limit(cap: Capacity, settings: NtcSettings) -> float | None:
     return None if settings.limit is None else settings.limit * cap.factor
 
 
-def run_kinematic(
-    model_path: str,
+def kinematic_model(
+    model: Model,
     *,
     edition: str | None = None,
     record: Record | None = None,
     site: tuple[float, float] | None = None,
     grid_file: str | None = None,
-) -> dict[str, object]:
-    """Load the model, build the demand, run the checks; the JSON document."""
+    spectrum: Spectrum | None = None,
+) -> dict[str, Any]:
+    """The kinematic analysis of a validated model: the JSON document.
+
+    spectrum: the record's response spectrum when the caller already has it (a study reuses
+    one per record); record: the record, to compute it otherwise.
+    """
     from rockcli.model.derive import to_block
     from rockcli.model.derive_ntc import ntc_settings
-    from rockcli.model.load import load_model
     from rockcli.report.kinematic import kinematic_document
 
-    model = load_model(model_path)
     settings = ntc_settings(model)
     if edition is not None:
         settings = replace(
@@ -208,5 +216,12 @@ def run_kinematic(
             defaults=tuple(d for d in settings.defaults if not d.startswith("edition")),
         )
     block = to_block(model)
-    result = analyse(block, settings, demands(settings, block.g, record, site, grid_file))
-    return kinematic_document(model.name, result)
+    dem = demands(settings, block.g, record, site, grid_file, spectrum)
+    return kinematic_document(model.name, analyse(block, settings, dem))
+
+
+def run_kinematic(model_path: str, **options: Any) -> dict[str, Any]:
+    """Load the model file and run :func:`kinematic_model`."""
+    from rockcli.model.load import load_model
+
+    return kinematic_model(load_model(model_path), **options)

@@ -1,0 +1,68 @@
+"""`rock compare MODEL --record FILE`: the code check and the rocking analysis side by side."""
+
+from __future__ import annotations
+
+import click
+
+from rockcli.cli.options import load_record, output_format, with_record_options
+
+
+@click.command()
+@click.argument("model_path", metavar="MODEL", type=click.Path(dir_okay=False))
+@with_record_options()
+@click.option(
+    "--edition",
+    type=click.Choice(["2009", "2019"]),
+    default=None,
+    help="Override [ntc].edition for the code check.",
+)
+@click.option(
+    "--engine",
+    type=click.Choice(["fast", "reference"]),
+    default="fast",
+    show_default=True,
+    help="Rocking engine (see rock assess).",
+)
+@click.option(
+    "--record-demand",
+    is_flag=True,
+    help="Use the record's response spectrum as the code demand even when the model sets a "
+    "code spectrum ([ntc.demand] or [ntc.site]).",
+)
+@click.option(
+    "--hazard-grid",
+    "grid_file",
+    default=None,
+    type=click.Path(dir_okay=False),
+    help="NTC Allegato B grid file, when the model's [ntc.site] sets the demand.",
+)
+@output_format
+def compare(
+    model_path,
+    record_path,
+    record_format,
+    dt,
+    units,
+    scale,
+    pga,
+    edition,
+    engine,
+    record_demand,
+    grid_file,
+    output,
+):
+    """Kinematic check and rocking time history of MODEL on the same record, side by side."""
+    from rockcli.report.compare import comparison_report
+    from rockcli.report.table import show
+    from rockcli.studies.compare import run_comparison
+
+    record = load_record(record_path, record_format, dt, units, scale, pga)
+    doc = run_comparison(
+        model_path,
+        record,
+        engine=engine,
+        edition=edition,
+        grid_file=grid_file,
+        record_demand=record_demand,
+    )
+    show(doc, output, comparison_report)

@@ -1,0 +1,95 @@
+"""The `rock compare` report: the two verdicts side by side."""
+
+from __future__ import annotations
+
+from typing import Any
+
+from rockcli.report.table import Column, Report, Table, format_value
+
+COLUMNS = (
+    Column("label", ""),
+    Column("code", "code (NTC kinematic)", align="left"),
+    Column("rocking", "rocking (time history)", align="left"),
+)
+
+
+def _yes_no(value: bool | None, yes: str, no: str) -> str:
+    return "not evaluated" if value is None else (yes if value else no)
+
+
+def _governing(kin: dict[str, Any], states: tuple[str, ...]) -> dict[str, Any] | None:
+    checks = [c for c in kin["checks"] if c["limit_state"] in states and c["ratio"] is not None]
+    return min(checks, key=lambda c: c["ratio"]) if checks else None
+
+
+def _code_cell(
+    kin: dict[str, Any], states: tuple[str, ...], verdict: bool | None, what: tuple[str, str]
+) -> str:
+    check = _governing(kin, states)
+    text = _yes_no(verdict, what[0], what[1])
+    if check is None:
+        return text
+    return (
+        f"{text} ({check['method']} {check['location']}: demand "
+        f"{format_value(check['demand'], '{:.4g}')} vs capacity "
+        f"{format_value(check['capacity'], '{:.4g}')} {check['unit']})"
+    )
+
+
+def comparison_rows(doc: dict[str, Any]) -> tuple[dict[str, str], ...]:
+    """The side-by-side rows: activation, collapse, amplitude, restrainers, classification."""
+    kin, roc = doc["kinematic"], doc["rocking"]
+    act, col = doc["activation"], doc["collapse"]
+    uplift = act["t_uplift"]
+    over = col["t_overturn"]
+    uls = _governing(kin, ("ULS", "SLV", "SLC"))
+    rows = [
+        {
+            "label": "activation",
+            "code": _code_cell(kin, ("DLS", "SLD"), act["code"], ("activates", "stays at rest")),
+            "rocking": f"uplifts at {uplift:.3f} s" if uplift is not None else "stays at rest",
+        },
+        {
+            "label": "collapse",
+            "code": _code_cell(kin, ("ULS", "SLV", "SLC"), col["code"], ("collapses", "survives")),
+            "rocking": _yes_no(col["rocking"], "overturns", "survives")
+            + (f" at {over:.3f} s" if over is not None else ""),
+        },
+        {
+            "label": "amplitude",
+            "code": "ζ = capacity/demand = "
+            + format_value(uls["ratio"] if uls else None, "{:.3f}"),
+            "rocking": f"max θ/α = {roc['max_ratio']:.4f}",
+        },
+    ]
+    for run in roc["runs"]:
+        for p in run["restrainers"]:
+            rows.append(
+                {
+                    "label": f"{p['name']} ({run['polarity']:+d})",
+                    "code": "—",
+                    "rocking": f"{1e3 * p['max_displacement']:.2f} mm, "
+                    f"{p['max_force'] / 1e3:.2f} kN",
+                }
+            )
+    rows.append({"label": "classification", "code": doc["classification"], "rocking": ""})
+    return tuple(rows)
+
+
+def comparison_report(doc: dict[str, Any]) -> Report:
+    """The terminal report of a comparison document."""
+    kin, roc = doc["kinematic"], doc["rocking"]
+    rec = roc["record"]
+    table = Table(
+        f"{kin['model']['name']} under {rec['name']} (PGA {rec['pga_g']:.3f} g)",
+        COLUMNS,
+        comparison_rows(doc),
+    )
+    edition = {"2009": "NTC 2008 + Circ. 617/2009", "2019": "NTC 2018 + Circ. 7/2019"}
+    notes = (
+        f"code: {edition[kin['edition']]}, Ts/T_SLV as in `rock kinematic`; demand: "
+        + "; ".join(f"{k} {v}" for k, v in kin["demand"].items()),
+        f"rocking: both polarities, engine {roc['engine']['name']}",
+        *roc["warnings"],
+    )
+    return Report(title="rock compare", tables=(table,), notes=notes, verdict=doc["classification"])
