@@ -1,0 +1,113 @@
+"""`rock compare`: the side-by-side table, the classification, the JSON contract (issue #4)."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import pytest
+from click.testing import CliRunner
+
+from rockcli.cli.main import cli
+from rockcli.model.load import load_model
+from rockcli.studies.compare import Classification, classify, code_sets_demand
+from tests.cli.conftest import PULSES, ROOT
+
+ALTAR = ROOT / "examples" / "altar.toml"
+
+
+def run(*args: str) -> tuple[int, str, str]:
+    result = CliRunner().invoke(cli, list(args))
+    return result.exit_code, result.stdout, result.stderr
+
+
+@pytest.mark.parametrize(
+    ("code", "rocking", "expected"),
+    [
+        (False, False, Classification.CONSISTENT_SAFE),
+        (True, True, Classification.CONSISTENT_UNSAFE),
+        (True, False, Classification.CODE_CONSERVATIVE),
+        (False, True, Classification.CODE_UNCONSERVATIVE),
+        (None, True, Classification.UNDETERMINED),
+        (True, None, Classification.UNDETERMINED),
+    ],
+)
+def test_classification_table(
+    code: bool | None, rocking: bool | None, expected: Classification
+) -> None:
+    # Issue #4: code fails & rocking survives = code-conservative (the paper's §3.3
+    # inconsistency), code passes & rocking overturns = code-unconservative.
+    assert classify(code, rocking) is expected
+
+
+def test_code_demand_detection() -> None:
+    assert code_sets_demand(load_model(ALTAR))  # [ntc.demand.*] in the altar example
+    assert not code_sets_demand(load_model(ROOT / "examples" / "wall.toml"))
+
+
+def test_altar_elc180_side_by_side(shared_records: Path) -> None:
+    # Issue #4 "Done when": the side-by-side table and the classification.
+    code, out, err = run("compare", str(ALTAR), "--record", str(shared_records / "ELC180.AT2"))
+    assert code == 0, err
+    for word in (
+        "activation",
+        "collapse",
+        "amplitude",
+        "classification",
+        "code (NTC kinematic)",
+        "rocking (time history)",
+    ):
+        assert word in out
+    assert any(c.value in out for c in Classification)
+
+
+def test_json_reuses_both_schemas(shared_records: Path) -> None:
+    code, out, err = run(
+        "compare", str(ALTAR), "--record", str(shared_records / "ELC180.AT2"), "--format", "json"
+    )
+    assert code == 0, err
+    doc = json.loads(out)
+    assert {"kinematic", "rocking", "classification", "activation", "collapse"} <= set(doc)
+    assert doc["kinematic"]["schema"] == 1 and "checks" in doc["kinematic"]
+    assert doc["rocking"]["schema"] == 1 and len(doc["rocking"]["runs"]) == 2
+    # The classification follows from the two verdicts it reports.
+    code_collapse = doc["kinematic"]["verdict"]["ULS"] is False
+    rocking_collapse = doc["rocking"]["verdict"] == "overturns"
+    assert doc["classification"] == classify(code_collapse, rocking_collapse).value
+    # The model sets a code spectrum: the code demand is that, not the record's.
+    assert "[ntc.demand]" in doc["kinematic"]["demand"]["SLV"]
+
+
+def test_record_demand_when_the_model_sets_none(tmp_path: Path) -> None:
+    # spec/README.md: the record's own response spectrum is the code demand unless the model
+    # sets a code spectrum.
+    code, out, err = run(
+        "compare",
+        str(ROOT / "examples" / "wall.toml"),
+        "--record",
+        str(PULSES[0]),
+        "--format",
+        "json",
+    )
+    assert code == 0, err
+    doc = json.loads(out)
+    assert doc["kinematic"]["demand"]["SLV"].startswith("record ")
+
+
+def test_record_demand_flag_overrides_the_model(shared_records: Path) -> None:
+    code, out, err = run(
+        "compare",
+        str(ALTAR),
+        "--record",
+        str(shared_records / "ELC180.AT2"),
+        "--record-demand",
+        "--format",
+        "json",
+    )
+    assert code == 0, err
+    assert json.loads(out)["kinematic"]["demand"]["SLV"].startswith("record ELC180")
+
+
+def test_bad_record_is_one_error_line(tmp_path: Path) -> None:
+    code, _, err = run("compare", str(ALTAR), "--record", str(tmp_path / "none.AT2"))
+    assert code == 2 and err.startswith("error: ") and "none.AT2" in err
