@@ -5,6 +5,7 @@ from __future__ import annotations
 import click
 
 from rockcli.cli.options import load_record, output_format, with_record_options
+from rockcli.cli.plot_option import plot_option
 
 #: Exit code of --fail-on-overturn when the block overturns (documented in the README).
 EXIT_OVERTURNS = 1
@@ -32,6 +33,7 @@ EXIT_OVERTURNS = 1
     is_flag=True,
     help=f"Exit with code {EXIT_OVERTURNS} when the block overturns (for CI gates).",
 )
+@plot_option
 @output_format
 def assess(
     model_path,
@@ -44,15 +46,24 @@ def assess(
     engine,
     history_path,
     fail_on_overturn,
+    plot_path,
     output,
 ):
     """Rocking time history of MODEL under a record, both polarities, with the verdict."""
-    from rockcli.studies.assess import run_assessment
+    from rockcli.studies.assess import run_assessment_output
 
     record = load_record(record_path, record_format, dt, units, scale, pga)
-    doc, worst = run_assessment(model_path, record, engine, history=history_path is not None)
+    history = history_path is not None or plot_path is not None
+    out = run_assessment_output(model_path, record, engine, history=history)
+    doc = out.doc
     if history_path:
-        write_history(history_path, worst)
+        write_history(history_path, out.result.worst)
+    if plot_path:
+        from rockcli.report.plots import plot_assessment
+
+        plot_assessment(
+            doc, out.result.runs, plot_path, record=record, overturn_angle=out.overturn_angle
+        )
     from rockcli.report.assess import assessment_report
     from rockcli.report.table import show
 

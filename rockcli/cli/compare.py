@@ -5,6 +5,7 @@ from __future__ import annotations
 import click
 
 from rockcli.cli.options import load_record, output_format, with_record_options
+from rockcli.cli.plot_option import plot_option
 
 
 @click.command()
@@ -36,6 +37,7 @@ from rockcli.cli.options import load_record, output_format, with_record_options
     type=click.Path(dir_okay=False),
     help="NTC Allegato B grid file, when the model's [ntc.site] sets the demand.",
 )
+@plot_option
 @output_format
 def compare(
     model_path,
@@ -49,20 +51,27 @@ def compare(
     engine,
     record_demand,
     grid_file,
+    plot_path,
     output,
 ):
     """Kinematic check and rocking time history of MODEL on the same record, side by side."""
     from rockcli.report.compare import comparison_report
     from rockcli.report.table import show
-    from rockcli.studies.compare import run_comparison
+    from rockcli.studies.compare import run_comparison_output
 
     record = load_record(record_path, record_format, dt, units, scale, pga)
-    doc = run_comparison(
+    doc, rocking = run_comparison_output(
         model_path,
         record,
         engine=engine,
         edition=edition,
         grid_file=grid_file,
         record_demand=record_demand,
+        history=plot_path is not None,
     )
+    if plot_path:
+        from rockcli.report.plots import plot_comparison
+
+        runs = rocking.result.runs
+        plot_comparison(doc, runs, plot_path, record=record, overturn_angle=rocking.overturn_angle)
     show(doc, output, comparison_report)

@@ -5,6 +5,7 @@ from __future__ import annotations
 import click
 
 from rockcli.cli.options import load_record, output_format, with_record_options
+from rockcli.cli.plot_option import plot_option
 
 
 def _site(value: str | None) -> tuple[float, float] | None:
@@ -46,9 +47,21 @@ def _site(value: str | None) -> tuple[float, float] | None:
     type=click.Path(dir_okay=False),
     help="NTC Allegato B grid file (default: $ROCK_HAZARD_GRID).",
 )
+@plot_option
 @output_format
 def kinematic(
-    model_path, edition, record_path, record_format, dt, units, scale, pga, site, grid_file, output
+    model_path,
+    edition,
+    record_path,
+    record_format,
+    dt,
+    units,
+    scale,
+    pga,
+    site,
+    grid_file,
+    plot_path,
+    output,
 ):
     """NTC kinematic analysis of MODEL: α0, e*, a0*, capacity curve, DLS and ULS checks."""
     from rockcli.report.kinematic import kinematic_report
@@ -61,4 +74,8 @@ def kinematic(
     doc = run_kinematic(
         model_path, edition=edition, record=record, site=_site(site), grid_file=grid_file
     )
+    if plot_path:
+        from rockcli.report.plots import plot_kinematic
+
+        plot_kinematic(doc, plot_path)
     show(doc, output, kinematic_report)

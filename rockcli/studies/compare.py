@@ -7,12 +7,15 @@ side by side, and a one-word classification of their agreement.
 from __future__ import annotations
 
 from enum import StrEnum
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from rockcli import __version__
 from rockcli.codecheck.demand import Spectrum
 from rockcli.model.schema import Model
 from rockcli.records.record import Record
+
+if TYPE_CHECKING:
+    from rockcli.studies.assess import AssessmentOutput
 
 SCHEMA = 1
 
@@ -78,7 +81,7 @@ def comparison_document(kin: dict[str, Any], roc: dict[str, Any]) -> dict[str, A
     }
 
 
-def compare_model(
+def compare_model_output(
     model: Model,
     record: Record,
     *,
@@ -87,14 +90,16 @@ def compare_model(
     spectrum: Spectrum | None = None,
     grid_file: str | None = None,
     record_demand: bool = False,
-) -> dict[str, Any]:
-    """The comparison document of a validated model under a record.
+    history: bool = False,
+) -> tuple[dict[str, Any], AssessmentOutput]:
+    """The comparison document of a validated model under a record, and the rocking runs.
 
     The code's demand is the record's response spectrum unless the model sets a code spectrum
     (spec/README.md, `rock compare`), or record_demand asks for the record's anyway;
-    spectrum: the record's, when the caller has it already.
+    spectrum: the record's, when the caller has it already; history: keep θ(t) of both
+    polarities (for plots).
     """
-    from rockcli.studies.assess import assess_model
+    from rockcli.studies.assess import assess_model_output
     from rockcli.studies.kinematic import kinematic_model
 
     own = record_demand or not code_sets_demand(model)
@@ -105,12 +110,43 @@ def compare_model(
         spectrum=spectrum if own else None,
         grid_file=grid_file,
     )
-    roc, _ = assess_model(model, record, engine)
-    return comparison_document(kin, roc)
+    rocking = assess_model_output(model, record, engine, history=history)
+    return comparison_document(kin, rocking.doc), rocking
+
+
+def compare_model(
+    model: Model,
+    record: Record,
+    *,
+    engine: str = "fast",
+    edition: str | None = None,
+    spectrum: Spectrum | None = None,
+    grid_file: str | None = None,
+    record_demand: bool = False,
+) -> dict[str, Any]:
+    """The comparison document of a validated model under a record (see
+    :func:`compare_model_output`)."""
+    doc, _ = compare_model_output(
+        model,
+        record,
+        engine=engine,
+        edition=edition,
+        spectrum=spectrum,
+        grid_file=grid_file,
+        record_demand=record_demand,
+    )
+    return doc
+
+
+def run_comparison_output(
+    model_path: str, record: Record, **options: Any
+) -> tuple[dict[str, Any], AssessmentOutput]:
+    """Load the model file and run :func:`compare_model_output`."""
+    from rockcli.model.load import load_model
+
+    return compare_model_output(load_model(model_path), record, **options)
 
 
 def run_comparison(model_path: str, record: Record, **options: Any) -> dict[str, Any]:
     """Load the model file and run :func:`compare_model`."""
-    from rockcli.model.load import load_model
-
-    return compare_model(load_model(model_path), record, **options)
+    return run_comparison_output(model_path, record, **options)[0]

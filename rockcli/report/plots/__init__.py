@@ -1,0 +1,31 @@
+"""Plots of the results (PNG or SVG, chosen by the file suffix): output, like the tables.
+
+matplotlib is an optional dependency (``pip install 'rock[plot]'``), imported inside the
+functions (:mod:`.files`), so that ``rock --help`` and the numeric core never load it; the
+modules here import only the standard library at their top.
+
+- :func:`plot_assessment`: θ/α of both polarities against time, over the record.
+- :func:`plot_kinematic`: the capacity curve a*–d* with the checks' demands.
+- :func:`plot_comparison`: both, side by side.
+- :func:`plot_sweep`: the collapse map of a systemic study, code against rocking.
+"""
+
+from __future__ import annotations
+
+from rockcli.report.plots.capacity import plot_kinematic
+from rockcli.report.plots.collapse import outcome, plot_sweep
+from rockcli.report.plots.comparison import plot_comparison
+from rockcli.report.plots.files import MISSING, OPTION, check_plot_path, plot_format
+from rockcli.report.plots.histories import plot_assessment
+
+__all__ = [
+    "MISSING",
+    "OPTION",
+    "check_plot_path",
+    "outcome",
+    "plot_assessment",
+    "plot_comparison",
+    "plot_format",
+    "plot_kinematic",
+    "plot_sweep",
+]

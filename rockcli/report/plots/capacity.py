@@ -1,0 +1,190 @@
+"""The code's capacity curve a*–d* with the demands of the checks (paper Fig. 6)."""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from pathlib import Path
+from typing import TYPE_CHECKING, Any
+
+from rockcli.report.plots.files import new_figure, save
+
+if TYPE_CHECKING:
+    from matplotlib.axes import Axes
+
+PASSED_COLORS = {True: "tab:green", False: "tab:red", None: "0.5"}
+LIMIT_STATE_STYLES = {"DLS": "--", "SLD": "--", "ULS": "-.", "SLV": "-.", "SLC": ":"}
+
+
+def _word(passed: bool | None) -> str:
+    return "not evaluated" if passed is None else ("satisfied" if passed else "NOT satisfied")
+
+
+def _curve(kin: Mapping[str, Any]) -> tuple[list[float], list[float]]:
+    rows = kin["curve"]
+    return [r["d_star"] for r in rows], [r["a_star"] for r in rows]
+
+
+def _a_on_curve(kin: Mapping[str, Any], d: float) -> float:
+    """a* at d* by linear interpolation of the curve rows (past the last row: 0 beyond d0*,
+    else the last value)."""
+    import numpy as np
+
+    ds, as_ = _curve(kin)
+    if d > ds[-1]:
+        return 0.0 if kin["d0_star"] is not None else as_[-1]
+    return float(np.interp(d, ds, as_))
+
+
+def _draw_secant(ax: Axes, d: float, a: float, label: str, color: str) -> None:
+    """The secant from the origin to (d, a) on the curve, and the point."""
+    ax.plot([0.0, d], [0.0, a], color=color, lw=0.9, ls="-")
+    ax.plot([d], [a], "o", color=color, ms=6, label=label)
+
+
+def _draw_quantities(ax: Axes, kin: Mapping[str, Any]) -> None:
+    """2009: du* and the secant to (ds*, as*) with Ts; 2019: the SLV/SLC points with T."""
+    if kin.get("du_star") is not None:
+        du = kin["du_star"]
+        ax.axvline(du, color="k", ls="--", lw=1.0, label=f"du* = {du:.4g} m (ULS capacity)")
+        ax.annotate(
+            "du*", (du, 1.0), xycoords=("data", "axes fraction"), xytext=(3, -3),
+            textcoords="offset points", ha="left", va="top", fontsize="small",
+        )  # fmt: skip
+    if kin.get("ds_star") is not None and kin.get("Ts") is not None:
+        label = (
+            f"(ds*, as*) = ({kin['ds_star']:.3g} m, {kin['as_star']:.3g} m/s²), "
+            f"Ts = {kin['Ts']:.3g} s"
+        )
+        _draw_secant(ax, kin["ds_star"], kin["as_star"], label, "tab:blue")
+    for ls, color in (("SLV", "tab:blue"), ("SLC", "tab:purple")):
+        d, a, T = kin.get(f"d_{ls}"), kin.get(f"a_{ls}"), kin.get(f"T_{ls}")
+        if d is not None and a is not None:
+            period = f", T_{ls} = {T:.3g} s" if T is not None else ""
+            _draw_secant(ax, d, a, f"{ls}: d = {d:.4g} m, a = {a:.3g} m/s²{period}", color)
+
+
+def _check_name(c: Mapping[str, Any]) -> str:
+    method = "non-linear" if c["method"] == "nonlinear" else "linear"
+    return f"{c['limit_state']} {method}, {c['location']}"
+
+
+def _check_label(c: Mapping[str, Any]) -> str:
+    if c["demand"] is None or c["capacity"] is None:
+        return f"{_check_name(c)}: not evaluated (see the notes)"
+    if c["unit"] in ("m/s²", "m"):
+        return f"{_check_name(c)}: demand {c['demand']:.3g} {c['unit']} ({_word(c['passed'])})"
+    # 2019 compares peak ground accelerations: the ag the element withstands and the site's.
+    quantity = "ag " if c["unit"] == "g" else ""
+    return (
+        f"{_check_name(c)}: {quantity}capacity {c['capacity']:.3g} vs demand "
+        f"{c['demand']:.3g} {c['unit']} ({_word(c['passed'])})"
+    )
+
+
+def _draw_checks(ax: Axes, kin: Mapping[str, Any]) -> None:
+    """The demands of the checks: accelerations [m/s²] as horizontal lines (against a0*),
+    displacements [m] as points on the curve (against du*); the checks off the a*–d* plane
+    (2019: ag [g]) and those not evaluated as legend entries with a square of their colour."""
+    from matplotlib.lines import Line2D
+
+    for c in kin["checks"]:
+        color = PASSED_COLORS[c["passed"]]
+        style = LIMIT_STATE_STYLES.get(c["limit_state"], "-")
+        if c["passed"] is not None and c["unit"] == "m/s²":
+            ax.axhline(c["demand"], color=color, ls=style, lw=1.2, label=_check_label(c))
+            ax.annotate(
+                f"{c['limit_state']} {c['location']}", (1.0, c["demand"]),
+                xycoords=("axes fraction", "data"), xytext=(-3, 2), textcoords="offset points",
+                ha="right", va="bottom", fontsize="x-small", color=color,
+            )  # fmt: skip
+        elif c["passed"] is not None and c["unit"] == "m":
+            a = _a_on_curve(kin, c["demand"])
+            ax.plot([c["demand"]] * 2, [0.0, a], color=color, ls=style, lw=1.2)
+            ax.plot([c["demand"]], [a], "D", color=color, ms=6, label=_check_label(c))
+        else:
+            ax.add_line(Line2D([], [], ls="none", marker="s", color=color, label=_check_label(c)))
+
+
+#: The frame shows a* up to this multiple of the largest acceleration the checks use (a0*, the
+#: demands, the points of the edition): a curve that stiffens far past them (positive global
+#: stiffness, sampled to θ = π/4) leaves the frame instead of flattening everything else.
+FRAME_FACTOR = 2.5
+
+
+def _crossing(ds: list[float], as_: list[float], level: float) -> float:
+    """d* where the curve first rises through a* = level (linear between rows)."""
+    for k in range(1, len(ds)):
+        if as_[k] > level:
+            share = (level - as_[k - 1]) / (as_[k] - as_[k - 1])
+            return ds[k - 1] + max(0.0, share) * (ds[k] - ds[k - 1])
+    return ds[-1]
+
+
+def _frame(ax: Axes, kin: Mapping[str, Any]) -> None:
+    """Axes from 0; when the curve rises past FRAME_FACTOR × the checks' accelerations, the
+    frame stops there and the legend says where the curve goes."""
+    from matplotlib.lines import Line2D
+
+    ds, as_ = _curve(kin)
+    marks = [kin["a0_star"], *(kin.get(k) for k in ("as_star", "a_SLV", "a_SLC"))]
+    marks += [c["demand"] for c in kin["checks"] if c["unit"] == "m/s²"]
+    top = FRAME_FACTOR * max(m for m in marks if m is not None)
+    if max(as_) <= top:
+        ax.set_xlim(left=0.0)
+        ax.set_ylim(bottom=0.0)
+        return
+    xs = [_crossing(ds, as_, top), *(kin.get(k) for k in ("du_star", "d_SLV", "d_SLC"))]
+    xs += [c["demand"] for c in kin["checks"] if c["unit"] == "m"]
+    ax.set_xlim(0.0, 1.05 * max(x for x in xs if x is not None))
+    ax.set_ylim(0.0, top)
+    note = f"the curve leaves the frame: a* = {as_[-1]:.3g} m/s² at d* = {ds[-1]:.3g} m"
+    ax.add_line(Line2D([], [], ls="none", label=note))
+
+
+def _verdict_text(kin: Mapping[str, Any]) -> str:
+    """2009: DLS and ULS; 2019: its three limit states."""
+    states = ("SLD", "SLV", "SLC") if kin["edition"] == "2019" else ("DLS", "ULS")
+    return ", ".join(f"{ls} {_word(kin['verdict'].get(ls))}" for ls in states)
+
+
+def draw_capacity(ax: Axes, kin: Mapping[str, Any]) -> None:
+    """The capacity curve a*–d* with a0*, d0*, the edition's quantities and the demands
+    (paper Fig. 6)."""
+    from rockcli.report.kinematic import CIRCOLARE
+
+    ds, as_ = _curve(kin)
+    ax.plot(ds, as_, color="k", lw=2.0, label="capacity curve a*(d*)")
+    a0 = kin["a0_star"]
+    ax.plot([0.0], [a0], "o", color="k", ms=6, clip_on=False, label=f"a0* = {a0:.4g} m/s²")
+    if kin["d0_star"] is not None:
+        d0 = kin["d0_star"]
+        ax.plot([d0], [0.0], "o", color="k", mfc="w", clip_on=False, label=f"d0* = {d0:.4g} m")
+    _draw_quantities(ax, kin)
+    _draw_checks(ax, kin)
+    _frame(ax, kin)
+    ax.set_xlabel("spectral displacement d* [m]")
+    ax.set_ylabel("spectral acceleration a* [m/s²]")
+    ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.12), fontsize="x-small", ncols=2)
+    ax.grid(alpha=0.3)
+    ax.set_title(
+        f"Kinematic analysis, {CIRCOLARE[kin['edition']]}\n{_verdict_text(kin)}",
+        fontsize="medium",
+    )
+
+
+def plot_kinematic(doc: Mapping[str, Any], path: str | Path) -> None:
+    """The capacity curve a*–d* with the checks' demands (paper Fig. 6).
+
+    2009: a0* against the linear checks' accelerations (horizontal lines), du* = 0.4·d0* and
+    the secant to (ds*, as*) that gives Ts, the non-linear checks' displacement demands
+    (SDe(Ts) at the ground, the amplified one at height) as points on the curve. 2019: the
+    SLV and SLC points (d, a) with their secant periods; the checks, in ag [g], as text.
+
+    Args:
+        doc: the `rock kinematic` JSON document.
+        path: the file to write, .png or .svg.
+    """
+    fig = new_figure(path, (9.0, 7.0))
+    draw_capacity(fig.add_subplot(), doc)
+    fig.suptitle(f"rock kinematic — {doc['model']['name']}")
+    save(fig, path)

@@ -1,0 +1,154 @@
+"""θ/α of both polarities against time over the record (paper Fig. 7, 11, 12)."""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Mapping, Sequence
+from pathlib import Path
+from typing import TYPE_CHECKING, Any
+
+from rockcli.report.plots.files import new_figure, save
+
+if TYPE_CHECKING:
+    from matplotlib.axes import Axes
+    from matplotlib.figure import Figure
+
+    from rockcli.dynamics.result import History, RockingRun
+    from rockcli.records.record import Record
+
+#: |θ| at which a run counts as overturned unless the model sets it [rad] (paper §3.1; the
+#: value of rockcli.dynamics.settings.DEFAULT_OVERTURN_ANGLE, not imported to keep numpy out).
+OVERTURN_ANGLE = math.pi / 2
+#: Vertical room above the largest |θ|/α, and the smallest half-range so that ±1 shows [-].
+HEADROOM = 1.1
+MIN_RATIO_RANGE = 1.2
+POLARITY_COLORS = {1: "tab:blue", -1: "tab:orange"}
+
+
+def _history(run: RockingRun) -> History:
+    if run.history is None:
+        raise ValueError("the run has no history: run the assessment with history=True")
+    return run.history
+
+
+def _run_label(run: RockingRun) -> str:
+    sign = "+" if run.polarity > 0 else "−"
+    text = f"polarity {sign}1: max θ/α = {run.max_ratio:.3f}"
+    if run.t_overturn is not None:
+        text += f", overturns at {run.t_overturn:.2f} s"
+    return text
+
+
+def _ratio_limits(peak: float, level: float | None, free_side: int | None) -> tuple[float, float]:
+    """y range of θ/α: the data with headroom, ±1 always, the overturning level if drawn."""
+    top = max(MIN_RATIO_RANGE, HEADROOM * peak, HEADROOM * (level or 0.0))
+    if free_side is None:
+        return -top, top
+    return (-0.15 * top, top) if free_side > 0 else (-top, 0.15 * top)
+
+
+def _plot_runs(ax: Axes, runs: Sequence[RockingRun], alpha: float) -> float:
+    """θ/α of each run, a cross where it overturns; returns the peak |θ|/α drawn."""
+    peak = 0.0
+    for run in runs:
+        hist = _history(run)
+        ratio = hist.theta / alpha
+        peak = max(peak, float(abs(ratio).max(initial=0.0)))
+        color = POLARITY_COLORS.get(run.polarity, "k")
+        ax.plot(hist.time, ratio, color=color, lw=1.0, label=_run_label(run))
+        if run.overturned:
+            ax.plot(hist.time[-1], ratio[-1], "x", color=color, ms=9, mew=2, clip_on=False)
+    return peak
+
+
+def _mark_levels(ax: Axes, sides: tuple[int, ...], level: float | None, angle: float) -> None:
+    """θ = ±α, and the overturning level |θ| = angle when it is drawn (level: in θ/α)."""
+    for k, side in enumerate(sides):
+        ax.axhline(side, color="k", ls="--", lw=0.8, label="θ = ±α" if k == 0 else None)
+        if level is not None:
+            label = f"overturning, |θ| = {angle:.3g} rad" if k == 0 else None
+            ax.axhline(side * level, color="tab:red", ls=":", lw=1.2, label=label)
+    ax.axhline(0.0, color="0.6", lw=0.5)
+
+
+def draw_histories(
+    ax: Axes,
+    model: Mapping[str, Any],
+    runs: Sequence[RockingRun],
+    overturn_angle: float,
+    verdict: str,
+) -> None:
+    """θ/α of both polarities against time, ±1 (θ = ±α) and the overturning level (drawn
+    when a run overturns, else named as off scale), the legend above the axes."""
+    alpha = model["alpha"]
+    free_side = model["free_side"] if model["sides"] == "one" else None
+    peak = _plot_runs(ax, runs, alpha)
+    level = overturn_angle / alpha
+    shown = level if any(r.overturned for r in runs) or peak >= level else None
+    _mark_levels(ax, (free_side,) if free_side else (1, -1), shown, overturn_angle)
+    if shown is None:
+        ax.text(
+            0.99, 0.03, f"overturning at |θ|/α = {level:.3g} (off scale)",
+            transform=ax.transAxes, ha="right", va="bottom", fontsize="small", color="tab:red",
+        )  # fmt: skip
+    ax.set_ylim(*_ratio_limits(peak, shown, free_side))
+    ax.set_ylabel("amplitude ratio θ/α [-]")
+    title = f"Rocking time history, both polarities: {verdict}"
+    if free_side:
+        title += f" (one-sided: θ {'<' if free_side > 0 else '>'} 0 stopped)"
+    ax.legend(
+        loc="lower left", bbox_to_anchor=(0.0, 1.0), ncols=2, fontsize="small", frameon=False,
+        title=title, alignment="left",
+    )  # fmt: skip
+    ax.grid(alpha=0.3)
+
+
+def draw_record(ax: Axes, record: Record, t_end: float) -> None:
+    """The ground acceleration [g] as recorded (polarity +1), to the end of the runs."""
+    ax.plot(record.time, record.accel, color="0.25", lw=0.8, label=f"{record.name} (polarity +1)")
+    ax.axhline(0.0, color="0.6", lw=0.5)
+    ax.set_xlim(float(record.time[0]), max(t_end, float(record.time[-1])))
+    ax.set_xlabel("time t [s]")
+    ax.set_ylabel("ground acc. [g]")
+    ax.legend(loc="upper right", fontsize="small", title=f"PGA {record.pga:.3g} g")
+    ax.grid(alpha=0.3)
+
+
+def draw_time_panels(
+    fig: Figure,
+    spec: Any,
+    doc: Mapping[str, Any],
+    runs: Sequence[RockingRun],
+    record: Record,
+    overturn_angle: float,
+) -> None:
+    """θ/α above, the record below, on a shared time axis, in a gridspec cell pair."""
+    top = fig.add_subplot(spec[0])
+    bottom = fig.add_subplot(spec[1], sharex=top)
+    draw_histories(top, doc["model"], runs, overturn_angle, doc["verdict"])
+    top.tick_params(labelbottom=False)
+    draw_record(bottom, record, max(r.t_end for r in runs))
+
+
+def plot_assessment(
+    doc: Mapping[str, Any],
+    runs: Sequence[RockingRun],
+    path: str | Path,
+    *,
+    record: Record,
+    overturn_angle: float = OVERTURN_ANGLE,
+) -> None:
+    """θ/α of both polarities against time over the record's acceleration (paper Fig. 7, 11).
+
+    Args:
+        doc: the `rock assess` JSON document.
+        runs: both polarities, with their history (assess with history=True).
+        path: the file to write, .png or .svg.
+        record: the record the runs were computed with (acceleration [g]).
+        overturn_angle: |θ| at which a run counts as overturned [rad].
+    """
+    fig = new_figure(path, (10.0, 6.0))
+    spec = fig.add_gridspec(2, 1, height_ratios=(3, 1))
+    draw_time_panels(fig, [spec[0], spec[1]], doc, runs, record, overturn_angle)
+    fig.suptitle(f"rock assess — {doc['model']['name']} under {record.name}")
+    save(fig, path)
