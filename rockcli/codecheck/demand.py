@@ -86,18 +86,24 @@ def record_demand(limit_state: str, spectrum: Spectrum, name: str) -> LimitState
     )
 
 
+def bound_note(ag: float | None) -> str:
+    """A note when a capacity is the search bound (the true capacity is larger)."""
+    return f"; capacity at least {AG_MAX:g} g (search bound)" if ag == AG_MAX else ""
+
+
 def capacity_ag(
     demand: LimitStateDemand, measure: Callable[[Spectrum], float], capacity: float
-) -> float | None:
+) -> float:
     """The ag at which measure(spectrum(ag)) equals the capacity [g], by bisection.
 
     Circolare 7/2019 §C8.7.1.2.1: the capacity of each check is the ground acceleration that
-    makes the demand equal to it. measure must grow with ag. None when even AG_MAX does not
-    reach the capacity (capacity beyond the search range).
+    makes the demand equal to it. measure must grow with ag. When even AG_MAX does not reach
+    the capacity, AG_MAX is returned: a lower bound of the capacity, which the checks say
+    (see :func:`bound_note`).
     """
     lo, hi = AG_MIN, AG_MAX
     if measure(demand.at_ag(hi)) < capacity:
-        return None
+        return AG_MAX
     if measure(demand.at_ag(lo)) >= capacity:
         return lo
     for _ in range(AG_STEPS):

@@ -94,40 +94,26 @@ class KinematicResult:
 
         DLS: every damage check. ULS: the non-linear checks when evaluated (the more refined
         method, the paper's §3.3 choice), else the linear ones (a positive global stiffness
-        without a limit displacement leaves only the linear analysis). 2019 also gives each limit
-        state (SLD, SLV, SLC).
+        without a limit displacement leaves only the linear analysis). 2019 also gives each
+        limit state (SLD, SLV, SLC) by the same rule.
         """
         out: dict[str, bool | None] = {
-            "DLS": _all(c for c in self.checks if c.limit_state in ("DLS", "SLD")),
-            "ULS": _uls(self.checks),
+            "DLS": _all(deciding(self.checks, ("DLS", "SLD"))),
+            "ULS": _all(deciding(self.checks, ("ULS", "SLV", "SLC"))),
         }
         if self.edition == "2019":
             for ls in ("SLD", "SLV", "SLC"):
-                out[ls] = _all(
-                    c for c in self.checks if c.limit_state == ls and _governs(c, self.checks)
-                )
+                out[ls] = _all(deciding(self.checks, (ls,)))
         return out
 
 
-def _governs(check: Check, checks: tuple[Check, ...]) -> bool:
-    """A check counts for its limit state: non-linear ones when present, else linear."""
-    if check.method is Method.NONLINEAR:
-        return True
-    return not any(
-        c.limit_state == check.limit_state and c.method is Method.NONLINEAR and c.passed is not None
-        for c in checks
-    )
+def deciding(checks: tuple[Check, ...], states: tuple[str, ...]) -> list[Check]:
+    """The checks that decide the verdict of these limit states: the evaluated non-linear ones
+    when any, else the evaluated linear ones (empty: not evaluated)."""
+    evaluated = [c for c in checks if c.limit_state in states and c.passed is not None]
+    nonlinear = [c for c in evaluated if c.method is Method.NONLINEAR]
+    return nonlinear if nonlinear else evaluated
 
 
-def _uls(checks: tuple[Check, ...]) -> bool | None:
-    """Non-linear ULS checks when evaluated, else the evaluated linear ones."""
-    uls = [c for c in checks if c.limit_state in ("ULS", "SLV", "SLC") and c.passed is not None]
-    nonlinear = [c for c in uls if c.method is Method.NONLINEAR]
-    return _all(nonlinear if nonlinear else uls)
-
-
-def _all(checks) -> bool | None:
-    results = [c.passed for c in checks]
-    if not results or any(r is None for r in results):
-        return None
-    return all(results)
+def _all(checks: list[Check]) -> bool | None:
+    return all(c.passed for c in checks) if checks else None

@@ -12,7 +12,7 @@ import math
 from dataclasses import replace
 
 from rockcli.codecheck import spectra
-from rockcli.codecheck.demand import LimitStateDemand, Spectrum, capacity_ag
+from rockcli.codecheck.demand import LimitStateDemand, Spectrum, bound_note, capacity_ag
 from rockcli.codecheck.kinematic import FAILURE_DROP, Capacity, failure_rotations
 from rockcli.codecheck.position import Position
 from rockcli.codecheck.result import Check, Location, Method
@@ -119,7 +119,7 @@ def sld_check(cap: Capacity, sld: LimitStateDemand, pos: Position, g: float) -> 
     else:
         ag = capacity_ag(sld, lambda sp: sp.pga_ground * g, cap.a0_star)
         where, note = Location.GROUND, "capacity: ag·S(ag) = a0*"
-    return Check("SLD", Method.LINEAR, where, sld.ag, ag, "g", CLAUSE, note)
+    return Check("SLD", Method.LINEAR, where, sld.ag, ag, "g", CLAUSE, note + bound_note(ag))
 
 
 def slv_linear_check(
@@ -171,7 +171,7 @@ def displacement_check(
             return sp.SDe(T, xi)
 
     ag = capacity_ag(dem, measure, d)
-    note = f"T = {T:.4f} s, ξ = {xi:g} %, d = {d:.5f} m"
+    note = f"T = {T:.4f} s, ξ = {xi:g} %, d = {d:.5f} m" + bound_note(ag)
     if ag is not None and sld_cap is not None and ag < sld_cap:
         ag, note = sld_cap, note + "; below ag,SLD: ag,SLD taken"
     return Check(ls, Method.NONLINEAR, where, dem.ag, ag, "g", CLAUSE, note)

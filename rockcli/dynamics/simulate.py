@@ -200,8 +200,8 @@ def _message(status: RunStatus, out_f: np.ndarray) -> str:
             return "never uplifted"
         return "survived"
     if status is RunStatus.EVENT_LIMIT:
-        return f"stopped at t = {out_f[L.O_T_END]:.3f} s: too many impacts (raise max_events)"
-    return f"stopped at t = {out_f[L.O_T_END]:.3f} s: too many steps (raise max_steps)"
+        return f"stopped at t = {out_f[L.O_T_END]:.3f} s: too many impacts (the event guard)"
+    return f"stopped at t = {out_f[L.O_T_END]:.3f} s: too many steps (the step guard)"
 
 
 def _with_warnings(run: RockingRun) -> RockingRun:

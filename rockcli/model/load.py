@@ -163,6 +163,10 @@ def _number(err: ErrorDetails, loc: Loc) -> str:
     return f"{text} {_unit_of(info)}".strip()
 
 
+def _integer(err: ErrorDetails, loc: Loc) -> str:
+    return _number(err, loc).replace("a number", "a whole number", 1)
+
+
 def _choices(err: ErrorDetails, loc: Loc) -> str:
     info = field_at(loc)
     enum = _find_class(info.annotation, Enum) if info else None
@@ -208,6 +212,9 @@ TRANSLATION: dict[str, tuple[str | None, Explain]] = {
     "finite_number": ("not a finite number", _number),
     "float_type": ("not a number", _number),
     "float_parsing": ("not a number", _number),
+    "int_type": ("not a whole number", _integer),
+    "int_parsing": ("not a whole number", _integer),
+    "int_from_float": ("not a whole number", _integer),
     "enum": ("unknown value", _choices),
     "bool_type": ("not a boolean", _boolean),
     "bool_parsing": ("not a boolean", _boolean),

@@ -129,8 +129,8 @@ TABLE_NOTES: dict[str, tuple[str, ...]] = {
     "": (
         "rock model file: one masonry macro-element rocking on its base.",
         "SI units throughout (m, kN, N/m, s, rad). Check every value against your element.",
-        "Sign convention (the paper's, spec/rocking.md): a positive ground acceleration drives "
-        "a positive rotation.",
+        "Sign convention (the source paper's, docs/conventions.md): a positive ground "
+        "acceleration drives a positive rotation.",
     ),
     "geometry": ("The rocking block: either R + alpha, or thickness + height (full 2b and 2h).",),
     "mass": (

@@ -148,9 +148,10 @@ def analyse(
     notes.append(
         "capacity curve: "
         + (
-            "linear a0*(1 − d*/d0*), constant forces (§C8A.4.2.3)"
+            "linear a0*(1 − d*/d0*), constant forces (Circ. 617/2009 §C8A.4.2.3; "
+            "Circ. 7/2019 §C8.7.1.2)"
             if cap.linear
-            else "α(θ) with the restrainers (spec/ntc.md)"
+            else "α(θ) with the restrainers that cannot fail (docs/interpretations.md)"
         )
     )
     if cap.d0_star is None:
