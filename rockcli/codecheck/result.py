@@ -92,10 +92,9 @@ class KinematicResult:
     def verdict(self) -> dict[str, bool | None]:
         """DLS and ULS satisfied? (None: not evaluated).
 
-        DLS: every damage check. ULS: the non-linear checks when evaluated (the more refined
-        method, the paper's §3.3 choice), else the linear ones (a positive global stiffness
-        without a limit displacement leaves only the linear analysis). 2019 also gives each
-        limit state (SLD, SLV, SLC) by the same rule.
+        DLS: every damage check. ULS: the non-linear checks (the more refined method, the
+        paper's §3.3 choice; not evaluated when they cannot be: see :func:`deciding`). 2019
+        also gives each limit state (SLD, SLV, SLC) by the same rule.
         """
         out: dict[str, bool | None] = {
             "DLS": _all(deciding(self.checks, ("DLS", "SLD"))),
@@ -108,12 +107,22 @@ class KinematicResult:
 
 
 def deciding(checks: tuple[Check, ...], states: tuple[str, ...]) -> list[Check]:
-    """The checks that decide the verdict of these limit states: the evaluated non-linear ones
-    when any, else the evaluated linear ones (empty: not evaluated)."""
-    evaluated = [c for c in checks if c.limit_state in states and c.passed is not None]
-    nonlinear = [c for c in evaluated if c.method is Method.NONLINEAR]
-    return nonlinear if nonlinear else evaluated
+    """The checks that decide the verdict of these limit states: the non-linear ones when the
+    analysis has them, else the linear ones.
+
+    A non-linear check that could not be evaluated (positive global stiffness and no limit
+    displacement) leaves the verdict not evaluated: the linear checks ignore the restrainers
+    (α0 does not see them), so falling back on them would call a restrained block unsafe for
+    a reason the code's own non-linear analysis does not give (docs/interpretations.md).
+    """
+    mine = [c for c in checks if c.limit_state in states]
+    nonlinear = [c for c in mine if c.method is Method.NONLINEAR]
+    return nonlinear if nonlinear else mine
 
 
 def _all(checks: list[Check]) -> bool | None:
-    return all(c.passed for c in checks) if checks else None
+    """All passed (None when there are none or one is not evaluated)."""
+    results = [c.passed for c in checks]
+    if not results or any(r is None for r in results):
+        return None
+    return all(results)

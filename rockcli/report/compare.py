@@ -18,12 +18,12 @@ def _yes_no(value: bool | None, yes: str, no: str) -> str:
 
 
 def _governing(kin: dict[str, Any], states: tuple[str, ...]) -> dict[str, Any] | None:
-    """The check that decides the verdict: among the deciding checks (the evaluated non-linear
-    ones when any, else the evaluated linear ones; codecheck.result.deciding), the one with
-    the smallest capacity/demand ratio."""
-    evaluated = [c for c in kin["checks"] if c["limit_state"] in states and c["passed"] is not None]
-    nonlinear = [c for c in evaluated if c["method"] == "nonlinear"]
-    checks = [c for c in (nonlinear or evaluated) if c["ratio"] is not None]
+    """The check that decides the verdict: among the deciding checks (the non-linear ones
+    when the analysis has them, else the linear ones; codecheck.result.deciding), the
+    evaluated one with the smallest capacity/demand ratio."""
+    mine = [c for c in kin["checks"] if c["limit_state"] in states]
+    nonlinear = [c for c in mine if c["method"] == "nonlinear"]
+    checks = [c for c in (nonlinear or mine) if c["ratio"] is not None]
     return min(checks, key=lambda c: c["ratio"]) if checks else None
 
 
