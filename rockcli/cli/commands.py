@@ -9,6 +9,7 @@ from rockcli.cli.compare import compare
 from rockcli.cli.init import init
 from rockcli.cli.kinematic import kinematic
 from rockcli.cli.record import record
+from rockcli.cli.sweep import sweep
 from rockcli.cli.warmup import warmup
 
 ALL: list[click.Command] = []
@@ -18,3 +19,4 @@ ALL.append(assess)
 ALL.append(kinematic)
 ALL.append(compare)
 ALL.append(warmup)
+ALL.append(sweep)

@@ -1,0 +1,153 @@
+"""The `rock sweep` summary as tables: the paper's Fig. 8 counts and the inconsistencies.
+
+Built from the summary document only (rockcli.studies.sweep_summary), rendered by the one
+generic renderer (:mod:`rockcli.report.table`).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Iterator, Sequence
+from contextlib import contextmanager
+from typing import Any
+
+from rockcli.report.table import Column, Report, Table
+
+COUNT_COLUMNS = (
+    Column("cases", "cases", "", "{:d}"),
+    Column("code_collapses", "code", "", "{:d}"),
+    Column("rocking_collapses", "rocking", "", "{:d}"),
+    Column("code_conservative", "code cons.", "", "{:d}"),
+    Column("code_unconservative", "code uncons.", "", "{:d}"),
+    Column("undetermined", "undetermined", "", "{:d}"),
+)
+
+
+def _cell(row: dict[str, Any], analyses: Sequence[str]) -> str:
+    """A pivot cell: code / rocking collapses (and code-conservative cases), as run."""
+    if len(analyses) == 1:
+        key = "code_collapses" if analyses[0] == "kinematic" else "rocking_collapses"
+        return str(row[key])
+    return f"{row['code_collapses']} / {row['rocking_collapses']} ({row['code_conservative']})"
+
+
+def pivot(
+    title: str, rows: list[dict[str, Any]], key: str, label: str, analyses: Sequence[str]
+) -> Table:
+    """Rows by `key`, one column per α, cells from :func:`_cell` (paper Fig. 8)."""
+    alphas = sorted({r["alpha"] for r in rows})
+    names = list(dict.fromkeys(r[key] for r in rows))
+    cells: dict[Any, dict[str, Any]] = {n: {"name": n} for n in names}
+    for r in rows:
+        cells[r[key]][f"a{alphas.index(r['alpha'])}"] = _cell(r, analyses)
+    cols = (
+        Column("name", label, align="left"),
+        *(Column(f"a{i}", f"α = {a:.4g}", "rad") for i, a in enumerate(alphas)),
+    )
+    return Table(title, cols, tuple(cells[n] for n in names))
+
+
+def totals_table(doc: dict[str, Any]) -> Table:
+    """Per record and in all: PGA, cases and the counts (of the analyses that ran)."""
+    rows = [{"name": r["record"] or "(code demand)", **r} for r in doc["records"]]
+    counts = tuple(c for c in COUNT_COLUMNS if doc[c.key] is not None)
+    rows.append({"name": "all", **{c.key: doc[c.key] for c in counts}})
+    cols = (Column("name", "record"), Column("pga_g", "PGA", "g", "{:.3f}"), *counts)
+    return Table("Totals: collapses and inconsistencies", cols, tuple(rows))
+
+
+def inconsistency_table(doc: dict[str, Any]) -> Table:
+    """The paper's inconsistency count and share (§3.3: 14/26 = 54 %) and the opposite."""
+    rows = (
+        {
+            "label": "code collapses, rocking survives (code conservative)",
+            "count": doc["code_conservative"],
+            "of": f"of {doc['code_collapses']} code collapses",
+            "share": _percent(doc["inconsistency_share"]),
+        },
+        {
+            "label": "rocking collapses, code passes (code unconservative)",
+            "count": doc["code_unconservative"],
+            "of": f"of {doc['rocking_collapses']} rocking collapses",
+            "share": _percent(doc["unconservative_share"]),
+        },
+    )
+    cols = (
+        Column("label", ""),
+        Column("count", "cases", "", "{:d}"),
+        Column("of", "", align="left"),
+        Column("share", "share"),
+    )
+    return Table("Inconsistencies (paper §3.3)", cols, rows)
+
+
+def _percent(value: float | None) -> str | None:
+    return None if value is None else f"{100 * value:.0f} %"
+
+
+def sweep_report(doc: dict[str, Any]) -> Report:
+    """The terminal report of a study summary."""
+    analyses = doc["analyses"]
+    both = len(analyses) == 2
+    what = "code / rocking collapses (code conservative)" if both else f"{analyses[0]} collapses"
+    tables = [
+        pivot(
+            f"Per record and α: {what}",
+            doc["by_record_alpha"],
+            "record",
+            "record",
+            analyses,
+        ),
+    ]
+    for name, rows in doc["by_axis_alpha"].items():
+        tables.append(pivot(f"Per {name} and α: {what}", rows, name, name, analyses))
+    tables.append(totals_table(doc))
+    if both:
+        tables.append(inconsistency_table(doc))
+    notes = [
+        *(
+            [
+                f"undetermined: {doc['undetermined']} cases where a verdict was not reached (the"
+                " code's non-linear check without d0* — positive global stiffness, no limit —"
+                " or an undecided rocking run); not counted as collapses"
+            ]
+            if doc["undetermined"]
+            else []
+        ),
+        f"{doc['cases']} cases ({doc['computed_cases']} run now, {doc['resumed_cases']} from an "
+        f"earlier run) in {doc['wall_time_s']:.2f} s; every case in {doc['out']}/cases.csv",
+        *(
+            f"record {s['name']} skipped: {s['path']} is absent"
+            + (f" (get it from {s['source']})" if s["source"] else "")
+            for s in doc["skipped_records"]
+        ),
+    ]
+    return Report(title=f"rock sweep — {doc['name']}", tables=tuple(tables), notes=tuple(notes))
+
+
+@contextmanager
+def progress_bar(show: bool | None) -> Iterator[Callable[[int, int], None] | None]:
+    """A rich progress bar of cases on stderr, as a callback (done, total); None when off.
+
+    show: True, False, or None for "when stderr is a terminal".
+    """
+    from rich.console import Console
+    from rich.progress import (
+        BarColumn,
+        MofNCompleteColumn,
+        Progress,
+        TimeElapsedColumn,
+        TimeRemainingColumn,
+    )
+
+    console = Console(stderr=True)
+    if not (console.is_terminal if show is None else show):
+        yield None
+        return
+    columns = (BarColumn(), MofNCompleteColumn(), TimeElapsedColumn(), TimeRemainingColumn())
+    with Progress("cases", *columns, console=console, transient=False) as bar:
+        task = bar.add_task("cases", total=None)
+
+        def update(done: int, total: int) -> None:
+            bar.update(task, completed=done, total=total)
+
+        yield update

@@ -1,0 +1,85 @@
+"""The cases of a study: records × the product of the axes, each a validated model.
+
+Case ids are the position in that product, records outermost and the axes in the order of
+the file (the first axis outermost), so a study file and its records give the same ids on
+every run and every machine: results are keyed by them, whatever order they complete in.
+Every case is the base model's table with the axis values set, validated by
+:func:`rockcli.model.load.validate_model` (never ``model_copy(update=…)``, which does not
+validate: spec/style.md, principle 2).
+"""
+
+from __future__ import annotations
+
+import itertools
+from dataclasses import dataclass
+from typing import Any
+
+from rockcli.errors import InputError
+from rockcli.model.schema import Model
+from rockcli.studies.sweep_paths import with_values
+from rockcli.studies.sweep_study import StudyPlan
+
+
+@dataclass(frozen=True)
+class Case:
+    """One case: its id, the record (index into the plan's records) and each axis' index."""
+
+    id: int
+    record: int | None
+    indices: tuple[int, ...]
+
+
+def axis_points(plan: StudyPlan) -> list[tuple[int, ...]]:
+    """The product of the axes' value indices, first axis outermost."""
+    return list(itertools.product(*(range(len(a.values)) for a in plan.axes)))
+
+
+def expand(plan: StudyPlan) -> list[Case]:
+    """Every case of the study, by id (records outermost; no record: the kinematic check on
+    the model's own code demand)."""
+    points = axis_points(plan)
+    records: list[int | None] = list(range(len(plan.records))) or [None]
+    return [
+        Case(i, rec, point) for i, (rec, point) in enumerate(itertools.product(records, points))
+    ]
+
+
+def case_label(plan: StudyPlan, case: Case) -> str:
+    """``case 12 (R = 1.5, alpha = 0.05, record ELC180)``: how errors name a case."""
+    parts = [f"{a.name} = {a.label(i)}" for a, i in zip(plan.axes, case.indices, strict=True)]
+    if case.record is not None:
+        parts.append(f"record {plan.records[case.record].name}")
+    return f"case {case.id}" + (f" ({', '.join(parts)})" if parts else "")
+
+
+def case_error(plan: StudyPlan, case: Case, exc: InputError) -> InputError:
+    """A case's bad input as one line naming the study file and the case's axis values."""
+    inner = ": ".join(x for x in (exc.where, exc.problem) if x)
+    if exc.file and exc.file != plan.base_file:
+        inner = f"{exc.file}: {inner}"
+    return InputError(
+        inner, file=plan.file, where=case_label(plan, case), value=exc.value, allowed=exc.allowed
+    )
+
+
+def case_table(plan: StudyPlan, case: Case) -> dict[str, Any]:
+    """The model table of a case: the base with the axis values set."""
+    return with_values(plan.base, plan.axes, case.indices)
+
+
+def build_model(plan: StudyPlan, case: Case) -> Model:
+    """The validated model of a case; InputError naming the case otherwise."""
+    from rockcli.model.load import validate_model
+
+    try:
+        return validate_model(case_table(plan, case), file=plan.base_file)
+    except InputError as exc:
+        raise case_error(plan, case, exc) from None
+
+
+def check_cases(plan: StudyPlan) -> None:
+    """Validate the model of every point of the grid (the record does not change the model),
+    so that a bad case stops the study before any work. The error names the case of the
+    first record (its id is the point's index) by its axis values."""
+    for i, point in enumerate(axis_points(plan)):
+        build_model(plan, Case(i, None, point))

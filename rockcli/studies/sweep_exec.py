@@ -1,0 +1,120 @@
+"""Where a study's chunks run: this process, a local process pool, or a dask cluster.
+
+All three are :class:`concurrent.futures.Executor` objects (spec/engine.md, "Studies at
+scale"):
+
+- ``--jobs 1``: a thread of this process runs the chunks (no worker start-up, the records
+  and compiled kernels loaded once), while the main thread writes rows and draws progress;
+- ``--jobs N``: that thread and a :class:`~concurrent.futures.ProcessPoolExecutor` of N − 1
+  processes, forks of a ``forkserver`` that has loaded numpy, numba and the compiled kernels
+  once (``spawn`` where there is no fork server; never ``fork``: numba and threads), each
+  with one thread (:func:`rockcli.studies.sweep_worker.init_worker`);
+- ``--scheduler tcp://host:8786`` (or DASK_SCHEDULER_ADDRESS): ``distributed.Client(addr)
+  .get_executor()``, from the ``dask`` extra (``pip install 'rock[dask]'``). The workers need
+  rock installed and the record files at the same paths (a shared file system).
+"""
+
+from __future__ import annotations
+
+import multiprocessing
+import threading
+from collections.abc import Iterator
+from concurrent.futures import Executor, ProcessPoolExecutor, ThreadPoolExecutor
+from contextlib import contextmanager, suppress
+from typing import NamedTuple
+
+from rockcli.errors import InputError
+
+#: Start methods of the local worker processes, in order of preference (never fork: numba).
+START_METHODS = ("forkserver", "spawn")
+#: Module the fork server imports before forking workers (loads the compiled kernels).
+PRELOAD = "rockcli.studies.sweep_forkserver"
+#: Seconds to wait for a dask scheduler to answer.
+CONNECT_TIMEOUT = 10.0
+#: Chunks in flight per worker process (one running, one queued).
+IN_FLIGHT = 2
+
+
+class Lane(NamedTuple):
+    """An executor, the workers behind it and how many chunks to keep submitted to it."""
+
+    executor: Executor
+    workers: int
+    capacity: int
+
+
+def start_method() -> str:
+    """forkserver where the platform has it (workers are forks of a warm server), else spawn."""
+    available = multiprocessing.get_all_start_methods()
+    return next(m for m in START_METHODS if m in available)
+
+
+def process_executor(workers: int) -> ProcessPoolExecutor:
+    """A pool of worker processes, each with one thread and the kernels loaded.
+
+    The processes start at once, from a background thread: the fork server (or each spawned
+    worker) imports numpy and numba while this process validates the cases and reads the
+    records, and the first chunks start in this process meanwhile.
+    """
+    from rockcli.studies.sweep_worker import init_worker
+
+    method = start_method()
+    context = multiprocessing.get_context(method)
+    if method == "forkserver":
+        context.set_forkserver_preload([PRELOAD])
+    pool = ProcessPoolExecutor(max_workers=workers, mp_context=context, initializer=init_worker)
+    threading.Thread(target=_start, args=(pool, workers), daemon=True).start()
+    return pool
+
+
+def _start(pool: ProcessPoolExecutor, workers: int) -> None:
+    """Submit no-op tasks, which starts the processes (a pool starts one per submission)."""
+    with suppress(RuntimeError):  # the pool was shut down first
+        for _ in range(workers):
+            pool.submit(int)
+
+
+@contextmanager
+def local_executor(jobs: int) -> Iterator[list[Lane]]:
+    """The lanes of `jobs` local workers: a thread of this process, and jobs − 1 processes.
+
+    The thread runs chunks while the main thread waits, writes rows and draws the progress
+    bar; it shares this process's records and compiled kernels (nothing to start for it).
+    """
+    thread = ThreadPoolExecutor(max_workers=1, thread_name_prefix="rock-sweep")
+    lanes = [Lane(thread, 1, 1)]
+    if jobs > 1:
+        lanes.append(Lane(process_executor(jobs - 1), jobs - 1, IN_FLIGHT * (jobs - 1)))
+    try:
+        yield lanes
+    finally:
+        for lane in reversed(lanes):
+            lane.executor.shutdown(wait=True, cancel_futures=True)
+
+
+@contextmanager
+def dask_executor(address: str) -> Iterator[list[Lane]]:
+    """The lane of a dask scheduler (its threads, IN_FLIGHT chunks each)."""
+    try:
+        from distributed import Client
+    except ImportError:
+        raise InputError(
+            "--scheduler needs dask.distributed",
+            where="--scheduler",
+            value=address,
+            allowed="pip install 'rock[dask]', or run locally with --jobs",
+        ) from None
+    try:
+        client = Client(address, timeout=CONNECT_TIMEOUT)
+    except (OSError, TimeoutError) as exc:
+        raise InputError(
+            f"cannot connect to the dask scheduler: {exc}",
+            where="--scheduler",
+            value=address,
+            allowed="the address of a running scheduler, e.g. tcp://host:8786",
+        ) from None
+    try:
+        threads = max(1, sum(client.nthreads().values()))
+        yield [Lane(client.get_executor(), threads, IN_FLIGHT * threads)]
+    finally:
+        client.close()

@@ -1,0 +1,224 @@
+"""Key paths into the model: check them against the schema and the base file, set them.
+
+A path names a value field of the model (``geometry.R``, ``restrainers[0].k_pos``,
+``ntc.FC``): every key must be a field of its table, every ``[i]`` an element the base
+model has (a study changes restrainers, it does not invent them), and the path must end at
+a value, not a table. Tables the base leaves out (an absent ``[ntc]``) are created when a
+value is set in them; the case's validation then says whether the result is a valid model.
+"""
+
+from __future__ import annotations
+
+import copy
+from collections.abc import Mapping, Sequence
+from typing import Any, get_args, get_origin
+
+from pydantic import BaseModel
+
+from rockcli.errors import InputError
+from rockcli.model.schema import Model
+from rockcli.studies.sweep_study import (
+    PATH_ALLOWED,
+    Axis,
+    AxisSpec,
+    KeyPath,
+    Scalar,
+    parse_path,
+)
+
+#: Column names of the results: an axis cannot take them.
+RESERVED = frozenset(
+    {
+        "case",
+        "record",
+        "block_R",
+        "block_alpha",
+        "max_ratio",
+        "max_ratio_pos",
+        "max_ratio_neg",
+        "overturned",
+        "t_overturn",
+        "rocking",
+        "code_dls",
+        "code_uls",
+        "uls_ratio",
+        "a0_star",
+        "Ts",
+        "classification",
+    }
+)
+
+
+def _table_in(annotation: Any) -> type[BaseModel] | None:
+    """The table class inside an annotation (Optional[T], tuple[T, ...]), if any."""
+    if isinstance(annotation, type) and issubclass(annotation, BaseModel):
+        return annotation
+    for arg in get_args(annotation):
+        found = _table_in(arg)
+        if found is not None:
+            return found
+    return None
+
+
+def _is_array(annotation: Any) -> bool:
+    """True for tuple[T, ...] (or Optional of it): an array of tables in TOML."""
+    if get_origin(annotation) is tuple:
+        return True
+    return any(_is_array(a) for a in get_args(annotation) if a is not type(None))
+
+
+def schema_problem(path: KeyPath) -> tuple[str, str] | None:
+    """(problem, allowed) when the path does not name a value field of the model, else None."""
+    table: type[BaseModel] = Model
+    i = 0
+    while i < len(path):
+        key = path[i]
+        keys = "one of: " + ", ".join(table.model_fields)
+        if isinstance(key, int):
+            return "an index where a key is expected", keys
+        info = table.model_fields.get(key)
+        if info is None:
+            return f"no key {key!r} in this table of the model", keys
+        sub, array = _table_in(info.annotation), _is_array(info.annotation)
+        i += 1
+        if array:
+            if i == len(path) or not isinstance(path[i], int):
+                return f"{key} is an array of tables: give an index", f"{key}[0].<key>"
+            i += 1
+        if sub is None:
+            return None if i == len(path) else (f"{key} is a value, not a table", keys)
+        if i == len(path):
+            return f"{key} is a table, not a value", "a key inside it: " + ", ".join(
+                sub.model_fields
+            )
+        table = sub
+    return None
+
+
+def base_problem(path: KeyPath, base: Mapping[str, Any]) -> str | None:
+    """A problem when an index of the path is not an element of the base model."""
+    node: Any = base
+    for depth, key in enumerate(path):
+        if isinstance(key, int):
+            if not isinstance(node, list) or key >= len(node):
+                return f"{_text(path[: depth + 1])} is not in the base model"
+        elif not isinstance(node, Mapping) or key not in node:
+            return None  # an absent table or value: created when set
+        node = node[key]
+    return None
+
+
+def _text(path: Sequence[str | int]) -> str:
+    out = ""
+    for part in path:
+        out += f"[{part}]" if isinstance(part, int) else ("." if out else "") + part
+    return out
+
+
+def set_path(data: dict[str, Any], path: KeyPath, value: Scalar) -> None:
+    """Set a value in the model table in place, creating absent tables on the way."""
+    node: Any = data
+    for key in path[:-1]:
+        if isinstance(key, int):
+            node = node[key]
+        else:
+            node = node.setdefault(key, {})
+    node[path[-1]] = value
+
+
+def with_values(
+    base: Mapping[str, Any], axes: Sequence[Axis], indices: Sequence[int]
+) -> dict[str, Any]:
+    """A copy of the base model table with each axis at its index-th value."""
+    data = copy.deepcopy(dict(base))
+    for axis, index in zip(axes, indices, strict=True):
+        for path, value in zip(axis.paths, axis.values[index], strict=True):
+            set_path(data, path, value)
+    return data
+
+
+def check_axes(specs: Sequence[AxisSpec], base: Mapping[str, Any], file: str) -> tuple[Axis, ...]:
+    """The axes of a study, each path checked; InputError naming the axis key otherwise."""
+    axes: list[Axis] = []
+    seen: dict[KeyPath, int] = {}
+    for i, spec in enumerate(specs):
+        paths = tuple(
+            _checked_path(text, i, j, spec, base, file) for j, text in enumerate(spec.paths)
+        )
+        for path in paths:
+            if path in seen:
+                raise InputError(
+                    f"already set by axes[{seen[path]}]",
+                    file=file,
+                    where=f"axes[{i}].path",
+                    value=_text(path),
+                    allowed="each model field on one axis only",
+                )
+            seen[path] = i
+        values = tuple(
+            _values_of(spec, k, v, len(paths), i, file) for k, v in enumerate(spec.values)
+        )
+        name = spec.name or next(str(p) for p in reversed(paths[0]) if isinstance(p, str))
+        _check_name(name, i, [a.name for a in axes], file)
+        axes.append(Axis(name, paths, spec.paths, values))
+    return tuple(axes)
+
+
+def _checked_path(
+    text: str, i: int, j: int, spec: AxisSpec, base: Mapping[str, Any], file: str
+) -> KeyPath:
+    where = f"axes[{i}].path" + (f"[{j}]" if not isinstance(spec.path, str) else "")
+    path = parse_path(text)
+    if path is None:
+        raise InputError("bad key path", file=file, where=where, value=text, allowed=PATH_ALLOWED)
+    problem = schema_problem(path)
+    if problem is not None:
+        raise InputError(
+            f"not a field of the model: {problem[0]}",
+            file=file,
+            where=where,
+            value=text,
+            allowed=problem[1],
+        )
+    missing = base_problem(path, base)
+    if missing is not None:
+        raise InputError(
+            missing, file=file, where=where, value=text, allowed="an element of the base model"
+        )
+    return path
+
+
+def _values_of(
+    spec: AxisSpec, k: int, value: Any, n_paths: int, i: int, file: str
+) -> tuple[Scalar, ...]:
+    """One value per path: a scalar for all, or an array with one per path."""
+    if not isinstance(value, tuple):
+        return (value,) * n_paths
+    if n_paths > 1 and len(value) == n_paths:
+        return tuple(value)
+    raise InputError(
+        "a value must be a number, text or boolean"
+        + (f", or an array of {n_paths} (one per path)" if n_paths > 1 else ""),
+        file=file,
+        where=f"axes[{i}].values[{k}]",
+        allowed="one value per path" if n_paths > 1 else "a TOML scalar",
+    )
+
+
+def _check_name(name: str, i: int, taken: Sequence[str], file: str) -> None:
+    if name in taken:
+        raise InputError(
+            "another axis has this name",
+            file=file,
+            where=f"axes[{i}].name",
+            value=name,
+            allowed='name = "..." different from the other axes\' names',
+        )
+    if name in RESERVED:
+        raise InputError(
+            "the name of a result column",
+            file=file,
+            where=f"axes[{i}].name",
+            value=name,
+            allowed='name = "..." not one of: ' + ", ".join(sorted(RESERVED)),
+        )

@@ -1,0 +1,194 @@
+"""Run a study: expand and validate the cases, cut them in chunks, run the chunks on an
+executor, write each chunk's rows as it completes, summarise.
+
+Coded against :class:`concurrent.futures.Executor` (spec/engine.md, "Studies at scale"): the
+main process (``--jobs 1``), a local process pool, or a dask cluster run the same chunks.
+Chunks hold the cases of one record and about :data:`CHUNK_SECONDS` of work (fewer when the
+study is small, so every worker gets several); at most a few chunks per worker are in flight,
+so an error or an interruption stops the study soon, with every finished chunk on disk.
+"""
+
+from __future__ import annotations
+
+import math
+import time
+from collections.abc import Callable, Iterator, Sequence
+from concurrent.futures import FIRST_COMPLETED, Future, wait
+from dataclasses import dataclass
+from typing import Any
+
+from rockcli.studies.sweep_cases import Case, check_cases, expand
+from rockcli.studies.sweep_exec import Lane
+from rockcli.studies.sweep_output import Output, typed
+from rockcli.studies.sweep_study import StudyPlan
+from rockcli.studies.sweep_worker import Chunk, read_source, run_chunk
+
+#: Work per chunk aimed at [s]: long enough that pickling and scheduling (≈ 1 ms per task)
+#: do not matter, short enough for a live progress bar and little lost work on interruption.
+CHUNK_SECONDS = 1.0
+#: Chunks per worker at least, when the study is small (load balance).
+CHUNKS_PER_WORKER = 4
+#: Estimated cost of a case, for the chunk size only [s]: the kinematic analysis (its
+#: capacity curve with restrainers dominates), the rocking run per record sample (both
+#: polarities). Measured on this machine: 1–2 ms and ≈ 20 ns per sample (benchmarks/sweep.py).
+KINEMATIC_COST = 1.5e-3
+ROCKING_COST = 2e-4
+ROCKING_COST_PER_SAMPLE = 2e-8
+
+Progress = Callable[[int, int], None]
+
+
+@dataclass(frozen=True)
+class SweepResult:
+    """The summary document, every case's verdicts (for the collapse map) and the folder.
+
+    Attributes:
+        summary: the `rock sweep --format json` document.
+        cases: per case, R, alpha, record, code_collapse, rocking_collapse and the axes.
+        split: the axis to draw one panel per value of (the first non-geometric one).
+        out: the output folder.
+    """
+
+    summary: dict[str, Any]
+    cases: list[dict[str, Any]]
+    split: str | None
+    out: str
+
+
+def case_cost(plan: StudyPlan, npts: int) -> float:
+    """The estimated seconds of one case on a record of npts samples."""
+    cost = KINEMATIC_COST if "kinematic" in plan.analyses else 0.0
+    if "rocking" in plan.analyses:
+        cost += ROCKING_COST + ROCKING_COST_PER_SAMPLE * npts
+    return cost
+
+
+def make_chunks(
+    plan: StudyPlan,
+    cases: Sequence[Case],
+    npts: Sequence[int],
+    workers: int,
+    chunk_size: int | None = None,
+) -> list[Chunk]:
+    """The chunks of the cases to run: cases of one record together, ≈ CHUNK_SECONDS each."""
+    by_record: dict[int | None, list[Case]] = {}
+    for case in cases:
+        by_record.setdefault(case.record, []).append(case)
+    costs = {r: case_cost(plan, npts[r] if r is not None else 0) for r in by_record}
+    total = sum(costs[r] * len(c) for r, c in by_record.items())
+    target = min(CHUNK_SECONDS, total / (CHUNKS_PER_WORKER * workers))
+    chunks = []
+    for record, group in by_record.items():
+        size = chunk_size or max(1, math.floor(target / costs[record]) if costs[record] else 1)
+        for start in range(0, len(group), size):
+            chunks.append(Chunk(plan, record, tuple(group[start : start + size])))
+    return chunks
+
+
+def run_chunks(lanes: Sequence[Lane], chunks: Sequence[Chunk]) -> Iterator[list[dict[str, Any]]]:
+    """The rows of each chunk as it completes (any order).
+
+    Each lane (an executor and its capacity) holds at most its capacity of submitted chunks;
+    the next chunk goes to the first lane with room. The first error cancels what is queued
+    and is raised.
+    """
+    pending: dict[Future[list[dict[str, Any]]], int] = {}
+    load = [0] * len(lanes)
+    todo = iter(chunks)
+    try:
+        while True:
+            for i, lane in enumerate(lanes):
+                while load[i] < lane.capacity and (chunk := next(todo, None)) is not None:
+                    pending[lane.executor.submit(run_chunk, chunk)] = i
+                    load[i] += 1
+            if not pending:
+                return
+            done, _ = wait(pending, return_when=FIRST_COMPLETED)
+            for future in done:
+                load[pending.pop(future)] -= 1
+                yield future.result()
+    finally:
+        for future in pending:
+            future.cancel()
+
+
+def record_facts(plan: StudyPlan) -> tuple[list[int], dict[str, dict[str, Any]]]:
+    """Each record read once here (a bad file fails before any work): samples and facts."""
+    npts, facts = [], {}
+    for source in plan.records:
+        record = read_source(source)
+        npts.append(record.npts)
+        facts[source.name] = {
+            "path": source.path,
+            "pga_g": record.pga,
+            "npts": record.npts,
+            "duration_s": record.duration,
+        }
+    return npts, facts
+
+
+def run_sweep(
+    plan: StudyPlan,
+    out: str,
+    lanes: Sequence[Lane],
+    *,
+    resume: bool = False,
+    overwrite: bool = False,
+    chunk_size: int | None = None,
+    progress: Progress | None = None,
+    run_facts: dict[str, Any] | None = None,
+    started: float | None = None,
+) -> SweepResult:
+    """Run every case of a study not already in the output folder; the summary.
+
+    Args:
+        plan: the validated study. out: the output folder.
+        lanes: where the chunks run: executors and how many chunks each takes at a time.
+        resume: keep the cases an earlier run of the same study finished.
+        overwrite: start over even if the folder holds another or an unfinished study.
+        chunk_size: cases per chunk instead of the estimate.
+        progress: called with (cases done, cases in all) after each chunk.
+        run_facts: extra facts for the summary (jobs, scheduler).
+        started: time.perf_counter() when the command started (the summary's wall time).
+    """
+    from rockcli.studies.sweep_summary import case_rows, split_axis, summarize
+
+    start = time.perf_counter() if started is None else started
+    check_cases(plan)
+    cases = expand(plan)
+    npts, facts = record_facts(plan)
+    output = Output(out, plan, len(cases))
+    rows = output.start(resume=resume, overwrite=overwrite)
+    resumed = len(rows)
+    todo = [c for c in cases if c.id not in rows]
+    labels = {c.id: _labels(plan, c) for c in todo}
+    if progress:
+        progress(len(rows), len(cases))
+    workers = sum(lane.workers for lane in lanes)
+    for chunk_rows in run_chunks(lanes, make_chunks(plan, todo, npts, workers, chunk_size)):
+        written = output.append({**labels[r["case"]], **r} for r in chunk_rows)
+        rows.update((int(w["case"]), w) for w in written)
+        if progress:
+            progress(len(rows), len(cases))
+    run = {
+        "out": str(output.folder),
+        "computed_cases": len(cases) - resumed,
+        "resumed_cases": resumed,
+        **(run_facts or {}),
+        "wall_time_s": time.perf_counter() - start,
+    }
+    results = {k: typed(v) for k, v in rows.items()}
+    summary = summarize(plan, cases, results, facts, run)
+    output.finish(rows, summary)
+    return SweepResult(
+        summary, case_rows(plan, cases, results), split_axis(plan), str(output.folder)
+    )
+
+
+def _labels(plan: StudyPlan, case: Case) -> dict[str, Any]:
+    """The case's id, record and axis values: the first columns of its row."""
+    return {
+        "case": case.id,
+        "record": plan.records[case.record].name if case.record is not None else None,
+        **{a.name: a.label(i) for a, i in zip(plan.axes, case.indices, strict=True)},
+    }

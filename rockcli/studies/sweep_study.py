@@ -1,0 +1,359 @@
+"""The study file of `rock sweep`, validated by pydantic at the edge like the model file.
+
+A study names a base model, the axes (any model field by its key path, several paths set
+together), the records and what to run (spec/README.md, `rock sweep`; paper §3.3 and §4.4).
+Every problem with the file is one :class:`~rockcli.errors.InputError` naming the study file
+and the key (``axes[1].path``, ``records[0].path``), the value and what is allowed.
+
+Paths of files inside the study (base, records_dir, records) are relative to the study file;
+a record's path is relative to ``records_dir`` when one is set, and ``--records-dir`` (or the
+environment variable ROCK_RECORDS_DIR) replaces the file's records_dir, so one study runs on
+every machine whatever the records folder.
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass
+from enum import StrEnum
+from pathlib import Path
+from typing import Any
+
+from pydantic import BaseModel, Field, ValidationError, field_validator
+from pydantic_core import ErrorDetails
+
+from rockcli.errors import InputError
+from rockcli.model.schema_base import Table
+from rockcli.records.kinds import FILE_FORMATS, RecordFormat
+
+#: A value an axis sets: a TOML scalar.
+Scalar = bool | int | float | str
+#: A key path inside the model: ("restrainers", 0, "k_pos").
+KeyPath = tuple[str | int, ...]
+
+_PATH = re.compile(r"^[A-Za-z_][A-Za-z0-9_]*(\[\d+\])*(\.[A-Za-z_][A-Za-z0-9_]*(\[\d+\])*)*$")
+_PART = re.compile(r"([A-Za-z_][A-Za-z0-9_]*)|\[(\d+)\]")
+PATH_ALLOWED = "dotted keys with [i] indices, e.g. geometry.R or restrainers[0].k_pos"
+
+
+class Analysis(StrEnum):
+    """What a study runs on every case."""
+
+    ROCKING = "rocking"
+    KINEMATIC = "kinematic"
+
+
+class EngineName(StrEnum):
+    """The rocking engine (see `rock assess --engine`)."""
+
+    FAST = "fast"
+    REFERENCE = "reference"
+
+
+class AxisSpec(Table):
+    """One axis of the grid: a model field (or several set together) and its values."""
+
+    path: str | tuple[str, ...] = Field(
+        ..., description="a key path such as geometry.R, or an array of them set together"
+    )
+    values: tuple[Scalar | tuple[Scalar, ...], ...] = Field(
+        ...,
+        min_length=1,
+        description="a non-empty array of numbers, text or booleans (with several paths, "
+        "each an array of one value per path, or one value for all)",
+    )
+    name: str | None = Field(
+        None,
+        min_length=1,
+        description="a non-empty label (default: the last key of the first path)",
+    )
+
+    @property
+    def paths(self) -> tuple[str, ...]:
+        """The key paths as text."""
+        return (self.path,) if isinstance(self.path, str) else self.path
+
+
+class RecordSpec(Table):
+    """One record of the study, and how to read and scale it."""
+
+    path: str = Field(..., min_length=1, description="a record file, relative to records_dir")
+    name: str | None = Field(
+        None, min_length=1, description="a non-empty label (default: the file name)"
+    )
+    scale: float | None = Field(None, gt=0, description="a factor > 0 on the accelerations [-]")
+    pga: float | None = Field(
+        None, gt=0, description="a PGA > 0 to scale the record to, instead of scale [g]"
+    )
+    format: RecordFormat | None = Field(None, description="one of: at2, esm, coracc, plain")
+    dt: float | None = Field(None, gt=0, description="the step > 0 of a one-column plain file [s]")
+    units: str | None = Field(None, description="the unit of a plain file: g, m/s2 or cm/s2")
+    optional: bool = Field(
+        False,
+        strict=True,
+        description="true (skip the record with a note when its file is absent) or false",
+    )
+    source: str | None = Field(
+        None, description="text: where to get the record (shown when it is absent)"
+    )
+
+    @field_validator("format")
+    @classmethod
+    def _a_file_format(cls, value: RecordFormat | None) -> RecordFormat | None:
+        if value is not None and value not in FILE_FORMATS:
+            raise ValueError("a generated pulse is not a file format")
+        return value
+
+
+class Study(Table):
+    """The whole study file."""
+
+    name: str | None = Field(None, min_length=1, description="a non-empty title")
+    notes: str | None = Field(None, description="free text")
+    base: str = Field(
+        ..., min_length=1, description="the base model file, relative to the study file"
+    )
+    analyses: tuple[Analysis, ...] = Field(
+        (Analysis.ROCKING, Analysis.KINEMATIC),
+        min_length=1,
+        description='"rocking", "kinematic" or both, each once',
+    )
+    engine: EngineName = Field(EngineName.FAST, description='"fast" or "reference"')
+    record_demand: bool = Field(
+        False,
+        strict=True,
+        description="true (each record's spectrum is the code demand even when the base model "
+        "sets a code spectrum) or false",
+    )
+    records_dir: str | None = Field(
+        None, description="the folder the record paths are relative to (from the study file)"
+    )
+    axes: tuple[AxisSpec, ...] = Field((), description="[[axes]] tables with path and values")
+    records: tuple[RecordSpec, ...] = Field((), description="[[records]] tables with path")
+
+    @field_validator("analyses")
+    @classmethod
+    def _unique(cls, value: tuple[Analysis, ...]) -> tuple[Analysis, ...]:
+        if len(set(value)) != len(value):
+            raise ValueError("an analysis is listed twice")
+        return value
+
+
+@dataclass(frozen=True)
+class Axis:
+    """An axis ready to expand: its label, key paths and values (one tuple per path)."""
+
+    name: str
+    paths: tuple[KeyPath, ...]
+    texts: tuple[str, ...]
+    values: tuple[tuple[Scalar, ...], ...]
+
+    def label(self, index: int) -> Scalar:
+        """The index-th value as shown: the value, or ``a/b`` when the paths differ."""
+        value = self.values[index]
+        if all(v == value[0] and type(v) is type(value[0]) for v in value):
+            return value[0]
+        return "/".join(str(v) for v in value)
+
+
+@dataclass(frozen=True)
+class RecordSource:
+    """A record file and how to read it (hashable: the key of the workers' cache)."""
+
+    name: str
+    path: str
+    fmt: str | None = None
+    dt: float | None = None
+    units: str | None = None
+    scale: float | None = None
+    pga: float | None = None
+
+
+@dataclass(frozen=True)
+class SkippedRecord:
+    """An optional record whose file is absent."""
+
+    name: str
+    path: str
+    source: str | None
+
+
+@dataclass(frozen=True)
+class StudyPlan:
+    """A validated study: the base model table, the axes, the records present and skipped."""
+
+    file: str
+    name: str
+    base_file: str
+    base: dict[str, Any]
+    analyses: tuple[str, ...]
+    engine: str
+    record_demand: bool
+    axes: tuple[Axis, ...]
+    records: tuple[RecordSource, ...]
+    skipped: tuple[SkippedRecord, ...]
+
+
+def parse_path(text: str) -> KeyPath | None:
+    """``restrainers[0].k_pos`` → ("restrainers", 0, "k_pos"); None if the syntax is bad."""
+    if not _PATH.match(text):
+        return None
+    return tuple(key if key else int(index) for key, index in _PART.findall(text))
+
+
+def study_error(err: ErrorDetails, file: str) -> InputError:
+    """One pydantic error of the study file as one InputError naming the key."""
+    loc = tuple(err["loc"])
+    if err["type"] != "extra_forbidden":  # its last key is the unknown one: keep it
+        # A union (path: text or array) reports the member tried; keep the keys and indices.
+        loc = tuple(p for p in loc if isinstance(p, int) or p in _KEYS)
+    where = _dotted(loc) or None
+    if err["type"] == "extra_forbidden":
+        table = _table_of(loc[:-1])
+        keys = ", ".join(table.model_fields) if table else ""
+        return InputError("unknown key", file=file, where=where, allowed=f"one of: {keys}")
+    if err["type"] == "missing":
+        return InputError("missing key", file=file, where=where, allowed="required")
+    info = _field_of(loc)
+    value = err.get("input")
+    problem = " ".join(err["msg"].split()).removeprefix("Value error, ")
+    if "values" in loc and err["type"] != "too_short":
+        problem = "not a number, text or boolean"  # the union reports its first member
+    return InputError(
+        problem,
+        file=file,
+        where=where,
+        value=value if isinstance(value, bool | int | float | str) else None,
+        allowed=info.description if info is not None else None,
+    )
+
+
+_TABLES: dict[str, type[BaseModel]] = {"axes": AxisSpec, "records": RecordSpec}
+_KEYS = set(Study.model_fields) | set(AxisSpec.model_fields) | set(RecordSpec.model_fields)
+
+
+def _table_of(loc: Sequence[str | int]) -> type[BaseModel] | None:
+    keys = [p for p in loc if isinstance(p, str)]
+    if not keys:
+        return Study
+    return _TABLES.get(keys[0]) if len(keys) == 1 else None
+
+
+def _field_of(loc: Sequence[str | int]) -> Any:
+    keys = [p for p in loc if isinstance(p, str)]
+    table = _table_of(loc[: max((i for i, p in enumerate(loc) if isinstance(p, str)), default=0)])
+    return table.model_fields.get(keys[-1]) if table and keys else None
+
+
+def _dotted(loc: Sequence[str | int]) -> str:
+    text = ""
+    for part in loc:
+        text += f"[{part}]" if isinstance(part, int) else ("." if text else "") + part
+    return text
+
+
+def validate_study(data: Mapping[str, Any], file: str) -> Study:
+    """The study table validated; InputError (the first problem) naming the key."""
+    try:
+        return Study.model_validate(data)
+    except ValidationError as exc:
+        raise study_error(exc.errors()[0], file) from None
+
+
+def load_study(file: str, records_dir: str | None = None) -> StudyPlan:
+    """Read and validate a study file: schema, base model, axis paths, record files.
+
+    Args:
+        file: the study TOML (named in errors as given).
+        records_dir: replaces the file's records_dir (the --records-dir option).
+    """
+    from rockcli.model.load import read_toml
+    from rockcli.studies.sweep_paths import check_axes
+
+    study = validate_study(read_toml(file), file)
+    here = Path(file).parent
+    base_file = str(here / study.base)
+    if not Path(base_file).is_file():
+        raise InputError(
+            "base model file not found",
+            file=file,
+            where="base",
+            value=study.base,
+            allowed=f"a model file, relative to the study file ({base_file} is absent)",
+        )
+    base = read_toml(base_file)
+    axes = check_axes(study.axes, base, file)
+    folder = _records_folder(study, here, records_dir)
+    records, skipped = _records(study.records, folder, file)
+    if Analysis.ROCKING in study.analyses and not records:
+        raise InputError(
+            "no record to run" + (" (every record is optional and absent)" if skipped else ""),
+            file=file,
+            where="records",
+            allowed="[[records]] tables with existing files (the rocking analysis needs one)",
+        )
+    return StudyPlan(
+        file=file,
+        name=study.name or Path(file).stem,
+        base_file=base_file,
+        base=base,
+        analyses=tuple(str(a) for a in study.analyses),
+        engine=str(study.engine),
+        record_demand=study.record_demand,
+        axes=axes,
+        records=records,
+        skipped=skipped,
+    )
+
+
+def _records_folder(study: Study, here: Path, override: str | None) -> Path:
+    if override:
+        return Path(override)
+    return here / study.records_dir if study.records_dir else here
+
+
+def _records(
+    specs: Sequence[RecordSpec], folder: Path, file: str
+) -> tuple[tuple[RecordSource, ...], tuple[SkippedRecord, ...]]:
+    """The records present (paths resolved) and the optional ones absent."""
+    from rockcli.records.files import record_name
+
+    present: list[RecordSource] = []
+    skipped: list[SkippedRecord] = []
+    for i, spec in enumerate(specs):
+        path = folder / spec.path
+        name = spec.name or record_name(path)
+        if spec.scale is not None and spec.pga is not None:
+            raise InputError(
+                "not allowed together with scale",
+                file=file,
+                where=f"records[{i}].pga",
+                value=spec.pga,
+                allowed="scale or pga, not both",
+            )
+        if not path.is_file():
+            if spec.optional:
+                skipped.append(SkippedRecord(name, str(path), spec.source))
+                continue
+            raise InputError(
+                "record file not found",
+                file=file,
+                where=f"records[{i}].path",
+                value=str(path),
+                allowed="an existing file (paths are relative to records_dir, or to the study "
+                "file; --records-dir sets the folder), or optional = true to skip it",
+            )
+        if name in {r.name for r in present}:
+            raise InputError(
+                "two records with the same name",
+                file=file,
+                where=f"records[{i}]",
+                value=name,
+                allowed="a distinct name = ... for each record",
+            )
+        fmt = str(spec.format) if spec.format is not None else None
+        present.append(
+            RecordSource(name, str(path.resolve()), fmt, spec.dt, spec.units, spec.scale, spec.pga)
+        )
+    return tuple(present), tuple(skipped)

@@ -1,0 +1,197 @@
+"""The summary of a study: the paper's counts of collapses and inconsistencies.
+
+Paper §3.3 (Fig. 8): collapses per record and slenderness α, by the code (non-linear ULS
+check not satisfied) and by the rocking analysis (overturning in either polarity); an
+*inconsistency* is a case the code says collapses and the rocking analysis says survives
+(14 of the 26 code collapses, 54 %), the opposite case is counted too (never met in the
+paper). §4.4 (Fig. 17) breaks the counts down by the restrainer stiffness K: any axis that
+does not set the geometry gets its own table by value and α.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Hashable, Iterable, Mapping, Sequence
+from typing import Any
+
+from rockcli import __version__
+from rockcli.studies.sweep_cases import Case
+from rockcli.studies.sweep_study import StudyPlan
+
+SCHEMA = 1
+#: Digits α is rounded to when grouping cases by slenderness (α from thickness and height is
+#: computed, so equal slenderness may differ in the last bits).
+ALPHA_DIGITS = 10
+
+
+def code_collapse(row: Mapping[str, Any]) -> bool | None:
+    """The code's collapse verdict: its ULS check not satisfied (None: not evaluated)."""
+    uls = row.get("code_uls")
+    return None if uls is None else uls == "fail"
+
+
+def rocking_collapse(row: Mapping[str, Any]) -> bool | None:
+    """The rocking verdict: overturning in either polarity (None: not run or undecided)."""
+    verdict = row.get("rocking")
+    return None if verdict in (None, "undecided") else verdict == "overturns"
+
+
+#: The counts that need each analysis (None in the summary when it did not run).
+NEEDS = {
+    "code_collapses": {"kinematic"},
+    "rocking_collapses": {"rocking"},
+    "code_conservative": {"kinematic", "rocking"},
+    "code_unconservative": {"kinematic", "rocking"},
+    "consistent_safe": {"kinematic", "rocking"},
+    "consistent_unsafe": {"kinematic", "rocking"},
+    "undetermined": {"kinematic", "rocking"},
+}
+
+
+def tally(rows: Iterable[Mapping[str, Any]], analyses: Iterable[str]) -> dict[str, int | None]:
+    """The counts of a set of cases (None: the analyses behind a count did not run)."""
+    out: dict[str, int] = {
+        "cases": 0,
+        "code_collapses": 0,
+        "rocking_collapses": 0,
+        "code_conservative": 0,
+        "code_unconservative": 0,
+        "consistent_safe": 0,
+        "consistent_unsafe": 0,
+        "undetermined": 0,
+    }
+    for row in rows:
+        out["cases"] += 1
+        out["code_collapses"] += code_collapse(row) is True
+        out["rocking_collapses"] += rocking_collapse(row) is True
+        kind = row.get("classification")
+        if kind is not None:
+            out[kind.replace("-", "_")] += 1
+    ran = set(analyses)
+    return {k: v if NEEDS.get(k, set()) <= ran else None for k, v in out.items()}
+
+
+def share(part: int | None, whole: int | None) -> float | None:
+    """part/whole, None when either is unknown or whole is 0."""
+    return part / whole if part is not None and whole else None
+
+
+def grouped(
+    rows: Sequence[Mapping[str, Any]],
+    key: Callable[[Mapping[str, Any]], tuple[Hashable, ...]],
+    analyses: Iterable[str],
+) -> list[tuple[tuple[Hashable, ...], dict[str, int | None]]]:
+    """The tally of each group, groups in order of their key."""
+    groups: dict[tuple[Hashable, ...], list[Mapping[str, Any]]] = {}
+    for row in rows:
+        groups.setdefault(key(row), []).append(row)
+    return [(k, tally(groups[k], analyses)) for k in sorted(groups)]
+
+
+def summarize(
+    plan: StudyPlan,
+    cases: Sequence[Case],
+    results: Mapping[int, Mapping[str, Any]],
+    records: Mapping[str, Mapping[str, Any]],
+    run: Mapping[str, Any],
+) -> dict[str, Any]:
+    """The summary document (`rock sweep --format json`, schema 1).
+
+    Args:
+        plan: the study. cases: every case. results: the typed result columns by case id.
+        records: per record name, its pga_g, npts, duration_s, path.
+        run: facts of this run (out, wall_time_s, computed, resumed, jobs, scheduler).
+    """
+    rows = [_row(plan, c, results[c.id]) for c in cases]
+    total = tally(rows, plan.analyses)
+    order = {r.name: i for i, r in enumerate(plan.records)}
+
+    def by_record(row: Mapping[str, Any]) -> tuple[Hashable, ...]:
+        return order.get(row["record"], -1), row["record"]
+
+    def by_record_alpha(row: Mapping[str, Any]) -> tuple[Hashable, ...]:
+        return *by_record(row), row["_alpha"]
+
+    def by_axis(i: int) -> Callable[[Mapping[str, Any]], tuple[Hashable, ...]]:
+        return lambda row: (row["_index"][i], row["_label"][i], row["_alpha"])
+
+    records_rows = [
+        {"record": k[1], **(records.get(str(k[1])) or {}), **t}
+        for k, t in grouped(rows, by_record, plan.analyses)
+    ]
+    alpha_rows = [
+        {"record": k[1], "alpha": k[2], **t}
+        for k, t in grouped(rows, by_record_alpha, plan.analyses)
+    ]
+    axis_rows = {
+        axis.name: [
+            {axis.name: k[1], "alpha": k[2], **t}
+            for k, t in grouped(rows, by_axis(i), plan.analyses)
+        ]
+        for i, axis in enumerate(plan.axes)
+        if any(p[0] != "geometry" for p in axis.paths)
+    }
+    return {
+        "schema": SCHEMA,
+        "rock_version": __version__,
+        "study": plan.file,
+        "name": plan.name,
+        "analyses": list(plan.analyses),
+        **total,
+        "runs": len(rows) * (2 if "rocking" in plan.analyses else 0),
+        "inconsistency_share": share(total["code_conservative"], total["code_collapses"]),
+        "unconservative_share": share(total["code_unconservative"], total["rocking_collapses"]),
+        "axes": [
+            {
+                "name": a.name,
+                "paths": list(a.texts),
+                "values": [a.label(i) for i in range(len(a.values))],
+            }
+            for a in plan.axes
+        ],
+        "records": records_rows,
+        "skipped_records": [
+            {"name": s.name, "path": s.path, "source": s.source} for s in plan.skipped
+        ],
+        "by_record_alpha": alpha_rows,
+        "by_axis_alpha": axis_rows,
+        **run,
+    }
+
+
+def _row(plan: StudyPlan, case: Case, result: Mapping[str, Any]) -> dict[str, Any]:
+    """A case's results with its record, axis values and α for grouping."""
+    alpha = result.get("block_alpha")
+    return {
+        **result,
+        "record": plan.records[case.record].name if case.record is not None else None,
+        "_alpha": round(alpha, ALPHA_DIGITS) if alpha is not None else None,
+        "_index": case.indices,
+        "_label": [a.label(i) for a, i in zip(plan.axes, case.indices, strict=True)],
+    }
+
+
+def case_rows(
+    plan: StudyPlan, cases: Sequence[Case], results: Mapping[int, Mapping[str, Any]]
+) -> list[dict[str, Any]]:
+    """Every case as the collapse map draws it (rockcli.report.plots.plot_sweep): the block's
+    R and α, the record, the two collapse verdicts, and the axis values by axis name."""
+    rows = []
+    for case in cases:
+        result = results[case.id]
+        rows.append(
+            {
+                **{a.name: a.label(i) for a, i in zip(plan.axes, case.indices, strict=True)},
+                "R": result.get("block_R"),
+                "alpha": result.get("block_alpha"),
+                "record": plan.records[case.record].name if case.record is not None else "",
+                "code_collapse": code_collapse(result),
+                "rocking_collapse": rocking_collapse(result),
+                "classification": result.get("classification"),
+            }
+        )
+    return rows
+
+
+def split_axis(plan: StudyPlan) -> str | None:
+    """The first axis that does not set the geometry (the stiffness K of §4.4), if any."""
+    return next((a.name for a in plan.axes if any(p[0] != "geometry" for p in a.paths)), None)

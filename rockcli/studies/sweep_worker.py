@@ -1,0 +1,193 @@
+"""What a worker does with a chunk of cases: read its record once, run every case, key rows.
+
+Runs in a worker process (a local process pool started with ``spawn``, or a dask worker) or
+in the main process (``--jobs 1``). Each process reads each record once and keeps one
+:class:`~rockcli.codecheck.response.RecordSpectrum` per record, whose cache of ordinates then
+serves every case of that record the process runs (spec/engine.md, "Studies at scale").
+The module imports nothing heavy at the top, so a spawned worker can set its environment
+(one numba/BLAS thread) before numpy and numba load.
+"""
+
+from __future__ import annotations
+
+import atexit
+import gc
+import os
+import threading
+from dataclasses import dataclass
+from typing import TYPE_CHECKING, Any
+
+from rockcli.errors import InputError
+from rockcli.studies.sweep_cases import Case, build_model, case_error
+from rockcli.studies.sweep_study import RecordSource, StudyPlan
+
+if TYPE_CHECKING:
+    from rockcli.codecheck.response import RecordSpectrum
+    from rockcli.model.schema import Model
+    from rockcli.records.record import Record
+
+#: One thread per worker process: the pool is the parallelism (spec/engine.md: never numba
+#: threads inside a process pool).
+SINGLE_THREAD = {
+    "NUMBA_NUM_THREADS": "1",
+    "OMP_NUM_THREADS": "1",
+    "OPENBLAS_NUM_THREADS": "1",
+    "MKL_NUM_THREADS": "1",
+}
+
+_records: dict[RecordSource, Record] = {}
+_spectra: dict[tuple[RecordSource, float], RecordSpectrum] = {}
+_lock = threading.Lock()  # dask workers run tasks on threads sharing these caches
+
+
+@dataclass(frozen=True)
+class Chunk:
+    """Cases of one record (or none) sent to a worker together."""
+
+    plan: StudyPlan
+    record: int | None
+    cases: tuple[Case, ...]
+
+
+def init_worker() -> None:
+    """Process-pool initializer: one thread, the compiled kernels loaded, a quick exit."""
+    for key, value in SINGLE_THREAD.items():
+        os.environ.setdefault(key, value)
+    warm()
+    quick_exit()
+
+
+def quick_exit() -> None:
+    """At exit, freeze the objects instead of collecting them.
+
+    The interpreter's last garbage collections walk numba's large object graph: 0.3–0.4 s
+    at the exit of every process that loaded the kernels, measured on this machine, which a
+    pool's shutdown (and the user) waits for. Frozen objects are left to the OS.
+    """
+    atexit.register(gc.freeze)
+
+
+def warm() -> None:
+    """Load (or compile) the rocking engine and the response-spectrum recurrence."""
+    import numpy as np
+
+    from rockcli.codecheck.response import peak_displacement_uniform
+    from rockcli.dynamics.warmup import warmup
+
+    warmup()
+    peak_displacement_uniform(np.zeros(4), 0.01, np.array([6.0]), 0.05)
+
+
+def read_source(source: RecordSource) -> Record:
+    """The record of a source, read once per process (scaled as the study says)."""
+    with _lock:
+        record = _records.get(source)
+    if record is None:
+        from rockcli.records import files, transform
+
+        record = files.read_record(source.path, fmt=source.fmt, dt=source.dt, units=source.units)
+        record = transform.scale(record, source.scale) if source.scale is not None else record
+        record = transform.scale_to_pga(record, source.pga) if source.pga is not None else record
+        with _lock:
+            record = _records.setdefault(source, record)
+    return record
+
+
+def spectrum_of(source: RecordSource, g: float) -> RecordSpectrum:
+    """The record's response spectrum, one per process (its ordinates are cached inside)."""
+    from rockcli.codecheck.response import RecordSpectrum
+
+    with _lock:
+        spectrum = _spectra.get((source, g))
+        if spectrum is None:
+            spectrum = RecordSpectrum.from_record(_records[source], g=g)
+            _spectra[(source, g)] = spectrum
+    return spectrum
+
+
+def run_chunk(chunk: Chunk) -> list[dict[str, Any]]:
+    """The result columns of every case of the chunk, each with its case id."""
+    plan = chunk.plan
+    source = plan.records[chunk.record] if chunk.record is not None else None
+    record = read_source(source) if source is not None else None
+    rows = []
+    for case in chunk.cases:
+        model = build_model(plan, case)
+        try:
+            spectrum = spectrum_of(source, model.analysis.g) if source is not None else None
+            rows.append({"case": case.id, **run_case(plan, model, record, spectrum)})
+        except InputError as exc:
+            raise case_error(plan, case, exc) from None
+    return rows
+
+
+def run_case(
+    plan: StudyPlan, model: Model, record: Record | None, spectrum: RecordSpectrum | None
+) -> dict[str, Any]:
+    """The analyses of one case: the block, the rocking envelope, the code check."""
+    from rockcli.studies.compare import classify, code_sets_demand
+
+    R, alpha = model.geometry.polar
+    row: dict[str, Any] = {"block_R": R, "block_alpha": alpha}
+    roc = kin = None
+    if "rocking" in plan.analyses and record is not None:
+        from rockcli.studies.assess import assess_model
+
+        roc, _ = assess_model(model, record, plan.engine)
+        row.update(rocking_columns(roc))
+    if "kinematic" in plan.analyses:
+        from rockcli.studies.kinematic import kinematic_model
+
+        own = record is not None and (plan.record_demand or not code_sets_demand(model))
+        kin = kinematic_model(
+            model, record=record if own else None, spectrum=spectrum if own else None
+        )
+        row.update(kinematic_columns(kin))
+    if roc is not None and kin is not None:
+        row["classification"] = str(classify(row["code_collapse"], row["rocking_collapse"]))
+    row.pop("code_collapse", None)
+    row.pop("rocking_collapse", None)
+    return row
+
+
+def rocking_columns(roc: dict[str, Any]) -> dict[str, Any]:
+    """The polarity envelope of a rocking document (and each polarity's peak)."""
+    runs = {r["polarity"]: r for r in roc["runs"]}
+    overturns = [r["t_overturn"] for r in roc["runs"] if r["t_overturn"] is not None]
+    verdict = roc["verdict"]
+    return {
+        "max_ratio": roc["max_ratio"],
+        "max_ratio_pos": runs[1]["max_ratio"] if 1 in runs else None,
+        "max_ratio_neg": runs[-1]["max_ratio"] if -1 in runs else None,
+        "overturned": any(r["overturned"] for r in roc["runs"]),
+        "t_overturn": min(overturns) if overturns else None,
+        "rocking": verdict,
+        "rocking_collapse": None if verdict == "undecided" else verdict == "overturns",
+    }
+
+
+def kinematic_columns(kin: dict[str, Any]) -> dict[str, Any]:
+    """The code's verdicts (pass/fail), the governing ULS ratio and the mechanism's numbers."""
+    verdict = kin["verdict"]
+    return {
+        "code_dls": _pass_fail(verdict["DLS"]),
+        "code_uls": _pass_fail(verdict["ULS"]),
+        "uls_ratio": uls_ratio(kin["checks"]),
+        "a0_star": kin["a0_star"],
+        "Ts": kin.get("Ts", kin.get("T_SLV")),
+        "code_collapse": None if verdict["ULS"] is None else not verdict["ULS"],
+    }
+
+
+def uls_ratio(checks: list[dict[str, Any]]) -> float | None:
+    """The governing ζ = capacity/demand of the ULS: the smallest over the checks that decide
+    the verdict (the non-linear ones when the analysis has them, else the linear ones; the
+    rule of :func:`rockcli.codecheck.result.deciding`); None when one is not evaluated."""
+    uls = [c for c in checks if c["limit_state"] in ("ULS", "SLV", "SLC")]
+    nonlinear = [c for c in uls if c["method"] == "nonlinear"]
+    ratios = [c["ratio"] for c in (nonlinear or uls)]
+    return min(ratios) if ratios and None not in ratios else None
+
+
+def _pass_fail(value: bool | None) -> str | None:
+    return None if value is None else ("pass" if value else "fail")
