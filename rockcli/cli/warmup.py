@@ -7,7 +7,7 @@ import click
 
 @click.command()
 def warmup() -> None:
-    """Compile the fast engine now, so that later runs start at once."""
+    """Compile the rocking engine and the response-spectrum kernel now (CI images, workers)."""
     from rockcli.dynamics.warmup import warmup as compile_engine
 
     seconds = compile_engine()

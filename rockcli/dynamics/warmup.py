@@ -11,10 +11,15 @@ from rockcli.mechanics import Block, Restrainer
 
 
 def warmup() -> float:
-    """Run one tiny case with a failing restrainer; returns the seconds it took."""
+    """Compile every kernel: one tiny rocking run with a failing restrainer and one response
+    spectrum ordinate (the code check's record demand); returns the seconds it took."""
+    from rockcli.codecheck.response import peak_displacement_uniform
+
     start = time.perf_counter()
     spring = Restrainer("warmup", 1e5, 1e5, 2.0, 0.2, 2.0, 0.2, fails_at=0.01)
     block = Block(R=1.0, alpha=0.2, mass=1000.0, e=0.9, restrainers=(spring,))
     t = np.arange(0.0, 1.0, 0.01)
-    simulate(block, t, 0.5 * np.sin(2 * np.pi * t), 0.01)
+    accel = 0.5 * np.sin(2 * np.pi * t)
+    simulate(block, t, accel, 0.01)
+    peak_displacement_uniform(accel * 9.81, 0.01, np.array([2 * np.pi]), 0.05)
     return time.perf_counter() - start
