@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import click
 
-from rockcli.cli.options import load_record, output_format, with_record_options
+from rockcli.cli.options import engine_option, load_record, output_format, with_record_options
 from rockcli.cli.plot_option import plot_option
 
 #: Exit code of --fail-on-overturn when the block overturns (documented in the README).
@@ -14,13 +14,7 @@ EXIT_OVERTURNS = 1
 @click.command()
 @click.argument("model_path", metavar="MODEL", type=click.Path(dir_okay=False))
 @with_record_options()
-@click.option(
-    "--engine",
-    type=click.Choice(["fast", "reference"]),
-    default="fast",
-    show_default=True,
-    help="fast: compiled DP5(4); reference: scipy DOP853 at rtol 1e-10 (slow, for checks).",
-)
+@engine_option
 @click.option(
     "--history",
     "history_path",

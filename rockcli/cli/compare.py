@@ -4,39 +4,29 @@ from __future__ import annotations
 
 import click
 
-from rockcli.cli.options import load_record, output_format, with_record_options
+from rockcli.cli.options import (
+    edition_option,
+    engine_option,
+    hazard_grid_option,
+    load_record,
+    output_format,
+    with_record_options,
+)
 from rockcli.cli.plot_option import plot_option
 
 
 @click.command()
 @click.argument("model_path", metavar="MODEL", type=click.Path(dir_okay=False))
 @with_record_options()
-@click.option(
-    "--edition",
-    type=click.Choice(["2009", "2019"]),
-    default=None,
-    help="Override [ntc].edition for the code check.",
-)
-@click.option(
-    "--engine",
-    type=click.Choice(["fast", "reference"]),
-    default="fast",
-    show_default=True,
-    help="Rocking engine (see rock assess).",
-)
+@edition_option
+@engine_option
 @click.option(
     "--record-demand",
     is_flag=True,
     help="Use the record's response spectrum as the code demand even when the model sets a "
     "code spectrum ([ntc.demand] or [ntc.site]).",
 )
-@click.option(
-    "--hazard-grid",
-    "grid_file",
-    default=None,
-    type=click.Path(dir_okay=False),
-    help="NTC Allegato B grid file, when the model's [ntc.site] sets the demand.",
-)
+@hazard_grid_option
 @plot_option
 @output_format
 def compare(

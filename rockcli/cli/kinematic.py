@@ -4,7 +4,13 @@ from __future__ import annotations
 
 import click
 
-from rockcli.cli.options import load_record, output_format, with_record_options
+from rockcli.cli.options import (
+    edition_option,
+    hazard_grid_option,
+    load_record,
+    output_format,
+    with_record_options,
+)
 from rockcli.cli.plot_option import plot_option
 
 
@@ -27,12 +33,7 @@ def _site(value: str | None) -> tuple[float, float] | None:
 
 @click.command()
 @click.argument("model_path", metavar="MODEL", type=click.Path(dir_okay=False))
-@click.option(
-    "--edition",
-    type=click.Choice(["2009", "2019"]),
-    default=None,
-    help="Override [ntc].edition: 2009 (NTC 2008 + Circ. 617/2009) or 2019.",
-)
+@edition_option
 @with_record_options(required=False)
 @click.option(
     "--site",
@@ -40,13 +41,7 @@ def _site(value: str | None) -> tuple[float, float] | None:
     metavar="LON,LAT",
     help="Take the demand from the hazard grid at this site (overrides the model).",
 )
-@click.option(
-    "--hazard-grid",
-    "grid_file",
-    default=None,
-    type=click.Path(dir_okay=False),
-    help="NTC Allegato B grid file (default: $ROCK_HAZARD_GRID).",
-)
+@hazard_grid_option
 @plot_option
 @output_format
 def kinematic(

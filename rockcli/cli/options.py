@@ -30,6 +30,30 @@ plain_units = click.option(
 )
 
 
+engine_option = click.option(
+    "--engine",
+    type=click.Choice(["fast", "reference"]),
+    default="fast",
+    show_default=True,
+    help="Rocking engine. fast: compiled DP5(4); reference: scipy DOP853 at rtol 1e-10 "
+    "(slow, for checks).",
+)
+edition_option = click.option(
+    "--edition",
+    type=click.Choice(["2009", "2019"]),
+    default=None,
+    help="Override [ntc].edition: 2009 (NTC 2008 + Circ. 617/2009) or 2019 (NTC 2018 + "
+    "Circ. 7/2019).",
+)
+hazard_grid_option = click.option(
+    "--hazard-grid",
+    "grid_file",
+    default=None,
+    type=click.Path(dir_okay=False),
+    help="NTC Allegato B grid file, when a site sets the demand (default: $ROCK_HAZARD_GRID).",
+)
+
+
 def record_options(required: bool) -> list:
     """The options that name a record and transform it."""
     return [
