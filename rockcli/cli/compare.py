@@ -14,6 +14,18 @@ from rockcli.cli.options import (
 )
 from rockcli.cli.plot_option import plot_option
 
+#: Exit code of --fail-on when the classification matches (as assess's --fail-on-overturn).
+EXIT_FAIL_ON = 1
+#: The classifications of rockcli.studies.compare.Classification (kept here as strings so
+#: that `rock --help` does not import the studies).
+CLASSIFICATIONS = (
+    "consistent-safe",
+    "consistent-unsafe",
+    "code-conservative",
+    "code-unconservative",
+    "undetermined",
+)
+
 
 @click.command()
 @click.argument("model_path", metavar="MODEL", type=click.Path(dir_okay=False))
@@ -27,6 +39,14 @@ from rockcli.cli.plot_option import plot_option
     "code spectrum ([ntc.demand] or [ntc.site]).",
 )
 @hazard_grid_option
+@click.option(
+    "--fail-on",
+    "fail_on",
+    multiple=True,
+    type=click.Choice(CLASSIFICATIONS),
+    help=f"Exit with code {EXIT_FAIL_ON} when the classification is this one (repeatable), "
+    "so CI can gate on it.",
+)
 @plot_option
 @output_format
 def compare(
@@ -41,6 +61,7 @@ def compare(
     engine,
     record_demand,
     grid_file,
+    fail_on,
     plot_path,
     output,
 ):
@@ -65,3 +86,5 @@ def compare(
         runs = rocking.result.runs
         plot_comparison(doc, runs, plot_path, record=record, overturn_angle=rocking.overturn_angle)
     show(doc, output, comparison_report)
+    if doc["classification"] in fail_on:
+        raise SystemExit(EXIT_FAIL_ON)

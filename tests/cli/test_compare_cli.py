@@ -111,3 +111,24 @@ def test_record_demand_flag_overrides_the_model(shared_records: Path) -> None:
 def test_bad_record_is_one_error_line(tmp_path: Path) -> None:
     code, _, err = run("compare", str(ALTAR), "--record", str(tmp_path / "none.AT2"))
     assert code == 2 and err.startswith("error: ") and "none.AT2" in err
+
+
+def test_fail_on_classification_exit_code(tmp_path: Path) -> None:
+    # spec/README.md: a non-zero exit only when asked for, so CI can gate on verdicts.
+    from rockcli.cli.compare import CLASSIFICATIONS
+
+    assert set(CLASSIFICATIONS) == {c.value for c in Classification}
+    args = [
+        "compare",
+        str(ROOT / "examples" / "wall.toml"),
+        "--record",
+        str(PULSES[0]),
+        "--format",
+        "json",
+    ]
+    code, out, _ = run(*args)
+    assert code == 0
+    got = json.loads(out)["classification"]
+    other = next(c for c in CLASSIFICATIONS if c != got)
+    assert run(*args, "--fail-on", other)[0] == 0
+    assert run(*args, "--fail-on", other, "--fail-on", got)[0] == 1
