@@ -88,11 +88,16 @@ def with_record_options(required: bool = True):
 
 def load_record(record_path, record_format, dt, units, scale, pga):
     """Read and transform the record the options describe (InputError on bad input)."""
+    from rockcli.errors import InputError
     from rockcli.records import files, transform
 
     record = files.read_record(record_path, fmt=record_format, dt=dt, units=units)
-    if scale is not None:
-        record = transform.scale(record, scale)
-    if pga is not None:
-        record = transform.scale_to_pga(record, pga)
+    try:
+        if scale is not None:
+            record = transform.scale(record, scale)
+        if pga is not None:
+            record = transform.scale_to_pga(record, pga)
+    except InputError as exc:
+        option = "--scale" if exc.where == "factor" else "--pga"
+        raise InputError(exc.problem, where=option, value=exc.value, allowed=exc.allowed) from None
     return record

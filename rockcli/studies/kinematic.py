@@ -120,6 +120,13 @@ def demands(
             from rockcli.codecheck.response import RecordSpectrum
 
             spectrum = RecordSpectrum.from_record(record, g=g)
+        if spectrum.pga_ground <= 0.0:
+            raise InputError(
+                "the record does not move: its spectrum cannot be the code demand",
+                file=record.source,
+                value=f"PGA {spectrum.pga_ground:g} g",
+                allowed="a record with a nonzero acceleration",
+            )
         states = LIMIT_STATES[settings.edition]
         return {ls: record_demand(ls, spectrum, record.name) for ls in states}
     if site is not None:

@@ -211,3 +211,11 @@ def test_second_start_is_fast() -> None:
     start = time.perf_counter()
     subprocess.run(cmd, cwd=ROOT, check=True, capture_output=True)
     assert time.perf_counter() - start < 1.5
+
+
+@pytest.mark.parametrize(("option", "value"), [("--scale", "-1"), ("--pga", "0")])
+def test_bad_record_transform_names_the_option(option: str, value: str) -> None:
+    code, _, err = run(
+        "assess", str(ROOT / "examples" / "wall.toml"), "--record", str(PULSES[0]), option, value
+    )
+    assert code == 2 and err.startswith(f"error: {option}: ") and "> 0" in err

@@ -154,3 +154,12 @@ def test_missing_limit_state_parameters(tmp_path: Path) -> None:
     ntc = '[ntc]\nedition = "2019"\n[ntc.demand.SLD]\nag = 0.05\nF0 = 2.5\nTc_star = 0.3\n'
     code, _, err = run("kinematic", str(_model(tmp_path, ntc)))
     assert code == 2 and "ntc.demand.SLV" in err
+
+
+def test_record_without_motion_is_one_error_line(tmp_path: Path) -> None:
+    # A record of zeros has no spectrum to scale (PGA 0): one error line, not a traceback.
+    rec = tmp_path / "zeros.txt"
+    rec.write_text("0 0\n0.01 0\n0.02 0\n")
+    code, out, err = run("kinematic", str(ROOT / "examples" / "wall.toml"), "--record", str(rec))
+    assert code == 2 and "Traceback" not in out + err
+    assert err.startswith("error: ") and "zeros.txt" in err and "PGA 0 g" in err
