@@ -88,10 +88,17 @@ def with_record_options(required: bool = True):
 
 def load_record(record_path, record_format, dt, units, scale, pga):
     """Read and transform the record the options describe (InputError on bad input)."""
-    from rockcli.errors import InputError
-    from rockcli.records import files, transform
+    from rockcli.records import files
 
     record = files.read_record(record_path, fmt=record_format, dt=dt, units=units)
+    return scale_record(record, scale, pga)
+
+
+def scale_record(record, scale, pga):
+    """Scale by a factor and/or to a PGA; errors name --scale or --pga."""
+    from rockcli.errors import InputError
+    from rockcli.records import transform
+
     try:
         if scale is not None:
             record = transform.scale(record, scale)
