@@ -17,6 +17,10 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
+from rockcli import jitcache
+
+jitcache.configure()  # before any njit(cache=True): the cache is keyed on the sources
+
 
 @njit(cache=True)
 def peak_response(

@@ -28,9 +28,11 @@ import numpy as np
 from numba import njit
 from numba.extending import register_jitable
 
-from rockcli import mechanics
+from rockcli import jitcache, mechanics
 from rockcli.dynamics import layout as L
 from rockcli.dynamics import rules
+
+jitcache.configure()  # before any njit(cache=True): the cache is keyed on the sources
 
 # The shared formulas are compiled from the very same Python functions. Those that take
 # arrays are inlined at the numba IR level (a call boundary costs atomic reference-count
