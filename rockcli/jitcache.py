@@ -30,10 +30,15 @@ KERNEL_SOURCES = (
 
 def sources_digest() -> str:
     """A short digest of the kernels' sources."""
-    digest = hashlib.sha256()
+    from rockcli import __version__
+
+    digest = hashlib.sha256(__version__.encode())
     for name in KERNEL_SOURCES:
         digest.update(name.encode())
-        digest.update((PACKAGE / name).read_bytes())
+        try:
+            digest.update((PACKAGE / name).read_bytes())
+        except OSError:  # an install without sources: the version alone keys the cache
+            pass
     return digest.hexdigest()[:16]
 
 
