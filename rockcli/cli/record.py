@@ -12,6 +12,14 @@ import click
 from rockcli.cli.options import output_format, plain_dt, plain_units, record_format
 from rockcli.records.kinds import PulseKind
 
+plain_output = click.option(
+    "-o",
+    "--output",
+    type=click.Path(dir_okay=False),
+    required=True,
+    help="Plain-text file to write (time [s], acceleration [g]).",
+)
+
 
 @click.group()
 def record() -> None:
@@ -75,13 +83,7 @@ def _window(value: str | None) -> tuple[float, float] | None:
     default=None,
     help="Resample to this time step [s] (linear interpolation).",
 )
-@click.option(
-    "-o",
-    "--output",
-    type=click.Path(dir_okay=False),
-    required=True,
-    help="Plain-text file to write (time [s], acceleration [g]).",
-)
+@plain_output
 def convert(
     file: str,
     record_format: str | None,
@@ -134,13 +136,7 @@ def convert(
     default=None,
     help="Total duration [s], zeros after the pulse (default: the pulse alone).",
 )
-@click.option(
-    "-o",
-    "--output",
-    type=click.Path(dir_okay=False),
-    required=True,
-    help="Plain-text file to write (time [s], acceleration [g]).",
-)
+@plain_output
 def pulse(
     kind: str, amplitude: float, period: float, dt: float, duration: float | None, output: str
 ) -> None:
