@@ -21,5 +21,6 @@ plot_option = click.option(
     default=None,
     metavar="FILE",
     callback=_check,
-    help="Also draw the result to FILE: .png or .svg (needs matplotlib: pip install 'rock[plot]').",
+    help="Also draw the result to FILE: .png or .svg "
+    "(needs matplotlib: pip install 'rockcli[plot]').",
 )

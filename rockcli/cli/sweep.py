@@ -36,7 +36,7 @@ from rockcli.cli.plot_option import plot_option
     envvar="DASK_SCHEDULER_ADDRESS",
     show_envvar=True,
     metavar="ADDRESS",
-    help="Run on a dask cluster, e.g. tcp://host:8786 (needs rock[dask]).",
+    help="Run on a dask cluster, e.g. tcp://host:8786 (needs rockcli[dask]).",
 )
 @click.option(
     "--records-dir",

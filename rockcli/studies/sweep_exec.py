@@ -10,7 +10,7 @@ scale"):
   once (``spawn`` where there is no fork server; never ``fork``: numba and threads), each
   with one thread (:func:`rockcli.studies.sweep_worker.init_worker`);
 - ``--scheduler tcp://host:8786`` (or DASK_SCHEDULER_ADDRESS): ``distributed.Client(addr)
-  .get_executor()``, from the ``dask`` extra (``pip install 'rock[dask]'``). The workers need
+  .get_executor()``, from the ``dask`` extra (``pip install 'rockcli[dask]'``). The workers need
   rock installed and the record files at the same paths (a shared file system).
 """
 
@@ -102,7 +102,7 @@ def dask_executor(address: str) -> Iterator[list[Lane]]:
             "--scheduler needs dask.distributed",
             where="--scheduler",
             value=address,
-            allowed="pip install 'rock[dask]', or run locally with --jobs",
+            allowed="pip install 'rockcli[dask]', or run locally with --jobs",
         ) from None
     try:
         client = Client(address, timeout=CONNECT_TIMEOUT)

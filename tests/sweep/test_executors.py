@@ -38,7 +38,7 @@ def test_local_lanes() -> None:
 
 
 @pytest.mark.skipif(
-    not HAS_DISTRIBUTED, reason="distributed not installed: pip install 'rock[dask]'"
+    not HAS_DISTRIBUTED, reason="distributed not installed: pip install 'rockcli[dask]'"
 )
 def test_a_dask_cluster_gives_the_same_csv(write_study: WriteStudy, tmp_path: Path) -> None:
     from distributed import LocalCluster
@@ -61,7 +61,7 @@ def test_a_dask_cluster_gives_the_same_csv(write_study: WriteStudy, tmp_path: Pa
 
 
 @pytest.mark.skipif(
-    not HAS_DISTRIBUTED, reason="distributed not installed: pip install 'rock[dask]'"
+    not HAS_DISTRIBUTED, reason="distributed not installed: pip install 'rockcli[dask]'"
 )
 def test_an_unreachable_scheduler_is_one_error_line(
     write_study: WriteStudy, monkeypatch: pytest.MonkeyPatch

@@ -1,6 +1,6 @@
 """Plots of the results (PNG or SVG, chosen by the file suffix): output, like the tables.
 
-matplotlib is an optional dependency (``pip install 'rock[plot]'``), imported inside the
+matplotlib is an optional dependency (``pip install 'rockcli[plot]'``), imported inside the
 functions (:mod:`.files`), so that ``rock --help`` and the numeric core never load it; the
 modules here import only the standard library at their top.
 

@@ -22,7 +22,7 @@ if TYPE_CHECKING:
 FORMATS = {".png": "png", ".svg": "svg"}
 #: The option the path comes from, named in the error lines.
 OPTION = "--plot"
-MISSING = "plots need matplotlib: pip install 'rock[plot]'"
+MISSING = "plots need matplotlib: pip install 'rockcli[plot]'"
 #: Resolution of PNG files [dots per inch].
 DPI = 150
 
