@@ -1,4 +1,4 @@
-"""The distribution is `rockcli` (PyPI's `rock` is an unrelated project): every install hint says so."""
+"""The distribution is `rockcli` (PyPI's `rock` is another project): every install hint says so."""
 
 from __future__ import annotations
 
