@@ -6,7 +6,7 @@ from pathlib import Path
 
 import click
 
-from rockcli.errors import InputError
+from rockcli.cli.options import announce_written, force_option
 from rockcli.model.schema import Kind
 
 
@@ -18,7 +18,7 @@ from rockcli.model.schema import Kind
     type=click.Path(dir_okay=False, path_type=Path),
     help="Write the template to this file (default: standard output).",
 )
-@click.option("--force", is_flag=True, help="Overwrite OUTPUT if it exists.")
+@force_option
 def init(kind: str, output: Path | None, force: bool) -> None:
     """Write a commented model-file template.
 
@@ -26,20 +26,12 @@ def init(kind: str, output: Path | None, force: bool) -> None:
     The template loads unchanged; edit its values for your element.
     """
     from rockcli.model.template import render_template
+    from rockcli.outfile import check_writable, write_text
 
     text = render_template(Kind(kind))
     if output is None:
         click.echo(text, nl=False)
         return
-    write_new(output, text, force=force)
-    click.echo(f"wrote {output}", err=True)
-
-
-def write_new(path: Path, text: str, *, force: bool) -> None:
-    """Write ``text`` to ``path``; refuse to overwrite an existing file unless ``force``."""
-    if path.exists() and not force:
-        raise InputError("file exists", file=str(path), allowed="another path, or --force")
-    try:
-        path.write_text(text, encoding="utf-8")
-    except OSError as exc:
-        raise InputError(f"cannot write the file: {exc.strerror or exc}", file=str(path)) from None
+    check_writable(output, force=force, where="--output")
+    write_text(output, text, where="--output")
+    announce_written(output)

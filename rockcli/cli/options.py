@@ -108,3 +108,13 @@ def scale_record(record, scale, pga):
         option = "--scale" if exc.where == "factor" else "--pga"
         raise InputError(exc.problem, where=option, value=exc.value, allowed=exc.allowed) from None
     return record
+
+
+force_option = click.option(
+    "--force", is_flag=True, help="Overwrite output files that already exist."
+)
+
+
+def announce_written(path: object, detail: str = "") -> None:
+    """The one "wrote …" line of every command, on stderr (stdout stays the result's)."""
+    click.echo(f"wrote {path}" + (f": {detail}" if detail else ""), err=True)

@@ -64,7 +64,7 @@ def test_rock_init_refuses_to_overwrite(tmp_path: Path) -> None:
     result = CliRunner().invoke(cli, ["init", "wall", "-o", str(path)])
     assert result.exit_code == 2
     assert result.output.strip() == (
-        f"error: {path}: file exists (allowed: another path, or --force)"
+        f"error: {path}: --output: file exists (allowed: another path, or --force)"
     )
     assert path.read_text(encoding="utf-8") == "mine"
 
@@ -81,7 +81,7 @@ def test_rock_init_unwritable_path_is_an_input_error(tmp_path: Path) -> None:
     path = tmp_path / "no" / "such" / "dir.toml"
     result = CliRunner().invoke(cli, ["init", "altar", "-o", str(path)])
     assert result.exit_code == 2
-    assert result.output.startswith(f"error: {path}: cannot write the file: ")
+    assert result.output.startswith(f"error: {path}: --output: the folder does not exist")
 
 
 def test_rock_init_unknown_kind_is_a_usage_error() -> None:
