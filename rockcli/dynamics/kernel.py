@@ -80,6 +80,15 @@ ERROR_EXPONENT = -1.0 / 5.0
 #: Relative resolution of event times inside a step (fraction of the step).
 ROOT_XTOL = 1e-13
 ROOT_MAXITER = 100
+#: A step whose remaining gap to the next sample is at most this fraction of the sample
+#: interval moves straight to the sample (a rounding remnant, not a step worth taking). Relative
+#: to the interval, never to the absolute time: a record timed from the Unix epoch (t ≈ 1.7e9 s,
+#: 1 ms steps) must not have its every step swallowed.
+GAP_FRACTION = 1e-9
+#: A NaN error estimate may come from a step so large that its stages overflow: the step is
+#: retried shrunk by MIN_FACTOR up to this many times in a row (0.2³⁰ ≈ 1e-21 of the step)
+#: before the run ends as non-finite.
+NONFINITE_RETRIES = 30
 
 # Dormand–Prince 5(4) tableau (Dormand & Prince 1980, Table 2).
 C2, C3, C4, C5 = 1 / 5, 3 / 10, 4 / 5, 8 / 9
@@ -427,6 +436,43 @@ def _initial_side(th, om):
 
 
 @njit(cache=True)
+def _nonfinite_quantity(t, th, om, f, s, i, times, accel, pol, par, springs, alive):
+    """NF_* code of the first non-finite quantity of the state (θ, θ̇, a force, üg, θ̈)."""
+    if not math.isfinite(th):
+        return L.NF_THETA
+    if not math.isfinite(om):
+        return L.NF_OMEGA
+    row = _nonfinite_force(s * th, s, par, springs, alive)
+    if row >= 0:
+        return L.NF_FORCE + row
+    if not math.isfinite(_ground(t, i, times, accel, pol)):
+        return L.NF_GROUND
+    return L.NF_ACCEL
+
+
+@njit(cache=True)
+def _nonfinite_force(a, s, par, springs, alive):
+    """Row of the first live restrainer whose force K·u at rotation a is not finite, else −1."""
+    for j in range(springs.shape[0]):
+        if alive[j] != 0:
+            k, _, _, _ = _spring_on_side(springs, j, s)
+            if k != 0.0:
+                u = _elongation_on_side(springs, j, s, a, par[L.P_LINEAR] != 0.0)
+                if not math.isfinite(k * u):
+                    return j
+    return -1
+
+
+@njit(cache=True)
+def _nonfinite_peak_force(spring_out):
+    """Row of the first restrainer whose recorded peak force is not finite, else −1."""
+    for j in range(spring_out.shape[0]):
+        if not math.isfinite(spring_out[j, L.S_MAX_FORCE]):
+            return j
+    return -1
+
+
+@njit(cache=True)
 def integrate(times, accel, pol, par, springs, alive, hist_th, hist_om, out_f, out_i, spring_out):
     """Integrate one rocking run over the sample times, from rest at times[0].
 
@@ -475,6 +521,7 @@ def integrate(times, accel, pol, par, springs, alive, hist_th, hist_om, out_f, o
             hist_th[0] = th
             hist_om[0] = om
     status = L.STATUS_COMPLETED
+    nan_rejects = 0
     lowest = _lowest_level(s, par, springs, alive)
     while i < n - 1:
         if s == 0:
@@ -494,12 +541,18 @@ def integrate(times, accel, pol, par, springs, alive, hist_th, hist_om, out_f, o
             f = _stage_at(t, th, s, i, times, accel, pol, par, springs, alive)
             lowest = _lowest_level(s, par, springs, alive)
             continue
+        if not (math.isfinite(th) and math.isfinite(om) and math.isfinite(f)):
+            status = L.STATUS_NONFINITE
+            out_i[L.I_NONFINITE] = _nonfinite_quantity(
+                t, th, om, f, s, i, times, accel, pol, par, springs, alive
+            )
+            break
         if out_i[L.I_STEPS] + out_i[L.I_REJECTED] >= max_steps:
             status = L.STATUS_STEP_LIMIT
             break
         t_next = times[i + 1]
         gap = t_next - t
-        if gap <= 1e-12 * (abs(t_next) + 1.0):
+        if gap <= GAP_FRACTION * (t_next - times[i]):
             t = t_next
             i += 1
             if hist_th.size > 1:
@@ -512,10 +565,19 @@ def integrate(times, accel, pol, par, springs, alive, hist_th, hist_om, out_f, o
         gs = pol * slopes[i]
         g0 = pol * accel[i] + gs * (t - times[i])
         th1, om1, f1, err = _dp5_step(th, om, f, h_try, s, g0, gs, par, springs, alive, k_th, k_om)
-        if err > 1.0:
+        if not err <= 1.0:  # too large, or NaN
             out_i[L.I_REJECTED] += 1
-            h = h_try * max(MIN_FACTOR, SAFETY * err**ERROR_EXPONENT)
+            if err > 1.0:
+                h = h_try * max(MIN_FACTOR, SAFETY * err**ERROR_EXPONENT)
+                continue
+            nan_rejects += 1
+            if nan_rejects > NONFINITE_RETRIES:
+                status = L.STATUS_NONFINITE
+                out_i[L.I_NONFINITE] = L.NF_GROUND if not math.isfinite(g0 + gs) else L.NF_ERROR
+                break
+            h = h_try * MIN_FACTOR
             continue
+        nan_rejects = 0
         trend = _stage_trend(k_th, s)
         a1 = s * th1
         if (trend > 0 and a1 < lowest) or (trend < 0 and a1 > 0.0):
@@ -598,7 +660,12 @@ def integrate(times, accel, pol, par, springs, alive, hist_th, hist_om, out_f, o
         else:
             f = _stage_at(t, th, s, i, times, accel, pol, par, springs, alive)
             lowest = _lowest_level(s, par, springs, alive)
-    if s != 0 and status != L.STATUS_OVERTURNED:
+    if s != 0 and status != L.STATUS_OVERTURNED:  # a NaN state updates no peak
         _update_peak(s * th, s, out_f, spring_out, springs, alive, lin)
+    if status != L.STATUS_NONFINITE:
+        row = _nonfinite_peak_force(spring_out)
+        if row >= 0:
+            status = L.STATUS_NONFINITE
+            out_i[L.I_NONFINITE] = L.NF_FORCE + row
     out_f[L.O_T_END] = t
     out_i[L.I_STATUS] = status

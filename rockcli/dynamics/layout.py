@@ -10,11 +10,14 @@ N_PARAMS = 18
 # Float outputs.
 O_MAX_A, O_THETA_MAX, O_THETA_MIN, O_MAX_OMEGA, O_T_OVERTURN, O_T_UPLIFT, O_T_END = range(7)
 N_FLOAT_OUT = 7
-# Integer outputs.
-I_STATUS, I_IMPACTS, I_STEPS, I_REJECTED, I_UPLIFTS = range(5)
-N_INT_OUT = 5
+# Integer outputs (I_NONFINITE: which quantity stopped a "non-finite" run, NF_* codes).
+I_STATUS, I_IMPACTS, I_STEPS, I_REJECTED, I_UPLIFTS, I_NONFINITE = range(6)
+N_INT_OUT = 6
 # Status codes.
 STATUS_COMPLETED, STATUS_OVERTURNED, STATUS_EVENT_LIMIT, STATUS_STEP_LIMIT = 0, 1, 2, 3
+STATUS_NONFINITE = 4
+# Quantities that can turn non-finite (NaN or ±inf); NF_FORCE + j is restrainer row j's force.
+NF_NONE, NF_THETA, NF_OMEGA, NF_ACCEL, NF_ERROR, NF_GROUND, NF_FORCE = 0, 1, 2, 3, 4, 5, 6
 # Per-restrainer outputs: peak elongation [m], peak force [N], failure time [s] (nan: intact).
 S_MAX_U, S_MAX_FORCE, S_T_FAIL = 0, 1, 2
 N_SPRING_OUT = 3
@@ -28,4 +31,13 @@ STATUS_NAMES = {
     STATUS_OVERTURNED: "overturned",
     STATUS_EVENT_LIMIT: "event-limit",
     STATUS_STEP_LIMIT: "step-limit",
+    STATUS_NONFINITE: "non-finite",
+}
+
+NONFINITE_NAMES = {
+    NF_THETA: "the rotation θ",
+    NF_OMEGA: "the angular velocity θ̇",
+    NF_ACCEL: "the angular acceleration θ̈",
+    NF_ERROR: "the integration error estimate",
+    NF_GROUND: "the ground acceleration",
 }

@@ -25,6 +25,15 @@ from rockcli.dynamics import rules
 
 #: First step after a restart at θ = 0 [s] (keeps the impact event off the start point).
 REFERENCE_FIRST_STEP = 1e-7
+#: Right-hand side evaluations per DOP853 step (12 stages; the 13th is the next step's first).
+EVALS_PER_STEP = 12
+#: A remaining gap to the sample of at most this fraction of the sample interval is a rounding
+#: remnant, not a step (relative to the interval, never to the absolute time: kernel.py).
+GAP_FRACTION = 1e-9
+
+
+class _OutOfBudget(Exception):
+    """The run used up its work budget inside one solve (raised by the right-hand side)."""
 
 
 class _Phase:
@@ -39,29 +48,63 @@ class _Phase:
         self.th = 0.0
         self.om = 0.0
         self.restart = True
+        self.t = 0.0
+        self.evals = 0
+        self.max_evals = int(par[L.P_MAX_STEPS]) * EVALS_PER_STEP
 
 
 def _rhs(phase: _Phase, t0: float, g0: float, gs: float):
     par = phase.par
 
     def f(t: float, y: np.ndarray) -> list[float]:
-        ag = g0 + gs * (t - t0)
-        acc = rules.angular_acceleration(
-            phase.s * y[0],
-            phase.s,
-            ag,
-            par[L.P_ALPHA],
-            par[L.P_SIN_ALPHA],
-            par[L.P_COS_ALPHA],
-            par[L.P_P2],
-            phase.lin,
-            phase.springs,
-            phase.alive,
-            par[L.P_INV_I0],
-        )
-        return [y[1], acc]
+        phase.evals += 1
+        if phase.evals > phase.max_evals:
+            raise _OutOfBudget
+        return [y[1], _acceleration(phase, g0 + gs * (t - t0), y[0])]
 
     return f
+
+
+def _acceleration(phase: _Phase, ag: float, th: float) -> float:
+    """θ̈ at rotation θ under ground acceleration ag [g]; NaN where math refuses (sin ±inf)."""
+    par = phase.par
+    try:
+        return float(
+            rules.angular_acceleration(
+                phase.s * th,
+                phase.s,
+                ag,
+                par[L.P_ALPHA],
+                par[L.P_SIN_ALPHA],
+                par[L.P_COS_ALPHA],
+                par[L.P_P2],
+                phase.lin,
+                phase.springs,
+                phase.alive,
+                par[L.P_INV_I0],
+            )
+        )
+    except (ValueError, OverflowError):
+        return math.nan
+
+
+def _nonfinite_quantity(phase: _Phase, ag: float, th: float, om: float) -> int:
+    """NF_* code of the first non-finite quantity of the state (same order as kernel.py)."""
+    if not math.isfinite(th):
+        return L.NF_THETA
+    if not math.isfinite(om):
+        return L.NF_OMEGA
+    for j in range(phase.springs.shape[0]):
+        k, _, _, _ = rules.spring_on_side(phase.springs, j, phase.s)
+        if phase.alive[j] and k != 0.0:
+            u = rules.elongation_on_side(phase.springs, j, phase.s, phase.s * th, phase.lin)
+            if not math.isfinite(k * u):
+                return L.NF_FORCE + j
+    if not math.isfinite(ag):
+        return L.NF_GROUND
+    if not math.isfinite(_acceleration(phase, ag, th)):
+        return L.NF_ACCEL
+    return L.NF_ERROR
 
 
 def _events(phase: _Phase):
@@ -156,7 +199,8 @@ def _interval(phase, i, times, accel, pol, out_f, out_i, spring_out):
     t1 = times[i + 1]
     gs = pol * (accel[i + 1] - accel[i]) / (t1 - t)
     thr = par[L.P_ALPHA] if phase.lin else math.tan(par[L.P_ALPHA])
-    while t1 - t > 1e-12 * (abs(t1) + 1.0):
+    while t1 - t > GAP_FRACTION * (t1 - times[i]):
+        phase.t = t
         if phase.s == 0:
             tau, side = rules.uplift_in_interval(
                 t, i, times, accel, pol, thr, int(par[L.P_ONE_SIDED]), int(par[L.P_FREE_SIDE])
@@ -170,8 +214,13 @@ def _interval(phase, i, times, accel, pol, out_f, out_i, spring_out):
             t = tau
             continue
         g0 = rules.ground_acceleration(t, i, times, accel, pol)
+        status = _check_start(phase, t, g0, gs, out_f, out_i)
+        if status is not None:
+            return status
         sol, rows = _solve(phase, t, t1, g0, gs)
-        out_i[L.I_STEPS] += sol.nfev // 12
+        out_i[L.I_STEPS] += sol.nfev // EVALS_PER_STEP
+        if sol.status == -1 or not np.all(np.isfinite(sol.y[:, -1])):
+            return _failed(phase, sol, g0, gs, out_f, out_i)
         for y in sol.y_events[2]:
             _peak(phase, phase.s * y[0], out_f, spring_out)
         out_f[L.O_MAX_OMEGA] = max(out_f[L.O_MAX_OMEGA], float(np.max(np.abs(sol.y[1]))))
@@ -185,6 +234,39 @@ def _interval(phase, i, times, accel, pol, out_f, out_i, spring_out):
         if status is not None:
             return status
     return None
+
+
+def _check_start(phase, t, g0, gs, out_f, out_i):
+    """STATUS_NONFINITE if the state or the ground motion at the start of a solve is not finite.
+
+    Needed before solve_ivp: its first-step selection from a NaN slope gives a NaN step size,
+    and its step loop then never ends (scipy 1.17).
+    """
+    th, om = phase.th, phase.om
+    if (
+        math.isfinite(th)
+        and math.isfinite(om)
+        and math.isfinite(g0)
+        and math.isfinite(gs)
+        and math.isfinite(_acceleration(phase, g0, th))
+    ):
+        return None
+    out_f[L.O_T_END] = t
+    out_i[L.I_NONFINITE] = _nonfinite_quantity(phase, g0 + gs, th, om)
+    return L.STATUS_NONFINITE
+
+
+def _failed(phase, sol, g0, gs, out_f, out_i):
+    """Status of a solve that could not reach the interval's end: non-finite or step-limit."""
+    t = float(sol.t[-1])
+    out_f[L.O_T_END] = t
+    th, om = float(sol.y[0, -1]), float(sol.y[1, -1])
+    ag = g0 + gs * (t - float(sol.t[0]))
+    finite = math.isfinite(th) and math.isfinite(om) and math.isfinite(ag)
+    if finite and math.isfinite(_acceleration(phase, ag, th)):
+        return L.STATUS_STEP_LIMIT  # the step size fell below the spacing of the times
+    out_i[L.I_NONFINITE] = _nonfinite_quantity(phase, ag, th, om)
+    return L.STATUS_NONFINITE
 
 
 def _apply_event(phase, t, y, kind, row, out_f, out_i, spring_out):
@@ -216,7 +298,15 @@ def _apply_event(phase, t, y, kind, row, out_f, out_i, spring_out):
 def integrate_reference(
     times, accel, pol, par, springs, alive, hist_th, hist_om, out_f, out_i, spring_out
 ):
-    """Same contract as :func:`rockcli.dynamics.kernel.integrate` (arrays filled in place)."""
+    """Same contract as :func:`rockcli.dynamics.kernel.integrate` (arrays filled in place).
+
+    Overflows and NaNs are not warnings here: they end the run with status "non-finite".
+    """
+    with np.errstate(all="ignore"):
+        _integrate(times, accel, pol, par, springs, alive, hist_th, hist_om, out_f, out_i, spring_out)
+
+
+def _integrate(times, accel, pol, par, springs, alive, hist_th, hist_om, out_f, out_i, spring_out):
     phase = _Phase(par, springs, alive)
     out_f[:] = 0.0
     out_f[L.O_T_OVERTURN] = math.nan
@@ -232,12 +322,22 @@ def integrate_reference(
     out_i[L.I_STATUS] = L.STATUS_COMPLETED
     out_f[L.O_T_END] = times[-1]
     for i in range(times.size - 1):
-        status = _interval(phase, i, times, accel, pol, out_f, out_i, spring_out)
+        try:
+            status = _interval(phase, i, times, accel, pol, out_f, out_i, spring_out)
+        except _OutOfBudget:
+            status = L.STATUS_STEP_LIMIT
+            out_f[L.O_T_END] = phase.t
+            out_i[L.I_STEPS] = int(par[L.P_MAX_STEPS])
         if status is not None:
             out_i[L.I_STATUS] = status
             return
         _store(hist_th, hist_om, i + 1, phase)
     out_i[L.I_REJECTED] = 0
+    forces = spring_out[:, L.S_MAX_FORCE]
+    row = int(np.argmin(np.isfinite(forces))) if forces.size else -1
+    if row >= 0 and not np.isfinite(forces[row]):
+        out_i[L.I_STATUS] = L.STATUS_NONFINITE
+        out_i[L.I_NONFINITE] = L.NF_FORCE + row
 
 
 def _store(hist_th: np.ndarray, hist_om: np.ndarray, i: int, phase: _Phase) -> None:

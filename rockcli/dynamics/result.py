@@ -19,6 +19,7 @@ class RunStatus(StrEnum):
     OVERTURNED = "overturned"
     EVENT_LIMIT = "event-limit"
     STEP_LIMIT = "step-limit"
+    NONFINITE = "non-finite"
 
 
 class Verdict(StrEnum):
@@ -125,7 +126,13 @@ class Assessment:
 
     @property
     def verdict(self) -> Verdict:
-        """`overturns` if either polarity overturns, else `survives` (spec/rocking.md)."""
+        """`overturns` if either polarity overturns, else `survives` (spec/rocking.md).
+
+        A run that met a non-finite number (NaN or ±inf) decides nothing, not even an overturn
+        of the other polarity: the model or the record holds an absurd magnitude.
+        """
+        if any(r.status is RunStatus.NONFINITE for r in self.runs):
+            return Verdict.UNDECIDED
         if any(r.overturned for r in self.runs):
             return Verdict.OVERTURNS
         if any(r.status is not RunStatus.COMPLETED for r in self.runs):

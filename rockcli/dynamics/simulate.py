@@ -1,8 +1,13 @@
 """Run the rocking time history of a block under a record: pack, integrate, unpack.
 
-The ground motion is the record's samples, linear between them, followed by a free tail at the
-record's sample interval: the last sample ramps to zero over one interval (the record ends) and
-the block then moves freely (spec/rocking.md, "Duration").
+The ground motion is the record's samples, linear between them, followed by a free tail: the
+last sample ramps to zero over one record interval (the record ends) and the block then moves
+freely (spec/rocking.md, "Duration"). The tail keeps the record's interval up to TAIL_SAMPLES
+samples and is sampled more coarsely past that (the error controller chooses the steps there;
+the samples only mark where the history is stored).
+
+Times are taken relative to the record's first sample inside the engines and shifted back in
+the results, so a record timed from any origin (e.g. the Unix epoch) runs as if from zero.
 """
 
 from __future__ import annotations
@@ -24,16 +29,45 @@ from rockcli.dynamics.settings import Engine, SolverSettings
 from rockcli.mechanics import Block, spring_failure_rotation
 
 
+#: Most samples of the free tail: up to this many, at the record's interval dt; past it, the
+#: tail (from one dt after the record to its end) is split into TAIL_SAMPLES equal intervals.
+#: The ground is at rest there, so the samples only mark where steps are clipped and where the
+#: history is stored; the error controller chooses the steps. Bounds memory and work: 100
+#: samples at dt = 1e-7 s with a 10 s tail held 1e8 tail samples (2.6 GB with the history).
+TAIL_SAMPLES = 65_536
+#: Work budget of a run: STEPS_PER_SAMPLE steps (accepted + rejected) per sample of the
+#: integration grid (record and tail), plus STEP_BUDGET_BASE, and never more than the settings'
+#: max_steps. Measured on the benchmark's records with springs up to K = 1e11 N/m at rtol =
+#: atol = 1e-12: at most 11 steps per sample; an absurdly stiff model (K = 1e15 N/m on a 50 kg
+#: block) needs ~1e5 per sample and would run for minutes. The run then ends as "step-limit".
+STEPS_PER_SAMPLE = 500
+STEP_BUDGET_BASE = 100_000
+
+
 def extend_with_tail(
     time: np.ndarray, accel: np.ndarray, dt: float, tail: float
 ) -> tuple[np.ndarray, np.ndarray]:
-    """Sample times and accelerations [g] with `tail` seconds of zeros after the record."""
-    n_tail = max(1, int(math.ceil(tail / dt - 1e-9)))
-    t_tail = time[-1] + dt * np.arange(1, n_tail + 1)
+    """Sample times and accelerations [g] with `tail` seconds of zeros after the record.
+
+    The first tail sample is one dt after the record (the last sample ramps to zero); the tail
+    ends ceil(tail/dt)·dt after the record, sampled at dt when that is at most TAIL_SAMPLES
+    samples, else in TAIL_SAMPLES equal intervals after the ramp.
+    """
+    n_tail = max(1, math.ceil(tail / dt - 1e-9))
+    if n_tail <= TAIL_SAMPLES:
+        t_tail = time[-1] + dt * np.arange(1, n_tail + 1)
+    else:
+        span = (n_tail - 1) * dt
+        t_tail = time[-1] + dt + span * (np.arange(TAIL_SAMPLES + 1) / TAIL_SAMPLES)
     return (
         np.ascontiguousarray(np.concatenate([time, t_tail]), dtype=np.float64),
-        np.ascontiguousarray(np.concatenate([accel, np.zeros(n_tail)]), dtype=np.float64),
+        np.ascontiguousarray(np.concatenate([accel, np.zeros(t_tail.size)]), dtype=np.float64),
     )
+
+
+def step_budget(n_samples: int, max_steps: int) -> int:
+    """Steps a run may take over a grid of n_samples samples (STEPS_PER_SAMPLE, module doc)."""
+    return min(max_steps, STEPS_PER_SAMPLE * n_samples + STEP_BUDGET_BASE)
 
 
 def pack_parameters(block: Block, settings: SolverSettings, rtol: float, atol: float) -> np.ndarray:
@@ -109,8 +143,10 @@ def simulate(
         theta0, omega0: initial rotation [rad] and velocity [rad/s] (default: at rest).
     """
     settings = settings or SolverSettings()
+    time = np.asarray(time, float)
+    origin = float(time[0])
     times, acc = extend_with_tail(
-        np.asarray(time, float), np.asarray(accel, float), dt, settings.tail_for(block.p)
+        time - origin, np.asarray(accel, float), dt, settings.tail_for(block.p)
     )
     if engine is Engine.REFERENCE:
         from rockcli.dynamics.reference import integrate_reference as run
@@ -123,6 +159,7 @@ def simulate(
     par = pack_parameters(block, settings, rtol, atol)
     par[L.P_THETA0] = theta0
     par[L.P_OMEGA0] = omega0
+    par[L.P_MAX_STEPS] = float(step_budget(times.size, settings.max_steps))
     springs = pack_springs(block)
     alive = np.ones(len(block.restrainers), dtype=np.int64)
     n_hist = times.size if history else 1
@@ -135,8 +172,11 @@ def simulate(
     run(
         times, acc, float(polarity), par, springs, alive, hist_th, hist_om, out_f, out_i, spring_out
     )
-    hist = _history(times, hist_th, hist_om, out_f[L.O_T_END]) if history else None
-    return _unpack(block, settings, engine, rtol, atol, polarity, out_f, out_i, spring_out, hist)
+    hist = _history(times, hist_th, hist_om, out_f[L.O_T_END], origin) if history else None
+    for slot in (L.O_T_END, L.O_T_OVERTURN, L.O_T_UPLIFT):
+        out_f[slot] += origin
+    spring_out[:, L.S_T_FAIL] += origin
+    return _unpack(block, par, engine, rtol, atol, polarity, out_f, out_i, spring_out, hist)
 
 
 def _reference_tolerances() -> tuple[float, float]:
@@ -145,18 +185,18 @@ def _reference_tolerances() -> tuple[float, float]:
     return REFERENCE_RTOL, REFERENCE_ATOL
 
 
-def _history(times: np.ndarray, th: np.ndarray, om: np.ndarray, t_end: float) -> History:
+def _history(
+    times: np.ndarray, th: np.ndarray, om: np.ndarray, t_end: float, origin: float
+) -> History:
     keep = (times <= t_end) & np.isfinite(th)
-    return History(time=times[keep], theta=th[keep], omega=om[keep])
+    return History(time=times[keep] + origin, theta=th[keep], omega=om[keep])
 
 
 def _optional(x: float) -> float | None:
     return None if math.isnan(x) else float(x)
 
 
-def _unpack(
-    block, settings, engine, rtol, atol, polarity, out_f, out_i, spring_out, hist
-) -> RockingRun:
+def _unpack(block, par, engine, rtol, atol, polarity, out_f, out_i, spring_out, hist) -> RockingRun:
     status = RunStatus(L.STATUS_NAMES[int(out_i[L.I_STATUS])])
     peaks = tuple(
         RestrainerPeak(
@@ -170,7 +210,7 @@ def _unpack(
     run = RockingRun(
         polarity=polarity,
         status=status,
-        message=_message(status, out_f),
+        message=_message(status, out_f, out_i, par, block),
         max_ratio=float(out_f[L.O_MAX_A] / block.alpha),
         theta_max=float(out_f[L.O_THETA_MAX]),
         theta_min=float(out_f[L.O_THETA_MIN]),
@@ -185,14 +225,16 @@ def _unpack(
         engine=str(engine),
         rtol=rtol,
         atol=atol,
-        rest_velocity=settings.rest_velocity,
+        rest_velocity=float(par[L.P_REST]),
         restrainers=peaks,
         history=hist,
     )
     return _with_warnings(run)
 
 
-def _message(status: RunStatus, out_f: np.ndarray) -> str:
+def _message(
+    status: RunStatus, out_f: np.ndarray, out_i: np.ndarray, par: np.ndarray, block: Block
+) -> str:
     if status is RunStatus.OVERTURNED:
         return f"overturned at t = {out_f[L.O_T_OVERTURN]:.3f} s"
     if status is RunStatus.COMPLETED:
@@ -201,7 +243,23 @@ def _message(status: RunStatus, out_f: np.ndarray) -> str:
         return "survived"
     if status is RunStatus.EVENT_LIMIT:
         return f"stopped at t = {out_f[L.O_T_END]:.3f} s: too many impacts (the event guard)"
-    return f"stopped at t = {out_f[L.O_T_END]:.3f} s: too many steps (the step guard)"
+    if status is RunStatus.NONFINITE:
+        return (
+            f"stopped at t = {out_f[L.O_T_END]:.6g} s: {_nonfinite_name(out_i, block)} is not "
+            f"finite (NaN or infinite): an absurd magnitude in the model or the record"
+        )
+    return (
+        f"stopped at t = {out_f[L.O_T_END]:.3f} s: too many steps (the step guard: "
+        f"{int(par[L.P_MAX_STEPS]):,} steps for this record's length; a very stiff restrainer "
+        f"or very tight tolerances)"
+    )
+
+
+def _nonfinite_name(out_i: np.ndarray, block: Block) -> str:
+    code = int(out_i[L.I_NONFINITE])
+    if code >= L.NF_FORCE:
+        return f"the force of restrainer {block.restrainers[code - L.NF_FORCE].name!r}"
+    return L.NONFINITE_NAMES.get(code, "a quantity of the run")
 
 
 def _with_warnings(run: RockingRun) -> RockingRun:
@@ -213,7 +271,7 @@ def _with_warnings(run: RockingRun) -> RockingRun:
             f"to α and e; read it as an order of magnitude; impact count depends on the rest "
             f"threshold {run.rest_velocity:g} rad/s"
         )
-    if run.status in (RunStatus.EVENT_LIMIT, RunStatus.STEP_LIMIT):
+    if run.status in (RunStatus.EVENT_LIMIT, RunStatus.STEP_LIMIT, RunStatus.NONFINITE):
         notes.append(f"polarity {run.polarity:+d}: {run.message}")
     if not notes:
         return run

@@ -37,6 +37,16 @@ TOLERANCE = 1e-8
 #: Loosest tolerance accepted: looser runs are not trustworthy (spec/rocking.md, "Accuracy").
 LOOSEST_TOLERANCE = 1e-2
 
+#: Tightest tolerance accepted: below it a step's error estimate is mostly rounding (float64
+#: holds about 16 digits and the estimate sums seven stages), so the controller shrinks the
+#: steps without gaining accuracy and the run only spends its work budget. The reference
+#: engine itself runs at atol = 1e-12.
+TIGHTEST_TOLERANCE = 1e-12
+
+#: Longest free-vibration tail accepted [s]: one hour. Free rocking dies out within tens of
+#: seconds (the default 20/p is 74 s for a block of R = 100 m); a longer tail only costs work.
+LONGEST_TAIL = 3600.0
+
 #: Default rest threshold on |θ̇| after an impact [rad/s] (spec/engine.md, "Rest rule").
 REST_VELOCITY = 1e-4
 
@@ -234,7 +244,10 @@ class Analysis(Table):
     """Settings of the time-history run (spec/rocking.md; defaults from spec/engine.md)."""
 
     tail: float | None = number(
-        "Free-vibration time after the end of the record; default: the engine's [s]", ge=0
+        "Free-vibration time after the end of the record, at most 3600; default: the "
+        "engine's [s]",
+        ge=0,
+        le=LONGEST_TAIL,
     )
     overturn_angle: float = number(
         "Rotation |θ| at which the block counts as overturned, in (0, π/2]; default π/2 [rad]",
@@ -243,15 +256,15 @@ class Analysis(Table):
         le=OVERTURN_ANGLE,
     )
     rtol: float = number(
-        "Relative tolerance of the integration, in (0, 1e-2]; default 1e-8 [-]",
+        "Relative tolerance of the integration, in [1e-12, 1e-2]; default 1e-8 [-]",
         TOLERANCE,
-        gt=0,
+        ge=TIGHTEST_TOLERANCE,
         le=LOOSEST_TOLERANCE,
     )
     atol: float = number(
-        "Absolute tolerance of the integration, in (0, 1e-2]; default 1e-8 [rad, rad/s]",
+        "Absolute tolerance of the integration, in [1e-12, 1e-2]; default 1e-8 [rad, rad/s]",
         TOLERANCE,
-        gt=0,
+        ge=TIGHTEST_TOLERANCE,
         le=LOOSEST_TOLERANCE,
     )
     rest_velocity: float = number(
