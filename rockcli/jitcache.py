@@ -9,15 +9,30 @@ starts a fresh cache.
 
 The folder is under ``$NUMBA_CACHE_DIR`` when set, else under the package's ``__pycache__``
 when writable, else under the user's cache folder (``$XDG_CACHE_HOME`` or ``~/.cache``).
+Each is probed by creating the folder and a file in it. When none is writable (a read-only
+install with an unwritable home, the usual container), the cache goes to a private folder of
+the temporary directory, ``rock-numba-<uid>-<digest>``; when even that fails, the kernels are
+compiled without a cache (every process compiles them again). :data:`NOTE` then says so, for
+the command line to show.
 """
 
 from __future__ import annotations
 
 import hashlib
 import os
+import stat
+import tempfile
 from pathlib import Path
 
 PACKAGE = Path(__file__).resolve().parent
+#: Whether the kernels are compiled with numba's ``cache=True`` (set by :func:`configure`).
+CACHE = True
+#: One sentence for the user when the cache is not where it should be, else None.
+NOTE: str | None = None
+#: Permission bits of the temporary cache folder: the owner's only (numba's cache files are
+#: pickles: a folder another user can write to could make this process load their code).
+PRIVATE_MODE = 0o700
+_configured = False
 #: Every file whose code the compiled kernels contain.
 KERNEL_SOURCES = (
     "mechanics.py",
@@ -58,15 +73,81 @@ def cache_base() -> Path:
     return Path(user) / "rock"
 
 
-def configure() -> None:
-    """Point numba's cache at the keyed folder; call before any ``njit(cache=True)``."""
+def configure() -> bool:
+    """Point numba's cache at a writable keyed folder; call before any ``njit(cache=CACHE)``.
+
+    Returns :data:`CACHE`: False when no folder is writable and the kernels are compiled
+    without a cache (then :data:`NOTE` says so). Idempotent: the probe runs once per process.
+    """
+    global CACHE, NOTE, _configured
+    if _configured:
+        return CACHE
     from numba.core import config
 
+    digest = sources_digest()
     base = cache_base()
-    folder = base / f"numba-{sources_digest()}"
-    if base == PACKAGE / "__pycache__":
+    folder = base / f"numba-{digest}"
+    chosen: Path | None = folder if writable(folder) else None
+    if chosen is not None and base == PACKAGE / "__pycache__":
         prune(base, keep=folder)
-    config.CACHE_DIR = str(folder)  # type: ignore[attr-defined]
+    if chosen is None:
+        chosen = private_temp_folder(digest)
+        NOTE = (
+            f"the compiled-code cache folder {folder} is not writable: compiled code is cached "
+            f"in {chosen} (set NUMBA_CACHE_DIR to a writable folder to keep it)"
+            if chosen is not None
+            else f"no writable folder for the compiled-code cache ({folder} nor the temporary "
+            f"folder): the engine is compiled again in every run (set NUMBA_CACHE_DIR to a "
+            f"writable folder)"
+        )
+    CACHE = chosen is not None
+    if chosen is not None:
+        config.CACHE_DIR = str(chosen)  # type: ignore[attr-defined]
+    _configured = True
+    return CACHE
+
+
+def writable(folder: Path) -> bool:
+    """True if `folder` exists or can be made, and a file can be written in it."""
+    try:
+        folder.mkdir(parents=True, exist_ok=True)
+        with tempfile.TemporaryFile(dir=folder):
+            pass
+    except OSError:
+        return False
+    return True
+
+
+def private_temp_folder(digest: str) -> Path | None:
+    """``<tmp>/rock-numba-<uid>-<digest>``, made private to this user; None if impossible.
+
+    An existing folder is used only if it is a real folder (not a link) owned by this user and
+    writable by nobody else.
+    """
+    try:
+        folder = Path(tempfile.gettempdir()) / f"rock-numba-{_user_id()}-{digest}"
+        folder.mkdir(mode=PRIVATE_MODE, exist_ok=True)
+        info = os.lstat(folder)
+    except OSError:
+        return None
+    if not stat.S_ISDIR(info.st_mode):
+        return None
+    if hasattr(os, "getuid") and (
+        info.st_uid != os.getuid() or info.st_mode & (stat.S_IWGRP | stat.S_IWOTH)
+    ):
+        return None
+    return folder if writable(folder) else None
+
+
+def _user_id() -> str:
+    if hasattr(os, "getuid"):
+        return str(os.getuid())
+    import getpass
+
+    try:
+        return getpass.getuser()
+    except (ImportError, KeyError, OSError):
+        return "user"
 
 
 def prune(base: Path, keep: Path) -> None:

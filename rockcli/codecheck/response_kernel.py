@@ -19,10 +19,11 @@ from numba import njit
 
 from rockcli import jitcache
 
-jitcache.configure()  # before any njit(cache=True): the cache is keyed on the sources
+#: numba's on-disk cache, when a writable folder exists (jitcache.py; keyed on the sources).
+CACHE = jitcache.configure()
 
 
-@njit(cache=True)
+@njit(cache=CACHE)
 def peak_response(
     load: np.ndarray, coefficients: np.ndarray
 ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:

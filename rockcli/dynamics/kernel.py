@@ -13,7 +13,8 @@ Design (spec/engine.md, measured there on this machine):
   the turning point (θ̇ = 0), never from the step start (engine.md, trap 1);
 - the pivot side s is a mode variable, never sign(θ) in the right-hand side (trap 3);
 - a rest rule ends Zeno cascades: after an impact, |θ̇⁺| < ω_rest → rest (trap 5);
-- compiled with numba ``cache=True``; no explicit signatures (they compile at import).
+- compiled with numba ``cache=True`` when a cache folder is writable (jitcache.py); no explicit
+  signatures (they compile at import).
 
 Everything here is numeric and silent. :mod:`rockcli.dynamics.simulate` packs the inputs and
 unpacks the outputs.
@@ -32,7 +33,8 @@ from rockcli import jitcache, mechanics
 from rockcli.dynamics import layout as L
 from rockcli.dynamics import rules
 
-jitcache.configure()  # before any njit(cache=True): the cache is keyed on the sources
+#: numba's on-disk cache, when a writable folder exists (jitcache.py; keyed on the sources).
+CACHE = jitcache.configure()
 
 # The shared formulas are compiled from the very same Python functions. Those that take
 # arrays are inlined at the numba IR level (a call boundary costs atomic reference-count
@@ -49,12 +51,12 @@ for _fn in (
     register_jitable(_fn)
 for _array_fn in (rules.spring_on_side, rules.spring_trig_on_side, rules.ground_acceleration):
     register_jitable(inline="always")(_array_fn)
-_rhs = njit(cache=True, inline="always")(rules.angular_acceleration)
-_ground = njit(cache=True, inline="always")(rules.ground_acceleration)
-_uplift_in_interval = njit(cache=True, inline="always")(rules.uplift_in_interval)
-_after_impact = njit(cache=True, inline="always")(rules.velocity_after_impact)
-_spring_on_side = njit(cache=True, inline="always")(rules.spring_on_side)
-_elongation_on_side = njit(cache=True, inline="always")(rules.elongation_on_side)
+_rhs = njit(cache=CACHE, inline="always")(rules.angular_acceleration)
+_ground = njit(cache=CACHE, inline="always")(rules.ground_acceleration)
+_uplift_in_interval = njit(cache=CACHE, inline="always")(rules.uplift_in_interval)
+_after_impact = njit(cache=CACHE, inline="always")(rules.velocity_after_impact)
+_spring_on_side = njit(cache=CACHE, inline="always")(rules.spring_on_side)
+_elongation_on_side = njit(cache=CACHE, inline="always")(rules.elongation_on_side)
 
 
 #: Numba IR inlining of the small helpers that take arrays: a call boundary costs atomic
@@ -121,7 +123,7 @@ DENSE_P = np.array(
 )
 
 
-@njit(cache=True, inline=INLINE)
+@njit(cache=CACHE, inline=INLINE)
 def _stage(th, s, ag, par, springs, alive):
     """θ̈ at rotation θ on side s under ground acceleration ag [g]."""
     return _rhs(
@@ -139,13 +141,13 @@ def _stage(th, s, ag, par, springs, alive):
     )
 
 
-@njit(cache=True, inline=INLINE)
+@njit(cache=CACHE, inline=INLINE)
 def _stage_at(t, th, s, i, times, accel, pol, par, springs, alive):
     """θ̈ at (t, θ) on side s, t inside sample interval i."""
     return _stage(th, s, _ground(t, i, times, accel, pol), par, springs, alive)
 
 
-@njit(cache=True, inline=INLINE)
+@njit(cache=CACHE, inline=INLINE)
 def _dp5_step(th, om, f1, h, s, g0, gs, par, springs, alive, k_th, k_om):
     """One Dormand–Prince step of size h; fills the stage slopes; returns (θ, θ̇, θ̈, error norm).
 
@@ -209,7 +211,7 @@ def _dp5_step(th, om, f1, h, s, g0, gs, par, springs, alive, k_th, k_om):
     return th1, om1, f7, err
 
 
-@njit(cache=True, inline=INLINE)
+@njit(cache=CACHE, inline=INLINE)
 def _dense_coefficients(k, q):
     """q[j] = Σ_i k[i]·P[i, j]: the dense-output polynomial of one component (Shampine 1986)."""
     for j in range(4):
@@ -219,13 +221,13 @@ def _dense_coefficients(k, q):
         q[j] = acc
 
 
-@njit(cache=True, inline=INLINE)
+@njit(cache=CACHE, inline=INLINE)
 def _dense(x, y0, h, q):
     """y(t0 + x·h) = y0 + h·(q0 x + q1 x² + q2 x³ + q3 x⁴), 0 ≤ x ≤ 1."""
     return y0 + h * x * (q[0] + x * (q[1] + x * (q[2] + x * q[3])))
 
 
-@njit(cache=True)
+@njit(cache=CACHE)
 def _root(y0, h, q, level, s, xl, xr):
     """x in [xl, xr] where s·y(x) = level, given a sign change; Illinois false position.
 
@@ -258,7 +260,7 @@ def _root(y0, h, q, level, s, xl, xr):
     return xm
 
 
-@njit(cache=True)
+@njit(cache=CACHE)
 def _turning_point(om0, h, q_om, s, xl, xr):
     """x of the root of s·θ̇ (from + to −) in [xl, xr], or −1 when θ̇ keeps its sign."""
     vl = s * _dense(xl, om0, h, q_om)
@@ -268,7 +270,7 @@ def _turning_point(om0, h, q_om, s, xl, xr):
     return -1.0
 
 
-@njit(cache=True)
+@njit(cache=CACHE)
 def _update_peak(a, s, peaks, spring_out, springs, alive, linearized):
     """Record the rotation a about pivot s: amplitude, signed extremes, restrainer demands."""
     if a > peaks[L.O_MAX_A]:
@@ -289,7 +291,7 @@ def _update_peak(a, s, peaks, spring_out, springs, alive, linearized):
                     spring_out[j, L.S_MAX_FORCE] = k * u
 
 
-@njit(cache=True)
+@njit(cache=CACHE)
 def _event_levels(s, par, springs, alive, levels, kinds):
     """Fill the upward levels of a that end the phase: overturning and each live failure."""
     n = 0
@@ -306,7 +308,7 @@ def _event_levels(s, par, springs, alive, levels, kinds):
     return n
 
 
-@njit(cache=True, inline=INLINE)
+@njit(cache=CACHE, inline=INLINE)
 def _stage_trend(k_th, s):
     """+1 if s·θ̇ > 0 at all seven stages of the step, −1 if < 0 at all, else 0.
 
@@ -326,7 +328,7 @@ def _stage_trend(k_th, s):
     return int(sign)
 
 
-@njit(cache=True)
+@njit(cache=CACHE)
 def _lowest_level(s, par, springs, alive):
     """The lowest upward event level of a on side s: overturning or a live failure [rad]."""
     lowest = par[L.P_OVERTURN]
@@ -338,7 +340,7 @@ def _lowest_level(s, par, springs, alive):
     return lowest
 
 
-@njit(cache=True)
+@njit(cache=CACHE)
 def _scan_sampled(
     th0, om0, th1, h, q_th, q_om, s, par, springs, alive, peaks, spring_out, levels, kinds
 ):
@@ -389,7 +391,7 @@ def _scan_sampled(
     return 2.0, L.EV_NONE, -1
 
 
-@njit(cache=True)
+@njit(cache=CACHE)
 def _next_uplift(t, i, times, accel, pol, par):
     """From rest at time t in interval i: (τ, side, interval) of the next uplift, side 0 if none.
 
@@ -416,7 +418,7 @@ def _next_uplift(t, i, times, accel, pol, par):
     return times[n - 1], 0, n - 1
 
 
-@njit(cache=True)
+@njit(cache=CACHE)
 def _store_rest(hist_th, hist_om, i_from, i_to):
     """History at rest: θ = θ̇ = 0 at samples i_from..i_to (inclusive)."""
     if hist_th.size > 1:
@@ -425,7 +427,7 @@ def _store_rest(hist_th, hist_om, i_from, i_to):
             hist_om[k] = 0.0
 
 
-@njit(cache=True)
+@njit(cache=CACHE)
 def _initial_side(th, om):
     """Pivot side of the initial state: sign of θ0, else of θ̇0, else 0 (at rest)."""
     if th != 0.0:
@@ -435,7 +437,7 @@ def _initial_side(th, om):
     return 0
 
 
-@njit(cache=True)
+@njit(cache=CACHE)
 def _nonfinite_quantity(t, th, om, f, s, i, times, accel, pol, par, springs, alive):
     """NF_* code of the first non-finite quantity of the state (θ, θ̇, a force, üg, θ̈)."""
     if not math.isfinite(th):
@@ -450,7 +452,7 @@ def _nonfinite_quantity(t, th, om, f, s, i, times, accel, pol, par, springs, ali
     return L.NF_ACCEL
 
 
-@njit(cache=True)
+@njit(cache=CACHE)
 def _nonfinite_force(a, s, par, springs, alive):
     """Row of the first live restrainer whose force K·u at rotation a is not finite, else −1."""
     for j in range(springs.shape[0]):
@@ -463,7 +465,7 @@ def _nonfinite_force(a, s, par, springs, alive):
     return -1
 
 
-@njit(cache=True)
+@njit(cache=CACHE)
 def _nonfinite_peak_force(spring_out):
     """Row of the first restrainer whose recorded peak force is not finite, else −1."""
     for j in range(spring_out.shape[0]):
@@ -472,7 +474,7 @@ def _nonfinite_peak_force(spring_out):
     return -1
 
 
-@njit(cache=True)
+@njit(cache=CACHE)
 def integrate(times, accel, pol, par, springs, alive, hist_th, hist_om, out_f, out_i, spring_out):
     """Integrate one rocking run over the sample times, from rest at times[0].
 

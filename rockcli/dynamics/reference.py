@@ -54,7 +54,6 @@ class _Phase:
 
 
 def _rhs(phase: _Phase, t0: float, g0: float, gs: float):
-    par = phase.par
 
     def f(t: float, y: np.ndarray) -> list[float]:
         phase.evals += 1
@@ -303,7 +302,9 @@ def integrate_reference(
     Overflows and NaNs are not warnings here: they end the run with status "non-finite".
     """
     with np.errstate(all="ignore"):
-        _integrate(times, accel, pol, par, springs, alive, hist_th, hist_om, out_f, out_i, spring_out)
+        _integrate(
+            times, accel, pol, par, springs, alive, hist_th, hist_om, out_f, out_i, spring_out
+        )
 
 
 def _integrate(times, accel, pol, par, springs, alive, hist_th, hist_om, out_f, out_i, spring_out):

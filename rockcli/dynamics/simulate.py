@@ -28,7 +28,6 @@ from rockcli.dynamics.result import (
 from rockcli.dynamics.settings import Engine, SolverSettings
 from rockcli.mechanics import Block, spring_failure_rotation
 
-
 #: Most samples of the free tail: up to this many, at the record's interval dt; past it, the
 #: tail (from one dt after the record to its end) is split into TAIL_SAMPLES equal intervals.
 #: The ground is at rest there, so the samples only mark where steps are clipped and where the

@@ -244,8 +244,7 @@ class Analysis(Table):
     """Settings of the time-history run (spec/rocking.md; defaults from spec/engine.md)."""
 
     tail: float | None = number(
-        "Free-vibration time after the end of the record, at most 3600; default: the "
-        "engine's [s]",
+        "Free-vibration time after the end of the record, at most 3600; default: the engine's [s]",
         ge=0,
         le=LONGEST_TAIL,
     )
