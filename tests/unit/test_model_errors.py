@@ -310,9 +310,14 @@ CASES: list[tuple[str, Edit, list[str]]] = [
     (
         "rtol too loose",
         table("analysis", rtol=0.1),
-        ["analysis.rtol", "got 0.1", "a number > 0 and <= 0.01 [-]"],
+        ["analysis.rtol", "got 0.1", "a number >= 1e-12 and <= 0.01 [-]"],
     ),
-    ("atol zero", table("analysis", atol=0.0), ["analysis.atol", "a number > 0 and <= 0.01"]),
+    ("atol zero", table("analysis", atol=0.0), ["analysis.atol", "a number >= 1e-12 and <= 0.01"]),
+    (
+        "rtol below the floor (rounding, not accuracy)",
+        table("analysis", rtol=1e-13),
+        ["analysis.rtol", "got 1e-13", "a number >= 1e-12 and <= 0.01 [-]"],
+    ),
     (
         "overturn angle above pi/2",
         table("analysis", overturn_angle=2.0),
@@ -321,7 +326,12 @@ CASES: list[tuple[str, Edit, list[str]]] = [
     (
         "negative tail",
         table("analysis", tail=-1.0),
-        ["analysis.tail", "got -1.0", "a number >= 0 [s]"],
+        ["analysis.tail", "got -1.0", "a number >= 0 and <= 3600 [s]"],
+    ),
+    (
+        "tail of 1e9 s (745 GiB at the record's dt before the bound)",
+        table("analysis", tail=1e9),
+        ["analysis.tail", "got 1000000000.0", "a number >= 0 and <= 3600 [s]"],
     ),
     (
         "zero rest velocity",
