@@ -453,6 +453,15 @@ def _nonfinite_quantity(t, th, om, f, s, i, times, accel, pol, par, springs, ali
 
 
 @njit(cache=CACHE)
+def _nonfinite_in_step(t, th, om, f, s, i, times, accel, pol, par, springs, alive, g_end):
+    """NF_* code for a step whose error estimate stays NaN: the state's, else üg's, else its own."""
+    code = _nonfinite_quantity(t, th, om, f, s, i, times, accel, pol, par, springs, alive)
+    if code != L.NF_ACCEL or not math.isfinite(f):
+        return code
+    return L.NF_GROUND if not math.isfinite(g_end) else L.NF_ERROR
+
+
+@njit(cache=CACHE)
 def _nonfinite_force(a, s, par, springs, alive):
     """Row of the first live restrainer whose force K·u at rotation a is not finite, else −1."""
     for j in range(springs.shape[0]):
@@ -543,7 +552,7 @@ def integrate(times, accel, pol, par, springs, alive, hist_th, hist_om, out_f, o
             f = _stage_at(t, th, s, i, times, accel, pol, par, springs, alive)
             lowest = _lowest_level(s, par, springs, alive)
             continue
-        if not (math.isfinite(th) and math.isfinite(om) and math.isfinite(f)):
+        if not math.isfinite(f):  # θ̈ is NaN when θ is; a bad θ̇ shows in the error estimate
             status = L.STATUS_NONFINITE
             out_i[L.I_NONFINITE] = _nonfinite_quantity(
                 t, th, om, f, s, i, times, accel, pol, par, springs, alive
@@ -575,7 +584,9 @@ def integrate(times, accel, pol, par, springs, alive, hist_th, hist_om, out_f, o
             nan_rejects += 1
             if nan_rejects > NONFINITE_RETRIES:
                 status = L.STATUS_NONFINITE
-                out_i[L.I_NONFINITE] = L.NF_GROUND if not math.isfinite(g0 + gs) else L.NF_ERROR
+                out_i[L.I_NONFINITE] = _nonfinite_in_step(
+                    t, th, om, f, s, i, times, accel, pol, par, springs, alive, g0 + gs * h_try
+                )
                 break
             h = h_try * MIN_FACTOR
             continue

@@ -50,16 +50,16 @@ def extend_with_tail(
 ) -> tuple[np.ndarray, np.ndarray]:
     """Sample times and accelerations [g] with `tail` seconds of zeros after the record.
 
-    The first tail sample is one dt after the record (the last sample ramps to zero); the tail
-    ends ceil(tail/dt)·dt after the record, sampled at dt when that is at most TAIL_SAMPLES
-    samples, else in TAIL_SAMPLES equal intervals after the ramp.
+    The first tail sample is one dt after the record (the last sample ramps to zero). Up to
+    TAIL_SAMPLES samples, the tail is sampled at dt and ends ceil(tail/dt)·dt after the record;
+    past that, it ends `tail` after the record, in TAIL_SAMPLES equal intervals after the ramp.
     """
-    n_tail = max(1, math.ceil(tail / dt - 1e-9))
-    if n_tail <= TAIL_SAMPLES:
+    ratio = tail / dt
+    if ratio <= TAIL_SAMPLES:
+        n_tail = max(1, math.ceil(ratio - 1e-9))
         t_tail = time[-1] + dt * np.arange(1, n_tail + 1)
     else:
-        span = (n_tail - 1) * dt
-        t_tail = time[-1] + dt + span * (np.arange(TAIL_SAMPLES + 1) / TAIL_SAMPLES)
+        t_tail = time[-1] + dt + (tail - dt) * (np.arange(TAIL_SAMPLES + 1) / TAIL_SAMPLES)
     return (
         np.ascontiguousarray(np.concatenate([time, t_tail]), dtype=np.float64),
         np.ascontiguousarray(np.concatenate([accel, np.zeros(t_tail.size)]), dtype=np.float64),
@@ -147,7 +147,7 @@ def simulate(
     time = np.asarray(time, float)
     origin = float(time[0])
     times, acc = extend_with_tail(
-        time - origin, np.asarray(accel, float), dt, settings.tail_for(block.p)
+        time - origin if origin else time, np.asarray(accel, float), dt, settings.tail_for(block.p)
     )
     if engine is Engine.REFERENCE:
         from rockcli.dynamics.reference import integrate_reference as run
@@ -174,9 +174,9 @@ def simulate(
         times, acc, float(polarity), par, springs, alive, hist_th, hist_om, out_f, out_i, spring_out
     )
     hist = _history(times, hist_th, hist_om, out_f[L.O_T_END], origin) if history else None
-    for slot in (L.O_T_END, L.O_T_OVERTURN, L.O_T_UPLIFT):
-        out_f[slot] += origin
-    spring_out[:, L.S_T_FAIL] += origin
+    if origin:
+        out_f[[L.O_T_END, L.O_T_OVERTURN, L.O_T_UPLIFT]] += origin
+        spring_out[:, L.S_T_FAIL] += origin
     return _unpack(block, par, engine, rtol, atol, polarity, out_f, out_i, spring_out, hist)
 
 
