@@ -56,8 +56,8 @@ analysis = optional(
     {
         "tail": floats(0.0, 100.0),
         "overturn_angle": floats(1e-3, math.pi / 2),
-        "rtol": floats(1e-14, 1e-2),
-        "atol": floats(1e-14, 1e-2),
+        "rtol": floats(1e-12, 1e-2),
+        "atol": floats(1e-12, 1e-2),
         "rest_velocity": floats(1e-9, 1.0),
         "linearized": st.booleans(),
         "g": floats(1.0, 20.0),
