@@ -13,7 +13,8 @@ CHATTER_RATIO = 0.05
 
 
 class RunStatus(StrEnum):
-    """How a run ended."""
+    """How a run ended. NONFINITE: a NaN or an infinity (θ, θ̇, θ̈, the ground acceleration,
+    the error estimate or a restrainer's force) stopped it; its numbers decide nothing."""
 
     COMPLETED = "completed"
     OVERTURNED = "overturned"

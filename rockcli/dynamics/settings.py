@@ -44,7 +44,9 @@ class SolverSettings:
         overturn_angle: |θ| at which the block is declared overturned [rad].
         tail: free time after the record [s]; None → max(DEFAULT_TAIL_MIN, TAIL_PERIODS/p).
         max_events: impacts after which the run stops with status "event-limit".
-        max_steps: steps after which the run stops with status "step-limit".
+        max_steps: steps after which the run stops with status "step-limit" (at most; the
+            run's work budget, tied to the record's length, can stop it sooner:
+            simulate.STEPS_PER_SAMPLE).
     """
 
     rtol: float = DEFAULT_RTOL
