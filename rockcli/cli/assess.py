@@ -4,7 +4,13 @@ from __future__ import annotations
 
 import click
 
-from rockcli.cli.options import engine_option, load_record, output_format, with_record_options
+from rockcli.cli.options import (
+    engine_option,
+    exit_if_non_finite,
+    load_record,
+    output_format,
+    with_record_options,
+)
 from rockcli.cli.plot_option import plot_option
 
 #: Exit code of --fail-on-overturn when the block overturns (documented in the README).
@@ -62,6 +68,7 @@ def assess(
     from rockcli.report.table import show
 
     show(doc, output, assessment_report)
+    exit_if_non_finite(doc["runs"])
     if fail_on_overturn and doc["verdict"] == "overturns":
         raise SystemExit(EXIT_OVERTURNS)
 

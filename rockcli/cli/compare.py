@@ -7,6 +7,7 @@ import click
 from rockcli.cli.options import (
     edition_option,
     engine_option,
+    exit_if_non_finite,
     hazard_grid_option,
     load_record,
     output_format,
@@ -86,5 +87,6 @@ def compare(
         runs = rocking.result.runs
         plot_comparison(doc, runs, plot_path, record=record, overturn_angle=rocking.overturn_angle)
     show(doc, output, comparison_report)
+    exit_if_non_finite(doc["rocking"]["runs"])
     if doc["classification"] in fail_on:
         raise SystemExit(EXIT_FAIL_ON)

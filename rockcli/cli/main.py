@@ -18,18 +18,11 @@ import click
 
 from rockcli import __version__
 from rockcli.cli.console import make_output_encodable
+from rockcli.cli.exits import EXIT_INPUT, EXIT_INTERNAL, EXIT_INTERRUPTED, REPORT_TO
 from rockcli.errors import RockError, printable
 
-#: Exit code for bad input (same as click's usage errors).
-EXIT_INPUT = 2
-#: Exit code for an unexpected exception (a bug of rock, or a run that broke down).
-EXIT_INTERNAL = 3
-#: Exit code after Ctrl-C (128 + SIGINT, the shell's convention).
-EXIT_INTERRUPTED = 130
 #: Set to 1 to see the traceback of an internal error.
 DEBUG_VARIABLE = "ROCK_DEBUG"
-#: Where internal errors should be reported.
-REPORT_TO = "the rock maintainers"
 #: click's own control flow: let click handle these.
 _CLICK_FLOW = (click.exceptions.ClickException, click.exceptions.Exit, click.exceptions.Abort)
 

@@ -118,3 +118,13 @@ force_option = click.option(
 def announce_written(path: object, detail: str = "") -> None:
     """The one "wrote …" line of every command, on stderr (stdout stays the result's)."""
     click.echo(f"wrote {path}" + (f": {detail}" if detail else ""), err=True)
+
+
+def exit_if_non_finite(runs: list[dict]) -> None:
+    """After the report: exit 3 with one line when a rocking run ended in a non-finite state."""
+    from rockcli.cli.exits import EXIT_INTERNAL, non_finite_line
+
+    line = non_finite_line(runs)
+    if line is not None:
+        click.echo(line, err=True)
+        raise SystemExit(EXIT_INTERNAL)

@@ -16,6 +16,7 @@ SPELLINGS = {
     "Δ": "Delta",
     "ε": "eps",
     "π": "pi",
+    "√": "sqrt",
     "≤": "<=",
     "≥": ">=",
     "≠": "!=",
@@ -46,6 +47,9 @@ def spell_ascii(char: str) -> str:
     """An ASCII spelling of one character (its SPELLINGS entry, its base letter, or "?")."""
     if char in SPELLINGS:
         return SPELLINGS[char]
+    greek = unicodedata.name(char, "").split("GREEK SMALL LETTER ")
+    if len(greek) == 2 and greek[1].isalpha():
+        return greek[1].lower()  # ψ → psi, β → beta
     base = unicodedata.normalize("NFKD", char).encode("ascii", "ignore").decode("ascii")
     return base or "?"
 
