@@ -56,7 +56,7 @@ def quiet_broken_pipe() -> None:
 class RockGroup(click.Group):
     """click group that turns every exception into one line on stderr and its exit code."""
 
-    def main(self, *args, **kwargs):  # type: ignore[no-untyped-def]
+    def main(self, *args, **kwargs):
         make_output_encodable()
         return super().main(*args, **kwargs)
 
