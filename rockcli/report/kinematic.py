@@ -147,11 +147,11 @@ ULTIMATE_FIX = "set ntc.ultimate_displacement or a restrainer's fails_at"
 def verdict_line(edition: str, verdict: dict[str, bool | None]) -> str:
     """ "DLS satisfied, ULS NOT satisfied": each limit state of the edition once."""
     states = [ls for ls in VERDICT_STATES[edition] if ls in verdict]
-    words = [f"{ls} {_word(verdict[ls], ls)}" for ls in states]
-    return ", ".join(words)
+    line = ", ".join(f"{ls} {_word(verdict[ls])}" for ls in states)
+    if any(verdict[ls] is None for ls in states if ls in ULTIMATE_STATES):
+        line += f" ({ULTIMATE_FIX})"
+    return line
 
 
-def _word(value: bool | None, state: str) -> str:
-    if value is None:
-        return f"not evaluated ({ULTIMATE_FIX})" if state in ULTIMATE_STATES else "not evaluated"
-    return "satisfied" if value else "NOT satisfied"
+def _word(value: bool | None) -> str:
+    return "not evaluated" if value is None else ("satisfied" if value else "NOT satisfied")

@@ -3,8 +3,8 @@
 from __future__ import annotations
 
 import csv
-import math
 import json
+import math
 import subprocess
 import sys
 import time
@@ -116,7 +116,9 @@ def test_history_csv_restrainer_forces(tmp_path: Path) -> None:
     # K = 4e6 N/m, r = 7.00 m, φ = 0.072 rad from the model, and zero from its failure on.
     text = (ROOT / "examples" / "facade.toml").read_text(encoding="utf-8")
     model = tmp_path / "f.toml"
-    model.write_text(text.replace("angle = 0.072    # rad\n", "angle = 0.072\nfails_at = 0.001\n", 1))
+    model.write_text(
+        text.replace("angle = 0.072    # rad\n", "angle = 0.072\nfails_at = 0.001\n", 1)
+    )
     out = tmp_path / "h.csv"
     doc = assess_json(model, PULSES[0], "--history", str(out))
     rows = list(csv.DictReader(out.read_text().splitlines()))
