@@ -148,11 +148,20 @@ def check_outputs(force: bool, **paths: str | None) -> None:
 
     Args:
         force: overwrite existing files.
-        paths: option name (``plot``, ``history``) → the path given, or None.
+        paths: option name (``plot``, ``history``) → the path given, or None; ``-`` is
+            refused (standard output is the report's).
     """
-    from rockcli.outfile import check_writable
+    from rockcli.errors import InputError
+    from rockcli.outfile import check_writable, is_stdout
 
     for option, path in paths.items():
+        if is_stdout(path):
+            raise InputError(
+                "standard output carries the report",
+                where=f"--{option}",
+                value=path,
+                allowed="a file path",
+            )
         if path is not None:
             check_writable(path, force=force, where=f"--{option}")
 

@@ -142,3 +142,23 @@ def _not_evaluated_model(tmp_path: Path) -> Path:
     model = tmp_path / "stiff.toml"
     model.write_text(text.replace("diameter = 0.020", "diameter = 0.200", 1), encoding="utf-8")
     return model
+
+
+def test_history_to_standard_output_is_refused(tmp_path: Path, monkeypatch) -> None:
+    # `-` means standard output, which carries the report: refused (it wrote a file named "-").
+    monkeypatch.chdir(tmp_path)
+    code, out, err = run("assess", ALTAR, "--record", RECORD, "--history", "-")
+    assert code == 2 and out == ""
+    assert err == (
+        "error: --history: standard output carries the report (got '-'; allowed: a file path)\n"
+    )
+    assert not (tmp_path / "-").exists()
+
+
+def test_init_dash_output_is_standard_output(tmp_path: Path, monkeypatch) -> None:
+    # `rock init wall -o -` wrote a file named "-"; `-o -` means standard output.
+    monkeypatch.chdir(tmp_path)
+    code, out, err = run("init", "wall", "-o", "-")
+    assert code == 0, err
+    assert not (tmp_path / "-").exists()
+    assert out == run("init", "wall")[1] and out.startswith("#")
