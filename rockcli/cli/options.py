@@ -198,7 +198,10 @@ force_option = click.option(
 
 def announce_written(path: object, detail: str = "") -> None:
     """The one "wrote …" line of every command, on stderr (stdout stays the result's)."""
-    click.echo(f"wrote {path}" + (f": {detail}" if detail else ""), err=True)
+    from rockcli.errors import printable
+
+    line = f"wrote {path}" + (f": {detail}" if detail else "")
+    click.echo(printable(line), err=True)
 
 
 def exit_if_non_finite(runs: list[dict]) -> None:
