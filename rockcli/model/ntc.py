@@ -7,8 +7,9 @@ its unit); :mod:`rockcli.model.derive` turns it into the code check's plain sett
 from __future__ import annotations
 
 from enum import StrEnum
+from typing import Annotated, Any
 
-from pydantic import Field, model_validator
+from pydantic import BeforeValidator, Field, model_validator
 
 from rockcli.codecheck.categories import Edition, Soil, Topography
 from rockcli.model.rules import choose_group, number, rule_error
@@ -21,6 +22,23 @@ KNOWLEDGE_LEVEL_FC = {"LC1": 1.35, "LC2": 1.20, "LC3": 1.00}
 FC_MIN, FC_MAX = 1.0, 1.35
 #: Behaviour factor of the linear kinematic check (Circolare 617/2009 §C8A.4.2.2; C8.7.1.2.1).
 DEFAULT_Q = 2.0
+
+
+#: Other names of the editions: the year of the code (NTC 2008, NTC 2018) for the year of
+#: its instructions (Circolare 617/2009, Circolare 7/2019), which rock uses.
+EDITION_ALIASES = {"2008": Edition.E2009.value, "2018": Edition.E2019.value}
+
+
+def edition_name(value: Any) -> Any:
+    """rock's name of an edition: an integer year as text, a code year as its circular's.
+
+    Anything else is returned unchanged, for the enum to accept or refuse.
+    """
+    if isinstance(value, int) and not isinstance(value, bool):
+        value = str(value)
+    if isinstance(value, str):
+        return EDITION_ALIASES.get(value.strip(), value.strip())
+    return value
 
 
 class KnowledgeLevel(StrEnum):
@@ -91,10 +109,11 @@ class Load(Table):
 class Ntc(Table):
     """Settings of the NTC kinematic check (spec/ntc.md)."""
 
-    edition: Edition = Field(
+    edition: Annotated[Edition, BeforeValidator(edition_name)] = Field(
         Edition.E2019,
         description="'2009' (NTC 2008 + Circ. 617/2009) or '2019' (NTC 2018 + Circ. 7/2019, "
-        "in force); default '2019'",
+        "in force); default '2019'. Also accepted: the year of the code, '2008' for '2009' "
+        "and '2018' for '2019', and each as a number (edition = 2019)",
     )
     FC: float | None = number(
         "Confidence factor in [1, 1.35] (or knowledge_level); default 1.35 (LC1) [-]",

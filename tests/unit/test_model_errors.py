@@ -15,9 +15,11 @@ from typing import Any
 
 import pytest
 import tomli_w
+from click.testing import CliRunner
 
+from rockcli.cli.main import cli
 from rockcli.errors import InputError
-from rockcli.model.load import load_model, validate_model
+from rockcli.model.load import MAX_ERRORS, InputErrors, load_model, validate_model
 
 #: A valid model: a wall with unit weight (needs width) and one spring at the top.
 VALID: dict[str, Any] = {
@@ -81,7 +83,7 @@ def test_valid_model_loads(tmp_path: Path) -> None:
 def test_unknown_table_at_top_level_exact_line(tmp_path: Path) -> None:
     line = message_for(tmp_path, table("results", edition=2019))
     assert line == (
-        f"{tmp_path / 'm.toml'}: results: unknown key (allowed: one of: name, kind, notes, "
+        f"{tmp_path / 'm.toml'}: unknown table [results] (allowed: one of: name, kind, notes, "
         "geometry, mass, restitution, motion, analysis, restrainers, ntc)"
     )
 
@@ -451,10 +453,131 @@ def test_bad_model_names_file_field_value_and_allowed(
         assert part in line
 
 
-def test_only_the_first_error_is_reported(tmp_path: Path) -> None:
-    line = message_for(tmp_path, lambda d: d["geometry"].update(thickness=-1.0, height=-2.0))
-    assert "geometry.thickness" in line
-    assert "geometry.height" not in line
+# --- every problem at once (issue 7, item 16) ----------------------------------------------------
+
+
+def test_every_error_is_reported_one_line_each(tmp_path: Path) -> None:
+    # Main reported only the first (geometry.thickness) and hid the other two.
+    text = message_for(
+        tmp_path,
+        lambda d: (d["geometry"].update(thickness=-1.0, height=-2.0), d.update(kind="tower")),
+    )
+    lines = text.split("\nerror: ")
+    path = tmp_path / "m.toml"
+    assert lines == [
+        f"{path}: kind: unknown value (got 'tower'; allowed: one of: wall, altar, facade)",
+        f"{path}: geometry.thickness: out of range (got -1.0; allowed: a number > 0 [m])",
+        f"{path}: geometry.height: out of range (got -2.0; allowed: a number > 0 [m])",
+    ]
+
+
+def test_several_errors_keep_the_first_as_the_structured_fields(tmp_path: Path) -> None:
+    with pytest.raises(InputErrors) as info:
+        validate_model({**VALID, "kind": "tower", "name": ""}, file="f.toml")
+    err = info.value
+    assert isinstance(err, InputError)
+    assert (err.file, err.where, err.value) == ("f.toml", "name", "")
+    assert [e.where for e in err.errors] == ["name", "kind"]
+
+
+def test_more_than_ten_errors_are_counted(tmp_path: Path) -> None:
+    # 12 unknown keys: 10 lines shown (MAX_ERRORS), then one line counting the other 2.
+    keys = {f"extra_{i:02d}": i for i in range(12)}
+    text = message_for(tmp_path, lambda d: d.update(keys))
+    lines = text.split("\nerror: ")
+    assert len(lines) == MAX_ERRORS + 1
+    assert lines[-1] == f"{tmp_path / 'm.toml'}: and 2 more problems (fix these and run again)"
+    assert "extra_09" in lines[9]
+    assert "extra_10" not in text
+
+
+def test_cli_prints_every_error_prefixed(tmp_path: Path) -> None:
+    data = copy.deepcopy(VALID)
+    data["geometry"].update(thickness=-1.0, height=-2.0)
+    path = tmp_path / "m.toml"
+    path.write_text(tomli_w.dumps(data), encoding="utf-8")
+    result = CliRunner().invoke(cli, ["kinematic", str(path)])
+    assert result.exit_code == 2
+    lines = result.stderr.splitlines()
+    assert len(lines) == 2
+    assert all(line.startswith(f"error: {path}: geometry.") for line in lines)
+
+
+@pytest.mark.parametrize(
+    ("edit", "expected"),
+    [
+        (
+            lambda d: d.update(geometri=d.pop("geometry")),
+            "unknown table [geometri]; did you mean [geometry]?",
+        ),
+        (
+            lambda d: d.update(Geometry=d.pop("geometry")),
+            "unknown table [Geometry]; did you mean [geometry]?",
+        ),
+        (
+            lambda d: d.update(restrainer=d.pop("restrainers")),
+            "unknown table [[restrainer]]; did you mean [[restrainers]]?",
+        ),
+        (
+            lambda d: d.update(ntc={"sit": {"lon": 13.4, "lat": 42.35}}),
+            "unknown table [ntc.sit]; did you mean [ntc.site]?",
+        ),
+    ],
+    ids=["misspelt", "capitalised", "array of tables", "nested"],
+)
+def test_unknown_table_is_named_with_its_near_miss(
+    tmp_path: Path, edit: Edit, expected: str
+) -> None:
+    # Main said "geometry: missing key" and never named [geometri].
+    text = message_for(tmp_path, edit)
+    assert "\n" not in text
+    assert text.startswith(f"{tmp_path / 'm.toml'}: {expected} (allowed: one of: ")
+    assert "missing key" not in text
+
+
+@pytest.mark.parametrize(
+    ("edit", "expected"),
+    [
+        (put("geometry", thikness=0.5), "geometry.thikness: unknown key; did you mean thickness?"),
+        (put("geometry", Width=3.0), "geometry.Width: unknown key; did you mean width?"),
+        (lambda d: d.update(kind="wal"), "kind: unknown value; did you mean 'wall'?"),
+        (restrainer(k=1.0, position="Top"), "position: unknown value; did you mean 'top'?"),
+    ],
+    ids=["key typo", "key case", "value typo", "value case"],
+)
+def test_near_miss_suggests_the_known_name(tmp_path: Path, edit: Edit, expected: str) -> None:
+    assert expected in message_for(tmp_path, edit)
+
+
+def test_no_suggestion_when_nothing_is_close(tmp_path: Path) -> None:
+    # "results" vs "restrainers": difflib ratio 0.67 < NEAR_MISS = 0.75.
+    assert "did you mean" not in message_for(tmp_path, table("results", edition=2019))
+
+
+@pytest.mark.parametrize(
+    ("given", "edition"),
+    [
+        (2019, "2019"),
+        (2009, "2009"),
+        (2018, "2019"),
+        (2008, "2009"),
+        ("2018", "2019"),
+        ("2008", "2009"),
+        ("2019", "2019"),
+    ],
+)
+def test_edition_as_a_number_and_by_the_code_year(given: object, edition: str) -> None:
+    # NTC 2008 is applied with Circolare 617/2009, NTC 2018 with Circolare 7/2019; main
+    # refused edition = 2019 (an integer) and both code years.
+    model = validate_model({**VALID, "ntc": {"edition": given}})
+    assert model.ntc is not None and model.ntc.edition == edition
+
+
+@pytest.mark.parametrize("given", [2017, True, "NTC"])
+def test_other_editions_refused(tmp_path: Path, given: object) -> None:
+    text = message_for(tmp_path, table("ntc", edition=given))
+    assert "ntc.edition: unknown value" in text
+    assert "one of: 2009, 2019" in text
 
 
 def test_zero_stiffness_restrainer_needs_no_mass() -> None:
