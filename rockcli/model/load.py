@@ -31,10 +31,16 @@ from pydantic.fields import FieldInfo
 from pydantic_core import ErrorDetails
 
 from rockcli.errors import InputError
+from rockcli.model.derive import to_block
+from rockcli.model.derived_checks import FINITE_POSITIVE, check_block
 from rockcli.model.rules import RULE_ERROR
 from rockcli.model.schema import Model
 
 Loc = tuple[str | int, ...]
+
+#: Nesting depth at which the line of a file too deeply nested for tomllib is reported (a
+#: model file needs 4 levels; tomllib's recursion runs out near 300 at Python's default limit).
+MAX_NESTING = 100
 
 #: Most problems listed for one file; the others are counted ("and N more").
 MAX_ERRORS = 10
@@ -54,6 +60,7 @@ MAX_VALUE_CHARS = 60
 _TOML_POSITION = re.compile(
     r"^(?P<problem>.*?)\s*\(at (?P<where>line \d+, column \d+|end of document)\)$"
 )
+_QUOTED = re.compile(r'"(?:[^"\\]|\\.)*"|\'[^\']*\'')
 _UNIT = re.compile(r"\[([^\]]+)\]\s*$")
 _BARE_KEY = re.compile(r"^[A-Za-z0-9_-]+$")
 
@@ -120,6 +127,28 @@ def read_toml(file: str) -> dict[str, Any]:
         raise InputError("not UTF-8 text", file=file, where=_position(raw, exc.start)) from None
     except tomllib.TOMLDecodeError as exc:
         raise toml_error(exc, file) from None
+    except RecursionError:
+        raise InputError(
+            "malformed TOML: arrays or tables nested too deep to read",
+            file=file,
+            where=_deep_line(raw.decode("utf-8")),
+            allowed="arrays and inline tables nested a few levels deep (a model needs 4)",
+        ) from None
+
+
+def _deep_line(text: str) -> str | None:
+    """``line N``: the first line where brackets nest deeper than :data:`MAX_NESTING`.
+
+    A scan that skips quoted strings on a line (enough to point at the culprit; tomllib has
+    already refused the file).
+    """
+    depth = 0
+    for number, line in enumerate(text.splitlines(), start=1):
+        for char in _QUOTED.sub("", line).split("#", 1)[0]:
+            depth += (char in "[{") - (char in "]}")
+            if depth > MAX_NESTING:
+                return f"line {number}"
+    return None
 
 
 def _position(raw: bytes, offset: int) -> str:
@@ -153,9 +182,27 @@ def validate_model(data: Mapping[str, Any], file: str | None = None) -> Model:
         InputError: one problem; :class:`InputErrors` (an InputError) for several.
     """
     try:
-        return Model.model_validate(data)
+        model = Model.model_validate(data)
     except ValidationError as exc:
         raise translate_errors(exc.errors(), file) from None
+    check_derived(model, file)
+    return model
+
+
+def check_derived(model: Model, file: str | None = None) -> None:
+    """InputError when the block derived from a valid model is not finite (see
+    :mod:`rockcli.model.derived_checks`)."""
+    try:
+        check_block(to_block(model))
+    except InputError as exc:
+        raise exc.with_file(file) if file else exc from None
+    except ArithmeticError as exc:
+        raise InputError(
+            f"the block's derived quantities cannot be computed ({exc})",
+            file=file,
+            where="geometry, mass, analysis, restrainers",
+            allowed=FINITE_POSITIVE,
+        ) from None
 
 
 def to_toml(model: Model) -> str:

@@ -12,6 +12,22 @@ from typing import Annotated, Any
 from pydantic import BeforeValidator, Field, model_validator
 
 from rockcli.codecheck.categories import Edition, Soil, Topography
+from rockcli.model.bounds import (
+    MAX_BEHAVIOUR_FACTOR,
+    MAX_LENGTH,
+    MAX_MODE_SHAPE,
+    MAX_NOMINAL_LIFE,
+    MAX_PARTICIPATION,
+    MAX_PERIOD,
+    MAX_REACH,
+    MAX_STOREYS,
+    MAX_USE_COEFFICIENT,
+    MAX_WEIGHT,
+    MIN_ELONGATION,
+    MIN_LENGTH,
+    MIN_USE_COEFFICIENT,
+    MIN_WEIGHT,
+)
 from rockcli.model.rules import choose_group, number, rule_error
 from rockcli.model.schema_base import Table
 
@@ -91,12 +107,15 @@ class Load(Table):
     """
 
     name: str | None = Field(None, min_length=1, description="Label")
-    weight: float = number("Weight [kN]", ..., gt=0)
-    height: float = number("Height of its point of application above the pivot [m]", ..., ge=0)
+    weight: float = number("Weight [kN]", ..., ge=MIN_WEIGHT, le=MAX_WEIGHT)
+    height: float = number(
+        "Height of its point of application above the pivot [m]", ..., ge=0, le=MAX_REACH
+    )
     from_pivot: float | None = number(
         "Horizontal distance of its point of application from the pivot, inside the block; "
         "default: the mid-plane b [m]",
         ge=0,
+        le=MAX_REACH,
     )
     bears: bool = Field(
         True,
@@ -123,29 +142,53 @@ class Ntc(Table):
     knowledge_level: KnowledgeLevel | None = Field(
         None, description="'LC1' (FC 1.35), 'LC2' (1.20) or 'LC3' (1.00), instead of FC"
     )
-    q: float = number("Behaviour factor of the linear check; default 2.0 [-]", DEFAULT_Q, ge=1)
+    q: float = number(
+        "Behaviour factor of the linear check; default 2.0 [-]",
+        DEFAULT_Q,
+        ge=1,
+        le=MAX_BEHAVIOUR_FACTOR,
+    )
     soil: Soil = Field(Soil.A, description="Subsoil category A–E; default A")
     topography: Topography = Field(
         Topography.T1, description="Topographic category T1–T4; default T1"
     )
-    VN: float = number("Nominal life VN; default 50 [years]", 50.0, gt=0)
+    VN: float = number("Nominal life VN; default 50 [years]", 50.0, gt=0, le=MAX_NOMINAL_LIFE)
     CU: float = number(
-        "Use coefficient CU (class I 0.7, II 1.0, III 1.5, IV 2.0); default 1 [-]", 1.0, gt=0
+        "Use coefficient CU (class I 0.7, II 1.0, III 1.5, IV 2.0); default 1 [-]",
+        1.0,
+        ge=MIN_USE_COEFFICIENT,
+        le=MAX_USE_COEFFICIENT,
     )
     Z: float = number(
-        "Height of the base of the mechanism above the foundation; 0 on the ground [m]", 0.0, ge=0
+        "Height of the base of the mechanism above the foundation; 0 on the ground [m]",
+        0.0,
+        ge=0,
+        le=MAX_LENGTH,
     )
-    H: float | None = number("Height of the building above the foundation, with Z > 0 [m]", gt=0)
+    H: float | None = number(
+        "Height of the building above the foundation, with Z > 0 [m]",
+        ge=MIN_LENGTH,
+        le=MAX_LENGTH,
+    )
     N: int | None = Field(
-        None, strict=True, ge=1, description="Number of storeys, with Z > 0 (for γ = 3N/(2N+1))"
+        None,
+        strict=True,
+        ge=1,
+        le=MAX_STOREYS,
+        description="Number of storeys, with Z > 0 (for γ = 3N/(2N+1))",
     )
     T1: float | None = number(
         "First period of the building, with Z > 0; default C1·H^0.75 with C1 = 0.05 "
         "(NTC §7.3.3.2) [s]",
         gt=0,
+        le=MAX_PERIOD,
     )
-    gamma: float | None = number("Modal participation factor γ; default 3N/(2N+1) [-]", gt=0)
-    psi: float | None = number("First mode shape ψ(Z); default Z/H [-]", gt=0)
+    gamma: float | None = number(
+        "Modal participation factor γ; default 3N/(2N+1) [-]", gt=0, le=MAX_PARTICIPATION
+    )
+    psi: float | None = number(
+        "First mode shape ψ(Z), 1 at the top; default Z/H [-]", gt=0, le=MAX_MODE_SHAPE
+    )
     mass_distribution: MassDistribution = Field(
         MassDistribution.LUMPED,
         description="'lumped' (weight at the centroid, e* = 1; default) or 'distributed' "
@@ -155,7 +198,8 @@ class Ntc(Table):
         "Displacement of the control point at which a local incompatibility (or, with a "
         "positive global stiffness, the designer's limit) ends the mechanism; caps du* "
         "(2009), d_SLV and d_SLC (2019) [m]",
-        gt=0,
+        ge=MIN_ELONGATION,
+        le=MAX_LENGTH,
     )
     site: Site | None = Field(None, description="Site coordinates, demand from the hazard grid")
     demand: Demand | None = Field(None, description="Spectrum parameters per limit state")
@@ -176,7 +220,11 @@ class Ntc(Table):
 
     def _check_height(self) -> None:
         if self.H is None:
-            raise rule_error("H", "required when Z > 0 (element at height)", "a number > 0 [m]")
+            raise rule_error(
+                "H",
+                "required when Z > 0 (element at height)",
+                f"a number >= {MIN_LENGTH:g} and <= {MAX_LENGTH:g} [m]",
+            )
         if self.Z > self.H:
             raise rule_error(
                 "Z", f"above the building height H = {self.H:g} m", "0 <= Z <= H [m]", self.Z

@@ -30,6 +30,9 @@ VALID: dict[str, Any] = {
     "restrainers": [{"name": "spring", "k": 1e6, "position": "top"}],
 }
 
+#: What a length accepts (rockcli/model/bounds.py: 1 mm to 1 km).
+LENGTH = "a number >= 0.001 and <= 1000 [m]"
+
 Edit = Callable[[dict[str, Any]], object]
 
 
@@ -92,7 +95,7 @@ def test_negative_thickness_exact_line(tmp_path: Path) -> None:
     line = message_for(tmp_path, put("geometry", thickness=-0.5))
     assert line == (
         f"{tmp_path / 'm.toml'}: geometry.thickness: out of range "
-        "(got -0.5; allowed: a number > 0 [m])"
+        "(got -0.5; allowed: a number >= 0.001 and <= 1000 [m])"
     )
 
 
@@ -100,7 +103,7 @@ def test_negative_stiffness_exact_line(tmp_path: Path) -> None:
     line = message_for(tmp_path, restrainer(k_pos=-1.0, k_neg=0.0, position="top"))
     assert line == (
         f"{tmp_path / 'm.toml'}: restrainers[0].k_pos: out of range "
-        "(got -1.0; allowed: a number >= 0 [N/m])"
+        "(got -1.0; allowed: a number >= 0 and <= 1e+12 [N/m])"
     )
 
 
@@ -137,15 +140,23 @@ CASES: list[tuple[str, Edit, list[str]]] = [
     (
         "zero height",
         put("geometry", height=0.0),
-        ["geometry.height", "got 0.0", "a number > 0 [m]"],
+        ["geometry.height", "got 0.0", "a number >= 0.001 and <= 1000 [m]"],
     ),
-    ("negative width", put("geometry", width=-3), ["geometry.width", "got -3", "a number > 0 [m]"]),
+    (
+        "negative width",
+        put("geometry", width=-3),
+        ["geometry.width", "got -3", "a number >= 0.001 and <= 1000 [m]"],
+    ),
     (
         "negative pivot height",
         put("geometry", pivot_height=-1.0),
-        ["geometry.pivot_height", "got -1.0", "a number >= 0 [m]"],
+        ["geometry.pivot_height", "got -1.0", "a number >= 0 and <= 1000 [m]"],
     ),
-    ("zero R", table("geometry", R=0.0, alpha=0.1), ["geometry.R", "got 0.0", "a number > 0 [m]"]),
+    (
+        "zero R",
+        table("geometry", R=0.0, alpha=0.1),
+        ["geometry.R", "got 0.0", "a number >= 0.001 and <= 1000 [m]"],
+    ),
     (
         "alpha zero",
         table("geometry", R=1.0, alpha=0.0),
@@ -189,7 +200,7 @@ CASES: list[tuple[str, Edit, list[str]]] = [
     (
         "unit_weight without width",
         drop("geometry", "width"),
-        ["geometry.width", "required with mass.unit_weight", "a number > 0 [m]"],
+        ["geometry.width", "required with mass.unit_weight", LENGTH],
     ),
     (
         "weight and unit_weight",
@@ -202,7 +213,11 @@ CASES: list[tuple[str, Edit, list[str]]] = [
         ],
     ),
     ("empty mass table", table("mass"), ["mass: missing the weight"]),
-    ("zero weight", table("mass", weight=0), ["mass.weight", "got 0", "a number > 0 [kN]"]),
+    (
+        "zero weight",
+        table("mass", weight=0),
+        ["mass.weight", "got 0", "a number >= 1e-06 and <= 1e+07 [kN]"],
+    ),
     (
         "restrainer without mass",
         drop("mass"),
@@ -292,7 +307,7 @@ CASES: list[tuple[str, Edit, list[str]]] = [
     (
         "number as text",
         put("geometry", thickness="0.5"),
-        ["geometry.thickness", "not a number", "got '0.5'", "a number > 0 [m]"],
+        ["geometry.thickness", "not a number", "got '0.5'", "a number >= 0.001 and <= 1000 [m]"],
     ),
     (
         "boolean as number",
@@ -354,7 +369,7 @@ CASES: list[tuple[str, Edit, list[str]]] = [
     (
         "negative k",
         restrainer(k=-5.0, position="top"),
-        ["restrainers[0].k", "got -5.0", "a number >= 0 [N/m]"],
+        ["restrainers[0].k", "got -5.0", "a number >= 0 and <= 1e+12 [N/m]"],
     ),
     (
         "tie-rod without length",
@@ -374,7 +389,7 @@ CASES: list[tuple[str, Edit, list[str]]] = [
     (
         "zero diameter",
         restrainer(kind="tie-rod", diameter=0.0, length=3.0, position="top"),
-        ["restrainers[0].diameter", "got 0.0", "a number > 0 [m]"],
+        ["restrainers[0].diameter", "got 0.0", "a number >= 0.001 and <= 1000 [m]"],
     ),
     (
         "unknown acts",
@@ -402,7 +417,7 @@ CASES: list[tuple[str, Edit, list[str]]] = [
     (
         "zero radius",
         restrainer(k=1.0, radius=0.0, angle=0.07),
-        ["restrainers[0].radius", "got 0.0", "a number > 0 [m]"],
+        ["restrainers[0].radius", "got 0.0", "a number >= 0.001 and <= 2000 [m]"],
     ),
     (
         "angle above pi/2",
@@ -422,7 +437,7 @@ CASES: list[tuple[str, Edit, list[str]]] = [
     (
         "zero fails_at",
         restrainer(k=1.0, position="top", fails_at=0.0),
-        ["restrainers[0].fails_at", "got 0.0", "a number > 0 [m]"],
+        ["restrainers[0].fails_at", "got 0.0", "a number >= 1e-06 and <= 1000 [m]"],
     ),
     (
         "unknown position",
@@ -466,8 +481,8 @@ def test_every_error_is_reported_one_line_each(tmp_path: Path) -> None:
     path = tmp_path / "m.toml"
     assert lines == [
         f"{path}: kind: unknown value (got 'tower'; allowed: one of: wall, altar, facade)",
-        f"{path}: geometry.thickness: out of range (got -1.0; allowed: a number > 0 [m])",
-        f"{path}: geometry.height: out of range (got -2.0; allowed: a number > 0 [m])",
+        f"{path}: geometry.thickness: out of range (got -1.0; allowed: {LENGTH})",
+        f"{path}: geometry.height: out of range (got -2.0; allowed: {LENGTH})",
     ]
 
 
@@ -626,7 +641,7 @@ def test_error_carries_structured_fields(tmp_path: Path) -> None:
         "f.toml",
         "geometry.thickness",
         -0.5,
-        "a number > 0 [m]",
+        "a number >= 0.001 and <= 1000 [m]",
     )
 
 
