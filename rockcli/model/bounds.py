@@ -20,6 +20,9 @@ MAX_LENGTH = 1e3
 #: Farthest a point of the block can be from its pivot [m]: the diagonal 2R of the largest
 #: block (restrainer radius, height and from_pivot).
 MAX_REACH = 2 * MAX_LENGTH
+#: Most slender block [rad]: α = atan(b/h) of the thinnest, tallest block the lengths allow
+#: (1 mm / 1 km); a subnormal α (5e-324) divided by zero in the kinematic check.
+MIN_SLENDERNESS = MIN_LENGTH / MAX_LENGTH
 #: Smallest elongation at which a restrainer may fail [m]: 1 µm.
 MIN_ELONGATION = 1e-6
 #: Lightest weight [kN]: 1e-6 kN = 1 mN, a block of 0.1 g.
@@ -36,6 +39,14 @@ MAX_STIFFNESS = 1e12
 MIN_MODULUS = 1e6
 #: Stiffest Young's modulus [Pa]: 1.2e12 (diamond).
 MAX_MODULUS = 1.2e12
+#: Smallest spectrum ag [g]: a tenth of the smallest in the NTC hazard grid (0.0089 g at
+#: TR = 30 years); a subnormal ag made the capacity/demand ratio infinite.
+MIN_AG = 1e-3
+#: Shortest spectrum Tc* [s]: a tenth of the smallest in the NTC hazard grid (0.1 s).
+MIN_TC_STAR = 0.01
+#: Smallest modal participation factor γ and mode-shape ordinate ψ [-] accepted: below it
+#: the demand at height underflows.
+MIN_MODAL = 1e-3
 #: Longest nominal life VN [years] (NTC Tab. 2.4.I: at most 100 for strategic works).
 MAX_NOMINAL_LIFE = 1e3
 #: Use coefficient CU [-] (NTC Tab. 2.4.II: 0.7, 1.0, 1.5, 2.0).

@@ -23,8 +23,11 @@ from rockcli.model.bounds import (
     MAX_STOREYS,
     MAX_USE_COEFFICIENT,
     MAX_WEIGHT,
+    MIN_AG,
     MIN_ELONGATION,
     MIN_LENGTH,
+    MIN_MODAL,
+    MIN_TC_STAR,
     MIN_USE_COEFFICIENT,
     MIN_WEIGHT,
 )
@@ -82,10 +85,10 @@ class Site(Table):
 class SpectrumParameters(Table):
     """Spectrum parameters of one limit state, given directly (NTC §3.2, Allegato B)."""
 
-    ag: float = number("Peak ground acceleration on rock ag [g]", ..., gt=0, le=2)
+    ag: float = number("Peak ground acceleration on rock ag [g]", ..., ge=MIN_AG, le=2)
     F0: float = number("Maximum spectral amplification F0 [-]", ..., ge=1.5, le=4)
     Tc_star: float = number(
-        "Period Tc* at the start of the constant-velocity branch [s]", ..., gt=0, le=2
+        "Period Tc* at the start of the constant-velocity branch [s]", ..., ge=MIN_TC_STAR, le=2
     )
 
 
@@ -184,10 +187,12 @@ class Ntc(Table):
         le=MAX_PERIOD,
     )
     gamma: float | None = number(
-        "Modal participation factor γ; default 3N/(2N+1) [-]", gt=0, le=MAX_PARTICIPATION
+        "Modal participation factor γ; default 3N/(2N+1) [-]",
+        ge=MIN_MODAL,
+        le=MAX_PARTICIPATION,
     )
     psi: float | None = number(
-        "First mode shape ψ(Z), 1 at the top; default Z/H [-]", gt=0, le=MAX_MODE_SHAPE
+        "First mode shape ψ(Z), 1 at the top; default Z/H [-]", ge=MIN_MODAL, le=MAX_MODE_SHAPE
     )
     mass_distribution: MassDistribution = Field(
         MassDistribution.LUMPED,
@@ -219,6 +224,13 @@ class Ntc(Table):
         return self
 
     def _check_height(self) -> None:
+        if self.Z < MIN_LENGTH:
+            raise rule_error(
+                "Z",
+                "too small to be a height above the foundation",
+                f"0 on the ground, or a height >= {MIN_LENGTH:g} and <= H [m]",
+                self.Z,
+            )
         if self.H is None:
             raise rule_error(
                 "H",

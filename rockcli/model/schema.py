@@ -30,6 +30,7 @@ from rockcli.model.bounds import (
     MIN_ELONGATION,
     MIN_LENGTH,
     MIN_MODULUS,
+    MIN_SLENDERNESS,
     MIN_UNIT_WEIGHT,
     MIN_WEIGHT,
 )
@@ -117,7 +118,7 @@ class Geometry(Table):
     )
     alpha: float | None = number(
         "Slenderness α = atan(b/h), strictly between 0 and π/2, with R [rad]",
-        gt=0,
+        ge=MIN_SLENDERNESS,
         lt=math.pi / 2,
     )
     thickness: float | None = number(

@@ -147,3 +147,33 @@ def test_rock_kinematic_on_absurd_gravity_exits_2(tmp_path: Path) -> None:
     result = CliRunner().invoke(cli, ["kinematic", str(path)])
     assert result.exit_code == 2, result.output
     assert result.stderr.startswith(f"error: {path}: restrainers[0], mass: the stiffness term")
+
+
+#: Found by the model-fuzz campaign: each loaded on main and crashed `rock kinematic`
+#: (ZeroDivisionError for α = 5e-324; an infinite capacity/demand ratio, then a JSON
+#: ValueError, for ag = 5e-324).
+FUZZ_FOUND = [
+    ({"geometry": {"R": 1.5, "alpha": 5e-324, "width": 3.0}}, "geometry.alpha"),
+    (
+        {"ntc": {"demand": {"SLV": {"ag": 5e-324, "F0": 2.5, "Tc_star": 0.3}}}},
+        "ntc.demand.SLV.ag",
+    ),
+    (
+        {"ntc": {"demand": {"SLV": {"ag": 0.15, "F0": 2.5, "Tc_star": 5e-324}}}},
+        "ntc.demand.SLV.Tc_star",
+    ),
+    ({"ntc": {"Z": 5e-324, "H": 9.0, "N": 3}}, "ntc.Z"),
+    ({"ntc": {"Z": 3.0, "H": 9.0, "N": 3, "psi": 5e-324}}, "ntc.psi"),
+]
+
+
+@pytest.mark.parametrize(("tables", "where"), FUZZ_FOUND, ids=[w for _, w in FUZZ_FOUND])
+def test_subnormal_inputs_found_by_fuzzing_are_refused(
+    tables: dict[str, Any], where: str, tmp_path: Path
+) -> None:
+    path = tmp_path / "m.toml"
+    path.write_text(tomli_w.dumps({**VALID, **tables}), encoding="utf-8")
+    result = CliRunner().invoke(cli, ["kinematic", str(path), "--format", "json"])
+    assert result.exit_code == 2, result.output
+    assert result.stderr.startswith(f"error: {path}: {where}: ")
+    assert "5e-324" in result.stderr

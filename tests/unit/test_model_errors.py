@@ -160,22 +160,22 @@ CASES: list[tuple[str, Edit, list[str]]] = [
     (
         "alpha zero",
         table("geometry", R=1.0, alpha=0.0),
-        ["geometry.alpha", "got 0.0", "a number > 0 and < pi/2 [rad]"],
+        ["geometry.alpha", "got 0.0", "a number >= 1e-06 and < pi/2 [rad]"],
     ),
     (
         "alpha negative",
         table("geometry", R=1.0, alpha=-0.1),
-        ["geometry.alpha", "got -0.1", "a number > 0 and < pi/2 [rad]"],
+        ["geometry.alpha", "got -0.1", "a number >= 1e-06 and < pi/2 [rad]"],
     ),
     (
         "alpha pi/2",
         table("geometry", R=1.0, alpha=math.pi / 2),
-        ["geometry.alpha", f"got {math.pi / 2!r}", "a number > 0 and < pi/2 [rad]"],
+        ["geometry.alpha", f"got {math.pi / 2!r}", "a number >= 1e-06 and < pi/2 [rad]"],
     ),
     (
         "alpha in degrees",
         table("geometry", R=1.0, alpha=9.34),
-        ["geometry.alpha", "got 9.34", "a number > 0 and < pi/2 [rad]"],
+        ["geometry.alpha", "got 9.34", "a number >= 1e-06 and < pi/2 [rad]"],
     ),
     (
         "both geometry forms",
