@@ -686,3 +686,12 @@ def test_not_utf8(tmp_path: Path) -> None:
     with pytest.raises(InputError) as info:
         load_model(path)
     assert str(info.value) == f"{path}: line 2, column 18: not UTF-8 text"
+
+
+def test_several_errors_take_the_file_together() -> None:
+    # A lower layer without the file name (validate_model(data)) hands it on with with_file.
+    with pytest.raises(InputErrors) as info:
+        validate_model({**VALID, "kind": "tower", "name": ""})
+    named = info.value.with_file("m.toml")
+    assert isinstance(named, InputErrors)
+    assert [line.split(": ")[0] for line in str(named).split("\nerror: ")] == ["m.toml"] * 2
