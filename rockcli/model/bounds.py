@@ -55,6 +55,9 @@ MIN_USE_COEFFICIENT, MAX_USE_COEFFICIENT = 0.7, 2.0
 MAX_BEHAVIOUR_FACTOR = 10.0
 #: Most storeys N (the tallest buildings have ~160).
 MAX_STOREYS = 200
+#: Shortest first period T1 given [s] (the stiffest buildings have T1 ≈ 0.05 s); a T1 of
+#: 1e-300 s overflowed the height amplification (T_s/T1)² of the 2009 check.
+MIN_PERIOD = 0.01
 #: Longest first period T1 [s] (NTC spectra are defined to 4 s; a masonry building is < 1 s).
 MAX_PERIOD = 10.0
 #: Largest modal participation factor γ [-] (3N/(2N+1) < 1.5 for any N).

@@ -27,6 +27,7 @@ from rockcli.model.bounds import (
     MIN_ELONGATION,
     MIN_LENGTH,
     MIN_MODAL,
+    MIN_PERIOD,
     MIN_TC_STAR,
     MIN_USE_COEFFICIENT,
     MIN_WEIGHT,
@@ -183,7 +184,7 @@ class Ntc(Table):
     T1: float | None = number(
         "First period of the building, with Z > 0; default C1·H^0.75 with C1 = 0.05 "
         "(NTC §7.3.3.2) [s]",
-        gt=0,
+        ge=MIN_PERIOD,
         le=MAX_PERIOD,
     )
     gamma: float | None = number(

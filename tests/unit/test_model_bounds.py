@@ -151,7 +151,7 @@ def test_rock_kinematic_on_absurd_gravity_exits_2(tmp_path: Path) -> None:
 
 #: Found by the model-fuzz campaign: each loaded on main and crashed `rock kinematic`
 #: (ZeroDivisionError for α = 5e-324; an infinite capacity/demand ratio, then a JSON
-#: ValueError, for ag = 5e-324).
+#: ValueError, for ag = 5e-324; NaN in the JSON for T1 = 5e-324, OverflowError for 1e-300).
 FUZZ_FOUND = [
     ({"geometry": {"R": 1.5, "alpha": 5e-324, "width": 3.0}}, "geometry.alpha"),
     (
@@ -164,6 +164,7 @@ FUZZ_FOUND = [
     ),
     ({"ntc": {"Z": 5e-324, "H": 9.0, "N": 3}}, "ntc.Z"),
     ({"ntc": {"Z": 3.0, "H": 9.0, "N": 3, "psi": 5e-324}}, "ntc.psi"),
+    ({"ntc": {"Z": 3.0, "H": 9.0, "N": 3, "T1": 5e-324}}, "ntc.T1"),
 ]
 
 
