@@ -101,6 +101,14 @@ class InputErrors(InputError):
         """The same errors, each naming the file."""
         return InputErrors([err.with_file(file) for err in self.errors], more=self.more)
 
+    def __reduce__(self) -> tuple[Any, ...]:
+        """Pickle by the errors (a sweep worker's exception crosses a process boundary)."""
+        return _input_errors, (self.errors, self.more)
+
+
+def _input_errors(errors: Sequence[InputError], more: int) -> InputErrors:
+    return InputErrors(errors, more=more)
+
 
 def load_model(path: str | os.PathLike[str]) -> Model:
     """Read, parse and validate a model file.

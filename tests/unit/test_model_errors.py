@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import copy
 import math
+import pickle
 from collections.abc import Callable
 from pathlib import Path
 from typing import Any
@@ -695,3 +696,14 @@ def test_several_errors_take_the_file_together() -> None:
     named = info.value.with_file("m.toml")
     assert isinstance(named, InputErrors)
     assert [line.split(": ")[0] for line in str(named).split("\nerror: ")] == ["m.toml"] * 2
+
+
+def test_several_errors_survive_pickling() -> None:
+    # Sweep workers send exceptions between processes; main's InputError pickles, and so must
+    # the several-error form (its constructor takes a list, not the rendered text).
+    with pytest.raises(InputErrors) as info:
+        validate_model({**VALID, "kind": "tower", "name": ""}, file="m.toml")
+    copy_ = pickle.loads(pickle.dumps(info.value))
+    assert isinstance(copy_, InputErrors)
+    assert str(copy_) == str(info.value)
+    assert copy_.where == "name"
