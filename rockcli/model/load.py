@@ -50,9 +50,6 @@ MAX_ERRORS = 10
 #: while ``thikness`` → ``thickness`` (0.94) and ``geometri`` → ``geometry`` (0.88) pass.
 NEAR_MISS = 0.75
 
-#: Separator of the lines of several errors: the CLI prints ``error: {exc}``, so each line
-#: after the first carries the same prefix as the first.
-ERROR_LINE_SEPARATOR = "\nerror: "
 
 #: Longest value quoted back in a message [characters].
 MAX_VALUE_CHARS = 60
@@ -69,8 +66,8 @@ class InputErrors(InputError):
     """Several problems in one input: one :class:`InputError` line each, at most ten shown.
 
     The first problem's fields are this error's own (callers that read ``where`` or
-    ``problem`` see the first); ``str()`` gives one line per problem, the lines after the
-    first prefixed ``error: `` like the first (the CLI prints ``error: {exc}``).
+    ``problem`` see the first); :attr:`lines` holds one line per problem, which the CLI prints
+    each as its own ``error: …`` line; ``str()`` joins them with line breaks.
 
     Args:
         errors: the problems shown, in the order found (at least two).
@@ -89,13 +86,18 @@ class InputErrors(InputError):
             allowed=first.allowed,
         )
 
-    def render(self) -> str:
+    @property
+    def lines(self) -> tuple[str, ...]:
         """One line per problem, then ``and N more problems`` when some were not shown."""
         lines = [err.render() for err in self.errors]
         if self.more:
             head = f"{self.errors[0].file}: " if self.errors[0].file else ""
             lines.append(f"{head}and {self.more} more problems (fix these and run again)")
-        return ERROR_LINE_SEPARATOR.join(lines)
+        return tuple(lines)
+
+    def render(self) -> str:
+        """The lines, joined by line breaks."""
+        return "\n".join(self.lines)
 
     def with_file(self, file: str) -> InputError:
         """The same errors, each naming the file."""

@@ -23,7 +23,7 @@ from hypothesis import strategies as st
 from rockcli.errors import InputError
 from rockcli.model.derive import describe, to_block
 from rockcli.model.derived_checks import check_block
-from rockcli.model.load import ERROR_LINE_SEPARATOR, MAX_ERRORS, load_model
+from rockcli.model.load import MAX_ERRORS, load_model
 from rockcli.model.plausible import model_warnings
 from rockcli.model.template import TEMPLATES
 
@@ -114,7 +114,7 @@ def check_load(path: Path) -> None:
     try:
         model = load_model(path)
     except InputError as exc:
-        lines = str(exc).split(ERROR_LINE_SEPARATOR)
+        lines = getattr(exc, "lines", None) or (str(exc),)
         assert 1 <= len(lines) <= MAX_ERRORS + 1
         assert all(line.startswith(f"{path}: ") and "\n" not in line for line in lines), lines
         return
