@@ -66,7 +66,9 @@ class RockGroup(click.Group):
             sys.stdout.flush()  # a closed pipe shows here, inside the handler, not at exit
             return result
         except RockError as exc:
-            click.echo(f"error: {printable(str(exc))}", err=True)
+            # Several problems of one file (rockcli.model.load.InputErrors): one line each.
+            for line in getattr(exc, "lines", None) or (str(exc),):
+                click.echo(f"error: {printable(line)}", err=True)
             ctx.exit(EXIT_INPUT)
         except BrokenPipeError:
             quiet_broken_pipe()
