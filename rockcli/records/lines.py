@@ -109,7 +109,11 @@ def number_shape(token: str) -> Shape:
     Fixed-format files print every value with the same shape (``.9459335E-03``: 7 and 2); a
     value cut at the end of the file has fewer of either (``.9459335E-0``: 7 and 1).
     """
-    found = _NUMBER.fullmatch(token)
+    return _shape(_NUMBER.fullmatch(token))
+
+
+def _shape(found: re.Match[str] | None) -> Shape:
+    """The shape of a matched number token ((0, 0) for no match)."""
     if found is None:
         return (0, 0)
     fraction = found.group("frac") or found.group("bare") or ""
@@ -230,16 +234,21 @@ def read_tokens(
     """
     values: list[float] = []
     tokens: list[str] = []
+    shapes: list[Shape] = []
     last_line = first_line
     for number, line in enumerate(lines, start=first_line):
-        where = f"line {number}"
         for token in split(line):
-            values.append(parse_number(token, file=file, where=where))
+            found = _NUMBER.fullmatch(token)
+            value = float(token) if found else math.nan
+            if not math.isfinite(value):
+                parse_number(token, file=file, where=f"line {number}")  # raises, naming it
+            values.append(value)
             tokens.append(token)
+            shapes.append(_shape(found))
             last_line = number
     unterminated = bool(lines) and bool(lines[-1].strip())
     check_last_number(
-        [number_shape(token) for token in tokens],
+        shapes,
         unterminated=unterminated,
         file=file,
         where=f"line {last_line}",
@@ -347,8 +356,10 @@ def check_time_axis(time: np.ndarray, *, file: str) -> None:
         )
 
 
-def check_accel(accel: np.ndarray, time: np.ndarray, *, file: str, unit: str) -> None:
-    """|a| ≤ MAX_ABS_ACCEL_G, and finite (a sum of unit factors can overflow)."""
+def check_accel(
+    accel: np.ndarray, time: np.ndarray, *, file: str, unit: str, plain: bool = False
+) -> None:
+    """|a| ≤ MAX_ABS_ACCEL_G (NaN fails too); the message names the likely fix."""
     bad = ~(np.abs(accel) <= MAX_ABS_ACCEL_G)
     if bad.any():
         index = int(np.argmax(bad))
@@ -357,7 +368,8 @@ def check_accel(accel: np.ndarray, time: np.ndarray, *, file: str, unit: str) ->
             file=file,
             where=f"sample {index + 1} (t = {float(time[index]):g} s)",
             value=f"{float(accel[index]):.6g} g (read as {unit})",
-            allowed=f"|a| ≤ {MAX_ABS_ACCEL_G:g} g",
+            allowed=f"|a| ≤ {MAX_ABS_ACCEL_G:g} g; "
+            + ("check --units" if plain else "check the unit the file's header declares"),
         )
 
 
@@ -376,8 +388,8 @@ def pga_warnings(accel: np.ndarray, *, unit: str, plain: bool) -> tuple[str, ...
 def finish_record(record: Record) -> Record:
     """Check a record just read (time axis, bounded accelerations) and add its warnings."""
     check_time_axis(record.time, file=record.source)
-    check_accel(record.accel, record.time, file=record.source, unit=record.unit)
     plain = record.format == "plain"
+    check_accel(record.accel, record.time, file=record.source, unit=record.unit, plain=plain)
     warnings = pga_warnings(record.accel, unit=record.unit, plain=plain)
     return replace(record, warnings=(*record.warnings, *warnings)) if warnings else record
 
