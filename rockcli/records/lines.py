@@ -48,6 +48,9 @@ PLAUSIBLE_PGA_G = 3.0
 MIN_DT = 1e-9
 #: Most samples a transformation or a pulse may produce (80 MB of floats per array).
 MAX_SAMPLES = 10_000_000
+#: Numbers of one shape needed before a file counts as fixed-format (a coincidence in a
+#: free-form file becomes unlikely; real fixed-format records hold thousands).
+MIN_FORMAT_EVIDENCE = 8
 #: Relative slack of a float parsed from a decimal (a few ulp of a double, rounded up).
 PARSE_RTOL = 1e-9
 #: Digits of the longest sample count read (a larger count cannot match any file's data).
@@ -126,42 +129,38 @@ def check_last_number(
     """Refuse a last number that may have been cut off by a truncated file.
 
     A truncated file ends inside its last number (``head -c -2`` turns ``.9459335E-03`` into
-    ``.9459335E-0``, read as 0.946). Two rules catch it:
-
-    * when every other number of the column has one shape (a fixed format), the last one may
-      not be shorter (fewer decimals or exponent digits);
-    * when the numbers have no fixed shape (free-form text), the last line must end with a
-      line break, because a cut there cannot be told from a complete value.
-
-    A file whose last line lacks its line break is accepted when its numbers have a fixed
-    shape and the last one has it (the Peknold El Centro file ends that way).
+    ``.9459335E-0``, read as 0.946), and so without a line break after it. A last line that
+    ends with its line break was finished by its writer: nothing to check. A last line
+    without one is accepted only when the file has a fixed format, MIN_FORMAT_EVIDENCE or
+    more other numbers of the column sharing one shape, and the last number has that shape
+    too (the Peknold El Centro file ends so); otherwise it is an error: "shorter than the
+    others" when the format is fixed, "no line break" when the numbers are free-form.
     """
-    if not shapes:
+    if not unterminated or not shapes:
         return
     *others, last = shapes
     common = set(others)
-    if len(common) == 1:
+    if len(others) >= MIN_FORMAT_EVIDENCE and len(common) == 1:
         (expected,) = common
-        if last[0] < expected[0] or last[1] < expected[1]:
-            raise InputError(
-                "the last number is shorter than every other number in the file "
-                "(the file looks cut off)",
-                file=file,
-                where=where,
-                value=token,
-                allowed=f"{expected[0]} decimals"
-                + (f" and a {expected[1]}-digit exponent" if expected[1] else "")
-                + " like the other values; a complete file",
-            )
-        return
-    if unterminated:
+        if last[0] >= expected[0] and last[1] >= expected[1]:
+            return
         raise InputError(
-            "the last line has no line break, so its last number may be cut off",
+            "the last number is shorter than every other number in the file "
+            "(the file looks cut off)",
             file=file,
             where=where,
             value=token,
-            allowed="a complete file whose last line ends with a line break",
+            allowed=f"{expected[0]} decimals"
+            + (f" and a {expected[1]}-digit exponent" if expected[1] else "")
+            + " like the other values; a complete file",
         )
+    raise InputError(
+        "the last line has no line break, so its last number may be cut off",
+        file=file,
+        where=where,
+        value=token,
+        allowed="a complete file whose last line ends with a line break",
+    )
 
 
 def parse_count(token: str, *, file: str, where: str) -> int:

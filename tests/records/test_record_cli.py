@@ -107,3 +107,23 @@ def test_record_command_module_does_not_import_numpy() -> None:
     probe = "import sys, rockcli.cli.record; print('numpy' in sys.modules)"
     done = subprocess.run([sys.executable, "-c", probe], capture_output=True, text=True, check=True)
     assert done.stdout.strip() == "False"
+
+
+def test_info_takes_several_files(shared_records: Path) -> None:
+    files = [str(shared_records / n) for n in ("ELC180.AT2", "ESM_GREECE2019_HL.DLFA.HNE.ASC")]
+    code, out, _ = run("record", "info", *files)
+    assert code == 0
+    assert "Record ELC180" in out and "Record ESM_GREECE2019_HL.DLFA.HNE" in out
+    assert "EL CENTRO ARRAY #9" in out and "HL.DLFA" in out and "HNE" in out
+    code, out, _ = run("record", "info", *files, "--format", "json")
+    names = [rec["name"] for rec in json.loads(out)["records"]]
+    assert names == ["ELC180", "ESM_GREECE2019_HL.DLFA.HNE"]
+
+
+def test_info_shows_warnings_under_the_table(write_file: Callable[[str, str], Path]) -> None:
+    path = write_file("ms2.txt", "0 24.5\n0.01 -12\n0.02 1.2\n")  # m/s² values read as g
+    code, out, _ = run("record", "info", str(path))
+    assert code == 0 and "warning: PGA 24.5 g" in out.replace("\n", " ")
+    code, out, _ = run("record", "info", str(path), "--format", "json")
+    (data,) = json.loads(out)["records"]
+    assert len(data["warnings"]) == 1 and "check --units" in data["warnings"][0]

@@ -124,9 +124,20 @@ def test_at2_last_token_shorter_than_the_others() -> None:
 
 
 def test_at2_complete_file_without_final_line_break_is_read() -> None:
-    """The Peknold El Centro file ends without a line break: a full last number is fine."""
-    record = parse_text(AT2_HEAD + AT2_LINE4 + AT2_VALUES[:-1])
-    assert record.accel[-1] == 9.459335e-4
+    """The Peknold El Centro file ends without a line break: a full last number is fine when
+    the file has a fixed format (MIN_FORMAT_EVIDENCE numbers of one shape before it)."""
+    values = AT2_VALUES.replace("\n   .6876502E-02", "   .6876502E-02\n") * 2
+    head = AT2_HEAD + AT2_LINE4.replace("7", "14")
+    record = parse_text(head + values[:-1])
+    assert record.npts == 14 and record.accel[-1] == 9.459335e-4
+    assert error_of(head + values[:-3]).value == ".9459335E-"  # not even a number
+    assert "shorter" in error_of(head + values[:-2]).problem
+
+
+def test_short_file_without_final_line_break_is_refused() -> None:
+    """7 numbers are too few to prove a fixed format: the line break must be there."""
+    err = error_of(AT2_HEAD + AT2_LINE4 + AT2_VALUES[:-1])
+    assert "no line break" in err.problem
 
 
 def test_esm_cut_last_value() -> None:
