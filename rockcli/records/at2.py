@@ -15,6 +15,7 @@ import re
 from rockcli.errors import InputError
 from rockcli.records.kinds import RecordFormat
 from rockcli.records.lines import (
+    Origin,
     check_count,
     check_dt,
     is_number,
@@ -173,7 +174,7 @@ def _read_npts_dt(lines: list[str], *, file: str) -> tuple[int, float, tuple[str
     return npts, check_dt(dt, file=file, where=f"{where} (DT)"), notes
 
 
-def read_origin(lines: list[str]) -> dict[str, str]:
+def read_origin(lines: list[str]) -> Origin:
     """Event, station and component of a PEER line 2 (``EVENT, DATE, STATION, COMP``).
 
     PEER and Pacific Engineering files (line 1 says so) write line 2 as comma-separated
@@ -181,15 +182,11 @@ def read_origin(lines: list[str]) -> dict[str, str]:
     component is its first word). Other files (the Peknold text) have free text: nothing.
     """
     if len(lines) < EVENT_LINE or not _PEER_TITLE.match(_head(lines[0])):
-        return {}
+        return Origin()
     parts = [part.strip() for part in _head(lines[EVENT_LINE - 1]).split(",")]
     if len(parts) < 3 or not parts[-1]:
-        return {}
-    return {
-        "event": ", ".join(parts[:-2]),
-        "station": parts[-2],
-        "component": parts[-1].split()[0],
-    }
+        return Origin()
+    return Origin(", ".join(parts[:-2]), parts[-2], parts[-1].split()[0])
 
 
 def parse_at2(text: str, *, name: str = "record", source: str = "<text>") -> Record:
@@ -217,5 +214,5 @@ def parse_at2(text: str, *, name: str = "record", source: str = "<text>") -> Rec
         name=name,
         source=source,
         notes=notes,
-        **read_origin(lines),
+        origin=read_origin(lines),
     )

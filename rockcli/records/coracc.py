@@ -15,6 +15,7 @@ from functools import partial
 from rockcli.errors import InputError
 from rockcli.records.kinds import RecordFormat
 from rockcli.records.lines import (
+    Origin,
     check_count,
     check_declared_pga,
     check_dt,
@@ -41,12 +42,8 @@ _ACCEL_UNIT = re.compile(r"\b(cm|m)\s*/\s*s(?:\s*/\s*s|\s*\^\s*2|2|²|\*\*2)", r
 _GAL = re.compile(r"\bgal\b", re.IGNORECASE)
 UNITS = {"m": AccelUnit.M_S2, "cm": AccelUnit.CM_S2}
 MAX_HEADER_CHARS = 200
-#: Header labels that name the record: event, station, component.
-ORIGIN_LABELS = {
-    "event": "event date & time",
-    "station": "station code / name",
-    "component": "orientation",
-}
+#: Header labels that name the record: event, station, component (in Origin's order).
+ORIGIN_LABELS = ("event date & time", "station code / name", "orientation")
 
 
 def read_header(lines: list[str]) -> dict[str, str]:
@@ -140,7 +137,7 @@ def parse_coracc(text: str, *, name: str = "record", source: str = "<text>") -> 
     pga = _pga_entry(header)
     if pga is not None:
         check_declared_pga(values, tokens, pga[1], file=source, where=pga[0].capitalize())
-    origin = {key: header.get(label, "")[:MAX_HEADER_CHARS] for key, label in ORIGIN_LABELS.items()}
+    origin = Origin(*(header.get(label, "")[:MAX_HEADER_CHARS] for label in ORIGIN_LABELS))
     return uniform_record(
         values,
         dt=dt,
@@ -149,5 +146,5 @@ def parse_coracc(text: str, *, name: str = "record", source: str = "<text>") -> 
         name=name,
         source=source,
         notes=notes,
-        **origin,
+        origin=origin,
     )

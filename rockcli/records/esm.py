@@ -12,6 +12,7 @@ from __future__ import annotations
 from rockcli.errors import InputError
 from rockcli.records.kinds import RecordFormat
 from rockcli.records.lines import (
+    Origin,
     check_count,
     check_declared_pga,
     check_dt,
@@ -48,15 +49,12 @@ def _is_numeric(line: str) -> bool:
     return bool(tokens) and is_number(tokens[0])
 
 
-def read_origin(header: dict[str, str]) -> dict[str, str]:
+def read_origin(header: dict[str, str]) -> Origin:
     """Event (name and date), station (``NETWORK.STATION_CODE``) and component (STREAM)."""
     event = " ".join(x for x in (header.get("EVENT_NAME"), header.get("EVENT_DATE_YYYYMMDD")) if x)
     station = ".".join(x for x in (header.get("NETWORK"), header.get("STATION_CODE")) if x)
-    return {
-        "event": event[:MAX_HEADER_CHARS],
-        "station": station[:MAX_HEADER_CHARS],
-        "component": header.get("STREAM", "")[:MAX_HEADER_CHARS],
-    }
+    stream = header.get("STREAM", "")
+    return Origin(event[:MAX_HEADER_CHARS], station[:MAX_HEADER_CHARS], stream[:MAX_HEADER_CHARS])
 
 
 def looks_like_esm(lines: list[str]) -> bool:
@@ -142,5 +140,5 @@ def parse_esm(text: str, *, name: str = "record", source: str = "<text>") -> Rec
         fmt=RecordFormat.ESM,
         name=name,
         source=source,
-        **read_origin(header),
+        origin=read_origin(header),
     )

@@ -8,9 +8,10 @@ from __future__ import annotations
 
 import math
 import re
-from decimal import Decimal
-from collections.abc import Callable, Iterable
+from collections.abc import Callable
 from dataclasses import replace
+from decimal import Decimal
+from typing import NamedTuple
 
 import numpy as np
 
@@ -393,6 +394,14 @@ def finish_record(record: Record) -> Record:
     return replace(record, warnings=(*record.warnings, *warnings)) if warnings else record
 
 
+class Origin(NamedTuple):
+    """What a record's header says it is: the event, the station and the component."""
+
+    event: str = ""
+    station: str = ""
+    component: str = ""
+
+
 def uniform_record(
     values: np.ndarray,
     *,
@@ -402,12 +411,13 @@ def uniform_record(
     name: str,
     source: str,
     notes: tuple[str, ...] = (),
-    **header: str,
+    origin: Origin | None = None,
 ) -> Record:
     """A checked Record sampled at t = i·dt, with values converted from ``unit`` to g.
 
-    ``header`` holds the event, station and component the file names, when it does.
+    ``origin`` holds the event, station and component the file's header names, if any.
     """
+    origin = origin or Origin()
     with np.errstate(over="ignore", invalid="ignore"):
         time = np.arange(values.size) * dt
         accel = values * unit.to_g
@@ -421,6 +431,8 @@ def uniform_record(
             dt=dt,
             unit=str(unit),
             notes=notes,
-            **header,
+            event=origin.event,
+            station=origin.station,
+            component=origin.component,
         )
     )

@@ -309,4 +309,3 @@ def format_plain(record: Record) -> str:
     times = time_strings(record)
     body = (f"{t} {float(a)!r}" for t, a in zip(times, record.accel, strict=True))
     return "\n".join([*header, *body]) + "\n"
-

@@ -6,7 +6,6 @@ and raises InputError for a bad argument.
 
 from __future__ import annotations
 
-import math
 from dataclasses import replace
 from typing import Any
 

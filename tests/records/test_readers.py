@@ -96,7 +96,9 @@ CORACC_HEAD = (
 def test_coracc_touching_negatives_are_sliced() -> None:
     """spec/records.md: "negative numbers touch (-3.99E-09-4.00E-09): slice, don't split"."""
     # ends with its line break: 6 numbers are too few to prove a fixed format without one
-    data = "-4.0760000E-09-4.0940000E-09 2.1491800E-07-4.1290000E-09-4.1470000E-09\n-1.0000000E+00\n"
+    data = (
+        "-4.0760000E-09-4.0940000E-09 2.1491800E-07-4.1290000E-09-4.1470000E-09\n-1.0000000E+00\n"
+    )
     record = parse_text(CORACC_HEAD.format(n=6) + data)
     assert record.format == "coracc"
     expected_m_s2 = [-4.076e-9, -4.094e-9, 2.149180e-7, -4.129e-9, -4.147e-9, -1.0]
