@@ -44,15 +44,16 @@ Shape = tuple[int, int]
 MAX_ABS_ACCEL_G = 100.0
 #: Above this PGA [g] a record is implausible (a unit slip is likelier): it gets a warning.
 PLAUSIBLE_PGA_G = 3.0
-#: Smallest time step [s] a record may declare (1 GHz): below it the step is not a sampling
-#: interval but a damaged header, and 1/dt leaves the range the engines are built for.
+#: Smallest time step [s] a record may declare (1 GHz): accelerographs sample at 50–1000 Hz,
+#: so a smaller step is a damaged header (DT = 1e-320 would pass "dt > 0"), not a record.
 MIN_DT = 1e-9
 #: Most samples a transformation or a pulse may produce (80 MB of floats per array).
 MAX_SAMPLES = 10_000_000
 #: Numbers of one shape needed before a file counts as fixed-format (a coincidence in a
 #: free-form file becomes unlikely; real fixed-format records hold thousands).
 MIN_FORMAT_EVIDENCE = 8
-#: Relative slack of a float parsed from a decimal (a few ulp of a double, rounded up).
+#: Relative slack of the PGA cross-check for the float parse and the unit factor: far above
+#: double rounding (1e-16), far below any printed digit (8 significant digits: 1e-8).
 PARSE_RTOL = 1e-9
 #: Digits of the longest sample count read (a larger count cannot match any file's data).
 MAX_COUNT_DIGITS = 12
