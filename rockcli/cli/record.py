@@ -9,16 +9,38 @@ from __future__ import annotations
 
 import click
 
-from rockcli.cli.options import output_format, plain_dt, plain_units, record_format
+from rockcli.cli.options import (
+    announce_written,
+    force_option,
+    output_format,
+    plain_dt,
+    plain_units,
+    record_format,
+)
 from rockcli.records.kinds import PulseKind
 
 plain_output = click.option(
     "-o",
     "--output",
-    type=click.Path(dir_okay=False),
+    type=click.Path(dir_okay=False, allow_dash=True),
     required=True,
-    help="Plain-text file to write (time [s], acceleration [g]).",
+    help="Plain-text file to write (time [s], acceleration [g]); '-' writes to stdout.",
 )
+
+
+def _write_record(rec, output: str, detail: str) -> None:
+    """Write the record to ``output`` (or stdout for ``-``); warnings and "wrote" on stderr."""
+    from rockcli import outfile
+    from rockcli.records.files import write_plain
+    from rockcli.records.plain import format_plain
+
+    for warning in rec.warnings:
+        click.echo(f"warning: {warning}", err=True)
+    if outfile.is_stdout(output):
+        click.echo(format_plain(rec), nl=False)
+        return
+    write_plain(rec, output, where="--output")
+    announce_written(output, detail)
 
 
 @click.group()
@@ -27,21 +49,29 @@ def record() -> None:
 
 
 @record.command("info")
-@click.argument("file", type=click.Path())
+@click.argument("files", nargs=-1, required=True, type=click.Path())
 @record_format
 @plain_dt
 @plain_units
 @output_format
 def info(
-    file: str, record_format: str | None, dt: float | None, units: str | None, output: str
+    files: tuple[str, ...],
+    record_format: str | None,
+    dt: float | None,
+    units: str | None,
+    output: str,
 ) -> None:
-    """Format, samples, dt, duration and PGA of a record FILE (AT2, ESM, cor.acc, plain)."""
+    """Format, header names, samples, dt, duration and PGA of record FILES.
+
+    Reads AT2, ESM, cor.acc and plain text; one table per file, with the event, station and
+    component when the file's header names them, then each record's warnings and notes.
+    """
     from rockcli.records.files import read_record
-    from rockcli.report.records import info_document, record_report
+    from rockcli.report.records import info_document, info_report
     from rockcli.report.table import show
 
-    doc = info_document(read_record(file, fmt=record_format, dt=dt, units=units))
-    show(doc, output, record_report)
+    records = [read_record(file, fmt=record_format, dt=dt, units=units) for file in files]
+    show(info_document(records), output, info_report)
 
 
 def _window(value: str | None) -> tuple[float, float] | None:
@@ -84,6 +114,7 @@ def _window(value: str | None) -> tuple[float, float] | None:
     help="Resample to this time step [s] (linear interpolation).",
 )
 @plain_output
+@force_option
 def convert(
     file: str,
     record_format: str | None,
@@ -95,28 +126,43 @@ def convert(
     window: str | None,
     new_dt: float | None,
     output: str,
+    force: bool,
 ) -> None:
     """Read a record FILE, transform it and write it as two-column plain text in g.
 
     The transformations apply in this order: trim, resample, scale or scale to a PGA, flip;
-    each is noted in the file's header.
+    each is noted in the file's header. A resampling that lowers the PGA by more than 0.1 %
+    warns (on stderr and in the file's header).
     """
+    from rockcli import outfile
     from rockcli.cli.options import load_record, scale_record
     from rockcli.records import transform
-    from rockcli.records.files import write_plain
 
+    outfile.check_writable(output, force=force, where="--output")
     rec = load_record(file, record_format, dt, units, None, None)
     span = _window(window)
     if span is not None:
         rec = transform.trim(rec, *span)
     if new_dt is not None:
-        rec = transform.resample(rec, new_dt)
+        rec = _resample(rec, new_dt)
     if scale is not None or pga is not None:
         rec = scale_record(rec, scale, pga)
     if flip:
         rec = transform.flip(rec)
-    write_plain(rec, output)
-    click.echo(f"wrote {output}: {rec.npts} samples, dt = {rec.dt:g} s, PGA {rec.pga:.4g} g")
+    _write_record(rec, output, f"{rec.npts} samples, dt = {rec.dt:g} s, PGA {rec.pga:.4g} g")
+
+
+def _resample(rec, new_dt: float):
+    """transform.resample, its errors naming --resample."""
+    from rockcli.errors import InputError
+    from rockcli.records import transform
+
+    try:
+        return transform.resample(rec, new_dt)
+    except InputError as exc:
+        raise InputError(
+            exc.problem, file=exc.file, where="--resample", value=exc.value, allowed=exc.allowed
+        ) from None
 
 
 @record.command("pulse")
@@ -137,13 +183,20 @@ def convert(
     help="Total duration [s], zeros after the pulse (default: the pulse alone).",
 )
 @plain_output
+@force_option
 def pulse(
-    kind: str, amplitude: float, period: float, dt: float, duration: float | None, output: str
+    kind: str,
+    amplitude: float,
+    period: float,
+    dt: float,
+    duration: float | None,
+    output: str,
+    force: bool,
 ) -> None:
     """Write a synthetic pulse KIND as a two-column plain-text record."""
-    from rockcli.records.files import write_plain
+    from rockcli import outfile
     from rockcli.records.pulses import make_pulse
 
+    outfile.check_writable(output, force=force, where="--output")
     rec = make_pulse(kind, amplitude, period, dt=dt, total=duration)
-    write_plain(rec, output)
-    click.echo(f"wrote {output}: {rec.name}, {rec.npts} samples, dt = {rec.dt:g} s")
+    _write_record(rec, output, f"{rec.name}, {rec.npts} samples, dt = {rec.dt:g} s")

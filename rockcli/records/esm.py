@@ -12,16 +12,19 @@ from __future__ import annotations
 from rockcli.errors import InputError
 from rockcli.records.kinds import RecordFormat
 from rockcli.records.lines import (
+    Origin,
     check_count,
+    check_declared_pga,
     check_dt,
+    is_number,
     parse_count,
     parse_number,
-    read_values,
+    read_tokens,
     split_lines,
     uniform_record,
 )
 from rockcli.records.record import Record
-from rockcli.units import parse_unit
+from rockcli.units import AccelUnit, parse_unit
 
 FIRST_KEYS = ("EVENT_NAME", "EVENT_ID")
 DT_KEY = "SAMPLING_INTERVAL_S"
@@ -30,14 +33,28 @@ UNITS_KEY = "UNITS"
 DATA_TYPE_KEY = "DATA_TYPE"
 
 
+#: The header's PGA, in cm/s² whatever UNITS says (signed: the peak sample's sign).
+PGA_KEY = "PGA_CM/S^2"
+#: Longest header value shown (event, station, component) [characters].
+MAX_HEADER_CHARS = 200
+
+
 def _is_numeric(line: str) -> bool:
-    """True for a data line: one or more blank-separated numbers (NaN included)."""
-    tokens = line.split()
-    try:
-        [float(token) for token in tokens]
-    except ValueError:
-        return False
-    return bool(tokens)
+    """True for a data line: one or more blank-separated tokens, the first a number.
+
+    Only the first token decides (a damaged value further on is the reader's error, named
+    by its line, not a header line).
+    """
+    tokens = line.split(maxsplit=1)
+    return bool(tokens) and is_number(tokens[0])
+
+
+def read_origin(header: dict[str, str]) -> Origin:
+    """Event (name and date), station (``NETWORK.STATION_CODE``) and component (STREAM)."""
+    event = " ".join(x for x in (header.get("EVENT_NAME"), header.get("EVENT_DATE_YYYYMMDD")) if x)
+    station = ".".join(x for x in (header.get("NETWORK"), header.get("STATION_CODE")) if x)
+    stream = header.get("STREAM", "")
+    return Origin(event[:MAX_HEADER_CHARS], station[:MAX_HEADER_CHARS], stream[:MAX_HEADER_CHARS])
 
 
 def looks_like_esm(lines: list[str]) -> bool:
@@ -109,6 +126,19 @@ def parse_esm(text: str, *, name: str = "record", source: str = "<text>") -> Rec
     dt = check_dt(parse_number(dt_text, file=source, where=DT_KEY), file=source, where=DT_KEY)
     count = parse_count(_header_value(header, COUNT_KEY, file=source), file=source, where=COUNT_KEY)
     unit = parse_unit(_header_value(header, UNITS_KEY, file=source), file=source, where=UNITS_KEY)
-    values = read_values(lines[start:], first_line=start + 1, file=source)
+    values, tokens = read_tokens(lines[start:], first_line=start + 1, file=source)
     check_count(values, count, file=source, where=COUNT_KEY)
-    return uniform_record(values, dt=dt, unit=unit, fmt=RecordFormat.ESM, name=name, source=source)
+    if header.get(PGA_KEY):
+        to_cm = unit.to_g / AccelUnit.CM_S2.to_g
+        check_declared_pga(
+            values, tokens, header[PGA_KEY], file=source, where=PGA_KEY, to_declared=to_cm
+        )
+    return uniform_record(
+        values,
+        dt=dt,
+        unit=unit,
+        fmt=RecordFormat.ESM,
+        name=name,
+        source=source,
+        origin=read_origin(header),
+    )

@@ -8,8 +8,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from rockcli import textfile
-from rockcli.errors import InputError
+from rockcli import outfile, textfile
 from rockcli.records.kinds import RecordFormat
 from rockcli.records.parse import parse_text
 from rockcli.records.plain import format_plain
@@ -60,14 +59,10 @@ def read_record(
     )
 
 
-def write_plain(record: Record, path: str | Path) -> None:
-    """Write a record as two-column plain text that :func:`read_record` reads back exactly."""
-    try:
-        Path(path).write_text(format_plain(record), encoding="utf-8")
-    except OSError as exc:
-        raise InputError(
-            "cannot write the record file",
-            file=str(path),
-            value=exc.strerror,
-            allowed="a writable path",
-        ) from None
+def write_plain(record: Record, path: str | Path, *, where: str | None = None) -> None:
+    """Write a record as two-column plain text that :func:`read_record` reads back.
+
+    Atomically, without following a symlink at the target (:func:`rockcli.outfile.write_text`);
+    the overwrite policy is the caller's (:func:`rockcli.outfile.check_writable`, first).
+    """
+    outfile.write_text(path, format_plain(record), where=where)

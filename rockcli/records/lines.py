@@ -7,7 +7,11 @@ tokens that are not numbers, NaN/inf, the declared count, dt > 0. Nothing is tru
 from __future__ import annotations
 
 import math
-from collections.abc import Callable, Iterable
+import re
+from collections.abc import Callable
+from dataclasses import replace
+from decimal import Decimal
+from typing import NamedTuple
 
 import numpy as np
 
@@ -20,6 +24,39 @@ Splitter = Callable[[str], list[str]]
 
 #: What a value in a data line may look like (shown in errors).
 NUMBER_ALLOWED = "a finite decimal number such as -.6403182E-02"
+
+#: The one number grammar of every reader: ASCII digits, an optional sign, a decimal point and
+#: an E exponent. Linear (no nested repetition), so a megabyte token costs a single pass.
+_NUMBER = re.compile(
+    r"[-+]?(?:\d+(?:\.(?P<frac>\d*))?|\.(?P<bare>\d+))(?:[eE][-+]?(?P<exp>\d+))?", re.ASCII
+)
+#: Words Python reads as non-finite floats (named as such in the error).
+NON_FINITE = frozenset(
+    sign + word for sign in ("", "+", "-") for word in ("nan", "inf", "infinity")
+)
+_COUNT = re.compile(r"\d+", re.ASCII)
+
+#: (digits after the decimal point, digits of the exponent) of a number as printed.
+Shape = tuple[int, int]
+
+#: Largest |a| a record may hold [g]; 100 g is ~25 times the largest ground acceleration ever
+#: recorded (about 4 g), so anything beyond is a damaged file or a unit slip, not a record.
+MAX_ABS_ACCEL_G = 100.0
+#: Above this PGA [g] a record is implausible (a unit slip is likelier): it gets a warning.
+PLAUSIBLE_PGA_G = 3.0
+#: Smallest time step [s] a record may declare (1 GHz): accelerographs sample at 50–1000 Hz,
+#: so a smaller step is a damaged header (DT = 1e-320 would pass "dt > 0"), not a record.
+MIN_DT = 1e-9
+#: Most samples a transformation or a pulse may produce (80 MB of floats per array).
+MAX_SAMPLES = 10_000_000
+#: Numbers of one shape needed before a file counts as fixed-format (a coincidence in a
+#: free-form file becomes unlikely; real fixed-format records hold thousands).
+MIN_FORMAT_EVIDENCE = 8
+#: Relative slack of the PGA cross-check for the float parse and the unit factor: far above
+#: double rounding (1e-16), far below any printed digit (8 significant digits: 1e-8).
+PARSE_RTOL = 1e-9
+#: Digits of the longest sample count read (a larger count cannot match any file's data).
+MAX_COUNT_DIGITS = 12
 
 #: Time tolerance, as a fraction of dt, for an edge (window, pulse end) that falls on a sample.
 EDGE_TOL = 1e-9
@@ -44,14 +81,26 @@ def split_lines(text: str) -> list[str]:
     return text.split("\n")
 
 
-def parse_number(token: str, *, file: str, where: str) -> float:
-    """One finite float from a token; InputError naming where it is otherwise."""
-    try:
-        value = float(token)
-    except ValueError:
-        raise InputError(
-            "not a number", file=file, where=where, value=token, allowed=NUMBER_ALLOWED
-        ) from None
+def match_number(token: str) -> re.Match[str] | None:
+    """The strict number grammar's match of a whole token (ASCII decimal or E notation)."""
+    return _NUMBER.fullmatch(token)
+
+
+def is_number(token: str) -> bool:
+    """True when the token is a number of the strict grammar (``nan``, ``1_000`` are not)."""
+    return _NUMBER.fullmatch(token) is not None
+
+
+def parse_number(token: str, *, file: str | None, where: str) -> float:
+    """One finite float from a token of the strict grammar; InputError naming where otherwise.
+
+    Python's ``float`` also takes ``1_000``, ``0.1_2``, non-ASCII digits, ``nan`` and
+    ``infinity``: a record that holds them is damaged, so only :data:`_NUMBER` is accepted.
+    """
+    if _NUMBER.fullmatch(token) is None:
+        problem = "not a finite number" if token.strip().lower() in NON_FINITE else "not a number"
+        raise InputError(problem, file=file, where=where, value=token, allowed=NUMBER_ALLOWED)
+    value = float(token)
     if not math.isfinite(value):
         raise InputError(
             "not a finite number", file=file, where=where, value=token, allowed=NUMBER_ALLOWED
@@ -59,12 +108,67 @@ def parse_number(token: str, *, file: str, where: str) -> float:
     return value
 
 
+def number_shape(token: str) -> Shape:
+    """(digits after the decimal point, digits of the exponent) of a number token.
+
+    Fixed-format files print every value with the same shape (``.9459335E-03``: 7 and 2); a
+    value cut at the end of the file has fewer of either (``.9459335E-0``: 7 and 1).
+    """
+    return _shape(_NUMBER.fullmatch(token))
+
+
+def _shape(found: re.Match[str] | None) -> Shape:
+    """The shape of a matched number token ((0, 0) for no match)."""
+    if found is None:
+        return (0, 0)
+    fraction = found.group("frac") or found.group("bare") or ""
+    return (len(fraction), len(found.group("exp") or ""))
+
+
+def check_last_number(
+    shapes: list[Shape], *, unterminated: bool, file: str, where: str, token: str
+) -> None:
+    """Refuse a last number that may have been cut off by a truncated file.
+
+    A truncated file ends inside its last number (``head -c -2`` turns ``.9459335E-03`` into
+    ``.9459335E-0``, read as 0.946), and so without a line break after it. A last line that
+    ends with its line break was finished by its writer: nothing to check. A last line
+    without one is accepted only when the file has a fixed format, MIN_FORMAT_EVIDENCE or
+    more other numbers of the column sharing one shape, and the last number has that shape
+    too (the Peknold El Centro file ends so); otherwise it is an error: "shorter than the
+    others" when the format is fixed, "no line break" when the numbers are free-form.
+    """
+    if not unterminated or not shapes:
+        return
+    *others, last = shapes
+    common = set(others)
+    if len(others) >= MIN_FORMAT_EVIDENCE and len(common) == 1:
+        (expected,) = common
+        if last[0] >= expected[0] and last[1] >= expected[1]:
+            return
+        raise InputError(
+            "the last number is shorter than every other number in the file "
+            "(the file looks cut off)",
+            file=file,
+            where=where,
+            value=token,
+            allowed=f"{expected[0]} decimals"
+            + (f" and a {expected[1]}-digit exponent" if expected[1] else "")
+            + " like the other values; a complete file",
+        )
+    raise InputError(
+        "the last line has no line break, so its last number may be cut off",
+        file=file,
+        where=where,
+        value=token,
+        allowed="a complete file whose last line ends with a line break",
+    )
+
+
 def parse_count(token: str, *, file: str, where: str) -> int:
     """A declared number of samples: an integer ≥ 1."""
-    try:
-        count = int(token.strip())
-    except ValueError:
-        count = 0
+    text = token.strip()
+    count = int(text) if _COUNT.fullmatch(text) and len(text) <= MAX_COUNT_DIGITS else 0
     if count < 1:
         raise InputError(
             "the number of samples must be a whole number ≥ 1",
@@ -77,7 +181,15 @@ def parse_count(token: str, *, file: str, where: str) -> int:
 
 
 def check_dt(dt: float, *, file: str | None, where: str | None) -> float:
-    """Return dt if it is a finite number > 0 [s]; InputError otherwise."""
+    """Return dt if it is a finite number > 0 [s]; InputError otherwise (also below MIN_DT)."""
+    if math.isfinite(dt) and 0.0 < dt < MIN_DT:
+        raise InputError(
+            "the time step is implausibly small",
+            file=file,
+            where=where,
+            value=dt,
+            allowed=f"dt ≥ {MIN_DT:g} s",
+        )
     if not (math.isfinite(dt) and dt > 0.0):
         raise InputError(
             "the time step must be greater than 0",
@@ -100,21 +212,94 @@ def fixed_fields(line: str, width: int) -> list[str]:
 
 
 def read_values(
-    lines: Iterable[str], *, first_line: int, file: str, split: Splitter = str.split
+    lines: list[str], *, first_line: int, file: str, split: Splitter = str.split
 ) -> np.ndarray:
-    """Every number in the data lines, in order; blank lines are skipped.
+    """Every number in the data lines (see :func:`read_tokens`)."""
+    return read_tokens(lines, first_line=first_line, file=file, split=split)[0]
+
+
+def read_tokens(
+    lines: list[str], *, first_line: int, file: str, split: Splitter = str.split
+) -> tuple[np.ndarray, list[str]]:
+    """Every number in the data lines, in order, and its token; blank lines are skipped.
+
+    The last number is checked for a cut (:func:`check_last_number`): ``lines`` must run to
+    the end of the file (the last item of :func:`split_lines`, empty when the file ends with a
+    line break).
 
     Args:
-        lines: the data lines (after the header).
+        lines: the data lines (after the header), to the end of the file.
         first_line: the 1-based number of the first of them in the file (for errors).
         file: the file name, for errors.
         split: cuts a line into tokens (blank-separated by default).
     """
     values: list[float] = []
+    tokens: list[str] = []
+    shapes: list[Shape] = []
+    last_line = first_line
     for number, line in enumerate(lines, start=first_line):
-        where = f"line {number}"
-        values.extend(parse_number(token, file=file, where=where) for token in split(line))
-    return np.asarray(values, dtype=float)
+        for token in split(line):
+            found = _NUMBER.fullmatch(token)
+            value = float(token) if found else math.nan
+            if not math.isfinite(value):
+                parse_number(token, file=file, where=f"line {number}")  # raises, naming it
+            values.append(value)
+            tokens.append(token)
+            shapes.append(_shape(found))
+            last_line = number
+    unterminated = bool(lines) and bool(lines[-1].strip())
+    check_last_number(
+        shapes,
+        unterminated=unterminated,
+        file=file,
+        where=f"line {last_line}",
+        token=tokens[-1] if tokens else "",
+    )
+    return np.asarray(values, dtype=float), tokens
+
+
+def printed_ulp(token: str) -> float:
+    """One unit of the last printed digit of a number token (``6.5065524E+00`` → 1e-7)."""
+    exponent = Decimal(token).as_tuple().exponent
+    return 10.0 ** int(exponent) if isinstance(exponent, int) else 0.0
+
+
+def check_declared_pga(
+    values: np.ndarray,
+    tokens: list[str],
+    declared: str,
+    *,
+    file: str,
+    where: str,
+    to_declared: float = 1.0,
+) -> None:
+    """The PGA a header declares must match the data's max|a| to the printed digits.
+
+    Both numbers are rounded prints of the same peak: the header to its own digits, the
+    sample to the data's. So they may differ by half a unit of the header's last digit plus
+    half a unit of the peak sample's last digit (plus 1e-9 relative for the float parse).
+    A header PGA may be signed (ESM writes the signed peak): its magnitude is compared.
+
+    Args:
+        values, tokens: the data as read and as printed.
+        declared: the header's PGA token.
+        to_declared: factor from the data's unit to the header PGA's unit.
+    """
+    if not values.size or not is_number(declared):
+        return
+    index = int(np.argmax(np.abs(values)))
+    peak = abs(float(values[index])) * to_declared
+    stated = abs(float(declared))
+    tol = 0.5 * printed_ulp(declared) + 0.5 * printed_ulp(tokens[index]) * to_declared
+    tol += PARSE_RTOL * max(peak, stated)
+    if abs(peak - stated) > tol:
+        raise InputError(
+            "the header's PGA does not match the data (a damaged or cut file?)",
+            file=file,
+            where=where,
+            value=declared,
+            allowed=f"the data's peak {peak:.8g} ± {tol:.2g} (printed digits)",
+        )
 
 
 def check_count(values: np.ndarray, declared: int, *, file: str, where: str) -> None:
@@ -129,6 +314,95 @@ def check_count(values: np.ndarray, declared: int, *, file: str, where: str) -> 
         )
 
 
+def check_sample_count(count: float, *, where: str, what: str) -> int:
+    """floor(count) samples to generate, capped at MAX_SAMPLES (InputError beyond)."""
+    if not (math.isfinite(count) and count < MAX_SAMPLES + 1):
+        raise InputError(
+            f"{what} would need {count:.3g} samples",
+            where=where,
+            value=count,
+            allowed=f"at most {MAX_SAMPLES:,} samples (a larger time step or a shorter record)",
+        )
+    return math.floor(count)
+
+
+def check_time_axis(time: np.ndarray, *, file: str) -> None:
+    """Times must be finite, strictly increasing, with a finite duration."""
+    finite = np.isfinite(time)
+    if not finite.all():
+        index = int(np.argmin(finite))
+        raise InputError(
+            "the time axis overflows (a time is not finite)",
+            file=file,
+            where=f"sample {index + 1}",
+            value=float(time[index]),
+            allowed="finite times (a plausible dt and number of samples)",
+        )
+    span = float(time[-1]) - float(time[0])
+    if not math.isfinite(span):
+        raise InputError(
+            "the record's duration overflows",
+            file=file,
+            value=span,
+            allowed="a finite duration (times between ±1e300 s)",
+        )
+    if time.size > 1 and not bool((np.diff(time) > 0.0).all()):
+        index = int(np.argmin(np.diff(time) > 0.0)) + 1
+        raise InputError(
+            "time does not increase (the steps vanish at this magnitude of time)",
+            file=file,
+            where=f"sample {index + 1}",
+            value=float(time[index]),
+            allowed="strictly increasing times",
+        )
+
+
+def check_accel(
+    accel: np.ndarray, time: np.ndarray, *, file: str, unit: str, plain: bool = False
+) -> None:
+    """|a| ≤ MAX_ABS_ACCEL_G (NaN fails too); the message names the likely fix."""
+    bad = ~(np.abs(accel) <= MAX_ABS_ACCEL_G)
+    if bad.any():
+        index = int(np.argmax(bad))
+        raise InputError(
+            f"acceleration beyond {MAX_ABS_ACCEL_G:g} g (a damaged file or a wrong unit)",
+            file=file,
+            where=f"sample {index + 1} (t = {float(time[index]):g} s)",
+            value=f"{float(accel[index]):.6g} g (read as {unit})",
+            allowed=f"|a| ≤ {MAX_ABS_ACCEL_G:g} g; "
+            + ("check --units" if plain else "check the unit the file's header declares"),
+        )
+
+
+def pga_warnings(accel: np.ndarray, *, unit: str, plain: bool) -> tuple[str, ...]:
+    """A warning when the PGA is above PLAUSIBLE_PGA_G (a unit slip is the likely cause)."""
+    pga = float(np.max(np.abs(accel))) if accel.size else 0.0
+    if pga <= PLAUSIBLE_PGA_G:
+        return ()
+    fix = "check --units (a file in cm/s² read as g is 981 times too strong)"
+    if not plain:
+        fix = "check the unit the file's header declares"
+    return (f"PGA {pga:.4g} g is above {PLAUSIBLE_PGA_G:g} g, implausible for a ground motion "
+            f"(read as {unit}): {fix}",)  # fmt: skip
+
+
+def finish_record(record: Record) -> Record:
+    """Check a record just read (time axis, bounded accelerations) and add its warnings."""
+    check_time_axis(record.time, file=record.source)
+    plain = record.format == "plain"
+    check_accel(record.accel, record.time, file=record.source, unit=record.unit, plain=plain)
+    warnings = pga_warnings(record.accel, unit=record.unit, plain=plain)
+    return replace(record, warnings=(*record.warnings, *warnings)) if warnings else record
+
+
+class Origin(NamedTuple):
+    """What a record's header says it is: the event, the station and the component."""
+
+    event: str = ""
+    station: str = ""
+    component: str = ""
+
+
 def uniform_record(
     values: np.ndarray,
     *,
@@ -138,15 +412,28 @@ def uniform_record(
     name: str,
     source: str,
     notes: tuple[str, ...] = (),
+    origin: Origin | None = None,
 ) -> Record:
-    """A Record sampled at t = i·dt, with values converted from ``unit`` to g."""
-    return Record(
-        name=name,
-        source=source,
-        format=str(fmt),
-        time=np.arange(values.size) * dt,
-        accel=values * unit.to_g,
-        dt=dt,
-        unit=str(unit),
-        notes=notes,
+    """A checked Record sampled at t = i·dt, with values converted from ``unit`` to g.
+
+    ``origin`` holds the event, station and component the file's header names, if any.
+    """
+    origin = origin or Origin()
+    with np.errstate(over="ignore", invalid="ignore"):
+        time = np.arange(values.size) * dt
+        accel = values * unit.to_g
+    return finish_record(
+        Record(
+            name=name,
+            source=source,
+            format=str(fmt),
+            time=time,
+            accel=accel,
+            dt=dt,
+            unit=str(unit),
+            notes=notes,
+            event=origin.event,
+            station=origin.station,
+            component=origin.component,
+        )
     )

@@ -8,19 +8,46 @@ allowed and noted. :func:`format_plain` writes the two-column form back with exa
 
 from __future__ import annotations
 
+import re
+from decimal import Decimal
+from typing import NamedTuple
+
 import numpy as np
 
 from rockcli.errors import InputError
 from rockcli.records.kinds import RecordFormat
-from rockcli.records.lines import check_dt, parse_number, split_lines, uniform_record
+from rockcli.records.lines import (
+    check_dt,
+    check_last_number,
+    check_time_axis,
+    finish_record,
+    is_number,
+    number_shape,
+    parse_count,
+    parse_number,
+    split_lines,
+    uniform_record,
+)
 from rockcli.records.record import Record
 from rockcli.units import AccelUnit, parse_unit
 
 COMMENT = "#"
 #: Relative spread of the time steps below which a two-column record counts as uniform.
 UNIFORM_RTOL = 1e-9
+#: The sample count in a comment line (``# npts: 1201``, written by ``rock record convert``).
+_NPTS_COMMENT = re.compile(r"#\s*npts\s*:\s*(\S+)\s*", re.IGNORECASE | re.ASCII)
+#: Longest comment line searched for ``# npts:`` [characters] (keeps the pattern linear).
+MAX_COMMENT_CHARS = 200
+#: Digits of time written by :func:`format_plain` beyond those of dt, never more than this.
+MAX_TIME_DECIMALS = 17
 
-Row = tuple[int, list[float]]
+
+class Row(NamedTuple):
+    """One data line: its number in the file, its numbers and their tokens."""
+
+    number: int
+    values: list[float]
+    tokens: list[str]
 
 
 def _is_data(line: str) -> bool:
@@ -30,49 +57,80 @@ def _is_data(line: str) -> bool:
 
 
 def looks_like_plain(lines: list[str]) -> bool:
-    """True when the first data line holds only numbers."""
+    """True when the first data line holds only numbers (of the strict grammar)."""
     first = next((line for line in lines if _is_data(line)), None)
-    if first is None:
-        return False
-    try:
-        [float(token) for token in first.split()]
-    except ValueError:
-        return False
-    return True
+    return first is not None and all(is_number(token) for token in first.split())
+
+
+def _row(number: int, line: str, *, file: str) -> Row:
+    tokens = line.split()
+    values = [parse_number(token, file=file, where=f"line {number}") for token in tokens]
+    return Row(number, values, tokens)
 
 
 def read_rows(lines: list[str], *, file: str) -> list[Row]:
-    """(line number, numbers) of every data line, all with the same number (1 or 2) of columns."""
-    rows = [
-        (number, [parse_number(tok, file=file, where=f"line {number}") for tok in line.split()])
-        for number, line in enumerate(lines, start=1)
-        if _is_data(line)
-    ]
+    """(line number, numbers, tokens) of every data line, all with 1 or 2 columns alike.
+
+    The last number is checked for a cut (:func:`rockcli.records.lines.check_last_number`,
+    column by column: a time column and an acceleration column print differently).
+    """
+    rows = [_row(number, line, file=file) for number, line in enumerate(lines, 1) if _is_data(line)]
     if not rows:
         raise InputError("no numbers in the file", file=file, allowed="one or two columns")
     _check_columns(rows, file=file)
+    column = [row.tokens[-1] for row in rows]
+    check_last_number(
+        [number_shape(token) for token in column],
+        unterminated=_is_data(lines[-1]),
+        file=file,
+        where=f"line {rows[-1].number}",
+        token=column[-1],
+    )
     return rows
+
+
+def declared_count(lines: list[str], *, file: str) -> int | None:
+    """The ``# npts: N`` of the comment lines before the data, if any."""
+    for number, line in enumerate(lines, start=1):
+        if _is_data(line):
+            return None
+        found = _NPTS_COMMENT.fullmatch(line.strip()[:MAX_COMMENT_CHARS])
+        if found:
+            return parse_count(found.group(1), file=file, where=f"line {number} (# npts)")
+    return None
+
+
+def _check_declared(rows: list[Row], declared: int | None, *, file: str) -> None:
+    """A file that declares ``# npts:`` must hold that many samples (a cut file does not)."""
+    if declared is not None and len(rows) != declared:
+        raise InputError(
+            f"{len(rows)} samples read but the header declares {declared} (a cut file?)",
+            file=file,
+            where="# npts",
+            value=len(rows),
+            allowed=f"exactly {declared} samples",
+        )
 
 
 def _check_columns(rows: list[Row], *, file: str) -> None:
     """The first data line has 1 or 2 columns, and every other line as many."""
-    first_line, first = rows[0]
-    if len(first) > 2:
+    first = rows[0]
+    if len(first.values) > 2:
         raise InputError(
-            f"{len(first)} columns",
+            f"{len(first.values)} columns",
             file=file,
-            where=f"line {first_line}",
-            value=len(first),
+            where=f"line {first.number}",
+            value=len(first.values),
             allowed="1 column (acceleration) or 2 (time, acceleration)",
         )
-    for number, values in rows:
-        if len(values) != len(first):
+    for row in rows:
+        if len(row.values) != len(first.values):
             raise InputError(
-                f"{len(values)} columns where the first data line has {len(first)}",
+                f"{len(row.values)} columns where the first data line has {len(first.values)}",
                 file=file,
-                where=f"line {number}",
-                value=len(values),
-                allowed=f"{len(first)} on every line",
+                where=f"line {row.number}",
+                value=len(row.values),
+                allowed=f"{len(first.values)} on every line",
             )
 
 
@@ -80,14 +138,33 @@ def _check_increasing(time: np.ndarray, rows: list[Row], *, file: str) -> None:
     """Time must increase strictly (spec/records.md, "Checks on every record")."""
     bad = np.flatnonzero(np.diff(time) <= 0.0)
     if bad.size:
-        (_, before), (number, values) = rows[bad[0]], rows[bad[0] + 1]
+        before, row = rows[bad[0]], rows[bad[0] + 1]
         raise InputError(
             "time does not increase",
             file=file,
-            where=f"line {number}",
-            value=values[0],
-            allowed=f"a time greater than {before[0]!r} s (the line before)",
+            where=f"line {row.number}",
+            value=row.values[0],
+            allowed=f"a time greater than {before.values[0]!r} s (the line before)",
         )
+
+
+def _rezeroed(rows: list[Row], *, file: str) -> tuple[np.ndarray, tuple[str, ...]]:
+    """The time column re-zeroed at its first value, subtracted exactly (in decimal).
+
+    A record with absolute times (Unix epoch, t ≈ 1.7e9 s) keeps only ~2e-7 s of float
+    resolution: the 1 ms steps of a 1 kHz record would come out uneven, and every check that
+    compares a step to a tolerance would depend on the absolute time. Subtracting the first
+    time in decimal, before the conversion to float, gives the steps exactly as printed.
+    """
+    first = rows[0].tokens[0]
+    time = np.array([row.values[0] for row in rows], dtype=float)
+    with np.errstate(over="ignore", invalid="ignore"):
+        _check_increasing(time, rows, file=file)
+    if time[0] == 0.0:
+        return time, ()
+    start = Decimal(first)
+    shifted = np.array([float(Decimal(row.tokens[0]) - start) for row in rows], dtype=float)
+    return shifted, (f"time re-zeroed: the file's time starts at {first} s",)
 
 
 def _time_step(time: np.ndarray) -> tuple[float, tuple[str, ...]]:
@@ -109,24 +186,27 @@ def _time_step(time: np.ndarray) -> tuple[float, tuple[str, ...]]:
 
 
 def _two_column_record(rows: list[Row], unit: AccelUnit, *, name: str, source: str) -> Record:
-    """A Record from (t, a) rows: time strictly increasing, dt = median spacing."""
+    """A Record from (t, a) rows: time strictly increasing and re-zeroed, dt = median spacing."""
     if len(rows) < 2:
         raise InputError(
             "a two-column record needs at least 2 samples", file=source, value=len(rows)
         )
-    table = np.array([values for _, values in rows], dtype=float)
-    time, accel = table[:, 0], table[:, 1] * unit.to_g
-    _check_increasing(time, rows, file=source)
-    dt, notes = _time_step(time)
-    return Record(
-        name=name,
-        source=source,
-        format=str(RecordFormat.PLAIN),
-        time=time,
-        accel=accel,
-        dt=dt,
-        unit=str(unit),
-        notes=notes,
+    time, notes = _rezeroed(rows, file=source)
+    check_time_axis(time, file=source)
+    accel = np.array([row.values[1] for row in rows], dtype=float) * unit.to_g
+    dt, step_notes = _time_step(time)
+    check_dt(dt, file=source, where="time column")
+    return finish_record(
+        Record(
+            name=name,
+            source=source,
+            format=str(RecordFormat.PLAIN),
+            time=time,
+            accel=accel,
+            dt=dt,
+            unit=str(unit),
+            notes=(*notes, *step_notes),
+        )
     )
 
 
@@ -141,7 +221,7 @@ def _one_column_record(
             where="dt",
             allowed="dt > 0 [s] (--dt)",
         )
-    values = np.array([values[0] for _, values in rows], dtype=float)
+    values = np.array([row.values[0] for row in rows], dtype=float)
     dt = check_dt(dt, file=source, where="dt")
     return uniform_record(
         values, dt=dt, unit=unit, fmt=RecordFormat.PLAIN, name=name, source=source
@@ -167,11 +247,14 @@ def parse_plain(
 
     Raises:
         InputError: a token that is not a finite number, ragged columns, time not strictly
-            increasing, a missing or superfluous dt, an unknown unit.
+            increasing, a missing or superfluous dt, an unknown unit, a count different from
+            the ``# npts:`` comment, a last number that may be cut.
     """
     unit = parse_unit(str(units or AccelUnit.G), file=source, where="units")
-    rows = read_rows(split_lines(text), file=source)
-    if len(rows[0][1]) == 1:
+    lines = split_lines(text)
+    rows = read_rows(lines, file=source)
+    _check_declared(rows, declared_count(lines, file=source), file=source)
+    if len(rows[0].values) == 1:
         return _one_column_record(rows, unit, dt, name=name, source=source)
     if dt is not None:
         raise InputError(
@@ -189,11 +272,29 @@ def _one_line(text: str) -> str:
     return " ".join(text.split())
 
 
+def time_decimals(dt: float) -> int:
+    """Decimals that write every multiple of dt exactly as dt's shortest form has them."""
+    exponent = Decimal(repr(float(dt))).as_tuple().exponent
+    return min(max(0, -int(exponent)), MAX_TIME_DECIMALS) if isinstance(exponent, int) else 0
+
+
+def time_strings(record: Record) -> list[str]:
+    """The times as written: i·dt with dt's decimals when uniform from 0, else exact repr.
+
+    ``0.1*3`` is 0.30000000000000004 in floats; written with dt's decimals it is ``0.3``,
+    which reads back as the double nearest to 0.3. A non-uniform time column keeps ``repr``.
+    """
+    if record.time[0] != 0.0 or not record.uniform:
+        return [repr(float(t)) for t in record.time]
+    digits = time_decimals(record.dt)
+    return [f"{i * record.dt:.{digits}f}" for i in range(record.npts)]
+
+
 def format_plain(record: Record) -> str:
     """The two-column plain text of a record: a ``#`` header, then ``t a`` [s, g] a line.
 
-    Floats are written with ``repr`` (shortest exact form), so :func:`parse_plain` reads back
-    exactly the same time and acceleration arrays.
+    Accelerations are written with ``repr`` (shortest exact form), so :func:`parse_plain`
+    reads them back bit for bit; times as :func:`time_strings` writes them.
     """
     header = [
         "# rock record: time [s], acceleration [g]",
@@ -203,6 +304,8 @@ def format_plain(record: Record) -> str:
         f"# dt: {record.dt!r}",
         f"# npts: {record.npts}",
         *(f"# note: {_one_line(note)}" for note in record.notes),
+        *(f"# warning: {_one_line(warning)}" for warning in record.warnings),
     ]
-    body = (f"{float(t)!r} {float(a)!r}" for t, a in zip(record.time, record.accel, strict=True))
+    times = time_strings(record)
+    body = (f"{t} {float(a)!r}" for t, a in zip(times, record.accel, strict=True))
     return "\n".join([*header, *body]) + "\n"

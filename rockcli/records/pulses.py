@@ -23,7 +23,7 @@ import numpy as np
 
 from rockcli.errors import InputError
 from rockcli.records.kinds import PulseKind, RecordFormat
-from rockcli.records.lines import EDGE_TOL, check_positive
+from rockcli.records.lines import EDGE_TOL, check_positive, check_sample_count
 from rockcli.records.record import Record
 from rockcli.units import AccelUnit
 
@@ -52,7 +52,8 @@ def _sample_count(length: float, dt: float, total: float | None) -> int:
             allowed=f"dt ≤ {length / (MIN_SAMPLES - 1):g} s ({MIN_SAMPLES} samples per pulse)",
         )
     end = length if total is None else max(length, total)
-    return int(math.floor(end / dt * (1.0 + EDGE_TOL))) + 1
+    wanted = end / dt * (1.0 + EDGE_TOL) + 1.0
+    return check_sample_count(wanted, where="dt", what=f"a pulse of {end:g} s at dt = {dt:g} s")
 
 
 def _pulse_record(

@@ -22,6 +22,11 @@ class Record:
             median spacing).
         unit: the unit the file stored the values in ("g", "m/s2", "cm/s2").
         notes: transformations and remarks to show with results (scaled, flipped, trimmed…).
+        warnings: doubts about the record a user must see (an implausible PGA, a resampling
+            that lowered the peak); shown under the record's table and in its JSON.
+        event: the earthquake as the file's header names it ("" when the format has none).
+        station: the recording station as the header names it ("" when absent).
+        component: the component or stream as the header names it ("" when absent).
     """
 
     name: str
@@ -32,6 +37,10 @@ class Record:
     dt: float
     unit: str = "g"
     notes: tuple[str, ...] = field(default_factory=tuple)
+    warnings: tuple[str, ...] = ()
+    event: str = ""
+    station: str = ""
+    component: str = ""
 
     @property
     def npts(self) -> int:

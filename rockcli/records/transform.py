@@ -6,14 +6,18 @@ and raises InputError for a bad argument.
 
 from __future__ import annotations
 
-import math
 from dataclasses import replace
 from typing import Any
 
 import numpy as np
 
 from rockcli.errors import InputError
-from rockcli.records.lines import EDGE_TOL, check_positive
+from rockcli.records.lines import (
+    EDGE_TOL,
+    MAX_ABS_ACCEL_G,
+    check_positive,
+    check_sample_count,
+)
 from rockcli.records.record import Record
 
 
@@ -22,9 +26,26 @@ def _with(record: Record, note: str, **changes: Any) -> Record:
     return replace(record, notes=(*record.notes, note), **changes)
 
 
+#: Relative loss of PGA beyond which a resampling warns (0.1 %).
+PGA_LOSS_WARNING = 1e-3
+
+
+def _check_bounded(record: Record, pga: float, *, where: str, value: float) -> None:
+    """A scaled record must stay within ±MAX_ABS_ACCEL_G (as every record read does)."""
+    if not pga <= MAX_ABS_ACCEL_G:
+        raise InputError(
+            f"the scaled record would reach {pga:.4g} g",
+            file=record.source,
+            where=where,
+            value=value,
+            allowed=f"a PGA ≤ {MAX_ABS_ACCEL_G:g} g",
+        )
+
+
 def scale(record: Record, factor: float) -> Record:
     """Multiply the accelerations by ``factor`` (> 0; use :func:`flip` to reverse polarity)."""
     check_positive(factor, where="factor", unit="[-]")
+    _check_bounded(record, record.pga * factor, where="factor", value=factor)
     return _with(record, f"scaled by {factor:g}", accel=record.accel * factor)
 
 
@@ -35,6 +56,7 @@ def scale_to_pga(record: Record, pga: float) -> Record:
     monotonic), so the product with the target hits it to the last bit.
     """
     check_positive(pga, where="pga", unit="[g]")
+    _check_bounded(record, pga, where="pga", value=pga)
     if record.pga == 0.0:
         raise InputError(
             "cannot scale a record of zero acceleration to a PGA",
@@ -83,10 +105,27 @@ def trim(record: Record, t0: float, t1: float) -> Record:
 
 
 def resample(record: Record, dt: float) -> Record:
-    """Resample at a new uniform step dt [s] by linear interpolation (no anti-alias filter)."""
+    """Resample at a new uniform step dt [s] by linear interpolation (no anti-alias filter).
+
+    At most MAX_SAMPLES samples (InputError beyond). A coarser step can miss the peak: when
+    the PGA drops by more than PGA_LOSS_WARNING, the record carries a warning saying how much.
+    """
     check_positive(dt, where="dt", unit="[s]")
-    count = int(math.floor(record.duration / dt * (1.0 + EDGE_TOL))) + 1
+    wanted = record.duration / dt * (1.0 + EDGE_TOL) + 1.0
+    count = check_sample_count(wanted, where="dt", what=f"resampling at dt = {dt:g} s")
     time = record.time[0] + np.arange(count) * dt
     accel = np.interp(time, record.time, record.accel)
     note = f"resampled from dt = {record.dt:g} s to {dt:g} s (linear interpolation)"
-    return _with(record, note, time=time, accel=accel, dt=dt)
+    resampled = _with(record, note, time=time, accel=accel, dt=dt)
+    return replace(resampled, warnings=(*record.warnings, *_pga_loss(record, resampled)))
+
+
+def _pga_loss(before: Record, after: Record) -> tuple[str, ...]:
+    """A warning when resampling lowered the PGA by more than PGA_LOSS_WARNING."""
+    if before.pga == 0.0:
+        return ()
+    loss = 1.0 - after.pga / before.pga
+    if loss <= PGA_LOSS_WARNING:
+        return ()
+    return (f"resampling to dt = {after.dt:g} s lowered the PGA by {loss:.2%} "
+            f"({before.pga:.4g} g → {after.pga:.4g} g): a smaller dt keeps the peak",)  # fmt: skip

@@ -5,11 +5,15 @@ from __future__ import annotations
 from typing import Any
 
 from rockcli.records.record import Record
-from rockcli.report.table import Report, key_value
+from rockcli.report.table import Report, Table, key_value
 from rockcli.units import AccelUnit
 
-#: Version of the JSON written by ``rock record info --format json``.
-INFO_SCHEMA = 1
+#: Version of the JSON written by ``rock record info --format json`` (2: a list of records,
+#: each with its warnings and the header's event, station and component).
+INFO_SCHEMA = 2
+
+#: The header fields shown when the file names them.
+ORIGIN_FIELDS = ("event", "station", "component")
 
 #: Display symbols of the acceleration units (rockcli.units.AccelUnit values).
 SYMBOLS = {"g": "g", "m/s2": "m/s²", "cm/s2": "cm/s²"}
@@ -27,24 +31,30 @@ def record_document(rec: Record) -> dict[str, Any]:
         "pga_g": rec.pga,
         "t_pga": rec.t_pga,
         "unit": rec.unit,
+        "event": rec.event,
+        "station": rec.station,
+        "component": rec.component,
         "notes": list(rec.notes),
+        "warnings": list(rec.warnings),
     }
 
 
-def info_document(rec: Record) -> dict[str, Any]:
-    """The JSON document of ``rock record info``."""
-    return {"schema": INFO_SCHEMA, **record_document(rec)}
+def info_document(records: list[Record]) -> dict[str, Any]:
+    """The JSON document of ``rock record info``: one entry per file, in the order given."""
+    return {"schema": INFO_SCHEMA, "records": [record_document(rec) for rec in records]}
 
 
-def record_report(doc: dict[str, Any]) -> Report:
-    """The table of a record document: samples, dt, duration, PGA in g, m/s² and its own unit."""
+def record_table(doc: dict[str, Any]) -> Table:
+    """The table of one record document: header names, samples, dt, duration, PGA in units."""
     units = dict.fromkeys([AccelUnit.G, AccelUnit.M_S2, AccelUnit(doc["unit"])])
     pga = [(f"PGA ({SYMBOLS[u]})", doc["pga_g"] / u.to_g, SYMBOLS[u], "{:.6g}") for u in units]
-    table = key_value(
+    origin = [(key, doc[key], "", "") for key in ORIGIN_FIELDS if doc.get(key)]
+    return key_value(
         f"Record {doc['name']}",
         [
             ("source", doc["source"], "", ""),
             ("format", doc["format"], "", ""),
+            *origin,
             ("unit in file", SYMBOLS.get(doc["unit"], doc["unit"]), "", ""),
             ("samples", doc["npts"], "", "{:d}"),
             ("dt", doc["dt"], "s", "{:.6g}"),
@@ -53,6 +63,30 @@ def record_report(doc: dict[str, Any]) -> Report:
             ("time of PGA", doc["t_pga"], "s", "{:.6g}"),
         ],
     )
+
+
+def record_notes(doc: dict[str, Any], *, named: bool = False) -> tuple[str, ...]:
+    """The record's warnings (first, marked) and notes, prefixed by its name if ``named``."""
+    lines = [*(f"warning: {w}" for w in doc.get("warnings", ())), *doc["notes"]]
+    return tuple(f"{doc['name']}: {line}" if named else line for line in lines)
+
+
+def record_report(doc: dict[str, Any]) -> Report:
+    """The Report of one record document (its table, then its warnings and notes)."""
     return Report(
-        title=f"rock record info — {doc['name']}", tables=(table,), notes=tuple(doc["notes"])
+        title=f"rock record info — {doc['name']}",
+        tables=(record_table(doc),),
+        notes=record_notes(doc),
+    )
+
+
+def info_report(doc: dict[str, Any]) -> Report:
+    """The Report of ``rock record info``: a table per record, then warnings and notes."""
+    records = doc["records"]
+    if len(records) == 1:
+        return record_report(records[0])
+    return Report(
+        title=f"rock record info — {len(records)} records",
+        tables=tuple(record_table(rec) for rec in records),
+        notes=tuple(note for rec in records for note in record_notes(rec, named=True)),
     )

@@ -62,3 +62,68 @@ def test_bad_scale_names_the_option(tmp_path: Path) -> None:
         "record", "convert", str(PULSE), "--scale", "0", "-o", str(tmp_path / "x.txt")
     )
     assert code == 2 and err.startswith("error: --scale: ")
+
+
+def test_output_is_checked_before_reading(tmp_path: Path) -> None:
+    """An existing output without --force is refused before the (missing) input is read."""
+    out = tmp_path / "exists.txt"
+    out.write_text("keep me\n")
+    code, _, err = run("record", "convert", str(tmp_path / "missing.AT2"), "-o", str(out))
+    assert code == 2 and "file exists" in err and "--force" in err
+    assert out.read_text() == "keep me\n"
+
+
+def test_force_overwrites_and_wrote_goes_to_stderr(tmp_path: Path) -> None:
+    out = tmp_path / "c.txt"
+    out.write_text("old\n")
+    code, stdout, err = run("record", "convert", str(PULSE), "-o", str(out), "--force")
+    assert code == 0 and stdout == "" and err.startswith(f"wrote {out}: ")
+    assert read_record(out).npts == read_record(PULSE).npts
+
+
+def test_dash_writes_to_stdout(tmp_path: Path) -> None:
+    code, stdout, err = run("record", "convert", str(PULSE), "-o", "-")
+    assert code == 0 and err == ""
+    assert stdout.startswith("# rock record: time [s], acceleration [g]\n")
+    back = tmp_path / "back.txt"
+    back.write_text(stdout)
+    assert np.array_equal(read_record(back).accel, read_record(PULSE).accel)
+
+
+def test_pulse_output_policy(tmp_path: Path) -> None:
+    out = tmp_path / "p.txt"
+    out.write_text("old\n")
+    args = ["record", "pulse", "ricker", "--amplitude", "0.3", "--period", "0.5", "-o", str(out)]
+    code, _, err = run(*args)
+    assert code == 2 and "file exists" in err
+    assert run(*args, "--force")[0] == 0
+
+
+def test_resample_lowering_the_pga_warns_on_stderr_and_in_the_file(tmp_path: Path) -> None:
+    """The one-sine of Tp = 1 s peaks at 0.35 g on the 5 ms grid; 0.3 s samples miss it."""
+    out = tmp_path / "coarse.txt"
+    code, _, err = run("record", "convert", str(PULSE), "--resample", "0.3", "-o", str(out))
+    assert code == 0 and "warning: resampling to dt = 0.3 s lowered the PGA by" in err
+    assert "# warning: resampling to dt = 0.3 s lowered the PGA by" in out.read_text()
+
+
+def test_resample_beyond_the_sample_cap_names_the_option(tmp_path: Path) -> None:
+    code, _, err = run(
+        "record", "convert", str(PULSE), "--resample", "1e-12", "-o", str(tmp_path / "x.txt")
+    )
+    assert code == 2 and err.startswith("error: --resample: ") and "10,000,000" in err
+
+
+def test_pulse_dt_beyond_the_sample_cap(tmp_path: Path) -> None:
+    code, _, err = run(
+        "record", "pulse", "half-sine", "--amplitude", "0.3", "--period", "1",
+        "--dt", "1e-9", "-o", str(tmp_path / "x.txt"),
+    )  # fmt: skip
+    assert code == 2 and "10,000,000" in err
+
+
+def test_converted_times_are_clean(tmp_path: Path) -> None:
+    out = tmp_path / "c.txt"
+    assert run("record", "convert", str(PULSE), "--resample", "0.1", "-o", str(out))[0] == 0
+    text = out.read_text()
+    assert "\n0.3 " in text and "0.30000000000000004" not in text

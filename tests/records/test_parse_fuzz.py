@@ -1,7 +1,12 @@
-"""Property: whatever the text, a reader returns a Record or raises one InputError.
+"""Properties of every reader, whatever the text:
 
-spec/records.md and the brief: "never a raw ValueError/IndexError escaping". The alphabet holds
-the characters of the record headers, so hypothesis reaches deep into every reader.
+* it returns a Record or raises one InputError (never a raw ValueError/IndexError);
+* a Record has finite, strictly increasing times, a finite duration and finite accelerations
+  bounded by MAX_ABS_ACCEL_G;
+* a valid file cut anywhere never yields a Record with the declared count but other values.
+
+The alphabet holds the characters of the record headers, so hypothesis reaches deep into every
+reader. Bounded (max_examples, no deadline) so the module runs in a few seconds.
 """
 
 from __future__ import annotations
@@ -12,7 +17,9 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from rockcli.errors import InputError
+from rockcli.records.lines import MAX_ABS_ACCEL_G
 from rockcli.records.parse import parse_text
+from rockcli.records.record import Record
 
 ALPHABET = "0123456789 .-+eE:\n\r#NPTSDTUNITSOFGnaif,=()"
 HEADERS = st.sampled_from([
@@ -33,9 +40,77 @@ def test_readers_raise_only_input_error(head: str, body: str, fmt: str | None, d
         record = parse_text(head + body, fmt=fmt, dt=dt)
     except InputError:
         return
-    assert record.npts >= 1 and record.dt > 0
-    assert np.isfinite(record.accel).all()
+    check_invariants(record)
+
+
+def check_invariants(record: Record) -> None:
+    """What every Record guarantees to the engines."""
+    assert record.npts >= 1 and np.isfinite(record.dt) and record.dt > 0
+    assert np.isfinite(record.time).all() and np.isfinite(record.duration)
     assert (np.diff(record.time) > 0).all()
+    assert (np.abs(record.accel) <= MAX_ABS_ACCEL_G).all()
+
+
+def at2_text(values: list[float]) -> str:
+    """A PEER AT2 file of the values (E15.7 style, five a line)."""
+    body = "".join(
+        f"{v: .7E}" + ("\n" if i % 5 == 4 else "  ") for i, v in enumerate(values)
+    ).rstrip(" ")
+    head = f"PEER\nX, Y, 000\nACCELERATION IN UNITS OF G\nNPTS= {len(values)}, DT= .0100 SEC\n"
+    return head + body + ("" if body.endswith("\n") else "\n")
+
+
+def esm_text(values: list[float]) -> str:
+    """An ESM file of the values in cm/s² (six decimals, one a line), with its PGA."""
+    peak = max(values, key=abs)
+    head = (
+        "EVENT_NAME: X\nEVENT_ID: Y\nSAMPLING_INTERVAL_S: 0.005\n"
+        f"NDATA: {len(values)}\nUNITS: cm/s^2\nPGA_CM/S^2: {peak:.6f}\n"
+    )
+    return head + "".join(f"{v:.6f}\n" for v in values)
+
+
+def coracc_text(values: list[float]) -> str:
+    """A cor.acc file of the values in m/s² (5E14.7, touching negatives)."""
+    labels = ["a", "b", "c", "d", "e", "f"]
+    head = "".join(f"{label} : x\n" for label in labels)
+    head += f"Time Increment (s) : 0.005\nNumber of Data : {len(values)}\nPGA (m/s/s) : \n"
+    head += "Accelaration time series in m/s/s\n"
+    rows = [values[i : i + 5] for i in range(0, len(values), 5)]
+    return head + "".join("".join(f"{v:14.7E}" for v in row) + "\n" for row in rows)
+
+
+def plain_text(values: list[float]) -> str:
+    """rock's own plain output (``# npts:`` header, repr floats)."""
+    from rockcli.records.plain import format_plain
+
+    time = np.arange(len(values)) * 0.01
+    record = Record("x", "x", "plain", time, np.asarray(values), 0.01)
+    return format_plain(record)
+
+
+WRITERS = {"at2": at2_text, "esm": esm_text, "coracc": coracc_text, "plain": plain_text}
+VALUES = st.lists(
+    st.floats(min_value=-2.0, max_value=2.0, allow_nan=False).filter(lambda v: abs(v) > 1e-3),
+    min_size=2,
+    max_size=23,
+)
+
+
+@settings(max_examples=300, deadline=None)
+@given(values=VALUES, fmt=st.sampled_from(sorted(WRITERS)), cut=st.integers(1, 40))
+def test_a_cut_file_never_gives_the_declared_count_with_other_values(
+    values: list[float], fmt: str, cut: int
+) -> None:
+    text = WRITERS[fmt](values)
+    full = parse_text(text)
+    try:
+        record = parse_text(text[:-cut])
+    except InputError:
+        return
+    check_invariants(record)
+    assert record.npts == full.npts  # fewer samples is an error: the count is declared
+    assert np.array_equal(record.accel, full.accel)
 
 
 @pytest.mark.parametrize("text", ["", "\n\n", "#only comments\n", "\r\r\n"])

@@ -12,10 +12,10 @@ from click.testing import CliRunner
 
 from rockcli.cli.main import cli
 
-#: Keys of the `record info --format json` document (schema 1).
+#: Keys of each record of the `record info --format json` document (schema 2).
 INFO_KEYS = {
-    "schema", "name", "source", "format", "npts", "dt", "duration", "pga_g", "t_pga", "unit",
-    "notes",
+    "name", "source", "format", "npts", "dt", "duration", "pga_g", "t_pga", "unit", "event",
+    "station", "component", "notes", "warnings",
 }  # fmt: skip
 
 
@@ -39,22 +39,29 @@ def test_info_table_on_elc180(shared_records: Path) -> None:
 def test_info_json_on_elc180(shared_records: Path) -> None:
     code, out, _ = run("record", "info", str(shared_records / "ELC180.AT2"), "--format", "json")
     assert code == 0
-    data = json.loads(out)
+    doc = json.loads(out)
+    assert set(doc) == {"schema", "records"} and doc["schema"] == 2
+    (data,) = doc["records"]
     assert set(data) == INFO_KEYS
-    assert (data["schema"], data["format"], data["npts"], data["dt"]) == (1, "at2", 4000, 0.01)
+    assert (data["format"], data["npts"], data["dt"]) == ("at2", 4000, 0.01)
     assert data["pga_g"] == 0.3128806  # the literal sample of the file, full precision
     assert (data["name"], data["unit"], data["notes"]) == ("ELC180", "g", [])
+    # line 2 of the file: "IMPERIAL VALLEY 5/19/40 0439, EL CENTRO ARRAY #9, 180 (USGS ...)"
+    assert (data["event"], data["station"], data["component"]) == (
+        "IMPERIAL VALLEY 5/19/40 0439", "EL CENTRO ARRAY #9", "180"
+    )  # fmt: skip
+    assert data["warnings"] == []
 
 
 def test_pulse_writes_a_file_that_info_reads_back(tmp_path: Path) -> None:
     path = tmp_path / "pulse.txt"
-    code, out, _ = run(
+    code, out, err = run(
         "record", "pulse", "one-sine", "--amplitude", "0.3", "--period", "0.5",
         "--dt", "0.005", "--duration", "2", "-o", str(path),
     )  # fmt: skip
-    assert code == 0 and out.startswith(f"wrote {path}: one-sine")
+    assert code == 0 and out == "" and err.startswith(f"wrote {path}: one-sine")
     code, out, _ = run("record", "info", str(path), "--format", "json")
-    data = json.loads(out)
+    (data,) = json.loads(out)["records"]
     assert code == 0
     # 0…2 s at 0.005 s: 401 samples; sin(ωp·Tp/4) = 1 at t = 0.125 s, a sample of the grid.
     assert (data["format"], data["npts"], data["dt"]) == ("plain", 401, 0.005)
@@ -100,3 +107,23 @@ def test_record_command_module_does_not_import_numpy() -> None:
     probe = "import sys, rockcli.cli.record; print('numpy' in sys.modules)"
     done = subprocess.run([sys.executable, "-c", probe], capture_output=True, text=True, check=True)
     assert done.stdout.strip() == "False"
+
+
+def test_info_takes_several_files(shared_records: Path) -> None:
+    files = [str(shared_records / n) for n in ("ELC180.AT2", "ESM_GREECE2019_HL.DLFA.HNE.ASC")]
+    code, out, _ = run("record", "info", *files)
+    assert code == 0
+    assert "Record ELC180" in out and "Record ESM_GREECE2019_HL.DLFA.HNE" in out
+    assert "EL CENTRO ARRAY #9" in out and "HL.DLFA" in out and "HNE" in out
+    code, out, _ = run("record", "info", *files, "--format", "json")
+    names = [rec["name"] for rec in json.loads(out)["records"]]
+    assert names == ["ELC180", "ESM_GREECE2019_HL.DLFA.HNE"]
+
+
+def test_info_shows_warnings_under_the_table(write_file: Callable[[str, str], Path]) -> None:
+    path = write_file("ms2.txt", "0 24.5\n0.01 -12\n0.02 1.2\n")  # m/s² values read as g
+    code, out, _ = run("record", "info", str(path))
+    assert code == 0 and "warning: PGA 24.5 g" in out.replace("\n", " ")
+    code, out, _ = run("record", "info", str(path), "--format", "json")
+    (data,) = json.loads(out)["records"]
+    assert len(data["warnings"]) == 1 and "check --units" in data["warnings"][0]
