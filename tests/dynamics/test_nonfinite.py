@@ -82,3 +82,29 @@ def test_the_peak_before_the_stop_is_kept_by_both_engines() -> None:
     fast, ref = (assess(block, TIME, accel, DT, engine=e).runs[0] for e in ENGINES)
     assert fast.max_ratio == pytest.approx(ref.max_ratio, rel=1e-6)
     assert fast.max_ratio > 0.5  # rocking: θ(0.49 s) ≈ 0.135 rad = 0.67 α
+
+
+@pytest.mark.parametrize("engine", ENGINES)
+@pytest.mark.parametrize(
+    ("theta0", "omega0", "name"),
+    [(math.nan, 0.0, "the rotation θ"), (0.1, math.inf, "the angular velocity θ̇")],
+)
+def test_a_non_finite_state_is_named(
+    engine: Engine, theta0: float, omega0: float, name: str
+) -> None:
+    """A NaN θ shows at once in θ̈; an infinite θ̇ in the error estimate, which stays NaN
+    through NONFINITE_RETRIES shrunk retries: either way the message names the quantity."""
+    from rockcli.dynamics.simulate import simulate
+
+    run = simulate(
+        Block(R=1.0, alpha=ALPHA, e=0.9),
+        TIME,
+        WAVE,
+        DT,
+        engine=engine,
+        theta0=theta0,
+        omega0=omega0,
+    )
+    assert run.status is RunStatus.NONFINITE
+    assert f"{name} is not finite" in run.message
+    assert run.t_end == 0.0
