@@ -21,10 +21,10 @@ NON_FINITE = "non-finite"
 
 def non_finite_line(runs: list[dict]) -> str | None:
     """The error line when a rocking run ended in a non-finite state, else None."""
-    bad = [f"{r['polarity']:+d}" for r in runs if r.get("status") == NON_FINITE]
+    bad = [r for r in runs if r.get("status") == NON_FINITE]
     if not bad:
         return None
-    which = "polarity " + ", ".join(bad) if len(bad) == 1 else "polarities " + ", ".join(bad)
+    which = "; ".join(f"polarity {r['polarity']:+d}: {r.get('message', '')}" for r in bad)
     return (
         f"internal error: the rocking integration produced a non-finite state ({which}); "
         f"the result above is not reliable — please report it to {REPORT_TO}"

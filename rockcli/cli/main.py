@@ -83,7 +83,17 @@ class RockGroup(click.Group):
                 traceback.print_exc(file=sys.stderr)
             click.echo(internal_error_line(exc), err=True)
             ctx.exit(EXIT_INTERNAL)
+        finally:
+            show_cache_note()
         return None  # unreachable: ctx.exit raises
+
+
+def show_cache_note() -> None:
+    """Say on stderr when the compiled engine could not be cached where it should."""
+    from rockcli import jitcache
+
+    if jitcache.NOTE:
+        click.echo(f"note: {jitcache.NOTE}", err=True)
 
 
 @click.group(cls=RockGroup, context_settings={"help_option_names": ["-h", "--help"]})

@@ -64,6 +64,7 @@ def run_document(run: RockingRun) -> dict[str, Any]:
     return {
         "polarity": run.polarity,
         "status": str(run.status),
+        "message": run.message,
         "max_ratio": run.max_ratio,
         "overturned": run.overturned,
         "t_overturn": run.t_overturn,

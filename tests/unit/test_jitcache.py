@@ -151,6 +151,9 @@ def test_assess_runs_from_a_read_only_install(tmp_path: Path, mode: str) -> None
     assert done.returncode == 0, done.stderr[-2000:]
     assert "Traceback" not in done.stderr
     note = done.stderr.rsplit("NOTE:", 1)[1]
+    # The CLI tells the user, on stderr, once (cli/main.py show_cache_note).
+    shown = done.stderr.rsplit("NOTE:", 1)[0]
+    assert shown.count("note: ") == 1 and ("cache" in shown.split("note: ")[1])
     if mode == "temp":
         assert f"cached in {tmp_path}" in note
         # numba's cache index, written there
