@@ -44,12 +44,13 @@ def assess(
     output,
 ):
     """Rocking time history of MODEL under a record, both polarities, with the verdict."""
+    from rockcli.report.assess import assessment_output_document
     from rockcli.studies.assess import run_assessment_output
 
     record = load_record(record_path, record_format, dt, units, scale, pga)
     history = history_path is not None or plot_path is not None
     out = run_assessment_output(model_path, record, engine, history=history)
-    doc = out.doc
+    doc = assessment_output_document(out, record)
     if history_path:
         write_history(history_path, out.result.worst)
     if plot_path:

@@ -66,12 +66,12 @@ def compare(
     output,
 ):
     """Kinematic check and rocking time history of MODEL on the same record, side by side."""
-    from rockcli.report.compare import comparison_report
+    from rockcli.report.compare import comparison_output_document, comparison_report
     from rockcli.report.table import show
     from rockcli.studies.compare import run_comparison_output
 
     record = load_record(record_path, record_format, dt, units, scale, pga)
-    doc, rocking = run_comparison_output(
+    out = run_comparison_output(
         model_path,
         record,
         engine=engine,
@@ -80,6 +80,7 @@ def compare(
         record_demand=record_demand,
         history=plot_path is not None,
     )
+    doc, rocking = comparison_output_document(out, record), out.rocking
     if plot_path:
         from rockcli.report.plots import plot_comparison
 

@@ -80,10 +80,10 @@ def sweep(
     """
     from rockcli.report.sweep import progress_bar, sweep_report
     from rockcli.report.table import show
-    from rockcli.studies.sweep_exec import dask_executor, local_executor
-    from rockcli.studies.sweep_run import run_sweep
-    from rockcli.studies.sweep_study import load_study
-    from rockcli.studies.sweep_worker import quick_exit
+    from rockcli.studies.sweep.executor import dask_executor, local_executor
+    from rockcli.studies.sweep.run import run_sweep
+    from rockcli.studies.sweep.study import load_study
+    from rockcli.studies.sweep.worker import quick_exit
 
     started = time.perf_counter()
     quick_exit()

@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 import math
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from rockcli import __version__
 from rockcli.dynamics.result import Assessment, RockingRun
@@ -11,6 +11,9 @@ from rockcli.mechanics import Block, linear_global_stiffness, restrainer_coeffic
 from rockcli.records.record import Record
 from rockcli.report.records import record_document, record_report
 from rockcli.report.table import Column, Report, Table, format_value, key_value
+
+if TYPE_CHECKING:
+    from rockcli.studies.assess import AssessmentOutput
 
 SCHEMA = 1
 
@@ -142,6 +145,12 @@ def assessment_document(
         "max_ratio": result.max_ratio,
         "warnings": [w for r in result.runs for w in r.warnings],
     }
+
+
+def assessment_output_document(out: AssessmentOutput, record: Record) -> dict[str, Any]:
+    """The `rock assess --format json` document of an assess workflow's results."""
+    info = model_document(out.name, out.kind, out.block, out.e_rule)
+    return assessment_document(info, record, out.block, out.result)
 
 
 RUN_ROWS = (

@@ -1,6 +1,6 @@
 """The `rock sweep` summary as tables: the paper's Fig. 8 counts and the inconsistencies.
 
-Built from the summary document only (rockcli.studies.sweep_summary), rendered by the one
+Built from the summary document only (rockcli.studies.sweep.summary), rendered by the one
 generic renderer (:mod:`rockcli.report.table`).
 """
 

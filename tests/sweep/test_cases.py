@@ -13,8 +13,8 @@ import pytest
 
 from rockcli.errors import InputError
 from rockcli.model.derive import to_block
-from rockcli.studies.sweep_cases import Case, build_model, case_label, check_cases, expand
-from rockcli.studies.sweep_study import load_study
+from rockcli.studies.sweep.cases import Case, build_model, case_label, check_cases, expand
+from rockcli.studies.sweep.study import load_study
 from tests.sweep.conftest import STUDY, WriteStudy
 
 
@@ -93,8 +93,8 @@ def test_an_invalid_case_names_its_axis_values(write_study: WriteStudy) -> None:
 
 def test_a_case_the_code_check_refuses_names_the_case(write_study: WriteStudy) -> None:
     # The kinematic check alone, without records and without a code spectrum in the model.
-    from rockcli.studies.sweep_exec import local_executor
-    from rockcli.studies.sweep_run import run_sweep
+    from rockcli.studies.sweep.executor import local_executor
+    from rockcli.studies.sweep.run import run_sweep
 
     text = STUDY.split("[[records]]")[0].replace("base =", 'analyses = ["kinematic"]\nbase =')
     path = write_study(text)

@@ -24,7 +24,7 @@ from typing import Any
 
 from rockcli import __version__
 from rockcli.errors import InputError
-from rockcli.studies.sweep_study import StudyPlan
+from rockcli.studies.sweep.study import StudyPlan
 
 CASES_FILE = "cases.csv"
 STATE_FILE = "sweep.json"

@@ -14,8 +14,8 @@ from collections.abc import Callable, Hashable, Iterable, Mapping, Sequence
 from typing import Any
 
 from rockcli import __version__
-from rockcli.studies.sweep_cases import Case
-from rockcli.studies.sweep_study import StudyPlan
+from rockcli.studies.sweep.cases import Case
+from rockcli.studies.sweep.study import StudyPlan
 
 SCHEMA = 1
 #: Digits α is rounded to when grouping cases by slenderness (α from thickness and height is

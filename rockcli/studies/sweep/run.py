@@ -17,11 +17,11 @@ from concurrent.futures import FIRST_COMPLETED, Future, wait
 from dataclasses import dataclass
 from typing import Any
 
-from rockcli.studies.sweep_cases import Case, check_cases, expand
-from rockcli.studies.sweep_exec import Lane
-from rockcli.studies.sweep_output import Output, typed
-from rockcli.studies.sweep_study import StudyPlan
-from rockcli.studies.sweep_worker import Chunk, read_source, run_chunk
+from rockcli.studies.sweep.cases import Case, check_cases, expand
+from rockcli.studies.sweep.executor import Lane
+from rockcli.studies.sweep.output import Output, typed
+from rockcli.studies.sweep.study import StudyPlan
+from rockcli.studies.sweep.worker import Chunk, read_source, run_chunk
 
 #: Work per chunk aimed at [s]: long enough that pickling and scheduling (≈ 1 ms per task)
 #: do not matter, short enough for a live progress bar and little lost work on interruption.
@@ -151,7 +151,7 @@ def run_sweep(
         run_facts: extra facts for the summary (jobs, scheduler).
         started: time.perf_counter() when the command started (the summary's wall time).
     """
-    from rockcli.studies.sweep_summary import case_rows, split_axis, summarize
+    from rockcli.studies.sweep.summary import case_rows, split_axis, summarize
 
     start = time.perf_counter() if started is None else started
     check_cases(plan)

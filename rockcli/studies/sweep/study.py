@@ -269,7 +269,7 @@ def load_study(file: str, records_dir: str | None = None) -> StudyPlan:
         records_dir: replaces the file's records_dir (the --records-dir option).
     """
     from rockcli.model.load import read_toml
-    from rockcli.studies.sweep_paths import check_axes
+    from rockcli.studies.sweep.paths import check_axes
 
     study = validate_study(read_toml(file), file)
     here = Path(file).parent

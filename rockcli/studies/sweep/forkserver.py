@@ -10,6 +10,6 @@ forking it is safe.
 
 from __future__ import annotations
 
-from rockcli.studies.sweep_worker import init_worker
+from rockcli.studies.sweep.worker import init_worker
 
 init_worker()

@@ -17,7 +17,7 @@ from pydantic import BaseModel
 
 from rockcli.errors import InputError
 from rockcli.model.schema import Model
-from rockcli.studies.sweep_study import (
+from rockcli.studies.sweep.study import (
     PATH_ALLOWED,
     Axis,
     AxisSpec,
