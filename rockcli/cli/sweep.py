@@ -3,12 +3,48 @@
 from __future__ import annotations
 
 import os
+import signal
 import time
+from collections.abc import Iterator
+from contextlib import contextmanager
 
 import click
 
 from rockcli.cli.options import output_format
 from rockcli.cli.plot_option import plot_option
+
+#: Exit code after Ctrl-C or SIGTERM (128 + SIGINT, the shell's convention).
+EXIT_INTERRUPTED = 130
+
+
+def worker_count(jobs: int | None, cases: int) -> int:
+    """--jobs capped at the CPU count and the cases (an idle worker costs ~100 MB); a note on
+    stderr when capped. Default: the CPU count."""
+    cpus = os.cpu_count() or 1
+    wanted = jobs or cpus
+    count = max(1, min(wanted, cpus, cases))
+    if jobs is not None and count < jobs:
+        why = "the CPU count" if count == cpus else "the cases of the study"
+        click.echo(f"note: --jobs {jobs} capped to {count} ({why})", err=True)
+    return count
+
+
+@contextmanager
+def terminate_as_interrupt() -> Iterator[None]:
+    """SIGTERM behaves like Ctrl-C during the study (finished cases saved, exit 130)."""
+
+    def interrupt(signum: int, frame: object) -> None:
+        raise KeyboardInterrupt
+
+    try:
+        previous = signal.signal(signal.SIGTERM, interrupt)
+    except ValueError:  # not the main thread (an embedding caller): leave SIGTERM alone
+        yield
+        return
+    try:
+        yield
+    finally:
+        signal.signal(signal.SIGTERM, previous)
 
 
 @click.command()
@@ -80,8 +116,9 @@ def sweep(
     """
     from rockcli.report.sweep import progress_bar, sweep_report
     from rockcli.report.table import show
+    from rockcli.studies.sweep.cases import expand
     from rockcli.studies.sweep.executor import dask_executor, local_executor
-    from rockcli.studies.sweep.run import run_sweep
+    from rockcli.studies.sweep.run import SweepInterrupted, run_sweep
     from rockcli.studies.sweep.study import load_study
     from rockcli.studies.sweep.worker import quick_exit
 
@@ -90,22 +127,33 @@ def sweep(
     if resume and overwrite:
         raise click.UsageError("--resume and --overwrite exclude each other")
     plan = load_study(study_path, records_dir)
-    jobs = jobs or os.cpu_count() or 1
+    jobs = worker_count(jobs, len(expand(plan)))
     out = out or f"sweep-{os.path.splitext(os.path.basename(study_path))[0]}"
     where = dask_executor(scheduler) if scheduler else local_executor(jobs)
     facts = {"jobs": None if scheduler else jobs, "scheduler": scheduler}
-    with where as lanes, progress_bar(progress) as bar:
-        result = run_sweep(
-            plan,
-            out,
-            lanes,
-            resume=resume,
-            overwrite=overwrite,
-            chunk_size=chunk_size,
-            progress=bar,
-            run_facts=facts,
-            started=started,
+    try:
+        with terminate_as_interrupt(), where as lanes, progress_bar(progress) as bar:
+            result = run_sweep(
+                plan,
+                out,
+                lanes,
+                resume=resume,
+                overwrite=overwrite,
+                chunk_size=chunk_size,
+                progress=bar,
+                run_facts=facts,
+                started=started,
+            )
+    except SweepInterrupted as exc:
+        click.echo(
+            f"interrupted: {exc.saved} of {exc.total} cases saved in {exc.out}; "
+            "rerun with --resume",
+            err=True,
         )
+        raise SystemExit(EXIT_INTERRUPTED) from None
+    except KeyboardInterrupt:
+        click.echo("interrupted before any case ran", err=True)
+        raise SystemExit(EXIT_INTERRUPTED) from None
     if plot_path:
         from rockcli.report.plots import plot_sweep
 

@@ -19,15 +19,20 @@ COUNT_COLUMNS = (
     Column("code_conservative", "code cons.", "", "{:d}"),
     Column("code_unconservative", "code uncons.", "", "{:d}"),
     Column("undetermined", "undetermined", "", "{:d}"),
+    Column("errors", "errors", "", "{:d}"),
 )
 
 
 def _cell(row: dict[str, Any], analyses: Sequence[str]) -> str:
-    """A pivot cell: code / rocking collapses (and code-conservative cases), as run."""
+    """A pivot cell: code / rocking collapses (and code-conservative cases), as run, and the
+    cases without a verdict (``+n ?``): never shown as if they were zero collapses."""
     if len(analyses) == 1:
         key = "code_collapses" if analyses[0] == "kinematic" else "rocking_collapses"
-        return str(row[key])
-    return f"{row['code_collapses']} / {row['rocking_collapses']} ({row['code_conservative']})"
+        text = str(row[key])
+    else:
+        text = f"{row['code_collapses']} / {row['rocking_collapses']} ({row['code_conservative']})"
+    unknown = row.get("undetermined") or 0
+    return f"{text} +{unknown} ?" if unknown else text
 
 
 def pivot(
@@ -106,11 +111,20 @@ def sweep_report(doc: dict[str, Any]) -> Report:
     notes = [
         *(
             [
-                f"undetermined: {doc['undetermined']} cases where a verdict was not reached (the"
-                " code's non-linear check without d0* — positive global stiffness, no limit —"
-                " or an undecided rocking run); not counted as collapses"
+                f"undetermined (+n ? in the tables): {doc['undetermined']} cases where a verdict"
+                " was not reached (the code's non-linear check without d0* — positive global"
+                " stiffness, no limit —, an undecided rocking run, or a failed case); not"
+                " counted as collapses nor as survivals"
             ]
             if doc["undetermined"]
+            else []
+        ),
+        *(
+            [
+                f"errors: {doc['errors']} cases failed; their message is in the error column of"
+                f" {doc['out']}/cases.csv"
+            ]
+            if doc.get("errors")
             else []
         ),
         f"{doc['cases']} cases ({doc['computed_cases']} run now, {doc['resumed_cases']} from an "

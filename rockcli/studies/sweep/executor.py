@@ -61,7 +61,12 @@ def process_executor(workers: int) -> ProcessPoolExecutor:
     method = start_method()
     context = multiprocessing.get_context(method)
     if method == "forkserver":
+        from multiprocessing import forkserver
+
         context.set_forkserver_preload([PRELOAD])
+        # Started here, by the main thread: the server dies with its parent thread (prctl
+        # PR_SET_PDEATHSIG), which must live as long as the study.
+        forkserver.ensure_running()
     pool = ProcessPoolExecutor(max_workers=workers, mp_context=context, initializer=init_worker)
     threading.Thread(target=_start, args=(pool, workers), daemon=True).start()
     return pool
@@ -87,9 +92,28 @@ def local_executor(jobs: int) -> Iterator[list[Lane]]:
         lanes.append(Lane(process_executor(jobs - 1), jobs - 1, IN_FLIGHT * (jobs - 1)))
     try:
         yield lanes
-    finally:
+    except BaseException:
+        # Interrupted or failed: stop the worker processes now (their chunks are lost, the
+        # finished ones are on disk); the thread finishes its chunk (about a second).
+        for lane in reversed(lanes):
+            stop(lane.executor)
+        raise
+    else:
         for lane in reversed(lanes):
             lane.executor.shutdown(wait=True, cancel_futures=True)
+
+
+def stop(executor: Executor) -> None:
+    """Cancel what is queued and end the worker processes of a pool without waiting."""
+    executor.shutdown(wait=False, cancel_futures=True)
+    if isinstance(executor, ProcessPoolExecutor):
+        terminate = getattr(executor, "terminate_workers", None)  # Python 3.14
+        if terminate is not None:
+            terminate()
+            return
+        for process in list((getattr(executor, "_processes", None) or {}).values()):
+            with suppress(OSError, ValueError, AttributeError):
+                process.terminate()
 
 
 @contextmanager

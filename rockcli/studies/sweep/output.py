@@ -30,6 +30,8 @@ CASES_FILE = "cases.csv"
 STATE_FILE = "sweep.json"
 SUMMARY_FILE = "summary.json"
 STATE_SCHEMA = 1
+#: Bytes read at a time when hashing a record file.
+HASH_BLOCK = 1 << 20
 
 #: Result columns and their types, after the case id, the record and the axis columns.
 RESULT_COLUMNS: dict[str, type] = {
@@ -47,6 +49,7 @@ RESULT_COLUMNS: dict[str, type] = {
     "a0_star": float,
     "Ts": float,
     "classification": str,
+    "error": str,
 }
 
 
@@ -82,10 +85,20 @@ def csv_lines(rows: Iterable[Sequence[str]]) -> str:
     return buffer.getvalue()
 
 
+def file_digest(path: str) -> str:
+    """The sha256 of a file's bytes (a record edited at the same size changes it)."""
+    digest = hashlib.sha256()
+    with open(path, "rb") as fh:
+        for block in iter(lambda: fh.read(HASH_BLOCK), b""):
+            digest.update(block)
+    return digest.hexdigest()
+
+
 def fingerprint(plan: StudyPlan) -> str:
-    """A hash of what decides the results: rock's version, the study, base model, records."""
+    """A hash of what decides the results: rock's version, the study, base model, records
+    (each by its bytes, not its name or size)."""
     records = [
-        {**asdict(r), "path": Path(r.path).name, "size": Path(r.path).stat().st_size}
+        {**asdict(r), "path": Path(r.path).name, "sha256": file_digest(r.path)}
         for r in plan.records
     ]
     data = {

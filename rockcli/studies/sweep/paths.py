@@ -45,6 +45,7 @@ RESERVED = frozenset(
         "a0_star",
         "Ts",
         "classification",
+        "error",
     }
 )
 

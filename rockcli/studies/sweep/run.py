@@ -17,6 +17,7 @@ from concurrent.futures import FIRST_COMPLETED, Future, wait
 from dataclasses import dataclass
 from typing import Any
 
+from rockcli.errors import InputError
 from rockcli.studies.sweep.cases import Case, check_cases, expand
 from rockcli.studies.sweep.executor import Lane
 from rockcli.studies.sweep.output import Output, typed
@@ -36,6 +37,14 @@ ROCKING_COST = 2e-4
 ROCKING_COST_PER_SAMPLE = 2e-8
 
 Progress = Callable[[int, int], None]
+
+
+class SweepInterrupted(KeyboardInterrupt):
+    """Ctrl-C (or SIGTERM) during a study: how many cases are saved, and where."""
+
+    def __init__(self, saved: int, total: int, out: str) -> None:
+        super().__init__(f"{saved} of {total} cases saved")
+        self.saved, self.total, self.out = saved, total, out
 
 
 @dataclass(frozen=True)
@@ -165,11 +174,23 @@ def run_sweep(
     if progress:
         progress(len(rows), len(cases))
     workers = sum(lane.workers for lane in lanes)
-    for chunk_rows in run_chunks(lanes, make_chunks(plan, todo, npts, workers, chunk_size)):
-        written = output.append({**labels[r["case"]], **r} for r in chunk_rows)
-        rows.update((int(w["case"]), w) for w in written)
-        if progress:
-            progress(len(rows), len(cases))
+    chunks = make_chunks(plan, todo, npts, workers, chunk_size)
+    try:
+        for chunk_rows in run_chunks(lanes, chunks):
+            written = output.append({**labels[r["case"]], **r} for r in chunk_rows)
+            rows.update((int(w["case"]), w) for w in written)
+            if progress:
+                progress(len(rows), len(cases))
+    except KeyboardInterrupt:
+        raise SweepInterrupted(len(rows), len(cases), str(output.folder)) from None
+    except OSError as exc:  # a full disk, a folder turned read-only
+        raise InputError(
+            f"cannot write the output folder: {exc.strerror or exc}; "
+            f"{len(rows)} of {len(cases)} cases saved",
+            file=str(output.folder),
+            where="--out",
+            allowed="a writable folder with free space, then rerun with --resume",
+        ) from None
     run = {
         "out": str(output.folder),
         "computed_cases": len(cases) - resumed,

@@ -43,8 +43,19 @@ NEEDS = {
     "code_unconservative": {"kinematic", "rocking"},
     "consistent_safe": {"kinematic", "rocking"},
     "consistent_unsafe": {"kinematic", "rocking"},
-    "undetermined": {"kinematic", "rocking"},
 }
+
+
+def undetermined(row: Mapping[str, Any], analyses: Iterable[str]) -> bool:
+    """True when an analysis that ran gave no verdict: a failed case (its ``error``), the
+    code's check not evaluated, or an undecided rocking run (step or event limit). Such a
+    case is neither a collapse nor a survival: the summary counts it apart."""
+    ran = set(analyses)
+    return bool(
+        row.get("error")
+        or ("kinematic" in ran and code_collapse(row) is None)
+        or ("rocking" in ran and row.get("rocking") == "undecided")
+    )
 
 
 def tally(rows: Iterable[Mapping[str, Any]], analyses: Iterable[str]) -> dict[str, int | None]:
@@ -58,15 +69,18 @@ def tally(rows: Iterable[Mapping[str, Any]], analyses: Iterable[str]) -> dict[st
         "consistent_safe": 0,
         "consistent_unsafe": 0,
         "undetermined": 0,
+        "errors": 0,
     }
+    ran = set(analyses)
     for row in rows:
         out["cases"] += 1
         out["code_collapses"] += code_collapse(row) is True
         out["rocking_collapses"] += rocking_collapse(row) is True
         kind = row.get("classification")
-        if kind is not None:
+        if kind is not None and kind != "undetermined":
             out[kind.replace("-", "_")] += 1
-    ran = set(analyses)
+        out["undetermined"] += undetermined(row, ran)
+        out["errors"] += bool(row.get("error"))
     return {k: v if NEEDS.get(k, set()) <= ran else None for k, v in out.items()}
 
 
@@ -187,6 +201,7 @@ def case_rows(
                 "code_collapse": code_collapse(result),
                 "rocking_collapse": rocking_collapse(result),
                 "classification": result.get("classification"),
+                "error": result.get("error"),
             }
         )
     return rows

@@ -14,6 +14,8 @@ import atexit
 import gc
 import os
 import threading
+import time
+import unicodedata
 from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
@@ -52,12 +54,67 @@ class Chunk:
     cases: tuple[Case, ...]
 
 
+#: Seconds between two looks of a worker at its parent (how soon an orphan exits).
+PARENT_POLL = 0.5
+#: Linux prctl option: the signal a process gets when its parent dies (<linux/prctl.h>).
+PR_SET_PDEATHSIG = 1
+
+
 def init_worker() -> None:
-    """Process-pool initializer: one thread, the compiled kernels loaded, a quick exit."""
-    for key, value in SINGLE_THREAD.items():
-        os.environ.setdefault(key, value)
+    """Process-pool initializer: one thread, the compiled kernels loaded, a quick exit, and
+    an exit with the parent (a killed `rock sweep` leaves no worker behind)."""
+    single_thread()
+    exit_with_parent()
     warm()
     quick_exit()
+
+
+def single_thread() -> None:
+    """One numba/BLAS thread in this process (set before numpy and numba load)."""
+    for key, value in SINGLE_THREAD.items():
+        os.environ.setdefault(key, value)
+
+
+def exit_with_parent() -> None:
+    """End this process when its parent ends, whatever killed the parent (even SIGKILL).
+
+    A daemon thread looks at os.getppid() every PARENT_POLL s: an orphan is re-parented (to
+    init or a subreaper), so a changed parent id means the parent is gone.
+    """
+    parent = os.getppid()
+
+    def watch() -> None:
+        while os.getppid() == parent:
+            time.sleep(PARENT_POLL)
+        os._exit(1)
+
+    threading.Thread(target=watch, name="rock-parent-watch", daemon=True).start()
+
+
+def die_with_parent() -> bool:
+    """Ask Linux to SIGKILL this process when its parent thread ends (prctl PR_SET_PDEATHSIG).
+
+    For the fork server, which must stay single-threaded (it forks the workers): no watcher
+    thread there. False where prctl is not available (not Linux). The parent thread must be
+    the one that lives as long as the study (the main thread: see
+    :func:`rockcli.studies.sweep.executor.process_executor`).
+    """
+    import ctypes
+    import signal
+    import sys
+
+    if not sys.platform.startswith("linux"):
+        return False
+    parent = os.getppid()
+    try:
+        libc = ctypes.CDLL(None, use_errno=True)
+        if libc.prctl(PR_SET_PDEATHSIG, signal.SIGKILL, 0, 0, 0) != 0:
+            return False
+    except (OSError, AttributeError):
+        return False
+    if os.getppid() != parent:  # the parent died before prctl
+        os._exit(1)
+    return True
 
 
 def quick_exit() -> None:
@@ -109,19 +166,34 @@ def spectrum_of(source: RecordSource, g: float) -> RecordSpectrum:
 
 
 def run_chunk(chunk: Chunk) -> list[dict[str, Any]]:
-    """The result columns of every case of the chunk, each with its case id."""
+    """The result columns of every case of the chunk, each with its case id.
+
+    A case that fails (bad input found at run time, or an internal error) gives a row with
+    its ``error`` and no results: the study goes on, the summary counts it, and ``--resume``
+    does not run it again.
+    """
     plan = chunk.plan
     source = plan.records[chunk.record] if chunk.record is not None else None
     record = read_source(source) if source is not None else None
     rows = []
     for case in chunk.cases:
-        model = build_model(plan, case)
         try:
+            model = build_model(plan, case)
             spectrum = spectrum_of(source, model.analysis.g) if source is not None else None
             rows.append({"case": case.id, **run_case(plan, model, record, spectrum)})
         except InputError as exc:
-            raise case_error(plan, case, exc) from None
+            named = case_error(plan, case, exc)
+            text = str(InputError(named.problem, value=named.value, allowed=named.allowed))
+            rows.append({"case": case.id, "error": one_line(text)})
+        except Exception as exc:  # noqa: BLE001 - any failure of one case is that case's row
+            text = f"internal error (please report): {type(exc).__name__}: {exc}"
+            rows.append({"case": case.id, "error": one_line(text)})
     return rows
+
+
+def one_line(text: str) -> str:
+    """Text with every control character (line breaks, tabs, escapes) made a space."""
+    return "".join(" " if unicodedata.category(ch) == "Cc" else ch for ch in text)
 
 
 def run_case(
