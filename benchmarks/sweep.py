@@ -111,13 +111,14 @@ def per_case() -> None:
 def studies() -> None:
     print(f"\nwhole studies, `rock sweep …` (best, median of {REPEATS}) [s]")
     with tempfile.TemporaryDirectory() as out:
-        runs = [(f"pulses, --jobs {jobs}", "pulses.toml", jobs, []) for jobs in ("2", "1")]
+        outside = ["--allow-outside"]
+        runs = [(f"pulses, --jobs {jobs}", "pulses.toml", jobs, outside) for jobs in ("2", "1")]
         if SHARED.is_dir():
             shared = ["--records-dir", str(SHARED)]
             runs += [(f"§4.4, --jobs {jobs}", "paper-4.4.toml", jobs, shared) for jobs in "21"]
         for label, study, jobs, extra in runs:
             args = [ROCK, "sweep", str(STUDIES / study), "--jobs", jobs, *extra]
-            args += ["--out", str(Path(out) / "run"), "--overwrite", "--format", "json"]
+            args += ["--out", str(Path(out) / "run"), "--force", "--format", "json"]
             best, median = wall(args)
             print(f"  {label:22s} {best:.2f}  {median:.2f}")
 

@@ -10,11 +10,30 @@ from contextlib import contextmanager
 
 import click
 
-from rockcli.cli.options import output_format
+from rockcli.cli.options import announce_written, output_format
 from rockcli.cli.plot_option import plot_option
 
 #: Exit code after Ctrl-C or SIGTERM (128 + SIGINT, the shell's convention).
 EXIT_INTERRUPTED = 130
+
+
+#: Longest default output folder name (file systems allow 255 bytes; room for a suffix).
+OUT_NAME_MAX = 100
+#: Hex digits of the study name's hash kept when the default folder name is shortened.
+OUT_HASH_DIGITS = 10
+
+
+def default_out(study_path: str) -> str:
+    """``sweep-STUDY`` next to the current folder; a long study name is cut and hashed so the
+    folder name stays within the file system's NAME_MAX."""
+    import hashlib
+
+    name = "sweep-" + os.path.splitext(os.path.basename(study_path))[0]
+    if len(name.encode("utf-8")) <= OUT_NAME_MAX:
+        return name
+    digest = hashlib.sha256(name.encode("utf-8", "surrogateescape")).hexdigest()
+    keep = name.encode("utf-8")[: OUT_NAME_MAX - OUT_HASH_DIGITS - 1].decode("utf-8", "ignore")
+    return f"{keep}-{digest[:OUT_HASH_DIGITS]}"
 
 
 def worker_count(jobs: int | None, cases: int) -> int:
@@ -65,7 +84,18 @@ def terminate_as_interrupt() -> Iterator[None]:
     "[default: the CPU count].",
 )
 @click.option("--resume", is_flag=True, help="Skip the cases an interrupted run finished.")
-@click.option("--overwrite", is_flag=True, help="Start over in an output folder in use.")
+@click.option(
+    "--force",
+    "--overwrite",
+    "overwrite",
+    is_flag=True,
+    help="Start over in an output folder that holds another or an unfinished study.",
+)
+@click.option(
+    "--allow-outside",
+    is_flag=True,
+    help="Let the study's files (base model, records) lie outside the study file's folder.",
+)
 @click.option(
     "--scheduler",
     default=None,
@@ -101,6 +131,7 @@ def sweep(
     jobs,
     resume,
     overwrite,
+    allow_outside,
     scheduler,
     records_dir,
     chunk_size,
@@ -125,10 +156,10 @@ def sweep(
     started = time.perf_counter()
     quick_exit()
     if resume and overwrite:
-        raise click.UsageError("--resume and --overwrite exclude each other")
-    plan = load_study(study_path, records_dir)
+        raise click.UsageError("--resume and --force exclude each other")
+    plan = load_study(study_path, records_dir, allow_outside=allow_outside)
     jobs = worker_count(jobs, len(expand(plan)))
-    out = out or f"sweep-{os.path.splitext(os.path.basename(study_path))[0]}"
+    out = out or default_out(study_path)
     where = dask_executor(scheduler) if scheduler else local_executor(jobs)
     facts = {"jobs": None if scheduler else jobs, "scheduler": scheduler}
     try:
@@ -154,6 +185,7 @@ def sweep(
     except KeyboardInterrupt:
         click.echo("interrupted before any case ran", err=True)
         raise SystemExit(EXIT_INTERRUPTED) from None
+    announce_written(os.path.join(result.out, "cases.csv"), "and summary.json")
     if plot_path:
         from rockcli.report.plots import plot_sweep
 

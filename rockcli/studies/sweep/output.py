@@ -20,10 +20,11 @@ import os
 from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import asdict
 from pathlib import Path
-from typing import Any
+from typing import Any, NoReturn
 
 from rockcli import __version__
 from rockcli.errors import InputError
+from rockcli.outfile import write_text
 from rockcli.studies.sweep.study import StudyPlan
 
 CASES_FILE = "cases.csv"
@@ -58,23 +59,61 @@ def columns(plan: StudyPlan) -> list[str]:
     return ["case", "record", *(a.name for a in plan.axes), *RESULT_COLUMNS]
 
 
+#: First characters that make a spreadsheet read a cell as a formula (OWASP, CSV injection).
+FORMULA_STARTS = ("=", "+", "-", "@", "\t", "\r")
+
+
 def cell(value: Any) -> str:
-    """One CSV cell: floats at full precision (repr), booleans true/false, None empty."""
+    """One CSV cell: floats at full precision (repr), booleans true/false, None empty, text
+    escaped against formulas (:func:`escape`)."""
     if value is None or (isinstance(value, float) and math.isnan(value)):
         return ""
     if isinstance(value, bool):
         return "true" if value else "false"
     if isinstance(value, float):
         return repr(value)
+    if isinstance(value, str):
+        return escape(value)
     return str(value)
 
 
+def _is_number(text: str) -> bool:
+    try:
+        float(text)
+    except ValueError:
+        return False
+    return True
+
+
+def escape(text: str) -> str:
+    """Text that a spreadsheet would run as a formula (it starts with = + - @, a tab or a
+    carriage return, after any leading quotes) prefixed with a single quote; numbers such as
+    -0.5 stay numbers (OWASP, CSV injection)."""
+    if text.lstrip("'").startswith(FORMULA_STARTS) and not _is_number(text):
+        return "'" + text
+    return text
+
+
+def unescape(text: str) -> str:
+    """The text :func:`escape` was given."""
+    if text.startswith("'") and text.lstrip("'").startswith(FORMULA_STARTS):
+        return text[1:]
+    return text
+
+
 def parse_cell(text: str, kind: type) -> Any:
-    """A result cell back to its value (None when empty)."""
+    """A result cell back to its value (None when empty; ValueError when not of its kind)."""
     if text == "":
         return None
     if kind is bool:
+        if text not in ("true", "false"):
+            raise ValueError(text)
         return text == "true"
+    if kind is float:
+        value = float(text)
+        if not math.isfinite(value):
+            raise ValueError(text)
+        return value
     return kind(text)
 
 
@@ -134,33 +173,45 @@ class Output:
         except (OSError, ValueError):
             return None
 
-    def start(self, *, resume: bool, overwrite: bool) -> dict[int, dict[str, str]]:
-        """Prepare the folder; the rows kept from an earlier run (by case id) when resuming."""
+    def check(self, *, resume: bool, overwrite: bool) -> dict[int, dict[str, str]]:
+        """Before any work: the folder can be written and may be used; the rows kept from an
+        earlier run (by case id) when resuming."""
+        self._check_writable()
         state = self._state() if self.cases_path.exists() else None
         same = state is not None and state.get("fingerprint") == self.fingerprint
         if not overwrite:
             self._check_reuse(state, same, resume)
-        kept = self.read_rows() if resume and same and not overwrite else {}
+        return self.read_rows() if resume and same and not overwrite else {}
+
+    def start(self, kept: Mapping[int, Mapping[str, str]]) -> None:
+        """Mark the study unfinished and rewrite cases.csv with the rows kept."""
         self._write_state(complete=False)
         self._rewrite(kept)
-        return kept
+
+    def _check_writable(self) -> None:
+        folder = self.folder
+        if folder.exists() and not folder.is_dir():
+            self._refuse("is a file", "a folder path")
+        target = folder if folder.is_dir() else _existing_parent(folder)
+        if not os.access(target, os.W_OK | os.X_OK):
+            self._refuse(f"cannot be written ({target} is not writable)", "a writable folder")
 
     def _check_reuse(self, state: dict[str, Any] | None, same: bool, resume: bool) -> None:
         """Refuse to replace what the folder holds unless it is this study, complete."""
         if state is None:
             if self.cases_path.exists():
-                self._refuse("holds a cases.csv that rock did not write", "--overwrite")
+                self._refuse("holds a cases.csv that rock did not write", "--force")
             return
         if not same:
             self._refuse(
                 "holds the results of another study (or the base model, the records or rock "
                 "changed since)",
-                "--overwrite to start over, or another --out",
+                "--force to start over, or another --out",
             )
         if not resume and not state.get("complete"):
             self._refuse(
                 "holds an unfinished run of this study",
-                "--resume to continue it, or --overwrite to start over",
+                "--resume to continue it, or --force to start over",
             )
 
     def _refuse(self, problem: str, allowed: str) -> None:
@@ -179,7 +230,7 @@ class Output:
                 "columns": self.header,
                 "complete": complete,
             }
-            (self.folder / STATE_FILE).write_text(json.dumps(state, indent=2), encoding="utf-8")
+            write_text(self.folder / STATE_FILE, json.dumps(state, indent=2))
         except OSError as exc:
             raise InputError(
                 f"cannot write the output folder: {exc.strerror or exc}",
@@ -189,31 +240,59 @@ class Output:
             ) from None
 
     def read_rows(self) -> dict[int, dict[str, str]]:
-        """The complete rows of cases.csv by case id (a half-written last line is dropped)."""
+        """The rows of cases.csv by case id (a half-written last line is dropped).
+
+        Every other line must be a row this study wrote: the header, then a case id below the
+        number of cases and a value of the right type in each result cell. A damaged file is
+        an InputError naming its line (start over with --force), never a silent gap.
+        """
         try:
             text = self.cases_path.read_text(encoding="utf-8")
-        except OSError:
-            return {}
+        except (OSError, UnicodeDecodeError) as exc:
+            self._damaged(None, f"cannot be read ({exc.__class__.__name__})")
         lines = text.splitlines(keepends=True)
         if lines and not lines[-1].endswith("\n"):
             lines.pop()  # interrupted in the middle of a line
-        rows = list(csv.reader(lines))
+        try:
+            rows = list(csv.reader(lines, strict=True))
+        except csv.Error as exc:
+            self._damaged(None, f"is not valid CSV ({exc})")
         if not rows or rows[0] != self.header:
-            return {}
+            self._damaged(1, "the header is not this study's columns")
         kept: dict[int, dict[str, str]] = {}
-        for row in rows[1:]:
-            if len(row) == len(self.header) and row[0].isdigit():
-                case = int(row[0])
-                if case < self.n_cases:
-                    kept.setdefault(case, dict(zip(self.header, row, strict=True)))
+        for number, row in enumerate(rows[1:], start=2):
+            problem = self._row_problem(row)
+            if problem:
+                self._damaged(number, problem)
+            kept.setdefault(int(row[0]), dict(zip(self.header, row, strict=True)))
         return kept
+
+    def _row_problem(self, row: Sequence[str]) -> str | None:
+        """What is wrong with a row of cases.csv, or None."""
+        if len(row) != len(self.header):
+            return f"{len(row)} cells, not {len(self.header)}"
+        if not (row[0].isascii() and row[0].isdigit() and int(row[0]) < self.n_cases):
+            return f"not a case id of this study (0 to {self.n_cases - 1})"
+        cells = dict(zip(self.header, row, strict=True))
+        for name, kind in RESULT_COLUMNS.items():
+            try:
+                parse_cell(unescape(cells[name]), kind)
+            except ValueError:
+                return f"column {name} is not a {kind.__name__}"
+        return None
+
+    def _damaged(self, line: int | None, problem: str) -> NoReturn:
+        raise InputError(
+            f"cannot resume: {CASES_FILE} {problem}",
+            file=str(self.cases_path),
+            where=f"line {line}" if line else None,
+            allowed="a cases.csv written by rock sweep, or --force to start over",
+        )
 
     def _rewrite(self, rows: Mapping[int, Mapping[str, str]]) -> None:
         """cases.csv with the header and the given rows sorted by case id (atomically)."""
         body = [self.header, *([rows[k][c] for c in self.header] for k in sorted(rows))]
-        tmp = self.cases_path.with_suffix(".csv.tmp")
-        tmp.write_text(csv_lines(body), encoding="utf-8")
-        os.replace(tmp, self.cases_path)
+        write_text(self.cases_path, csv_lines(body))
 
     def append(self, rows: Iterable[Mapping[str, Any]]) -> list[dict[str, str]]:
         """Append the rows of a completed chunk; returns them as written (text cells)."""
@@ -226,12 +305,18 @@ class Output:
     def finish(self, rows: Mapping[int, Mapping[str, str]], summary: dict[str, Any]) -> None:
         """Sort cases.csv by case id, write summary.json and mark the study complete."""
         self._rewrite(rows)
-        (self.folder / SUMMARY_FILE).write_text(
-            json.dumps(summary, indent=2, allow_nan=False), encoding="utf-8"
-        )
+        write_text(self.folder / SUMMARY_FILE, json.dumps(summary, indent=2, allow_nan=False))
         self._write_state(complete=True)
+
+
+def _existing_parent(path: Path) -> Path:
+    """The nearest folder above path that exists (where the output folder will be made)."""
+    for parent in path.absolute().parents:
+        if parent.is_dir():
+            return parent
+    return Path(".")
 
 
 def typed(row: Mapping[str, str]) -> dict[str, Any]:
     """The result cells of a row as values (floats, booleans, text, None)."""
-    return {k: parse_cell(row[k], kind) for k, kind in RESULT_COLUMNS.items()}
+    return {k: parse_cell(unescape(row[k]), kind) for k, kind in RESULT_COLUMNS.items()}

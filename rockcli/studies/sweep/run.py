@@ -163,11 +163,12 @@ def run_sweep(
     from rockcli.studies.sweep.summary import case_rows, split_axis, summarize
 
     start = time.perf_counter() if started is None else started
-    check_cases(plan)
     cases = expand(plan)
-    npts, facts = record_facts(plan)
     output = Output(out, plan, len(cases))
-    rows = output.start(resume=resume, overwrite=overwrite)
+    rows = output.check(resume=resume, overwrite=overwrite)  # before any work
+    check_cases(plan)
+    npts, facts = record_facts(plan)
+    output.start(rows)
     resumed = len(rows)
     todo = [c for c in cases if c.id not in rows]
     labels = {c.id: _labels(plan, c) for c in todo}

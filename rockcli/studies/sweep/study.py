@@ -261,12 +261,34 @@ def validate_study(data: Mapping[str, Any], file: str) -> Study:
         raise study_error(exc.errors()[0], file) from None
 
 
-def load_study(file: str, records_dir: str | None = None) -> StudyPlan:
+#: What a path of the study file may name without --allow-outside.
+INSIDE_ALLOWED = (
+    "a path inside the study file's folder (or inside --records-dir), or --allow-outside"
+)
+
+
+def check_inside(path: Path, folder: Path, file: str, where: str, value: str) -> None:
+    """Refuse a path of the study file that leaves its folder (``..``, an absolute path, a
+    symlink to elsewhere): a study from an untrusted pull request reads only its own files."""
+    if not path.resolve().is_relative_to(folder.resolve()):
+        raise InputError(
+            "leaves the study's folder",
+            file=file,
+            where=where,
+            value=value,
+            allowed=INSIDE_ALLOWED,
+        )
+
+
+def load_study(
+    file: str, records_dir: str | None = None, *, allow_outside: bool = False
+) -> StudyPlan:
     """Read and validate a study file: schema, base model, axis paths, record files.
 
     Args:
         file: the study TOML (named in errors as given).
         records_dir: replaces the file's records_dir (the --records-dir option).
+        allow_outside: let the file's paths leave its folder (the --allow-outside option).
     """
     from rockcli.model.load import read_toml
     from rockcli.studies.sweep.paths import check_axes
@@ -274,6 +296,10 @@ def load_study(file: str, records_dir: str | None = None) -> StudyPlan:
     study = validate_study(read_toml(file), file)
     here = Path(file).parent
     base_file = str(here / study.base)
+    if not allow_outside:
+        check_inside(here / study.base, here, file, "base", study.base)
+        if study.records_dir and not records_dir:
+            check_inside(here / study.records_dir, here, file, "records_dir", study.records_dir)
     if not Path(base_file).is_file():
         raise InputError(
             "base model file not found",
@@ -285,7 +311,7 @@ def load_study(file: str, records_dir: str | None = None) -> StudyPlan:
     base = read_toml(base_file)
     axes = check_axes(study.axes, base, file)
     folder = _records_folder(study, here, records_dir)
-    records, skipped = _records(study.records, folder, file)
+    records, skipped = _records(study.records, folder, file, allow_outside)
     if Analysis.ROCKING in study.analyses and not records:
         raise InputError(
             "no record to run" + (" (every record is optional and absent)" if skipped else ""),
@@ -314,7 +340,7 @@ def _records_folder(study: Study, here: Path, override: str | None) -> Path:
 
 
 def _records(
-    specs: Sequence[RecordSpec], folder: Path, file: str
+    specs: Sequence[RecordSpec], folder: Path, file: str, allow_outside: bool = False
 ) -> tuple[tuple[RecordSource, ...], tuple[SkippedRecord, ...]]:
     """The records present (paths resolved) and the optional ones absent."""
     from rockcli.records.files import record_name
@@ -323,6 +349,8 @@ def _records(
     skipped: list[SkippedRecord] = []
     for i, spec in enumerate(specs):
         path = folder / spec.path
+        if not allow_outside:
+            check_inside(path, folder, file, f"records[{i}].path", spec.path)
         name = spec.name or record_name(path)
         if spec.scale is not None and spec.pga is not None:
             raise InputError(
