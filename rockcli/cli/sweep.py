@@ -185,7 +185,8 @@ def sweep(
     except KeyboardInterrupt:
         click.echo("interrupted before any case ran", err=True)
         raise SystemExit(EXIT_INTERRUPTED) from None
-    announce_written(os.path.join(result.out, "cases.csv"), "and summary.json")
+    for name in ("cases.csv", "summary.json"):
+        announce_written(os.path.join(result.out, name))
     if plot_path:
         from rockcli.report.plots import plot_sweep
 

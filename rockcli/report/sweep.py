@@ -6,6 +6,7 @@ generic renderer (:mod:`rockcli.report.table`).
 
 from __future__ import annotations
 
+import unicodedata
 from collections.abc import Callable, Iterator, Sequence
 from contextlib import contextmanager
 from typing import Any
@@ -89,8 +90,26 @@ def _percent(value: float | None) -> str | None:
     return None if value is None else f"{100 * value:.0f} %"
 
 
+def printable(value: Any) -> Any:
+    """Every text inside value with its control characters escaped (``\\x1b``), so that a
+    name from a study or a record cannot drive the terminal (colours, cursor, title)."""
+    if isinstance(value, str):
+        return "".join(
+            ch.encode("unicode_escape").decode("ascii")
+            if unicodedata.category(ch) in ("Cc", "Cf") and ch != " "
+            else ch
+            for ch in value
+        )
+    if isinstance(value, dict):
+        return {printable(k): printable(v) for k, v in value.items()}
+    if isinstance(value, list | tuple):
+        return type(value)(printable(v) for v in value)
+    return value
+
+
 def sweep_report(doc: dict[str, Any]) -> Report:
-    """The terminal report of a study summary."""
+    """The terminal report of a study summary (names with control characters escaped)."""
+    doc = printable(doc)
     analyses = doc["analyses"]
     both = len(analyses) == 2
     what = "code / rocking collapses (code conservative)" if both else f"{analyses[0]} collapses"

@@ -17,6 +17,7 @@ scale"):
 from __future__ import annotations
 
 import multiprocessing
+import re
 import threading
 from collections.abc import Iterator
 from concurrent.futures import Executor, ProcessPoolExecutor, ThreadPoolExecutor
@@ -116,9 +117,45 @@ def stop(executor: Executor) -> None:
                 process.terminate()
 
 
+#: A scheduler address rock connects to: [tcp://]HOST:PORT, HOST a name, IPv4 or [IPv6].
+_ADDRESS = re.compile(
+    r"^(?:(?P<scheme>[A-Za-z][A-Za-z0-9+.-]*)://)?"
+    r"(?P<host>\[[0-9A-Fa-f:.]+\]|[A-Za-z0-9_.-]+):(?P<port>[0-9]{1,5})/?$"
+)
+#: The address of a dask cluster inside this process.
+_IN_PROCESS = re.compile(r"^inproc://[^\s]+$")
+#: Schemes that need no security configuration (TLS needs certificates rock does not set).
+PLAIN_SCHEMES = ("tcp", "ws")
+ADDRESS_ALLOWED = "tcp://HOST:PORT (or HOST:PORT), e.g. tcp://10.0.0.5:8786 or tcp://[::1]:8786"
+#: Highest TCP port number.
+PORT_MAX = 65535
+
+
+def check_address(address: str) -> None:
+    """Refuse a scheduler address rock cannot use, before importing dask (one error line)."""
+    if _IN_PROCESS.match(address):  # a cluster inside this process (tests, notebooks)
+        return
+    match = _ADDRESS.match(address)
+    problem = None
+    if match is None:
+        problem = "not a scheduler address"
+    elif match["scheme"] and match["scheme"].lower() not in PLAIN_SCHEMES:
+        scheme = match["scheme"].lower()
+        problem = (
+            f"{scheme}:// needs TLS certificates, which rock does not configure"
+            if scheme in ("tls", "wss")
+            else f"unsupported scheme {scheme}://"
+        )
+    elif not 1 <= int(match["port"]) <= PORT_MAX:
+        problem = f"port out of range (1 to {PORT_MAX})"
+    if problem:
+        raise InputError(problem, where="--scheduler", value=address, allowed=ADDRESS_ALLOWED)
+
+
 @contextmanager
 def dask_executor(address: str) -> Iterator[list[Lane]]:
     """The lane of a dask scheduler (its threads, IN_FLIGHT chunks each)."""
+    check_address(address)
     try:
         from distributed import Client
     except ImportError:
@@ -130,7 +167,7 @@ def dask_executor(address: str) -> Iterator[list[Lane]]:
         ) from None
     try:
         client = Client(address, timeout=CONNECT_TIMEOUT)
-    except (OSError, TimeoutError) as exc:
+    except (OSError, TimeoutError, ValueError, TypeError) as exc:
         raise InputError(
             f"cannot connect to the dask scheduler: {exc}",
             where="--scheduler",

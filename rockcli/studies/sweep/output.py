@@ -156,7 +156,16 @@ def fingerprint(plan: StudyPlan) -> str:
 class Output:
     """The output folder of one study run."""
 
-    def __init__(self, folder: str, plan: StudyPlan, n_cases: int) -> None:
+    def __init__(
+        self,
+        folder: str,
+        plan: StudyPlan,
+        n_cases: int,
+        labels: Mapping[int, Sequence[str]] | None = None,
+    ) -> None:
+        """labels: per case id, the first cells of its row (case, record, axis values) as
+        written, to check the rows kept on --resume against."""
+        self.labels = labels or {}
         self.folder = Path(folder)
         self.header = columns(plan)
         self.fingerprint = fingerprint(plan)
@@ -273,6 +282,9 @@ class Output:
             return f"{len(row)} cells, not {len(self.header)}"
         if not (row[0].isascii() and row[0].isdigit() and int(row[0]) < self.n_cases):
             return f"not a case id of this study (0 to {self.n_cases - 1})"
+        expected = self.labels.get(int(row[0]))
+        if expected is not None and list(row[: len(expected)]) != list(expected):
+            return "the record or axis values are not those of its case"
         cells = dict(zip(self.header, row, strict=True))
         for name, kind in RESULT_COLUMNS.items():
             try:

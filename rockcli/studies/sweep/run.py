@@ -20,7 +20,7 @@ from typing import Any
 from rockcli.errors import InputError
 from rockcli.studies.sweep.cases import Case, check_cases, expand
 from rockcli.studies.sweep.executor import Lane
-from rockcli.studies.sweep.output import Output, typed
+from rockcli.studies.sweep.output import Output, cell, typed
 from rockcli.studies.sweep.study import StudyPlan
 from rockcli.studies.sweep.worker import Chunk, read_source, run_chunk
 
@@ -125,7 +125,10 @@ def record_facts(plan: StudyPlan) -> tuple[list[int], dict[str, dict[str, Any]]]
     """Each record read once here (a bad file fails before any work): samples and facts."""
     npts, facts = [], {}
     for source in plan.records:
-        record = read_source(source)
+        try:
+            record = read_source(source)
+        except InputError as exc:
+            raise unquoted(exc) from None
         npts.append(record.npts)
         facts[source.name] = {
             "path": source.path,
@@ -134,6 +137,14 @@ def record_facts(plan: StudyPlan) -> tuple[list[int], dict[str, dict[str, Any]]]
             "duration_s": record.duration,
         }
     return npts, facts
+
+
+def unquoted(exc: InputError) -> InputError:
+    """A record's error without the file's content when rock did not recognise the file: a
+    study from an untrusted pull request must not make rock print what another file holds."""
+    if "unrecognised" not in exc.problem:
+        return exc
+    return InputError(exc.problem, file=exc.file, where=exc.where, allowed=exc.allowed)
 
 
 def run_sweep(
@@ -164,7 +175,8 @@ def run_sweep(
 
     start = time.perf_counter() if started is None else started
     cases = expand(plan)
-    output = Output(out, plan, len(cases))
+    first = {c.id: [cell(v) for v in _labels(plan, c).values()] for c in cases}
+    output = Output(out, plan, len(cases), first)
     rows = output.check(resume=resume, overwrite=overwrite)  # before any work
     check_cases(plan)
     npts, facts = record_facts(plan)
