@@ -16,10 +16,11 @@ import sys
 import time
 from pathlib import Path
 
-import psutil
 import pytest
 
 from tests.sweep.conftest import ROOT, STUDY, WriteStudy
+
+psutil = pytest.importorskip("psutil")  # comes with distributed (the test extra)
 
 #: 2 R × 24 α × 2 K × 2 pulses: long enough to be interrupted (≈ 0.1 s per case).
 ALPHAS = [round(0.05 + 0.005 * i, 3) for i in range(24)]

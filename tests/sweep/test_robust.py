@@ -3,6 +3,8 @@
 from __future__ import annotations
 
 import errno
+from concurrent.futures import Executor, Future
+from concurrent.futures.process import BrokenProcessPool
 from pathlib import Path
 from typing import Any
 
@@ -97,3 +99,89 @@ def test_an_element_of_an_array_the_base_lacks_is_one_error(write_study: WriteSt
     with pytest.raises(InputError) as info:
         load_study(str(write_study(study, base=base)))
     assert "axes[0].path: restrainers[0] is not in the base model" in str(info.value)
+
+
+class DyingPool(Executor):
+    """An executor whose every submission fails as a killed worker's does (a fake pool)."""
+
+    def __init__(self) -> None:
+        self.submitted = 0
+
+    def submit(self, fn: Any, /, *args: Any, **kwargs: Any) -> Future[Any]:
+        self.submitted += 1
+        future: Future[Any] = Future()
+        future.set_exception(BrokenProcessPool("a worker died"))
+        return future
+
+
+def test_a_chunk_whose_worker_always_dies_becomes_error_rows(write_study: WriteStudy) -> None:
+    # Before: the first BrokenProcessPool aborted the study. Now the pool is restarted and the
+    # chunk sent again; after CHUNK_ATTEMPTS deaths its cases are rows with an error.
+    from rockcli.studies.sweep import run as sweep_run
+    from rockcli.studies.sweep.cases import expand
+    from rockcli.studies.sweep.executor import Lane
+    from rockcli.studies.sweep.worker import Chunk
+
+    plan = load_study(str(write_study()))
+    chunk = Chunk(plan, 0, tuple(expand(plan)[:3]))
+    pools: list[DyingPool] = []
+
+    def restart() -> DyingPool:
+        pools.append(DyingPool())
+        return pools[-1]
+
+    lanes = [Lane(restart(), 1, 2, restart)]
+    results = list(sweep_run.run_chunks(lanes, [chunk]))
+    assert len(results) == 1
+    assert [r["case"] for r in results[0]] == [0, 1, 2]
+    assert all("died 3 times" in r["error"] for r in results[0])
+    assert sum(p.submitted for p in pools) == sweep_run.CHUNK_ATTEMPTS
+    assert len(pools) == sweep_run.CHUNK_ATTEMPTS + 1  # one restart after each death
+
+
+def test_a_pool_without_restart_still_raises(write_study: WriteStudy) -> None:
+    from rockcli.studies.sweep import run as sweep_run
+    from rockcli.studies.sweep.cases import expand
+    from rockcli.studies.sweep.executor import Lane
+    from rockcli.studies.sweep.worker import Chunk
+
+    plan = load_study(str(write_study()))
+    with pytest.raises(BrokenProcessPool):
+        list(sweep_run.run_chunks([Lane(DyingPool(), 1, 1)], [Chunk(plan, 0, tuple(expand(plan)))]))
+
+
+def test_a_killed_worker_is_replaced_and_its_chunk_run_again(
+    write_study: WriteStudy, tmp_path: Path
+) -> None:
+    # A real pool: one worker process is SIGKILLed once the study has started; the study
+    # still completes, every case with its results, as a run in one process gives.
+    import os
+    import signal
+    import threading
+    import time
+
+    psutil = pytest.importorskip("psutil")  # comes with distributed (the test extra)
+    plan = load_study(str(write_study()))
+    with local_executor(1) as lanes:
+        run_sweep(plan, str(tmp_path / "one"), lanes)
+    killed: list[int] = []
+
+    def kill_a_worker() -> None:
+        deadline = time.monotonic() + 60
+        while time.monotonic() < deadline and not killed:
+            for p in psutil.Process().children(recursive=True):
+                if p.ppid() != os.getpid():  # a worker (a child of the fork server)
+                    os.kill(p.pid, signal.SIGKILL)
+                    killed.append(p.pid)
+                    return
+            time.sleep(0.05)
+
+    killer = threading.Thread(target=kill_a_worker)
+    with local_executor(2) as lanes:
+        killer.start()
+        summary = run_sweep(plan, str(tmp_path / "two"), lanes, chunk_size=1).summary
+    killer.join()
+    assert killed, "no worker process to kill"
+    assert summary["errors"] == 0 and summary["cases"] == N_CASES
+    one = (tmp_path / "one" / "cases.csv").read_text()
+    assert (tmp_path / "two" / "cases.csv").read_text() == one

@@ -19,7 +19,7 @@ from __future__ import annotations
 import multiprocessing
 import re
 import threading
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 from concurrent.futures import Executor, ProcessPoolExecutor, ThreadPoolExecutor
 from contextlib import contextmanager, suppress
 from typing import NamedTuple
@@ -37,11 +37,13 @@ IN_FLIGHT = 2
 
 
 class Lane(NamedTuple):
-    """An executor, the workers behind it and how many chunks to keep submitted to it."""
+    """An executor, the workers behind it and how many chunks to keep submitted to it;
+    restart: a new executor for a process pool that broke (a worker was killed)."""
 
     executor: Executor
     workers: int
     capacity: int
+    restart: Callable[[], Executor] | None = None
 
 
 def start_method() -> str:
@@ -90,7 +92,15 @@ def local_executor(jobs: int) -> Iterator[list[Lane]]:
     thread = ThreadPoolExecutor(max_workers=1, thread_name_prefix="rock-sweep")
     lanes = [Lane(thread, 1, 1)]
     if jobs > 1:
-        lanes.append(Lane(process_executor(jobs - 1), jobs - 1, IN_FLIGHT * (jobs - 1)))
+        workers = jobs - 1
+        lanes.append(
+            Lane(
+                process_executor(workers),
+                workers,
+                IN_FLIGHT * workers,
+                lambda: process_executor(workers),
+            )
+        )
     try:
         yield lanes
     except BaseException:

@@ -12,8 +12,9 @@ from __future__ import annotations
 
 import math
 import time
-from collections.abc import Callable, Iterator, Sequence
-from concurrent.futures import FIRST_COMPLETED, Future, wait
+from collections import deque
+from collections.abc import Callable, Iterator, MutableSequence, Sequence
+from concurrent.futures import FIRST_COMPLETED, BrokenExecutor, Future, wait
 from dataclasses import dataclass
 from typing import Any
 
@@ -37,6 +38,12 @@ ROCKING_COST = 2e-4
 ROCKING_COST_PER_SAMPLE = 2e-8
 
 Progress = Callable[[int, int], None]
+#: Times a chunk is run when the worker running it dies (then its cases are error rows).
+CHUNK_ATTEMPTS = 3
+WORKER_DIED = (
+    "the worker process running this case died {} times (killed, or out of memory); "
+    "rerun the study, or run this case alone"
+)
 
 
 class SweepInterrupted(KeyboardInterrupt):
@@ -94,31 +101,58 @@ def make_chunks(
     return chunks
 
 
-def run_chunks(lanes: Sequence[Lane], chunks: Sequence[Chunk]) -> Iterator[list[dict[str, Any]]]:
+def run_chunks(
+    lanes: MutableSequence[Lane], chunks: Sequence[Chunk]
+) -> Iterator[list[dict[str, Any]]]:
     """The rows of each chunk as it completes (any order).
 
     Each lane (an executor and its capacity) holds at most its capacity of submitted chunks;
-    the next chunk goes to the first lane with room. The first error cancels what is queued
-    and is raised.
+    the next chunk goes to the first lane with room. A process pool that breaks (a worker
+    killed: the OOM killer, a signal) is restarted and its chunks submitted again, up to
+    :data:`CHUNK_ATTEMPTS` times each; then the chunk's cases are rows with an error. Any
+    other error cancels what is queued and is raised.
     """
-    pending: dict[Future[list[dict[str, Any]]], int] = {}
+    pending: dict[Future[list[dict[str, Any]]], tuple[int, Chunk]] = {}
     load = [0] * len(lanes)
-    todo = iter(chunks)
+    todo: deque[Chunk] = deque(chunks)
+    attempts: dict[int, int] = {}
     try:
         while True:
             for i, lane in enumerate(lanes):
-                while load[i] < lane.capacity and (chunk := next(todo, None)) is not None:
-                    pending[lane.executor.submit(run_chunk, chunk)] = i
+                while load[i] < lane.capacity and todo:
+                    chunk = todo.popleft()
+                    pending[lanes[i].executor.submit(run_chunk, chunk)] = (i, chunk)
                     load[i] += 1
             if not pending:
                 return
             done, _ = wait(pending, return_when=FIRST_COMPLETED)
             for future in done:
-                load[pending.pop(future)] -= 1
-                yield future.result()
+                i, chunk = pending.pop(future)
+                load[i] -= 1
+                try:
+                    rows = future.result()
+                except BrokenExecutor:
+                    if lanes[i].restart is None:
+                        raise
+                    _restart(lanes, i)
+                    attempts[id(chunk)] = tries = attempts.get(id(chunk), 0) + 1
+                    if tries < CHUNK_ATTEMPTS:
+                        todo.appendleft(chunk)
+                        continue
+                    rows = [{"case": c.id, "error": WORKER_DIED.format(tries)} for c in chunk.cases]
+                yield rows
     finally:
         for future in pending:
             future.cancel()
+
+
+def _restart(lanes: MutableSequence[Lane], i: int) -> None:
+    """A new executor in lane i when its pool broke (once per break: a pool already replaced
+    is not replaced again by the other chunks it failed)."""
+    lane = lanes[i]
+    if lane.restart is not None and getattr(lane.executor, "_broken", True):
+        lane.executor.shutdown(wait=False, cancel_futures=True)
+        lanes[i] = lane._replace(executor=lane.restart())
 
 
 def record_facts(plan: StudyPlan) -> tuple[list[int], dict[str, dict[str, Any]]]:
@@ -150,7 +184,7 @@ def unquoted(exc: InputError) -> InputError:
 def run_sweep(
     plan: StudyPlan,
     out: str,
-    lanes: Sequence[Lane],
+    lanes: MutableSequence[Lane],
     *,
     resume: bool = False,
     overwrite: bool = False,
