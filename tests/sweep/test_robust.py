@@ -185,3 +185,30 @@ def test_a_killed_worker_is_replaced_and_its_chunk_run_again(
     assert summary["errors"] == 0 and summary["cases"] == N_CASES
     one = (tmp_path / "one" / "cases.csv").read_text()
     assert (tmp_path / "two" / "cases.csv").read_text() == one
+
+
+def test_chunks_are_sized_by_measured_time(
+    write_study: WriteStudy, tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    # Before: chunks were sized from the fast engine's estimated cost (≈ 2 ms a case here),
+    # so a slow engine gave long chunks (the reference engine: 14 s, and Ctrl-C waited for
+    # them). Each case is made ≥ 50 ms slower; with a 0.1 s chunk target the measured time
+    # gives chunks of one case (the estimate alone gives 3: a 16-case study, 4 chunks).
+    import time
+
+    from rockcli.studies.sweep import run as sweep_run
+
+    sizes: list[int] = []
+    original = sweep_run.run_chunk
+
+    def slow(chunk: Any) -> Any:
+        sizes.append(len(chunk.cases))
+        time.sleep(0.05 * len(chunk.cases))
+        return original(chunk)
+
+    monkeypatch.setattr(sweep_run, "run_chunk", slow)
+    monkeypatch.setattr(sweep_run, "CHUNK_SECONDS", 0.1)
+    with local_executor(1) as lanes:
+        summary = run_sweep(load_study(str(write_study())), str(tmp_path / "out"), lanes).summary
+    assert summary["cases"] == N_CASES
+    assert sizes == [1] * N_CASES  # the measured case, then chunks of one

@@ -38,6 +38,9 @@ ROCKING_COST = 2e-4
 ROCKING_COST_PER_SAMPLE = 2e-8
 
 Progress = Callable[[int, int], None]
+#: Lowest measured speed factor used (a case timed much faster than estimated is a fluke of
+#: the clock; chunks stay at most CHUNK_SECONDS / MIN_SPEED of estimated work).
+MIN_SPEED = 0.25
 #: Times a chunk is run when the worker running it dies (then its cases are error rows).
 CHUNK_ATTEMPTS = 3
 WORKER_DIED = (
@@ -85,12 +88,17 @@ def make_chunks(
     npts: Sequence[int],
     workers: int,
     chunk_size: int | None = None,
+    speed: float = 1.0,
 ) -> list[Chunk]:
-    """The chunks of the cases to run: cases of one record together, ≈ CHUNK_SECONDS each."""
+    """The chunks of the cases to run: cases of one record together, ≈ CHUNK_SECONDS each.
+
+    speed: measured time of a case over its estimate (:func:`measure`; the reference engine
+    is ≈ 1000 times the estimate, which is the fast engine's).
+    """
     by_record: dict[int | None, list[Case]] = {}
     for case in cases:
         by_record.setdefault(case.record, []).append(case)
-    costs = {r: case_cost(plan, npts[r] if r is not None else 0) for r in by_record}
+    costs = {r: speed * case_cost(plan, npts[r] if r is not None else 0) for r in by_record}
     total = sum(costs[r] * len(c) for r, c in by_record.items())
     target = min(CHUNK_SECONDS, total / (CHUNKS_PER_WORKER * workers))
     chunks = []
@@ -99,6 +107,21 @@ def make_chunks(
         for start in range(0, len(group), size):
             chunks.append(Chunk(plan, record, tuple(group[start : start + size])))
     return chunks
+
+
+def measure(plan: StudyPlan, case: Case, npts: Sequence[int]) -> tuple[list[dict[str, Any]], float]:
+    """Run one case here and time it: its rows, and its time over the estimate (the chunks are
+    then sized by measured time, so a slow engine or machine still gets chunks of about
+    CHUNK_SECONDS, and Ctrl-C stops within about that). The kernels are loaded first, so
+    their loading is not timed."""
+    from rockcli.studies.sweep.worker import warm
+
+    warm()
+    start = time.perf_counter()
+    rows = run_chunk(Chunk(plan, case.record, (case,)))
+    elapsed = time.perf_counter() - start
+    estimate = case_cost(plan, npts[case.record] if case.record is not None else 0)
+    return rows, max(MIN_SPEED, elapsed / estimate) if estimate else 1.0
 
 
 def run_chunks(
@@ -221,13 +244,23 @@ def run_sweep(
     if progress:
         progress(len(rows), len(cases))
     workers = sum(lane.workers for lane in lanes)
-    chunks = make_chunks(plan, todo, npts, workers, chunk_size)
+
+    def save(chunk_rows: list[dict[str, Any]]) -> None:
+        written = output.append({**labels[r["case"]], **r} for r in chunk_rows)
+        rows.update((int(w["case"]), w) for w in written)
+        if progress:
+            progress(len(rows), len(cases))
+
     try:
-        for chunk_rows in run_chunks(lanes, chunks):
-            written = output.append({**labels[r["case"]], **r} for r in chunk_rows)
-            rows.update((int(w["case"]), w) for w in written)
-            if progress:
-                progress(len(rows), len(cases))
+        speed = 1.0
+        if todo and chunk_size is None:
+            first_rows, speed = measure(plan, todo[0], npts)
+            save(first_rows)
+            todo = todo[1:]
+        for chunk_rows in run_chunks(
+            lanes, make_chunks(plan, todo, npts, workers, chunk_size, speed)
+        ):
+            save(chunk_rows)
     except KeyboardInterrupt:
         raise SweepInterrupted(len(rows), len(cases), str(output.folder)) from None
     except OSError as exc:  # a full disk, a folder turned read-only
