@@ -264,3 +264,27 @@ def test_a_pivot_cell_shows_the_cases_without_a_verdict() -> None:
     assert _cell(row, ["rocking", "kinematic"]) == "0 / 0 (0) +3 ?"
     assert _cell({**row, "undetermined": 0}, ["rocking", "kinematic"]) == "0 / 0 (0)"
     assert _cell({"rocking_collapses": 0, "undetermined": 2}, ["rocking"]) == "0 +2 ?"
+
+
+def test_the_collapse_map_marks_failed_and_undetermined_cases() -> None:
+    pytest.importorskip("matplotlib")
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    from rockcli.report.plots.collapse import _draw_map, outcome
+
+    base = {"R": 1.5, "alpha": 0.1, "record": "r"}
+    rows = [
+        {**base, "code_collapse": True, "rocking_collapse": False},
+        {**base, "code_collapse": None, "rocking_collapse": False},
+        {**base, "code_collapse": None, "rocking_collapse": None, "error": "internal error"},
+    ]
+    assert [outcome(r) for r in rows] == ["code", "undetermined", "error"]
+    fig, ax = plt.subplots()
+    try:
+        _draw_map(ax, rows, [1.5], [0.1], "r")
+        assert ax.get_title().endswith("collapses: code 1, rocking 0 of 3; no verdict 2")
+    finally:
+        plt.close(fig)
