@@ -288,3 +288,31 @@ def test_the_collapse_map_marks_failed_and_undetermined_cases() -> None:
         assert ax.get_title().endswith("collapses: code 1, rocking 0 of 3; no verdict 2")
     finally:
         plt.close(fig)
+
+
+#: A file name longer than NAME_MAX (255 bytes on Linux, macOS and Windows file systems).
+TOO_LONG = "a" * 300
+
+
+@pytest.mark.parametrize(
+    ("old", "new", "where"),
+    [
+        ('base = "wall.toml"', f'base = "{TOO_LONG}.toml"', "base"),
+        ('path = "ricker_Tp0.5s_0.5g.txt"', f'path = "{TOO_LONG}.txt"', "records[1].path"),
+    ],
+)
+def test_a_study_path_longer_than_name_max_is_one_error(
+    write_study: WriteStudy, old: str, new: str, where: str
+) -> None:
+    # Before: OSError (File name too long) from Path.is_file, with a traceback.
+    code, _, stderr = sweep(str(write_study(STUDY.replace(old, new))), "-j", "1")
+    assert code == 2, stderr
+    assert stderr.count("\n") == 1 and f"{where}: cannot use this path" in stderr
+
+
+def test_an_out_folder_name_longer_than_name_max_is_one_error(
+    write_study: WriteStudy, tmp_path: Path
+) -> None:
+    code, _, stderr = sweep(str(write_study()), "-j", "1", "--out", str(tmp_path / TOO_LONG))
+    assert code == 2, stderr
+    assert stderr.count("\n") == 1 and "--out: the output folder cannot be used" in stderr

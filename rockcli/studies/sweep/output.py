@@ -199,6 +199,12 @@ class Output:
 
     def _check_writable(self) -> None:
         folder = self.folder
+        try:
+            os.stat(folder)  # a name too long, a loop of links: refused here, not later
+        except FileNotFoundError:
+            pass
+        except OSError as exc:
+            self._refuse(f"cannot be used: {exc.strerror or exc}", "a shorter, plain folder path")
         if folder.exists() and not folder.is_dir():
             self._refuse("is a file", "a folder path")
         target = folder if folder.is_dir() else _existing_parent(folder)

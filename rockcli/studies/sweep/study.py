@@ -13,7 +13,9 @@ every machine whatever the records folder.
 
 from __future__ import annotations
 
+import os
 import re
+import stat
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from enum import StrEnum
@@ -280,6 +282,22 @@ def check_inside(path: Path, folder: Path, file: str, where: str, value: str) ->
         )
 
 
+def is_file(path: str | Path, file: str, where: str) -> bool:
+    """True for an existing regular file, False when absent; a path the system refuses (a
+    name longer than NAME_MAX, a loop of links) is an InputError naming the key."""
+    try:
+        return stat.S_ISREG(os.stat(path).st_mode)
+    except (FileNotFoundError, NotADirectoryError):
+        return False
+    except OSError as exc:
+        raise InputError(
+            f"cannot use this path: {exc.strerror or exc}",
+            file=file,
+            where=where,
+            allowed="a path the file system accepts (each name at most 255 bytes)",
+        ) from None
+
+
 def load_study(
     file: str, records_dir: str | None = None, *, allow_outside: bool = False
 ) -> StudyPlan:
@@ -300,7 +318,7 @@ def load_study(
         check_inside(here / study.base, here, file, "base", study.base)
         if study.records_dir and not records_dir:
             check_inside(here / study.records_dir, here, file, "records_dir", study.records_dir)
-    if not Path(base_file).is_file():
+    if not is_file(base_file, file, "base"):
         raise InputError(
             "base model file not found",
             file=file,
@@ -360,7 +378,7 @@ def _records(
                 value=spec.pga,
                 allowed="scale or pga, not both",
             )
-        if not path.is_file():
+        if not is_file(path, file, f"records[{i}].path"):
             if spec.optional:
                 skipped.append(SkippedRecord(name, str(path), spec.source))
                 continue
