@@ -299,12 +299,14 @@ TOO_LONG = "a" * 300
     [
         ('base = "wall.toml"', f'base = "{TOO_LONG}.toml"', "base"),
         ('path = "ricker_Tp0.5s_0.5g.txt"', f'path = "{TOO_LONG}.txt"', "records[1].path"),
+        ('path = "ricker_Tp0.5s_0.5g.txt"', 'path = "a\\u0000b"', "records[1].path"),
     ],
 )
 def test_a_study_path_longer_than_name_max_is_one_error(
     write_study: WriteStudy, old: str, new: str, where: str
 ) -> None:
-    # Before: OSError (File name too long) from Path.is_file, with a traceback.
+    # Before: OSError (File name too long) from Path.is_file, or ValueError (embedded null
+    # byte; found by a fuzz of 3000 mutated study files), with a traceback.
     code, _, stderr = sweep(str(write_study(STUDY.replace(old, new))), "-j", "1")
     assert code == 2, stderr
     assert stderr.count("\n") == 1 and f"{where}: cannot use this path" in stderr

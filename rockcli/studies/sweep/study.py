@@ -272,7 +272,11 @@ INSIDE_ALLOWED = (
 def check_inside(path: Path, folder: Path, file: str, where: str, value: str) -> None:
     """Refuse a path of the study file that leaves its folder (``..``, an absolute path, a
     symlink to elsewhere): a study from an untrusted pull request reads only its own files."""
-    if not path.resolve().is_relative_to(folder.resolve()):
+    try:
+        inside = path.resolve().is_relative_to(folder.resolve())
+    except (OSError, ValueError) as exc:  # a NUL character, a name too long, a loop
+        raise path_error(exc, file, where) from None
+    if not inside:
         raise InputError(
             "leaves the study's folder",
             file=file,
@@ -289,13 +293,19 @@ def is_file(path: str | Path, file: str, where: str) -> bool:
         return stat.S_ISREG(os.stat(path).st_mode)
     except (FileNotFoundError, NotADirectoryError):
         return False
-    except OSError as exc:
-        raise InputError(
-            f"cannot use this path: {exc.strerror or exc}",
-            file=file,
-            where=where,
-            allowed="a path the file system accepts (each name at most 255 bytes)",
-        ) from None
+    except (OSError, ValueError) as exc:
+        raise path_error(exc, file, where) from None
+
+
+def path_error(exc: OSError | ValueError, file: str, where: str) -> InputError:
+    """A path the system refuses, as one error naming the key of the study file."""
+    reason = exc.strerror if isinstance(exc, OSError) and exc.strerror else str(exc)
+    return InputError(
+        f"cannot use this path: {reason}",
+        file=file,
+        where=where,
+        allowed="a path the file system accepts (no NUL character, each name at most 255 bytes)",
+    )
 
 
 def load_study(
