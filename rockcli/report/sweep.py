@@ -40,14 +40,17 @@ def pivot(
     title: str, rows: list[dict[str, Any]], key: str, label: str, analyses: Sequence[str]
 ) -> Table:
     """Rows by `key`, one column per α, cells from :func:`_cell` (paper Fig. 8)."""
-    alphas = sorted({r["alpha"] for r in rows})
+    alphas = sorted({r["alpha"] for r in rows}, key=lambda a: (a is None, a or 0.0))
     names = list(dict.fromkeys(r[key] for r in rows))
     cells: dict[Any, dict[str, Any]] = {n: {"name": n} for n in names}
     for r in rows:
         cells[r[key]][f"a{alphas.index(r['alpha'])}"] = _cell(r, analyses)
     cols = (
         Column("name", label, align="left"),
-        *(Column(f"a{i}", f"α = {a:.4g}", "rad") for i, a in enumerate(alphas)),
+        *(
+            Column(f"a{i}", "α unknown" if a is None else f"α = {a:.4g}", "rad")
+            for i, a in enumerate(alphas)
+        ),
     )
     return Table(title, cols, tuple(cells[n] for n in names))
 

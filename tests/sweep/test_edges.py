@@ -318,3 +318,26 @@ def test_an_out_folder_name_longer_than_name_max_is_one_error(
     code, _, stderr = sweep(str(write_study()), "-j", "1", "--out", str(tmp_path / TOO_LONG))
     assert code == 2, stderr
     assert stderr.count("\n") == 1 and "--out: the output folder cannot be used" in stderr
+
+
+def test_a_failed_case_without_a_block_is_grouped_and_shown() -> None:
+    # Before: TypeError ('<' between float and None) sorting the groups by α, when a case
+    # failed before its block was known (found by running 40 mutated studies).
+    from rockcli.report.sweep import pivot
+    from rockcli.studies.sweep.summary import grouped
+
+    rows = [
+        {"record": "r", "_alpha": 0.1, "code_uls": "fail", "rocking": "survives"},
+        {"record": "r", "_alpha": None, "error": "internal error"},
+        {"record": "r", "_alpha": "x", "code_uls": "pass", "rocking": "survives"},
+    ]
+    groups = grouped(rows, lambda r: (r["record"], r["_alpha"]), ["rocking", "kinematic"])
+    assert [k for k, _ in groups] == [("r", 0.1), ("r", "x"), ("r", None)]
+    table = pivot(
+        "t",
+        [{"record": "r", "alpha": a, **t} for (_, a), t in groups if not isinstance(a, str)],
+        "record",
+        "record",
+        ["rocking", "kinematic"],
+    )
+    assert [c.label for c in table.columns][1:] == ["α = 0.1", "α unknown"]

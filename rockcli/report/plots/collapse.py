@@ -156,7 +156,10 @@ def plot_sweep(
         InputError: bad suffix, matplotlib missing, file not writable.
         ValueError: no rows, or a row without one of the keys above.
     """
-    cases = _check_rows(rows)
+    # A case whose block could not be computed has no place on the map (the tables count it).
+    cases = [r for r in _check_rows(rows) if r["R"] is not None and r["alpha"] is not None]
+    if not cases:
+        raise ValueError("plot_sweep: no case with a block to plot")
     Rs = sorted(_unique(r["R"] for r in cases))
     alphas = sorted(_unique(r["alpha"] for r in cases))
     panels = _panels(cases, by)

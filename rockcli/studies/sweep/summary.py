@@ -98,7 +98,21 @@ def grouped(
     groups: dict[tuple[Hashable, ...], list[Mapping[str, Any]]] = {}
     for row in rows:
         groups.setdefault(key(row), []).append(row)
-    return [(k, tally(groups[k], analyses)) for k in sorted(groups)]
+    return [(k, tally(groups[k], analyses)) for k in sorted(groups, key=sort_key)]
+
+
+def sort_key(key: tuple[Hashable, ...]) -> tuple[tuple[int, Any], ...]:
+    """An order for group keys whatever their parts: numbers, then text, then None (an axis
+    may mix numbers and text; a failed case may have no α)."""
+    out: list[tuple[int, Any]] = []
+    for part in key:
+        if isinstance(part, int | float) and not isinstance(part, bool):
+            out.append((0, part))
+        elif part is None:
+            out.append((2, ""))
+        else:
+            out.append((1, str(part)))
+    return tuple(out)
 
 
 def summarize(

@@ -177,17 +177,19 @@ def run_chunk(chunk: Chunk) -> list[dict[str, Any]]:
     record = read_source(source) if source is not None else None
     rows = []
     for case in chunk.cases:
+        known: dict[str, Any] = {"case": case.id}  # the block's R and α once computed
         try:
             model = build_model(plan, case)
+            known["block_R"], known["block_alpha"] = model.geometry.polar
             spectrum = spectrum_of(source, model.analysis.g) if source is not None else None
             rows.append({"case": case.id, **run_case(plan, model, record, spectrum)})
         except InputError as exc:
             named = case_error(plan, case, exc)
             text = str(InputError(named.problem, value=named.value, allowed=named.allowed))
-            rows.append({"case": case.id, "error": one_line(text)})
+            rows.append({**known, "error": one_line(text)})
         except Exception as exc:  # noqa: BLE001 - any failure of one case is that case's row
             text = f"internal error (please report): {type(exc).__name__}: {exc}"
-            rows.append({"case": case.id, "error": one_line(text)})
+            rows.append({**known, "error": one_line(text)})
     return rows
 
 
