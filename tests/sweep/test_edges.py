@@ -341,3 +341,21 @@ def test_a_failed_case_without_a_block_is_grouped_and_shown() -> None:
         ["rocking", "kinematic"],
     )
     assert [c.label for c in table.columns][1:] == ["α = 0.1", "α unknown"]
+
+
+def test_links_planted_in_the_out_folder_are_replaced_not_followed(
+    write_study: WriteStudy, tmp_path: Path
+) -> None:
+    # A study run twice into a folder where someone put links named like its files: the
+    # files the links point at stay as they were (temp file + rename replaces the link).
+    out = tmp_path / "out"
+    out.mkdir()
+    victim = tmp_path / "victim.txt"
+    victim.write_text("keep me\n")
+    for name in ("cases.csv", "summary.json", "sweep.json"):
+        (out / name).symlink_to(victim)
+    study = write_study()
+    code, _, stderr = sweep(str(study), "--out", str(out), "-j", "1", "--force")
+    assert code == 0, stderr
+    assert victim.read_text() == "keep me\n"
+    assert not any((out / n).is_symlink() for n in ("cases.csv", "summary.json", "sweep.json"))

@@ -315,7 +315,8 @@ class Output:
     def append(self, rows: Iterable[Mapping[str, Any]]) -> list[dict[str, str]]:
         """Append the rows of a completed chunk; returns them as written (text cells)."""
         written = [{c: cell(row.get(c)) for c in self.header} for row in rows]
-        with self.cases_path.open("a", encoding="utf-8") as out:
+        flags = os.O_WRONLY | os.O_APPEND | getattr(os, "O_NOFOLLOW", 0)  # never via a link
+        with open(os.open(self.cases_path, flags), "a", encoding="utf-8") as out:
             out.write(csv_lines([[r[c] for c in self.header] for r in written]))
             out.flush()
         return written
