@@ -80,8 +80,8 @@ def terminate_as_interrupt() -> Iterator[None]:
     "-j",
     type=click.IntRange(min=1),
     default=None,
-    help="Workers on this machine: this process and N − 1 worker processes "
-    "[default: the CPU count].",
+    help="Workers on this machine: this process and N − 1 worker processes, at most the CPU "
+    "count and the number of cases [default: the CPU count].",
 )
 @click.option("--resume", is_flag=True, help="Skip the cases an interrupted run finished.")
 @click.option(
@@ -143,7 +143,8 @@ def sweep(
 
     The study names a base model, the axes (model fields by key path), the records and the
     analyses (examples/studies/). Every case goes to OUT/cases.csv as its chunk completes;
-    --resume continues an interrupted study.
+    --resume continues an interrupted study (Ctrl-C or SIGTERM: exit 130, finished cases
+    kept). A case that fails is a row with its error, and the study goes on.
     """
     from rockcli.report.sweep import progress_bar, sweep_report
     from rockcli.report.table import show
