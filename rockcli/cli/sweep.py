@@ -13,6 +13,8 @@ import click
 from rockcli.cli.options import announce_written, output_format
 from rockcli.cli.plot_option import plot_option
 
+#: Name prefix of the thread that runs chunks in this process (studies.sweep.executor).
+CHUNK_THREAD = "rock-sweep"
 #: Exit code after Ctrl-C or SIGTERM (128 + SIGINT, the shell's convention).
 EXIT_INTERRUPTED = 130
 
@@ -46,6 +48,29 @@ def worker_count(jobs: int | None, cases: int) -> int:
         why = "the CPU count" if count == cpus else "the cases of the study"
         click.echo(f"note: --jobs {jobs} capped to {count} ({why})", err=True)
     return count
+
+
+def exit_now_if_busy(code: int) -> None:
+    """Exit at once when this process's chunk thread is still running a case.
+
+    The interpreter would wait for that case at exit (a case of the reference engine: up to
+    tens of seconds); its result is lost anyway, every finished row is on disk (rows are
+    written by the main thread only) and the worker processes end with this one.
+    """
+    import sys
+    import threading
+
+    if any(t.name.startswith(CHUNK_THREAD) and t.is_alive() for t in threading.enumerate()):
+        from contextlib import suppress
+        from multiprocessing import util
+
+        # The finalizers that never block (the pool queues' semaphores, priority ≥ 0), so
+        # that the resource tracker has nothing to warn about; not the joins (< 0).
+        with suppress(Exception):
+            util._run_finalizers(0)  # type: ignore[attr-defined]
+        sys.stdout.flush()
+        sys.stderr.flush()
+        os._exit(code)
 
 
 @contextmanager
@@ -182,6 +207,7 @@ def sweep(
             "rerun with --resume",
             err=True,
         )
+        exit_now_if_busy(EXIT_INTERRUPTED)
         raise SystemExit(EXIT_INTERRUPTED) from None
     except KeyboardInterrupt:
         click.echo("interrupted before any case ran", err=True)
