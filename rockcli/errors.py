@@ -7,6 +7,29 @@ into one line on stderr and a non-zero exit code in a single place (``cli/main.p
 
 from __future__ import annotations
 
+import unicodedata
+
+#: Unicode's bidirectional controls: they reorder what the terminal shows ("Trojan Source").
+BIDI_CONTROLS = frozenset(
+    "\u061c\u200e\u200f\u202a\u202b\u202c\u202d\u202e\u2066\u2067\u2068\u2069"
+)
+
+
+def printable(text: str) -> str:
+    """``text`` safe for a terminal: control characters (an escape sequence in a model's name,
+    a line break in a file name) and bidirectional controls shown as ``\\xNN``/``\\uNNNN``.
+    """
+    if text.isprintable():
+        return text
+    return "".join(_escaped(c) for c in text)
+
+
+def _escaped(char: str) -> str:
+    if unicodedata.category(char) != "Cc" and char not in BIDI_CONTROLS:
+        return char
+    code = ord(char)
+    return f"\\x{code:02x}" if code < 0x100 else f"\\u{code:04x}"
+
 
 class RockError(Exception):
     """Base of every error rock raises on purpose."""

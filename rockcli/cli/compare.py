@@ -5,8 +5,13 @@ from __future__ import annotations
 import click
 
 from rockcli.cli.options import (
+    announce_written,
+    check_hazard_grid,
+    check_outputs,
     edition_option,
     engine_option,
+    exit_if_non_finite,
+    force_option,
     hazard_grid_option,
     load_record,
     output_format,
@@ -48,6 +53,7 @@ CLASSIFICATIONS = (
     "so CI can gate on it.",
 )
 @plot_option
+@force_option
 @output_format
 def compare(
     model_path,
@@ -63,13 +69,22 @@ def compare(
     grid_file,
     fail_on,
     plot_path,
+    force,
     output,
 ):
     """Kinematic check and rocking time history of MODEL on the same record, side by side."""
-    from rockcli.report.compare import comparison_output_document, comparison_report
+    from rockcli.report.compare import (
+        comparison_output_document,
+        comparison_report,
+        comparison_warnings,
+    )
     from rockcli.report.table import show
     from rockcli.studies.compare import run_comparison_output
 
+    check_hazard_grid(
+        grid_file, model_path, demand_from="--record-demand" if record_demand else None
+    )
+    check_outputs(force, plot=plot_path)
     record = load_record(record_path, record_format, dt, units, scale, pga)
     out = run_comparison_output(
         model_path,
@@ -81,11 +96,14 @@ def compare(
         history=plot_path is not None,
     )
     doc, rocking = comparison_output_document(out, record), out.rocking
+    doc["warnings"] = comparison_warnings(doc)
     if plot_path:
         from rockcli.report.plots import plot_comparison
 
         runs = rocking.result.runs
         plot_comparison(doc, runs, plot_path, record=record, overturn_angle=rocking.overturn_angle)
+        announce_written(plot_path)
     show(doc, output, comparison_report)
+    exit_if_non_finite(doc["rocking"]["runs"])
     if doc["classification"] in fail_on:
         raise SystemExit(EXIT_FAIL_ON)

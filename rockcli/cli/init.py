@@ -16,7 +16,7 @@ from rockcli.model.schema import Kind
     "-o",
     "--output",
     type=click.Path(dir_okay=False, path_type=Path),
-    help="Write the template to this file (default: standard output).",
+    help="Write the template to this file (default, or -: standard output).",
 )
 @force_option
 def init(kind: str, output: Path | None, force: bool) -> None:
@@ -26,10 +26,10 @@ def init(kind: str, output: Path | None, force: bool) -> None:
     The template loads unchanged; edit its values for your element.
     """
     from rockcli.model.template import render_template
-    from rockcli.outfile import check_writable, write_text
+    from rockcli.outfile import check_writable, is_stdout, write_text
 
     text = render_template(Kind(kind))
-    if output is None:
+    if output is None or is_stdout(output):
         click.echo(text, nl=False)
         return
     check_writable(output, force=force, where="--output")

@@ -4,8 +4,14 @@ from __future__ import annotations
 
 import click
 
+from rockcli.cli.exits import EXIT_GATE
 from rockcli.cli.options import (
+    announce_written,
+    check_hazard_grid,
+    check_outputs,
+    check_record_options,
     edition_option,
+    force_option,
     hazard_grid_option,
     load_record,
     output_format,
@@ -14,11 +20,18 @@ from rockcli.cli.options import (
 from rockcli.cli.plot_option import plot_option
 
 
-def _site(value: str | None) -> tuple[float, float] | None:
+def _site(value: str | None, record_path: str | None) -> tuple[float, float] | None:
     from rockcli.errors import InputError
 
     if value is None:
         return None
+    if record_path is not None:
+        raise InputError(
+            "conflicts with --record (the record's spectrum sets the demand)",
+            where="--site",
+            value=value,
+            allowed="either --site LON,LAT or --record FILE",
+        )
     try:
         lon, lat = (float(x) for x in value.split(","))
     except ValueError:
@@ -42,7 +55,14 @@ def _site(value: str | None) -> tuple[float, float] | None:
     help="Take the demand from the hazard grid at this site (overrides the model).",
 )
 @hazard_grid_option
+@click.option(
+    "--fail-on-uls",
+    is_flag=True,
+    help=f"Exit with code {EXIT_GATE} when the ULS verdict is not satisfied, or not evaluated "
+    "(a gate cannot pass on a check that was not made).",
+)
 @plot_option
+@force_option
 @output_format
 def kinematic(
     model_path,
@@ -55,7 +75,9 @@ def kinematic(
     pga,
     site,
     grid_file,
+    fail_on_uls,
     plot_path,
+    force,
     output,
 ):
     """NTC kinematic analysis of MODEL: α0, e*, a0*, capacity curve, DLS and ULS checks."""
@@ -63,15 +85,34 @@ def kinematic(
     from rockcli.report.table import show
     from rockcli.studies.kinematic import run_kinematic
 
+    check_record_options(record_path, record_format, dt, units, scale, pga)
+    lon_lat = _site(site, record_path)
+    if site is None:  # with --site, the grid is used
+        check_hazard_grid(grid_file, model_path, demand_from="--record" if record_path else None)
+    check_outputs(force, plot=plot_path)
     record = None
     if record_path is not None:
         record = load_record(record_path, record_format, dt, units, scale, pga)
     out = run_kinematic(
-        model_path, edition=edition, record=record, site=_site(site), grid_file=grid_file
+        model_path, edition=edition, record=record, site=lon_lat, grid_file=grid_file
     )
     doc = kinematic_document(out.name, out.result)
     if plot_path:
         from rockcli.report.plots import plot_kinematic
 
         plot_kinematic(doc, plot_path)
+        announce_written(plot_path)
     show(doc, output, kinematic_report)
+    if fail_on_uls:
+        gate_uls(doc["verdict"]["ULS"])
+
+
+def gate_uls(uls: bool | None) -> None:
+    """--fail-on-uls: exit 1 unless the ULS verdict is satisfied (one line on stderr)."""
+    from rockcli.report.kinematic import ULTIMATE_FIX
+
+    if uls is True:
+        return
+    reason = "NOT satisfied" if uls is False else f"not evaluated ({ULTIMATE_FIX})"
+    click.echo(f"--fail-on-uls: ULS {reason}", err=True)
+    raise SystemExit(EXIT_GATE)

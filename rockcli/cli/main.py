@@ -1,29 +1,89 @@
-"""The `rock` command group: the one place where bad input becomes an error line and exit code.
+"""The `rock` command group: the one place where an exception becomes an error line and exit code.
+
+Exit codes (one meaning each): 0 done, 1 a verdict gate the user asked for (``--fail-on…``),
+2 bad input, 3 an internal error, 130 interrupted (Ctrl-C). A closed pipe on standard output
+(``rock kinematic … | head -1``) ends quietly with 0.
 
 Command modules keep numpy, scipy and numba imports inside their functions, so that
-``rock --help`` and model validation start without them (spec/engine.md, "Speed").
+``rock --help`` and model validation start without them.
 """
 
 from __future__ import annotations
 
+import os
+import sys
+import traceback
+
 import click
 
 from rockcli import __version__
-from rockcli.errors import RockError
+from rockcli.cli.console import make_output_encodable
+from rockcli.cli.exits import EXIT_INPUT, EXIT_INTERNAL, EXIT_INTERRUPTED, REPORT_TO
+from rockcli.errors import RockError, printable
 
-#: Exit code for bad input (same as click's usage errors).
-EXIT_INPUT = 2
+#: Set to 1 to see the traceback of an internal error.
+DEBUG_VARIABLE = "ROCK_DEBUG"
+#: click's own control flow: let click handle these.
+_CLICK_FLOW = (click.exceptions.ClickException, click.exceptions.Exit, click.exceptions.Abort)
+
+
+def debug_enabled() -> bool:
+    """True when ROCK_DEBUG asks for tracebacks."""
+    return os.environ.get(DEBUG_VARIABLE, "") not in ("", "0")
+
+
+def internal_error_line(exc: BaseException) -> str:
+    """The one line of an unexpected exception."""
+    return (
+        f"internal error: {type(exc).__name__}: {printable(str(exc))} — please report it to "
+        f"{REPORT_TO} with the output of {DEBUG_VARIABLE}=1"
+    )
+
+
+def quiet_broken_pipe() -> None:
+    """Standard output's reader went away: point stdout at devnull so that Python's final
+    flush does not print "Exception ignored" (the recipe of the Python docs, "Note on
+    SIGPIPE")."""
+    devnull = os.open(os.devnull, os.O_WRONLY)
+    try:
+        os.dup2(devnull, sys.stdout.fileno())
+    except (OSError, ValueError, AttributeError):
+        pass  # not a real file (a test runner's buffer): nothing to flush at exit
+    finally:
+        os.close(devnull)
 
 
 class RockGroup(click.Group):
-    """click group that renders every :class:`RockError` as one line on stderr."""
+    """click group that turns every exception into one line on stderr and its exit code."""
+
+    def main(self, *args, **kwargs):
+        make_output_encodable()
+        return super().main(*args, **kwargs)
 
     def invoke(self, ctx: click.Context) -> object:
         try:
-            return super().invoke(ctx)
+            result = super().invoke(ctx)
+            sys.stdout.flush()  # a closed pipe shows here, inside the handler, not at exit
+            return result
         except RockError as exc:
-            click.echo(f"error: {exc}", err=True)
+            # Several problems of one file (rockcli.model.load.InputErrors): one line each.
+            for line in getattr(exc, "lines", None) or (str(exc),):
+                click.echo(f"error: {printable(line)}", err=True)
             ctx.exit(EXIT_INPUT)
+        except BrokenPipeError:
+            quiet_broken_pipe()
+            ctx.exit(0)
+        except KeyboardInterrupt:
+            click.echo("interrupted", err=True)
+            ctx.exit(EXIT_INTERRUPTED)
+        except _CLICK_FLOW:
+            raise
+        except Exception as exc:
+            if debug_enabled():
+                traceback.print_exc(file=sys.stderr)
+            click.echo(internal_error_line(exc), err=True)
+            ctx.exit(EXIT_INTERNAL)
+        return None  # unreachable: ctx.exit raises
 
 
 @click.group(cls=RockGroup, context_settings={"help_option_names": ["-h", "--help"]})

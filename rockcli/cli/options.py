@@ -86,10 +86,91 @@ def with_record_options(required: bool = True):
     return decorate
 
 
+#: The options that describe or transform a record: they need --record.
+RECORD_ONLY = ("--as", "--dt", "--units", "--scale", "--pga")
+
+
+def check_record_options(record_path, record_format, dt, units, scale, pga) -> None:
+    """Refuse a record option without --record, and --scale with --pga (InputError)."""
+    from rockcli.errors import InputError
+
+    given = dict(zip(RECORD_ONLY, (record_format, dt, units, scale, pga), strict=True))
+    if record_path is None:
+        for option, value in given.items():
+            if value is not None:
+                raise InputError(
+                    "applies only to a record",
+                    where=option,
+                    value=value,
+                    allowed=f"--record FILE with {option}, or no {option}",
+                )
+    if scale is not None and pga is not None:
+        raise InputError(
+            "conflicts with --pga (both set the record's amplitude)",
+            where="--scale",
+            value=scale,
+            allowed="either --scale FACTOR or --pga PGA",
+        )
+
+
+def check_hazard_grid(grid_file, model_path, *, demand_from: str | None) -> None:
+    """Refuse --hazard-grid when no site sets the demand (InputError).
+
+    Args:
+        grid_file: the --hazard-grid value.
+        model_path: the model, whose [ntc.site] is a site.
+        demand_from: the option that sets the demand instead of a site (``--record``,
+            ``--record-demand``), or None.
+    """
+    from rockcli.errors import InputError
+
+    if grid_file is None:
+        return
+    allowed = "--hazard-grid only with a site: --site LON,LAT or the model's [ntc.site]"
+    if demand_from is not None:
+        raise InputError(
+            f"not used: {demand_from} sets the demand", where="--hazard-grid", allowed=allowed
+        )
+    from rockcli.model.load import load_model
+
+    model = load_model(model_path)
+    if model.ntc is None or model.ntc.site is None:
+        raise InputError(
+            "not used: no site sets the demand",
+            file=model_path,
+            where="--hazard-grid",
+            allowed=allowed,
+        )
+
+
+def check_outputs(force: bool, **paths: str | None) -> None:
+    """Check every output file before the analysis runs (outfile.check_writable).
+
+    Args:
+        force: overwrite existing files.
+        paths: option name (``plot``, ``history``) → the path given, or None; ``-`` is
+            refused (standard output is the report's).
+    """
+    from rockcli.errors import InputError
+    from rockcli.outfile import check_writable, is_stdout
+
+    for option, path in paths.items():
+        if is_stdout(path):
+            raise InputError(
+                "standard output carries the report",
+                where=f"--{option}",
+                value=path,
+                allowed="a file path",
+            )
+        if path is not None:
+            check_writable(path, force=force, where=f"--{option}")
+
+
 def load_record(record_path, record_format, dt, units, scale, pga):
     """Read and transform the record the options describe (InputError on bad input)."""
     from rockcli.records import files
 
+    check_record_options(record_path, record_format, dt, units, scale, pga)
     record = files.read_record(record_path, fmt=record_format, dt=dt, units=units)
     return scale_record(record, scale, pga)
 
@@ -117,4 +198,17 @@ force_option = click.option(
 
 def announce_written(path: object, detail: str = "") -> None:
     """The one "wrote …" line of every command, on stderr (stdout stays the result's)."""
-    click.echo(f"wrote {path}" + (f": {detail}" if detail else ""), err=True)
+    from rockcli.errors import printable
+
+    line = f"wrote {path}" + (f": {detail}" if detail else "")
+    click.echo(printable(line), err=True)
+
+
+def exit_if_non_finite(runs: list[dict]) -> None:
+    """After the report: exit 3 with one line when a rocking run ended in a non-finite state."""
+    from rockcli.cli.exits import EXIT_INTERNAL, non_finite_line
+
+    line = non_finite_line(runs)
+    if line is not None:
+        click.echo(line, err=True)
+        raise SystemExit(EXIT_INTERNAL)

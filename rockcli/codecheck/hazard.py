@@ -166,7 +166,17 @@ _ROW_FORMAT = f"{GRID_COLUMNS} numbers: lon, lat, then ag [g/10], F0, TC* [s] fo
 
 def _check_header(line: str, source: str, number: int) -> None:
     """A header naming return periods must name the grid's nine, in order."""
-    found = tuple(float(tr) for tr in re.findall(r"TR\s*=\s*([0-9.]+)", line))
+    tokens = re.findall(r"TR *= *([^\s,;]*)", line)
+    bad = next((token for token in tokens if not _is_number(token)), None)
+    if bad is not None:
+        raise InputError(
+            "a return period in the header is not a number",
+            file=source,
+            where=f"line {number}",
+            value=bad,
+            allowed="TR=<years> for " + ", ".join(f"{tr:g}" for tr in GRID_RETURN_PERIODS),
+        )
+    found = tuple(float(token) for token in tokens)
     if found and found != GRID_RETURN_PERIODS:
         raise InputError(
             "the header's return periods are not the grid's",

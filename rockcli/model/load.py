@@ -12,6 +12,7 @@ to the problem text and a function that says what is allowed, read from the sche
 
 from __future__ import annotations
 
+import difflib
 import json
 import math
 import os
@@ -30,10 +31,25 @@ from pydantic.fields import FieldInfo
 from pydantic_core import ErrorDetails
 
 from rockcli.errors import InputError
+from rockcli.model.derive import to_block
+from rockcli.model.derived_checks import FINITE_POSITIVE, check_block
 from rockcli.model.rules import RULE_ERROR
 from rockcli.model.schema import Model
 
 Loc = tuple[str | int, ...]
+
+#: Nesting depth at which the line of a file too deeply nested for tomllib is reported (a
+#: model file needs 4 levels; tomllib's recursion runs out near 300 at Python's default limit).
+MAX_NESTING = 100
+
+#: Most problems listed for one file; the others are counted ("and N more").
+MAX_ERRORS = 10
+
+#: Similarity (difflib ratio) above which an unknown name is a near miss of a known one: 0.6
+#: is difflib's own default; 0.75 keeps ``[results]`` from suggesting ``[restrainers]``
+#: while ``thikness`` → ``thickness`` (0.94) and ``geometri`` → ``geometry`` (0.88) pass.
+NEAR_MISS = 0.75
+
 
 #: Longest value quoted back in a message [characters].
 MAX_VALUE_CHARS = 60
@@ -41,8 +57,59 @@ MAX_VALUE_CHARS = 60
 _TOML_POSITION = re.compile(
     r"^(?P<problem>.*?)\s*\(at (?P<where>line \d+, column \d+|end of document)\)$"
 )
+_QUOTED = re.compile(r'"(?:[^"\\]|\\.)*"|\'[^\']*\'')
 _UNIT = re.compile(r"\[([^\]]+)\]\s*$")
 _BARE_KEY = re.compile(r"^[A-Za-z0-9_-]+$")
+
+
+class InputErrors(InputError):
+    """Several problems in one input: one :class:`InputError` line each, at most ten shown.
+
+    The first problem's fields are this error's own (callers that read ``where`` or
+    ``problem`` see the first); :attr:`lines` holds one line per problem, which the CLI prints
+    each as its own ``error: …`` line; ``str()`` joins them with line breaks.
+
+    Args:
+        errors: the problems shown, in the order found (at least two).
+        more: how many further problems were found and not shown.
+    """
+
+    def __init__(self, errors: Sequence[InputError], *, more: int = 0) -> None:
+        self.errors = tuple(errors)
+        self.more = max(more, 0)
+        first = self.errors[0]
+        super().__init__(
+            first.problem,
+            file=first.file,
+            where=first.where,
+            value=first.value,
+            allowed=first.allowed,
+        )
+
+    @property
+    def lines(self) -> tuple[str, ...]:
+        """One line per problem, then ``and N more problems`` when some were not shown."""
+        lines = [err.render() for err in self.errors]
+        if self.more:
+            head = f"{self.errors[0].file}: " if self.errors[0].file else ""
+            lines.append(f"{head}and {self.more} more problems (fix these and run again)")
+        return tuple(lines)
+
+    def render(self) -> str:
+        """The lines, joined by line breaks."""
+        return "\n".join(self.lines)
+
+    def with_file(self, file: str) -> InputError:
+        """The same errors, each naming the file."""
+        return InputErrors([err.with_file(file) for err in self.errors], more=self.more)
+
+    def __reduce__(self) -> tuple[Any, ...]:
+        """Pickle by the errors (a sweep worker's exception crosses a process boundary)."""
+        return _input_errors, (self.errors, self.more)
+
+
+def _input_errors(errors: Sequence[InputError], more: int) -> InputErrors:
+    return InputErrors(errors, more=more)
 
 
 def load_model(path: str | os.PathLike[str]) -> Model:
@@ -70,6 +137,28 @@ def read_toml(file: str) -> dict[str, Any]:
         raise InputError("not UTF-8 text", file=file, where=_position(raw, exc.start)) from None
     except tomllib.TOMLDecodeError as exc:
         raise toml_error(exc, file) from None
+    except RecursionError:
+        raise InputError(
+            "malformed TOML: arrays or tables nested too deep to read",
+            file=file,
+            where=_deep_line(raw.decode("utf-8")),
+            allowed="arrays and inline tables nested a few levels deep (a model needs 4)",
+        ) from None
+
+
+def _deep_line(text: str) -> str | None:
+    """``line N``: the first line where brackets nest deeper than :data:`MAX_NESTING`.
+
+    A scan that skips quoted strings on a line (enough to point at the culprit; tomllib has
+    already refused the file).
+    """
+    depth = 0
+    for number, line in enumerate(text.splitlines(), start=1):
+        for char in _QUOTED.sub("", line).split("#", 1)[0]:
+            depth += (char in "[{") - (char in "]}")
+            if depth > MAX_NESTING:
+                return f"line {number}"
+    return None
 
 
 def _position(raw: bytes, offset: int) -> str:
@@ -93,16 +182,37 @@ def toml_error(exc: tomllib.TOMLDecodeError, file: str) -> InputError:
 
 
 def validate_model(data: Mapping[str, Any], file: str | None = None) -> Model:
-    """Validate a parsed model file; InputError (the first problem only) when it is invalid.
+    """Validate a parsed model file; InputError naming every problem when it is invalid.
 
     Args:
         data: the TOML table, as tomllib returns it.
         file: the file it came from, for the message.
+
+    Raises:
+        InputError: one problem; :class:`InputErrors` (an InputError) for several.
     """
     try:
-        return Model.model_validate(data)
+        model = Model.model_validate(data)
     except ValidationError as exc:
-        raise translate_error(exc.errors()[0], file) from None
+        raise translate_errors(exc.errors(), file) from None
+    check_derived(model, file)
+    return model
+
+
+def check_derived(model: Model, file: str | None = None) -> None:
+    """InputError when the block derived from a valid model is not finite (see
+    :mod:`rockcli.model.derived_checks`)."""
+    try:
+        check_block(to_block(model))
+    except InputError as exc:
+        raise exc.with_file(file) if file else exc from None
+    except ArithmeticError as exc:
+        raise InputError(
+            f"the block's derived quantities cannot be computed ({exc})",
+            file=file,
+            where="geometry, mass, analysis, restrainers",
+            allowed=FINITE_POSITIVE,
+        ) from None
 
 
 def to_toml(model: Model) -> str:
@@ -231,10 +341,38 @@ TRANSLATION: dict[str, tuple[str | None, Explain]] = {
 _BOUNDS = ((at.Gt, "gt", ">"), (at.Ge, "ge", ">="), (at.Lt, "lt", "<"), (at.Le, "le", "<="))
 
 
+def translate_errors(errors: Sequence[ErrorDetails], file: str | None = None) -> InputError:
+    """Every pydantic error of a file as one InputError (several: :class:`InputErrors`).
+
+    An unknown key that is a near miss of a missing required one (``[geometri]`` for
+    ``[geometry]``) is reported once, as the unknown key with its suggestion.
+    """
+    explained = {
+        loc[:-1] + (hint,)
+        for err in errors
+        if err["type"] == "extra_forbidden"
+        for loc in [tuple(err["loc"])]
+        for hint in [_near_miss(loc)]
+        if hint is not None
+    }
+    found = [
+        translate_error(err, file)
+        for err in errors
+        if not (err["type"] == "missing" and tuple(err["loc"]) in explained)
+    ]
+    if len(found) == 1:
+        return found[0]
+    return InputErrors(found[:MAX_ERRORS], more=len(found) - MAX_ERRORS)
+
+
 def translate_error(err: ErrorDetails, file: str | None = None) -> InputError:
     """One pydantic error as one InputError: where (dotted path), problem, value, allowed."""
+    if err["type"] == "extra_forbidden":
+        return _unknown_key(err, file)
     problem, explain = TRANSLATION.get(err["type"], (None, _nothing))
     loc, value = _where_and_value(err)
+    if err["type"] == "enum" and isinstance(value, str) and not value.isdigit():
+        problem = f"{problem}{_did_you_mean(value, _enum_values(loc))}"
     return InputError(
         problem or _one_line(err["msg"]),
         file=file,
@@ -242,6 +380,65 @@ def translate_error(err: ErrorDetails, file: str | None = None) -> InputError:
         value=_short(value),
         allowed=explain(err, loc),
     )
+
+
+def _unknown_key(err: ErrorDetails, file: str | None) -> InputError:
+    """An unknown key, or an unknown table named as TOML writes it, with a near match."""
+    loc = tuple(err["loc"])
+    value = err.get("input")
+    hint = _near_miss(loc)
+    allowed = _table_keys(err, loc)
+    if _is_table(value):
+        brackets = ("[[", "]]") if isinstance(value, list) else ("[", "]")
+        name = "{}{}{}".format(brackets[0], "{}", brackets[1])
+        suggestion = f"; did you mean {name.format(_dotted(loc[:-1] + (hint,)))}?" if hint else ""
+        problem = f"unknown table {name.format(_dotted(loc))}{suggestion}"
+        return InputError(problem, file=file, allowed=allowed)
+    suggestion = f"; did you mean {hint}?" if hint else ""
+    return InputError(
+        f"unknown key{suggestion}",
+        file=file,
+        where=_dotted(loc),
+        value=_short(value),
+        allowed=allowed,
+    )
+
+
+def _is_table(value: Any) -> bool:
+    """A TOML table, or an array of tables."""
+    if isinstance(value, Mapping):
+        return True
+    return isinstance(value, list) and bool(value) and all(isinstance(v, Mapping) for v in value)
+
+
+def _near_miss(loc: Loc) -> str | None:
+    """The key of the schema closest to an unknown key at ``loc`` (difflib), if any."""
+    key = loc[-1] if loc else None
+    table = table_at(loc[:-1])
+    if not isinstance(key, str) or table is None:
+        return None
+    keys = list(table.model_fields)
+    folded = {k.casefold(): k for k in keys}
+    if key.casefold() in folded:
+        return folded[key.casefold()]
+    matches = difflib.get_close_matches(key, keys, n=1, cutoff=NEAR_MISS)
+    return matches[0] if matches else None
+
+
+def _enum_values(loc: Loc) -> list[str]:
+    info = field_at(loc)
+    enum = _find_class(info.annotation, Enum) if info else None
+    return [str(member.value) for member in enum] if enum is not None else []
+
+
+def _did_you_mean(word: str, choices: Sequence[str]) -> str:
+    """``; did you mean 'x'?`` for a near miss among ``choices`` (difflib), else nothing."""
+    folded = {c.casefold(): c for c in choices}
+    match = folded.get(word.strip().casefold())
+    if match is None:
+        close = difflib.get_close_matches(word, list(choices), n=1, cutoff=NEAR_MISS)
+        match = close[0] if close else None
+    return f"; did you mean {match!r}?" if match is not None else ""
 
 
 def _where_and_value(err: ErrorDetails) -> tuple[Loc, Any]:

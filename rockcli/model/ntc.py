@@ -7,10 +7,31 @@ its unit); :mod:`rockcli.model.derive` turns it into the code check's plain sett
 from __future__ import annotations
 
 from enum import StrEnum
+from typing import Annotated, Any
 
-from pydantic import Field, model_validator
+from pydantic import BeforeValidator, Field, model_validator
 
 from rockcli.codecheck.categories import Edition, Soil, Topography
+from rockcli.model.bounds import (
+    MAX_BEHAVIOUR_FACTOR,
+    MAX_LENGTH,
+    MAX_MODE_SHAPE,
+    MAX_NOMINAL_LIFE,
+    MAX_PARTICIPATION,
+    MAX_PERIOD,
+    MAX_REACH,
+    MAX_STOREYS,
+    MAX_USE_COEFFICIENT,
+    MAX_WEIGHT,
+    MIN_AG,
+    MIN_ELONGATION,
+    MIN_LENGTH,
+    MIN_MODAL,
+    MIN_PERIOD,
+    MIN_TC_STAR,
+    MIN_USE_COEFFICIENT,
+    MIN_WEIGHT,
+)
 from rockcli.model.rules import choose_group, number, rule_error
 from rockcli.model.schema_base import Table
 
@@ -21,6 +42,23 @@ KNOWLEDGE_LEVEL_FC = {"LC1": 1.35, "LC2": 1.20, "LC3": 1.00}
 FC_MIN, FC_MAX = 1.0, 1.35
 #: Behaviour factor of the linear kinematic check (Circolare 617/2009 §C8A.4.2.2; C8.7.1.2.1).
 DEFAULT_Q = 2.0
+
+
+#: Other names of the editions: the year of the code (NTC 2008, NTC 2018) for the year of
+#: its instructions (Circolare 617/2009, Circolare 7/2019), which rock uses.
+EDITION_ALIASES = {"2008": Edition.E2009.value, "2018": Edition.E2019.value}
+
+
+def edition_name(value: Any) -> Any:
+    """rock's name of an edition: an integer year as text, a code year as its circular's.
+
+    Anything else is returned unchanged, for the enum to accept or refuse.
+    """
+    if isinstance(value, int) and not isinstance(value, bool):
+        value = str(value)
+    if isinstance(value, str):
+        return EDITION_ALIASES.get(value.strip(), value.strip())
+    return value
 
 
 class KnowledgeLevel(StrEnum):
@@ -48,10 +86,10 @@ class Site(Table):
 class SpectrumParameters(Table):
     """Spectrum parameters of one limit state, given directly (NTC §3.2, Allegato B)."""
 
-    ag: float = number("Peak ground acceleration on rock ag [g]", ..., gt=0, le=2)
+    ag: float = number("Peak ground acceleration on rock ag [g]", ..., ge=MIN_AG, le=2)
     F0: float = number("Maximum spectral amplification F0 [-]", ..., ge=1.5, le=4)
     Tc_star: float = number(
-        "Period Tc* at the start of the constant-velocity branch [s]", ..., gt=0, le=2
+        "Period Tc* at the start of the constant-velocity branch [s]", ..., ge=MIN_TC_STAR, le=2
     )
 
 
@@ -73,12 +111,15 @@ class Load(Table):
     """
 
     name: str | None = Field(None, min_length=1, description="Label")
-    weight: float = number("Weight [kN]", ..., gt=0)
-    height: float = number("Height of its point of application above the pivot [m]", ..., ge=0)
+    weight: float = number("Weight [kN]", ..., ge=MIN_WEIGHT, le=MAX_WEIGHT)
+    height: float = number(
+        "Height of its point of application above the pivot [m]", ..., ge=0, le=MAX_REACH
+    )
     from_pivot: float | None = number(
         "Horizontal distance of its point of application from the pivot, inside the block; "
         "default: the mid-plane b [m]",
         ge=0,
+        le=MAX_REACH,
     )
     bears: bool = Field(
         True,
@@ -91,10 +132,11 @@ class Load(Table):
 class Ntc(Table):
     """Settings of the NTC kinematic check (spec/ntc.md)."""
 
-    edition: Edition = Field(
+    edition: Annotated[Edition, BeforeValidator(edition_name)] = Field(
         Edition.E2019,
         description="'2009' (NTC 2008 + Circ. 617/2009) or '2019' (NTC 2018 + Circ. 7/2019, "
-        "in force); default '2019'",
+        "in force); default '2019'. Also accepted: the year of the code, '2008' for '2009' "
+        "and '2018' for '2019', and each as a number (edition = 2019)",
     )
     FC: float | None = number(
         "Confidence factor in [1, 1.35] (or knowledge_level); default 1.35 (LC1) [-]",
@@ -104,29 +146,55 @@ class Ntc(Table):
     knowledge_level: KnowledgeLevel | None = Field(
         None, description="'LC1' (FC 1.35), 'LC2' (1.20) or 'LC3' (1.00), instead of FC"
     )
-    q: float = number("Behaviour factor of the linear check; default 2.0 [-]", DEFAULT_Q, ge=1)
+    q: float = number(
+        "Behaviour factor of the linear check; default 2.0 [-]",
+        DEFAULT_Q,
+        ge=1,
+        le=MAX_BEHAVIOUR_FACTOR,
+    )
     soil: Soil = Field(Soil.A, description="Subsoil category A–E; default A")
     topography: Topography = Field(
         Topography.T1, description="Topographic category T1–T4; default T1"
     )
-    VN: float = number("Nominal life VN; default 50 [years]", 50.0, gt=0)
+    VN: float = number("Nominal life VN; default 50 [years]", 50.0, gt=0, le=MAX_NOMINAL_LIFE)
     CU: float = number(
-        "Use coefficient CU (class I 0.7, II 1.0, III 1.5, IV 2.0); default 1 [-]", 1.0, gt=0
+        "Use coefficient CU (class I 0.7, II 1.0, III 1.5, IV 2.0); default 1 [-]",
+        1.0,
+        ge=MIN_USE_COEFFICIENT,
+        le=MAX_USE_COEFFICIENT,
     )
     Z: float = number(
-        "Height of the base of the mechanism above the foundation; 0 on the ground [m]", 0.0, ge=0
+        "Height of the base of the mechanism above the foundation; 0 on the ground [m]",
+        0.0,
+        ge=0,
+        le=MAX_LENGTH,
     )
-    H: float | None = number("Height of the building above the foundation, with Z > 0 [m]", gt=0)
+    H: float | None = number(
+        "Height of the building above the foundation, with Z > 0 [m]",
+        ge=MIN_LENGTH,
+        le=MAX_LENGTH,
+    )
     N: int | None = Field(
-        None, strict=True, ge=1, description="Number of storeys, with Z > 0 (for γ = 3N/(2N+1))"
+        None,
+        strict=True,
+        ge=1,
+        le=MAX_STOREYS,
+        description="Number of storeys, with Z > 0 (for γ = 3N/(2N+1))",
     )
     T1: float | None = number(
         "First period of the building, with Z > 0; default C1·H^0.75 with C1 = 0.05 "
         "(NTC §7.3.3.2) [s]",
-        gt=0,
+        ge=MIN_PERIOD,
+        le=MAX_PERIOD,
     )
-    gamma: float | None = number("Modal participation factor γ; default 3N/(2N+1) [-]", gt=0)
-    psi: float | None = number("First mode shape ψ(Z); default Z/H [-]", gt=0)
+    gamma: float | None = number(
+        "Modal participation factor γ; default 3N/(2N+1) [-]",
+        ge=MIN_MODAL,
+        le=MAX_PARTICIPATION,
+    )
+    psi: float | None = number(
+        "First mode shape ψ(Z), 1 at the top; default Z/H [-]", ge=MIN_MODAL, le=MAX_MODE_SHAPE
+    )
     mass_distribution: MassDistribution = Field(
         MassDistribution.LUMPED,
         description="'lumped' (weight at the centroid, e* = 1; default) or 'distributed' "
@@ -136,7 +204,8 @@ class Ntc(Table):
         "Displacement of the control point at which a local incompatibility (or, with a "
         "positive global stiffness, the designer's limit) ends the mechanism; caps du* "
         "(2009), d_SLV and d_SLC (2019) [m]",
-        gt=0,
+        ge=MIN_ELONGATION,
+        le=MAX_LENGTH,
     )
     site: Site | None = Field(None, description="Site coordinates, demand from the hazard grid")
     demand: Demand | None = Field(None, description="Spectrum parameters per limit state")
@@ -156,8 +225,19 @@ class Ntc(Table):
         return self
 
     def _check_height(self) -> None:
+        if self.Z < MIN_LENGTH:
+            raise rule_error(
+                "Z",
+                "too small to be a height above the foundation",
+                f"0 on the ground, or a height >= {MIN_LENGTH:g} and <= H [m]",
+                self.Z,
+            )
         if self.H is None:
-            raise rule_error("H", "required when Z > 0 (element at height)", "a number > 0 [m]")
+            raise rule_error(
+                "H",
+                "required when Z > 0 (element at height)",
+                f"a number >= {MIN_LENGTH:g} and <= {MAX_LENGTH:g} [m]",
+            )
         if self.Z > self.H:
             raise rule_error(
                 "Z", f"above the building height H = {self.H:g} m", "0 <= Z <= H [m]", self.Z

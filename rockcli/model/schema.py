@@ -20,6 +20,20 @@ from typing import Any
 
 from pydantic import Field, model_validator
 
+from rockcli.model.bounds import (
+    MAX_LENGTH,
+    MAX_MODULUS,
+    MAX_REACH,
+    MAX_STIFFNESS,
+    MAX_UNIT_WEIGHT,
+    MAX_WEIGHT,
+    MIN_ELONGATION,
+    MIN_LENGTH,
+    MIN_MODULUS,
+    MIN_SLENDERNESS,
+    MIN_UNIT_WEIGHT,
+    MIN_WEIGHT,
+)
 from rockcli.model.ntc import Ntc
 from rockcli.model.rules import choose_group, forbid, number, rule_error
 from rockcli.model.schema_base import Table
@@ -99,21 +113,30 @@ class Position(StrEnum):
 class Geometry(Table):
     """The rocking block: either R + alpha, or thickness + height (spec/README.md)."""
 
-    R: float | None = number("Semi-diagonal R = √(b² + h²), with R + alpha [m]", gt=0)
+    R: float | None = number(
+        "Semi-diagonal R = √(b² + h²), with R + alpha [m]", ge=MIN_LENGTH, le=MAX_LENGTH
+    )
     alpha: float | None = number(
         "Slenderness α = atan(b/h), strictly between 0 and π/2, with R [rad]",
-        gt=0,
+        ge=MIN_SLENDERNESS,
         lt=math.pi / 2,
     )
-    thickness: float | None = number("Full thickness 2b, with height [m]", gt=0)
-    height: float | None = number("Full height 2h above the pivot, with thickness [m]", gt=0)
+    thickness: float | None = number(
+        "Full thickness 2b, with height [m]", ge=MIN_LENGTH, le=MAX_LENGTH
+    )
+    height: float | None = number(
+        "Full height 2h above the pivot, with thickness [m]", ge=MIN_LENGTH, le=MAX_LENGTH
+    )
     width: float | None = number(
-        "Out-of-plane length, needed only with mass.unit_weight (volume = 2b·2h·width) [m]", gt=0
+        "Out-of-plane length, needed only with mass.unit_weight (volume = 2b·2h·width) [m]",
+        ge=MIN_LENGTH,
+        le=MAX_LENGTH,
     )
     pivot_height: float | None = number(
         "Height of the pivot above ground when the block is the upper portion of a taller "
         "wall; informational for now [m]",
         ge=0,
+        le=MAX_LENGTH,
     )
 
     @model_validator(mode="after")
@@ -145,9 +168,11 @@ class Geometry(Table):
 class Mass(Table):
     """The weight of the block: total weight, or unit weight × volume (spec/README.md)."""
 
-    weight: float | None = number("Total weight W of the block [kN]", gt=0)
+    weight: float | None = number("Total weight W of the block [kN]", ge=MIN_WEIGHT, le=MAX_WEIGHT)
     unit_weight: float | None = number(
-        "Unit weight γ; W = γ·2b·2h·width, needs geometry.width [kN/m³]", gt=0
+        "Unit weight γ; W = γ·2b·2h·width, needs geometry.width [kN/m³]",
+        ge=MIN_UNIT_WEIGHT,
+        le=MAX_UNIT_WEIGHT,
     )
 
     @model_validator(mode="after")
@@ -158,6 +183,9 @@ class Mass(Table):
             raise rule_error(None, "missing the weight", allowed)
         return self
 
+
+#: What a length accepts, for the rules that require one.
+LENGTH_ALLOWED = f"a number >= {MIN_LENGTH:g} and <= {MAX_LENGTH:g} [m]"
 
 EITHER_E = 'model = "housner" with optional factor, or model = "explicit" with e'
 
@@ -287,19 +315,24 @@ class Restrainer(Table):
     kind: RestrainerKind = Field(
         RestrainerKind.SPRING, description="'spring' (default: stiffness given) or 'tie-rod'"
     )
-    k_pos: float | None = number("Stiffness while θ > 0, with k_neg [N/m]", ge=0)
-    k_neg: float | None = number("Stiffness while θ < 0, with k_pos [N/m]", ge=0)
-    k: float | None = number("Stiffness on both sides (instead of k_pos + k_neg) [N/m]", ge=0)
-    diameter: float | None = number("Tie-rod: bar diameter d [m]", gt=0)
-    length: float | None = number("Tie-rod: free length L [m]", gt=0)
-    E: float | None = number("Tie-rod: Young's modulus; default 210e9 [Pa]", gt=0)
+    k_pos: float | None = number("Stiffness while θ > 0, with k_neg [N/m]", ge=0, le=MAX_STIFFNESS)
+    k_neg: float | None = number("Stiffness while θ < 0, with k_pos [N/m]", ge=0, le=MAX_STIFFNESS)
+    k: float | None = number(
+        "Stiffness on both sides (instead of k_pos + k_neg) [N/m]", ge=0, le=MAX_STIFFNESS
+    )
+    diameter: float | None = number("Tie-rod: bar diameter d [m]", ge=MIN_LENGTH, le=MAX_LENGTH)
+    length: float | None = number("Tie-rod: free length L [m]", ge=MIN_LENGTH, le=MAX_LENGTH)
+    E: float | None = number(
+        "Tie-rod: Young's modulus; default 210e9 [Pa]", ge=MIN_MODULUS, le=MAX_MODULUS
+    )
     acts: Acts | None = Field(
         None, description="Tie-rod: side(s) it works on, 'both' (default), 'positive', 'negative'"
     )
     radius: float | None = number(
         "Distance of the attachment point from the pivot, same for both pivots (paper's form; "
         "with angle) [m]",
-        gt=0,
+        ge=MIN_LENGTH,
+        le=MAX_REACH,
     )
     angle: float | None = number(
         "Angle of that radius from the vertical, into the block, in [0, π/2] (with radius) [rad]",
@@ -307,12 +340,15 @@ class Restrainer(Table):
         le=math.pi / 2,
     )
     height: float | None = number(
-        "Height z of the attachment point above the base (with from_pivot) [m]", gt=0
+        "Height z of the attachment point above the base (with from_pivot) [m]",
+        ge=MIN_LENGTH,
+        le=MAX_REACH,
     )
     from_pivot: float | None = number(
         "Horizontal distance x of the point from the pivot of positive rotation, at most the "
         "thickness; from the other pivot it is 2b − x (with height) [m]",
         ge=0,
+        le=MAX_REACH,
     )
     position: Position | None = Field(
         None, description="'top': the corner at the top, r = 2R, φ = α (paper Eq. 4)"
@@ -320,7 +356,8 @@ class Restrainer(Table):
     fails_at: float | None = number(
         "Spring elongation at which the restrainer is lost for the rest of the run; default "
         "never [m]",
-        gt=0,
+        ge=MIN_ELONGATION,
+        le=MAX_LENGTH,
     )
 
     @model_validator(mode="after")
@@ -389,7 +426,7 @@ class Model(Table):
         if self.mass is not None and self.mass.unit_weight is not None:
             if self.geometry.width is None:
                 raise rule_error(
-                    ("geometry", "width"), "required with mass.unit_weight", "a number > 0 [m]"
+                    ("geometry", "width"), "required with mass.unit_weight", LENGTH_ALLOWED
                 )
 
     def _check_mass(self) -> None:

@@ -166,29 +166,167 @@ TABLE_NOTES: dict[str, tuple[str, ...]] = {
 }
 
 
+#: An example value of every key a user may set, by table: the keys a template does not set
+#: are shown commented under their table (or, for a table the template lacks, as a commented
+#: table at the end), so that each template names every key of the file (tested against the
+#: schema). Keys of one table may exclude each other: the notes and descriptions say which.
+OTHER_KEYS: dict[str, dict[str, Any]] = {
+    "": {"name": "My wall", "kind": "wall", "notes": "Where the element is, what was surveyed."},
+    "geometry": {
+        "R": 1.5,
+        "alpha": 0.17,
+        "thickness": 0.5,
+        "height": 3.0,
+        "width": 3.0,
+        "pivot_height": 0.0,
+    },
+    "mass": {"weight": 100.0, "unit_weight": 18.0},
+    "restitution": {"model": "explicit", "factor": 0.9, "e": 0.8},
+    "motion": {"sides": "one", "stopped": "negative", "rebound": 1.0},
+    "analysis": {"tail": 10.0, **_ANALYSIS},
+    "restrainers": {
+        "name": "spring at the top",
+        "kind": "spring",
+        "k": 1e6,
+        "k_pos": 1e6,
+        "k_neg": 0.0,
+        "diameter": 0.02,
+        "length": 3.0,
+        "E": 210e9,
+        "acts": "both",
+        "radius": 3.0,
+        "angle": 0.08,
+        "height": 2.8,
+        "from_pivot": 0.25,
+        "position": "top",
+        "fails_at": 0.05,
+    },
+    "ntc": {
+        **{k: v for k, v in _NTC.items() if k != "demand"},
+        "knowledge_level": "LC1",
+        "H": 9.0,
+        "N": 3,
+        "T1": 0.26,
+        "gamma": 1.29,
+        "psi": 0.67,
+        "ultimate_displacement": 0.1,
+    },
+    "ntc.site": {"lon": 13.4, "lat": 42.35},
+    "ntc.demand.SLO": {"ag": 0.05, "F0": 2.5, "Tc_star": 0.26},
+    "ntc.demand.SLD": {"ag": 0.06, "F0": 2.5, "Tc_star": 0.27},
+    "ntc.demand.SLV": {"ag": 0.15, "F0": 2.5, "Tc_star": 0.29},
+    "ntc.demand.SLC": {"ag": 0.19, "F0": 2.5, "Tc_star": 0.30},
+    "ntc.loads": {
+        "name": "floor",
+        "weight": 50.0,
+        "height": 3.0,
+        "from_pivot": 0.25,
+        "bears": True,
+    },
+}
+
+#: Tables written as arrays of tables (``[[name]]``).
+ARRAYS = frozenset({"restrainers", "ntc.loads"})
+
+#: For a table a template lacks: the keys that, uncommented together, make a valid table
+#: (the other keys of :data:`OTHER_KEYS` follow as alternatives).
+TABLE_CORE: dict[str, tuple[str, ...]] = {
+    "restrainers": ("name", "k", "position", "fails_at"),
+}
+
+#: Notes of the tables a template may show commented only.
+OPTIONAL_TABLE_NOTES: dict[str, tuple[str, ...]] = {
+    "ntc.site": ("Instead of [ntc.demand.*]: the site, for the demand from a hazard grid.",),
+    "ntc.demand.SLO": ("Spectrum parameters of the operational limit state, if needed.",),
+    "ntc.loads": ("Extra weights on the mechanism (floors, roof), one [[ntc.loads]] table each.",),
+}
+
+
 def render_template(kind: Kind) -> str:
     """The commented TOML template of a macro-element kind."""
     return annotate(dumps(TEMPLATES[kind]))
 
 
 def annotate(text: str) -> str:
-    """Add the table notes and, above each key, the field's description from the schema."""
-    return "\n".join(_annotated_lines(text.splitlines())) + "\n"
+    """Add the table notes, above each key the field's description from the schema, and the
+    keys and tables the text does not set, commented (:data:`OTHER_KEYS`)."""
+    blocks = _blocks(text.splitlines())
+    return "\n".join(_annotated_lines(blocks)) + "\n"
 
 
-def _annotated_lines(lines: list[str]) -> Iterator[str]:
-    table = ""
-    noted: set[str] = set()
-    yield from _notes(table, noted)
+Block = tuple[str, list[str]]
+
+
+def _blocks(lines: list[str]) -> list[Block]:
+    """The text cut at each table header: (table path, its lines, header first)."""
+    blocks: list[Block] = [("", [])]
     for line in lines:
         header = _HEADER.match(line)
         if header:
-            table = header["table"]
-            yield from _notes(table, noted)
+            blocks.append((header["table"], []))
+        blocks[-1][1].append(line)
+    return blocks
+
+
+def _annotated_lines(blocks: list[Block]) -> Iterator[str]:
+    noted: set[str] = set()
+    last = {table: i for i, (table, _) in enumerate(blocks)}
+    for i, (table, lines) in enumerate(blocks):
+        yield from _notes(table, noted)
+        body = list(_explained(table, lines))
+        while body and not body[-1]:
+            body.pop()
+        yield from body
+        if last[table] == i:
+            given = {m["key"] for t, ls in blocks if t == table for m in map(_KEY.match, ls) if m}
+            yield from _other_keys(table, given)
+        if i < len(blocks) - 1:
+            yield ""
+    yield from _absent_tables(set(last))
+
+
+def _explained(table: str, lines: list[str]) -> Iterator[str]:
+    for line in lines:
         key = _KEY.match(line)
         if key:
             yield from _key_comment(table, key["key"])
         yield line
+
+
+def _other_keys(table: str, given: set[str]) -> Iterator[str]:
+    """The keys of ``table`` not given, commented, each under its description."""
+    others = {k: v for k, v in OTHER_KEYS.get(table, {}).items() if k not in given}
+    if not others:
+        return
+    yield "#"
+    yield from _comment('Other keys of this table: remove the "# " before a key to use it.')
+    for key, value in others.items():
+        yield from _key_comment(table, key)
+        yield f"# {_key_line(key, value)}"
+
+
+def _absent_tables(present: set[str]) -> Iterator[str]:
+    """The tables the text lacks, commented at the end (a header anywhere is valid TOML)."""
+    for table, keys in OTHER_KEYS.items():
+        if table in present or not table:
+            continue
+        yield ""
+        yield from _comment(
+            f'Optional: remove the "# " before the header and the keys to use [{table}].'
+        )
+        for note in TABLE_NOTES.get(table, OPTIONAL_TABLE_NOTES.get(table, ())):
+            yield from _comment(note)
+        yield f"# [[{table}]]" if table in ARRAYS else f"# [{table}]"
+        core = TABLE_CORE.get(table, tuple(keys))
+        for key in core:
+            yield from _key_comment(table, key)
+            yield f"# {_key_line(key, keys[key])}"
+        yield from _other_keys(table, set(core))
+
+
+def _key_line(key: str, value: Any) -> str:
+    """``key = value`` as tomli-w writes it."""
+    return dumps({key: value}).strip()
 
 
 def _notes(table: str, noted: set[str]) -> Iterator[str]:

@@ -2,12 +2,22 @@
 
 from __future__ import annotations
 
+import csv
+import io
 import math
 from typing import TYPE_CHECKING, Any
 
+import numpy as np
+
 from rockcli import __version__
 from rockcli.dynamics.result import Assessment, RockingRun
-from rockcli.mechanics import Block, linear_global_stiffness, restrainer_coefficient
+from rockcli.mechanics import (
+    Block,
+    Restrainer,
+    linear_global_stiffness,
+    restrainer_coefficient,
+    spring_elongation,
+)
 from rockcli.records.record import Record
 from rockcli.report.records import record_document, record_report
 from rockcli.report.table import Column, Report, Table, format_value, key_value
@@ -143,6 +153,8 @@ def assessment_document(
         "effectiveness": effectiveness(block),
         "verdict": str(result.verdict),
         "max_ratio": result.max_ratio,
+        # max_ratio of an overturned run is the overturn angle over α, not an amplitude
+        "max_ratio_overturned": any(r.overturned for r in result.runs),
         "warnings": [w for r in result.runs for w in r.warnings],
     }
 
@@ -166,8 +178,18 @@ RUN_ROWS = (
 )
 
 
+#: What an overturned run shows instead of its θ/α (the overturn angle over α, not a peak).
+OVERTURNED = "overturned"
+
+
+def _run_cell(run: dict[str, Any], key: str, fmt: str) -> str:
+    if key == "max_ratio" and run["overturned"]:
+        return OVERTURNED
+    return format_value(run[key], fmt)
+
+
 def runs_table(runs: list[dict[str, Any]]) -> Table:
-    """Quantities down, polarities across."""
+    """Quantities down, polarities across (an overturned run's θ/α reads "overturned")."""
     cols = (
         Column("label", ""),
         *(Column(f"p{r['polarity']}", f"polarity {r['polarity']:+d}") for r in runs),
@@ -177,7 +199,7 @@ def runs_table(runs: list[dict[str, Any]]) -> Table:
         {
             "label": label,
             "unit": unit,
-            **{f"p{r['polarity']}": format_value(r[key], fmt) for r in runs},
+            **{f"p{r['polarity']}": _run_cell(r, key, fmt) for r in runs},
         }
         for key, label, unit, fmt in RUN_ROWS
     )
@@ -244,10 +266,97 @@ def assessment_report(doc: dict[str, Any]) -> Report:
         *rec["notes"],
         *doc["warnings"],
     ]
-    verdict = f"{doc['verdict']} (max θ/α = {doc['max_ratio']:.4f} over both polarities)"
+    verdict = _verdict_line(doc)
     return Report(
         title=f"rock assess — {m['name']}",
         tables=tuple(tables),
         notes=tuple(notes),
         verdict=verdict,
     )
+
+
+def _verdict_line(doc: dict[str, Any]) -> str:
+    if doc["verdict"] == "overturns":
+        return "overturns"
+    return f"{doc['verdict']} (max θ/α = {doc['max_ratio']:.4f} over both polarities)"
+
+
+#: Header of the --history CSV before the restrainer columns.
+HISTORY_HEADER = ("t_s", "ground_acc_g", "theta_rad", "omega_rad_s", "polarity", "status")
+
+
+def history_csv(run: RockingRun, record: Record, model: dict[str, Any]) -> str:
+    """The --history CSV of one run: a plain header row, then one row per sample time.
+
+    Columns: t [s], the ground acceleration the run saw [g] (the record times the polarity,
+    zero in the tail after it), θ [rad], θ̇ [rad/s], the polarity and the run's status, and
+    each restrainer's force K·u(θ) [N] (rockcli.mechanics.spring_elongation, zero once the
+    restrainer failed).
+
+    Args:
+        run: the run, with its history.
+        record: the record the run integrated.
+        model: the model section of the assessment document (restrainers, linearized).
+    """
+    hist = run.history
+    if hist is None:
+        raise ValueError("the run was made without its history (history=True)")
+    ground = run.polarity * np.interp(hist.time, record.time, record.accel, left=0.0, right=0.0)
+    t_fail = {p.name: p.t_fail for p in run.restrainers}
+    springs = [_restrainer(r) for r in model["restrainers"]]
+    forces = [
+        restrainer_forces(sp, hist.time, hist.theta, t_fail.get(sp.name), model["linearized"])
+        for sp in springs
+    ]
+    buffer = io.StringIO()
+    writer = csv.writer(buffer, lineterminator="\n")
+    writer.writerow([*HISTORY_HEADER, *(f"force_N_{sp.name}" for sp in springs)])
+    for i, t in enumerate(hist.time):
+        writer.writerow(
+            [
+                f"{t:.6f}",
+                f"{ground[i]:.10e}",
+                f"{hist.theta[i]:.10e}",
+                f"{hist.omega[i]:.10e}",
+                f"{run.polarity:+d}",
+                str(run.status),
+                *(f"{f[i]:.10e}" for f in forces),
+            ]
+        )
+    return buffer.getvalue()
+
+
+def _restrainer(doc: dict[str, Any]) -> Restrainer:
+    fails_at = doc["fails_at"]
+    return Restrainer(
+        name=doc["name"],
+        k_pos=doc["k_pos"],
+        k_neg=doc["k_neg"],
+        r_pos=doc["r_pos"],
+        phi_pos=doc["phi_pos"],
+        r_neg=doc["r_neg"],
+        phi_neg=doc["phi_neg"],
+        fails_at=math.inf if fails_at is None else fails_at,
+    )
+
+
+def restrainer_forces(
+    spring: Restrainer,
+    time: np.ndarray,
+    theta: np.ndarray,
+    t_fail: float | None,
+    linearized: bool,
+) -> list[float]:
+    """K·u(|θ|) on the active side at each time [N]; zero at rest and from t_fail on.
+
+    Source: the engine's spring law (rockcli.mechanics.spring_elongation, spec/rocking.md
+    u(θ) = r[sin φ − sin(φ − |θ|)]), with K and r, φ of the side θ is on.
+    """
+    out = []
+    for t, a in zip(time, theta, strict=True):
+        if a == 0.0 or (t_fail is not None and t >= t_fail):
+            out.append(0.0)
+            continue
+        k, r, phi = spring.side(1 if a > 0 else -1)
+        out.append(k * spring_elongation(r, phi, abs(float(a)), linearized))
+    return out

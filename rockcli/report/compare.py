@@ -6,6 +6,7 @@ from typing import TYPE_CHECKING, Any
 
 from rockcli import __version__
 from rockcli.records.record import Record
+from rockcli.report.kinematic import ULTIMATE_FIX
 from rockcli.report.table import Column, Report, Table, format_value
 
 if TYPE_CHECKING:
@@ -105,7 +106,8 @@ def comparison_rows(doc: dict[str, Any]) -> tuple[dict[str, str], ...]:
         },
         {
             "label": "collapse",
-            "code": _code_cell(kin, ("ULS", "SLV", "SLC"), col["code"], ("collapses", "survives")),
+            "code": _code_cell(kin, ("ULS", "SLV", "SLC"), col["code"], ("collapses", "survives"))
+            + ("" if col["code"] is not None else f"; {ULTIMATE_FIX}"),
             "rocking": _yes_no(col["rocking"], "overturns", "survives")
             + (f" at {over:.3f} s" if over is not None else ""),
         },
@@ -113,7 +115,9 @@ def comparison_rows(doc: dict[str, Any]) -> tuple[dict[str, str], ...]:
             "label": "amplitude",
             "code": "ζ = capacity/demand = "
             + format_value(uls["ratio"] if uls else None, "{:.3f}"),
-            "rocking": f"max θ/α = {roc['max_ratio']:.4f}",
+            "rocking": "overturned"
+            if any(r["overturned"] for r in roc["runs"])
+            else f"max θ/α = {roc['max_ratio']:.4f}",
         },
     ]
     for run in roc["runs"]:
@@ -144,6 +148,12 @@ def comparison_report(doc: dict[str, Any]) -> Report:
         f"code: {edition[kin['edition']]}, Ts/T_SLV as in `rock kinematic`; demand: "
         + "; ".join(f"{k} {v}" for k, v in kin["demand"].items()),
         f"rocking: both polarities, engine {roc['engine']['name']}",
-        *roc["warnings"],
+        *doc.get("warnings", comparison_warnings(doc)),
     )
     return Report(title="rock compare", tables=(table,), notes=notes, verdict=doc["classification"])
+
+
+def comparison_warnings(doc: dict[str, Any]) -> list[str]:
+    """The warnings of both analyses, each once, in order (the document's ``"warnings"``)."""
+    both = [*doc["kinematic"].get("warnings", ()), *doc["rocking"].get("warnings", ())]
+    return list(dict.fromkeys(both))

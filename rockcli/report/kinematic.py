@@ -53,6 +53,7 @@ def kinematic_document(name: str, result: KinematicResult) -> dict[str, Any]:
         "curve": list(result.curve),
         "demand": result.demand,
         "notes": list(result.notes),
+        "warnings": [],
         "verdict": result.verdict(),
     }
 
@@ -126,13 +127,30 @@ def kinematic_report(doc: dict[str, Any]) -> Report:
             if c["note"]
         ),
     ]
-    verdict = ", ".join(f"{k} {_word(v)}" for k, v in doc["verdict"].items())
     return Report(
         title=f"rock kinematic — {doc['model']['name']}",
         tables=tables,
-        notes=tuple(notes),
-        verdict=verdict,
+        notes=(*notes, *doc.get("warnings", ())),
+        verdict=verdict_line(doc["edition"], doc["verdict"]),
     )
+
+
+#: The limit states the verdict line names, once each: 2019 names SLD, SLV and SLC (DLS is
+#: SLD and ULS is SLV with SLC, so naming them too would say each twice).
+VERDICT_STATES = {"2009": ("DLS", "ULS"), "2019": ("SLD", "SLV", "SLC")}
+#: Limit states whose "not evaluated" the ultimate displacement decides.
+ULTIMATE_STATES = frozenset({"ULS", "SLV", "SLC"})
+#: What makes a non-linear ULS check evaluable (codecheck.result.deciding).
+ULTIMATE_FIX = "set ntc.ultimate_displacement or a restrainer's fails_at"
+
+
+def verdict_line(edition: str, verdict: dict[str, bool | None]) -> str:
+    """ "DLS satisfied, ULS NOT satisfied": each limit state of the edition once."""
+    states = [ls for ls in VERDICT_STATES[edition] if ls in verdict]
+    line = ", ".join(f"{ls} {_word(verdict[ls])}" for ls in states)
+    if any(verdict[ls] is None for ls in states if ls in ULTIMATE_STATES):
+        line += f" ({ULTIMATE_FIX})"
+    return line
 
 
 def _word(value: bool | None) -> str:

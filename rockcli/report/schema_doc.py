@@ -52,8 +52,12 @@ loader accepts, read from the schema itself (`rockcli/model/schema.py`,
 `rockcli/model/ntc.py`). For what the quantities mean see [conventions](conventions.md);
 for the choices behind the defaults see [interpretations](interpretations.md).
 
-- Every table rejects keys it does not know; a bad value gets one line naming the key, the
-  value and what is allowed.
+- Every table rejects keys it does not know (and suggests the nearest known one); a bad value
+  gets one line naming the key, the value and what is allowed, and every problem of the file
+  is listed at once (up to ten).
+- Every number has a physical range (lengths from 1 mm to 1 km, weights from 1 mN to 10⁷ kN,
+  stiffnesses up to 10¹² N/m…): a value outside it is a slip (of units, of a digit), not an
+  element, and is refused.
 - *number*: a TOML integer or float, finite (`inf`/`nan` refused); a string or a boolean is
   refused. *integer*: a TOML integer.
 - *unit*: SI, as in the file (`-` dimensionless). *default*: what is used when the key is

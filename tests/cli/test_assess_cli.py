@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import csv
 import json
+import math
 import subprocess
 import sys
 import time
@@ -73,16 +74,66 @@ def test_table_report_shows_verdict_and_both_polarities() -> None:
 
 
 def test_history_csv_of_the_worse_polarity(tmp_path: Path) -> None:
+    # Issue 7, item 18: a plain header row first (no "#" comment line), the ground
+    # acceleration and the polarity/status as columns.
     out = tmp_path / "h.csv"
     doc = assess_json(ROOT / "examples" / "altar.toml", PULSES[0], "--history", str(out))
-    lines = out.read_text().splitlines()
-    assert lines[1] == "t_s,theta_rad,omega_rad_s"
-    rows = list(csv.reader(lines[2:]))
-    t = [float(r[0]) for r in rows]
+    rows = list(csv.DictReader(out.read_text().splitlines()))
+    assert list(rows[0]) == [
+        "t_s",
+        "ground_acc_g",
+        "theta_rad",
+        "omega_rad_s",
+        "polarity",
+        "status",
+        *(f"force_N_{r['name']}" for r in doc["model"]["restrainers"]),
+    ]
+    t = [float(r["t_s"]) for r in rows]
     assert t == sorted(t) and len(t) > 100
-    peak = max(abs(float(r[1])) for r in rows)
+    peak = max(abs(float(r["theta_rad"])) for r in rows)
     # The history holds θ at the sample times, so its peak is at most the located peak.
     assert peak <= doc["max_ratio"] * doc["model"]["alpha"] * (1 + 1e-12)
+    worst = max(doc["runs"], key=lambda r: (r["overturned"], r["max_ratio"]))
+    assert {r["polarity"] for r in rows} == {f"{worst['polarity']:+d}"}
+    assert {r["status"] for r in rows} == {worst["status"]}
+    # The ground acceleration is the record's (times the polarity) at the sample times: the
+    # pulse file's own first sample at t = 0.
+    record_t0 = _first_sample(PULSES[0])
+    assert float(rows[0]["ground_acc_g"]) == pytest.approx(worst["polarity"] * record_t0, abs=1e-9)
+
+
+def _first_sample(path: Path) -> float:
+    """The first acceleration of a rock plain-text record (one or two columns, '#' comments)."""
+    for line in path.read_text().splitlines():
+        if line.strip() and not line.lstrip().startswith("#"):
+            return float(line.split()[-1])
+    raise AssertionError("no data line")
+
+
+def test_history_csv_restrainer_forces(tmp_path: Path) -> None:
+    # The façade with its vault failing at 1 mm (the paper's remark, examples/facade.toml):
+    # each row's vault force is K·u(θ) with u = r[sin φ − sin(φ − |θ|)] (spec/rocking.md),
+    # K = 4e6 N/m, r = 7.00 m, φ = 0.072 rad from the model, and zero from its failure on.
+    text = (ROOT / "examples" / "facade.toml").read_text(encoding="utf-8")
+    model = tmp_path / "f.toml"
+    model.write_text(
+        text.replace("angle = 0.072    # rad\n", "angle = 0.072\nfails_at = 0.001\n", 1)
+    )
+    out = tmp_path / "h.csv"
+    doc = assess_json(model, PULSES[0], "--history", str(out))
+    rows = list(csv.DictReader(out.read_text().splitlines()))
+    worst = max(doc["runs"], key=lambda r: (r["overturned"], r["max_ratio"]))
+    vault = next(p for p in worst["restrainers"] if p["name"] == "groin vault")
+    assert vault["t_fail"] is not None
+    for row in rows[:: max(1, len(rows) // 200)]:
+        theta, t = float(row["theta_rad"]), float(row["t_s"])
+        u = 7.00 * (math.sin(0.072) - math.sin(0.072 - abs(theta))) if theta > 0 else 0.0
+        expected = 0.0 if t >= vault["t_fail"] else 4.0e6 * u
+        # 10 significant digits in the file: relative 1e-9, and 1e-6 N near zero.
+        assert float(row["force_N_groin vault"]) == pytest.approx(expected, rel=1e-9, abs=1e-6)
+    # The tie-rod holds; the samples' peak is at most the engine's located peak.
+    tie = next(p for p in worst["restrainers"] if p["name"] == "tie-rod")
+    assert max(float(r["force_N_tie-rod"]) for r in rows) <= tie["max_force"] * (1 + 1e-9)
 
 
 def test_fail_on_overturn_exit_code(tmp_path: Path) -> None:

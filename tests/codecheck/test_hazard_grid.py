@@ -241,3 +241,13 @@ def test_grid_path_missing_says_how(monkeypatch: pytest.MonkeyPatch) -> None:
     monkeypatch.delenv(ROCK_HAZARD_GRID, raising=False)
     with pytest.raises(InputError, match="--hazard-grid FILE or ROCK_HAZARD_GRID"):
         grid_path(None)
+
+
+@pytest.mark.parametrize("label", ["TR=1.2.3", "TR=", "TR=3O"])
+def test_header_with_a_malformed_return_period_names_the_line(label: str) -> None:
+    # Issue 7, item 9: "TR=1.2.3" made float() raise ValueError (a traceback) on main.
+    text = small_grid_text().replace("TR=72", label, 1)
+    with pytest.raises(InputError, match="not a number") as info:
+        parse_grid(text, source="grid.txt")
+    assert (info.value.file, info.value.where) == ("grid.txt", "line 1")
+    assert info.value.value == label.removeprefix("TR=")

@@ -39,12 +39,13 @@ def test_bad_suffix_is_one_error_line(tmp_path: Path, command: str, name: str) -
 def test_unwritable_plot_file(tmp_path: Path) -> None:
     needs_matplotlib()
     out = tmp_path / "no such folder" / "figure.png"
-    code, _, err = run(*COMMANDS["kinematic"], "--plot", str(out))
+    code, stdout, err = run(*COMMANDS["kinematic"], "--plot", str(out))
     assert err == (
-        f"error: {out}: cannot write the plot file "
-        "(got 'No such file or directory'; allowed: a writable path)\n"
+        f"error: {out}: --plot: the folder does not exist "
+        f"(got '{out.parent}'; allowed: a path in an existing folder)\n"
     )
     assert code == 2
+    assert stdout == ""  # refused before the analysis ran (issue 7, item 17)
 
 
 def test_missing_matplotlib_is_refused_before_the_run(

@@ -88,7 +88,7 @@ def test_an_invalid_case_names_its_axis_values(write_study: WriteStudy) -> None:
         check_cases(plan)
     assert str(info.value) == (
         f"{path}: case 2 (R = 1.5, alpha = {math.pi / 2}, K = 0.0): geometry.alpha: out of "
-        f"range (got {math.pi / 2}; allowed: a number > 0 and < pi/2 [rad])"
+        f"range (got {math.pi / 2}; allowed: a number >= 1e-06 and < pi/2 [rad])"
     )
 
 

@@ -9,15 +9,18 @@ from __future__ import annotations
 
 import copy
 import math
+import pickle
 from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
 import pytest
 import tomli_w
+from click.testing import CliRunner
 
+from rockcli.cli.main import cli
 from rockcli.errors import InputError
-from rockcli.model.load import load_model, validate_model
+from rockcli.model.load import MAX_ERRORS, InputErrors, load_model, validate_model
 
 #: A valid model: a wall with unit weight (needs width) and one spring at the top.
 VALID: dict[str, Any] = {
@@ -27,6 +30,9 @@ VALID: dict[str, Any] = {
     "mass": {"unit_weight": 18.0},
     "restrainers": [{"name": "spring", "k": 1e6, "position": "top"}],
 }
+
+#: What a length accepts (rockcli/model/bounds.py: 1 mm to 1 km).
+LENGTH = "a number >= 0.001 and <= 1000 [m]"
 
 Edit = Callable[[dict[str, Any]], object]
 
@@ -81,7 +87,7 @@ def test_valid_model_loads(tmp_path: Path) -> None:
 def test_unknown_table_at_top_level_exact_line(tmp_path: Path) -> None:
     line = message_for(tmp_path, table("results", edition=2019))
     assert line == (
-        f"{tmp_path / 'm.toml'}: results: unknown key (allowed: one of: name, kind, notes, "
+        f"{tmp_path / 'm.toml'}: unknown table [results] (allowed: one of: name, kind, notes, "
         "geometry, mass, restitution, motion, analysis, restrainers, ntc)"
     )
 
@@ -90,7 +96,7 @@ def test_negative_thickness_exact_line(tmp_path: Path) -> None:
     line = message_for(tmp_path, put("geometry", thickness=-0.5))
     assert line == (
         f"{tmp_path / 'm.toml'}: geometry.thickness: out of range "
-        "(got -0.5; allowed: a number > 0 [m])"
+        "(got -0.5; allowed: a number >= 0.001 and <= 1000 [m])"
     )
 
 
@@ -98,7 +104,7 @@ def test_negative_stiffness_exact_line(tmp_path: Path) -> None:
     line = message_for(tmp_path, restrainer(k_pos=-1.0, k_neg=0.0, position="top"))
     assert line == (
         f"{tmp_path / 'm.toml'}: restrainers[0].k_pos: out of range "
-        "(got -1.0; allowed: a number >= 0 [N/m])"
+        "(got -1.0; allowed: a number >= 0 and <= 1e+12 [N/m])"
     )
 
 
@@ -135,34 +141,42 @@ CASES: list[tuple[str, Edit, list[str]]] = [
     (
         "zero height",
         put("geometry", height=0.0),
-        ["geometry.height", "got 0.0", "a number > 0 [m]"],
+        ["geometry.height", "got 0.0", "a number >= 0.001 and <= 1000 [m]"],
     ),
-    ("negative width", put("geometry", width=-3), ["geometry.width", "got -3", "a number > 0 [m]"]),
+    (
+        "negative width",
+        put("geometry", width=-3),
+        ["geometry.width", "got -3", "a number >= 0.001 and <= 1000 [m]"],
+    ),
     (
         "negative pivot height",
         put("geometry", pivot_height=-1.0),
-        ["geometry.pivot_height", "got -1.0", "a number >= 0 [m]"],
+        ["geometry.pivot_height", "got -1.0", "a number >= 0 and <= 1000 [m]"],
     ),
-    ("zero R", table("geometry", R=0.0, alpha=0.1), ["geometry.R", "got 0.0", "a number > 0 [m]"]),
+    (
+        "zero R",
+        table("geometry", R=0.0, alpha=0.1),
+        ["geometry.R", "got 0.0", "a number >= 0.001 and <= 1000 [m]"],
+    ),
     (
         "alpha zero",
         table("geometry", R=1.0, alpha=0.0),
-        ["geometry.alpha", "got 0.0", "a number > 0 and < pi/2 [rad]"],
+        ["geometry.alpha", "got 0.0", "a number >= 1e-06 and < pi/2 [rad]"],
     ),
     (
         "alpha negative",
         table("geometry", R=1.0, alpha=-0.1),
-        ["geometry.alpha", "got -0.1", "a number > 0 and < pi/2 [rad]"],
+        ["geometry.alpha", "got -0.1", "a number >= 1e-06 and < pi/2 [rad]"],
     ),
     (
         "alpha pi/2",
         table("geometry", R=1.0, alpha=math.pi / 2),
-        ["geometry.alpha", f"got {math.pi / 2!r}", "a number > 0 and < pi/2 [rad]"],
+        ["geometry.alpha", f"got {math.pi / 2!r}", "a number >= 1e-06 and < pi/2 [rad]"],
     ),
     (
         "alpha in degrees",
         table("geometry", R=1.0, alpha=9.34),
-        ["geometry.alpha", "got 9.34", "a number > 0 and < pi/2 [rad]"],
+        ["geometry.alpha", "got 9.34", "a number >= 1e-06 and < pi/2 [rad]"],
     ),
     (
         "both geometry forms",
@@ -187,7 +201,7 @@ CASES: list[tuple[str, Edit, list[str]]] = [
     (
         "unit_weight without width",
         drop("geometry", "width"),
-        ["geometry.width", "required with mass.unit_weight", "a number > 0 [m]"],
+        ["geometry.width", "required with mass.unit_weight", LENGTH],
     ),
     (
         "weight and unit_weight",
@@ -200,7 +214,11 @@ CASES: list[tuple[str, Edit, list[str]]] = [
         ],
     ),
     ("empty mass table", table("mass"), ["mass: missing the weight"]),
-    ("zero weight", table("mass", weight=0), ["mass.weight", "got 0", "a number > 0 [kN]"]),
+    (
+        "zero weight",
+        table("mass", weight=0),
+        ["mass.weight", "got 0", "a number >= 1e-06 and <= 1e+07 [kN]"],
+    ),
     (
         "restrainer without mass",
         drop("mass"),
@@ -290,7 +308,7 @@ CASES: list[tuple[str, Edit, list[str]]] = [
     (
         "number as text",
         put("geometry", thickness="0.5"),
-        ["geometry.thickness", "not a number", "got '0.5'", "a number > 0 [m]"],
+        ["geometry.thickness", "not a number", "got '0.5'", "a number >= 0.001 and <= 1000 [m]"],
     ),
     (
         "boolean as number",
@@ -352,7 +370,7 @@ CASES: list[tuple[str, Edit, list[str]]] = [
     (
         "negative k",
         restrainer(k=-5.0, position="top"),
-        ["restrainers[0].k", "got -5.0", "a number >= 0 [N/m]"],
+        ["restrainers[0].k", "got -5.0", "a number >= 0 and <= 1e+12 [N/m]"],
     ),
     (
         "tie-rod without length",
@@ -372,7 +390,7 @@ CASES: list[tuple[str, Edit, list[str]]] = [
     (
         "zero diameter",
         restrainer(kind="tie-rod", diameter=0.0, length=3.0, position="top"),
-        ["restrainers[0].diameter", "got 0.0", "a number > 0 [m]"],
+        ["restrainers[0].diameter", "got 0.0", "a number >= 0.001 and <= 1000 [m]"],
     ),
     (
         "unknown acts",
@@ -400,7 +418,7 @@ CASES: list[tuple[str, Edit, list[str]]] = [
     (
         "zero radius",
         restrainer(k=1.0, radius=0.0, angle=0.07),
-        ["restrainers[0].radius", "got 0.0", "a number > 0 [m]"],
+        ["restrainers[0].radius", "got 0.0", "a number >= 0.001 and <= 2000 [m]"],
     ),
     (
         "angle above pi/2",
@@ -420,7 +438,7 @@ CASES: list[tuple[str, Edit, list[str]]] = [
     (
         "zero fails_at",
         restrainer(k=1.0, position="top", fails_at=0.0),
-        ["restrainers[0].fails_at", "got 0.0", "a number > 0 [m]"],
+        ["restrainers[0].fails_at", "got 0.0", "a number >= 1e-06 and <= 1000 [m]"],
     ),
     (
         "unknown position",
@@ -451,10 +469,131 @@ def test_bad_model_names_file_field_value_and_allowed(
         assert part in line
 
 
-def test_only_the_first_error_is_reported(tmp_path: Path) -> None:
-    line = message_for(tmp_path, lambda d: d["geometry"].update(thickness=-1.0, height=-2.0))
-    assert "geometry.thickness" in line
-    assert "geometry.height" not in line
+# --- every problem at once (issue 7, item 16) ----------------------------------------------------
+
+
+def test_every_error_is_reported_one_line_each(tmp_path: Path) -> None:
+    # Main reported only the first (geometry.thickness) and hid the other two.
+    text = message_for(
+        tmp_path,
+        lambda d: (d["geometry"].update(thickness=-1.0, height=-2.0), d.update(kind="tower")),
+    )
+    lines = text.split("\n")
+    path = tmp_path / "m.toml"
+    assert lines == [
+        f"{path}: kind: unknown value (got 'tower'; allowed: one of: wall, altar, facade)",
+        f"{path}: geometry.thickness: out of range (got -1.0; allowed: {LENGTH})",
+        f"{path}: geometry.height: out of range (got -2.0; allowed: {LENGTH})",
+    ]
+
+
+def test_several_errors_keep_the_first_as_the_structured_fields(tmp_path: Path) -> None:
+    with pytest.raises(InputErrors) as info:
+        validate_model({**VALID, "kind": "tower", "name": ""}, file="f.toml")
+    err = info.value
+    assert isinstance(err, InputError)
+    assert (err.file, err.where, err.value) == ("f.toml", "name", "")
+    assert [e.where for e in err.errors] == ["name", "kind"]
+
+
+def test_more_than_ten_errors_are_counted(tmp_path: Path) -> None:
+    # 12 unknown keys: 10 lines shown (MAX_ERRORS), then one line counting the other 2.
+    keys = {f"extra_{i:02d}": i for i in range(12)}
+    text = message_for(tmp_path, lambda d: d.update(keys))
+    lines = text.split("\n")
+    assert len(lines) == MAX_ERRORS + 1
+    assert lines[-1] == f"{tmp_path / 'm.toml'}: and 2 more problems (fix these and run again)"
+    assert "extra_09" in lines[9]
+    assert "extra_10" not in text
+
+
+def test_cli_prints_every_error_prefixed(tmp_path: Path) -> None:
+    data = copy.deepcopy(VALID)
+    data["geometry"].update(thickness=-1.0, height=-2.0)
+    path = tmp_path / "m.toml"
+    path.write_text(tomli_w.dumps(data), encoding="utf-8")
+    result = CliRunner().invoke(cli, ["kinematic", str(path)])
+    assert result.exit_code == 2
+    lines = result.stderr.splitlines()
+    assert len(lines) == 2
+    assert all(line.startswith(f"error: {path}: geometry.") for line in lines)
+
+
+@pytest.mark.parametrize(
+    ("edit", "expected"),
+    [
+        (
+            lambda d: d.update(geometri=d.pop("geometry")),
+            "unknown table [geometri]; did you mean [geometry]?",
+        ),
+        (
+            lambda d: d.update(Geometry=d.pop("geometry")),
+            "unknown table [Geometry]; did you mean [geometry]?",
+        ),
+        (
+            lambda d: d.update(restrainer=d.pop("restrainers")),
+            "unknown table [[restrainer]]; did you mean [[restrainers]]?",
+        ),
+        (
+            lambda d: d.update(ntc={"sit": {"lon": 13.4, "lat": 42.35}}),
+            "unknown table [ntc.sit]; did you mean [ntc.site]?",
+        ),
+    ],
+    ids=["misspelt", "capitalised", "array of tables", "nested"],
+)
+def test_unknown_table_is_named_with_its_near_miss(
+    tmp_path: Path, edit: Edit, expected: str
+) -> None:
+    # Main said "geometry: missing key" and never named [geometri].
+    text = message_for(tmp_path, edit)
+    assert "\n" not in text
+    assert text.startswith(f"{tmp_path / 'm.toml'}: {expected} (allowed: one of: ")
+    assert "missing key" not in text
+
+
+@pytest.mark.parametrize(
+    ("edit", "expected"),
+    [
+        (put("geometry", thikness=0.5), "geometry.thikness: unknown key; did you mean thickness?"),
+        (put("geometry", Width=3.0), "geometry.Width: unknown key; did you mean width?"),
+        (lambda d: d.update(kind="wal"), "kind: unknown value; did you mean 'wall'?"),
+        (restrainer(k=1.0, position="Top"), "position: unknown value; did you mean 'top'?"),
+    ],
+    ids=["key typo", "key case", "value typo", "value case"],
+)
+def test_near_miss_suggests_the_known_name(tmp_path: Path, edit: Edit, expected: str) -> None:
+    assert expected in message_for(tmp_path, edit)
+
+
+def test_no_suggestion_when_nothing_is_close(tmp_path: Path) -> None:
+    # "results" vs "restrainers": difflib ratio 0.67 < NEAR_MISS = 0.75.
+    assert "did you mean" not in message_for(tmp_path, table("results", edition=2019))
+
+
+@pytest.mark.parametrize(
+    ("given", "edition"),
+    [
+        (2019, "2019"),
+        (2009, "2009"),
+        (2018, "2019"),
+        (2008, "2009"),
+        ("2018", "2019"),
+        ("2008", "2009"),
+        ("2019", "2019"),
+    ],
+)
+def test_edition_as_a_number_and_by_the_code_year(given: object, edition: str) -> None:
+    # NTC 2008 is applied with Circolare 617/2009, NTC 2018 with Circolare 7/2019; main
+    # refused edition = 2019 (an integer) and both code years.
+    model = validate_model({**VALID, "ntc": {"edition": given}})
+    assert model.ntc is not None and model.ntc.edition == edition
+
+
+@pytest.mark.parametrize("given", [2017, True, "NTC"])
+def test_other_editions_refused(tmp_path: Path, given: object) -> None:
+    text = message_for(tmp_path, table("ntc", edition=given))
+    assert "ntc.edition: unknown value" in text
+    assert "one of: 2009, 2019" in text
 
 
 def test_zero_stiffness_restrainer_needs_no_mass() -> None:
@@ -503,7 +642,7 @@ def test_error_carries_structured_fields(tmp_path: Path) -> None:
         "f.toml",
         "geometry.thickness",
         -0.5,
-        "a number > 0 [m]",
+        "a number >= 0.001 and <= 1000 [m]",
     )
 
 
@@ -548,3 +687,23 @@ def test_not_utf8(tmp_path: Path) -> None:
     with pytest.raises(InputError) as info:
         load_model(path)
     assert str(info.value) == f"{path}: line 2, column 18: not UTF-8 text"
+
+
+def test_several_errors_take_the_file_together() -> None:
+    # A lower layer without the file name (validate_model(data)) hands it on with with_file.
+    with pytest.raises(InputErrors) as info:
+        validate_model({**VALID, "kind": "tower", "name": ""})
+    named = info.value.with_file("m.toml")
+    assert isinstance(named, InputErrors)
+    assert [line.split(": ")[0] for line in named.lines] == ["m.toml"] * 2
+
+
+def test_several_errors_survive_pickling() -> None:
+    # Sweep workers send exceptions between processes; main's InputError pickles, and so must
+    # the several-error form (its constructor takes a list, not the rendered text).
+    with pytest.raises(InputErrors) as info:
+        validate_model({**VALID, "kind": "tower", "name": ""}, file="m.toml")
+    copy_ = pickle.loads(pickle.dumps(info.value))
+    assert isinstance(copy_, InputErrors)
+    assert str(copy_) == str(info.value)
+    assert copy_.where == "name"

@@ -17,6 +17,7 @@ from rockcli.model.derive import to_block
 from rockcli.model.load import load_model, validate_model
 from rockcli.model.schema import Kind
 from rockcli.model.template import TEMPLATES, render_template
+from rockcli.report.schema_doc import sections, table_class
 
 KINDS = [k.value for k in Kind]
 _KEY_LINE = re.compile(r"^[A-Za-z0-9_-]+ = ")
@@ -94,3 +95,81 @@ def test_rock_init_help() -> None:
     result = CliRunner().invoke(cli, ["init", "--help"])
     assert result.exit_code == 0
     assert "template" in result.output
+
+
+# --- every key of the file is in every template (issue 7, item 19) -----------------------------
+
+_ANY_HEADER = re.compile(r"^(?:# )?\[\[?(?P<table>[A-Za-z0-9_.]+)\]\]?$")
+_ANY_KEY = re.compile(r"^(?:# )?(?P<key>[A-Za-z0-9_]+) = ")
+
+
+def keys_shown(text: str) -> set[tuple[str, str]]:
+    """(table path, key) of every key line of a template, set or commented."""
+    tables = {path for s in sections() for path in s.paths}
+    table, shown = "", set()
+    for line in text.splitlines():
+        header = _ANY_HEADER.match(line)
+        if header and header["table"] in tables:
+            table = header["table"]
+        key = _ANY_KEY.match(line)
+        if key:
+            shown.add((table, key["key"]))
+    return shown
+
+
+def schema_keys() -> set[tuple[str, str]]:
+    """(table path, key) of every value a user may set, read from the schema."""
+    return {
+        (path, key)
+        for section in sections()
+        for path in section.paths
+        for key, info in section.table.model_fields.items()
+        if table_class(info.annotation) is None
+    }
+
+
+@pytest.mark.parametrize("kind", KINDS)
+def test_template_shows_every_key_of_the_schema(kind: str) -> None:
+    # On main the templates lacked, e.g., R/alpha (wall), tail, fails_at (altar, facade), the
+    # ntc position keys H, N, gamma, T1, psi, [ntc.site] and [[ntc.loads]].
+    missing = schema_keys() - keys_shown(render_template(Kind(kind)))
+    assert not missing, sorted(missing)
+
+
+def test_schema_keys_cover_the_readme_block() -> None:
+    # The keys README.md's "The model file" block says the templates explain.
+    named = {
+        ("geometry", "R"), ("geometry", "alpha"), ("geometry", "thickness"),
+        ("geometry", "height"), ("geometry", "width"), ("mass", "unit_weight"),
+        ("mass", "weight"), ("restitution", "model"), ("restitution", "e"),
+        ("motion", "sides"), ("motion", "stopped"), ("motion", "rebound"),
+        ("analysis", "tail"), ("restrainers", "fails_at"), ("restrainers", "k_pos"),
+        ("ntc", "Z"), ("ntc", "H"), ("ntc", "N"), ("ntc", "gamma"), ("ntc", "T1"),
+        ("ntc", "psi"), ("ntc.site", "lon"), ("ntc.demand.SLV", "ag"),
+    }  # fmt: skip
+    assert named <= schema_keys()
+
+
+def uncomment(text: str, header: str) -> str:
+    """The text with a commented table's header and the keys right below it uncommented."""
+    out, active = [], False
+    for line in text.splitlines():
+        if line == f"# {header}":
+            active = True
+        elif active and not (_ANY_KEY.match(line) or line.startswith("# ")):
+            active = False
+        if active and (line == f"# {header}" or _ANY_KEY.match(line)):
+            line = line.removeprefix("# ")
+        out.append(line)
+    return "\n".join(out) + "\n"
+
+
+@pytest.mark.parametrize(
+    ("kind", "header"),
+    [("altar", "[[restrainers]]"), ("wall", "[[ntc.loads]]"), ("facade", "[ntc.demand.SLO]")],
+)
+def test_a_commented_table_loads_when_uncommented(kind: str, header: str, tmp_path: Path) -> None:
+    path = tmp_path / "m.toml"
+    path.write_text(uncomment(render_template(Kind(kind)), header), encoding="utf-8")
+    model = load_model(path)
+    assert model != validate_model(TEMPLATES[Kind(kind)])

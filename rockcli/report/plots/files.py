@@ -57,14 +57,14 @@ def new_figure(path: str | Path, size: tuple[float, float]) -> Figure:
 
 
 def save(fig: Figure, path: str | Path) -> None:
+    """Write the figure to ``path`` atomically (rockcli.outfile: temporary file + rename)."""
+    from io import BytesIO
+
+    from rockcli.outfile import write_bytes
+
+    buffer = BytesIO()
     try:
-        fig.savefig(path, format=plot_format(path), dpi=DPI)
-    except OSError as exc:
-        raise InputError(
-            "cannot write the plot file",
-            file=str(path),
-            value=exc.strerror,
-            allowed="a writable path",
-        ) from None
+        fig.savefig(buffer, format=plot_format(path), dpi=DPI)
     finally:
         fig.clear()
+    write_bytes(path, buffer.getvalue(), where=OPTION)

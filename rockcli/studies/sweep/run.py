@@ -43,6 +43,8 @@ Progress = Callable[[int, int], None]
 MIN_SPEED = 0.25
 #: Times a chunk is run when the worker running it dies (then its cases are error rows).
 CHUNK_ATTEMPTS = 3
+#: Pool breaks a study survives (a pool that breaks at every start is a broken setup).
+MAX_RESTARTS = 20
 WORKER_DIED = (
     "the worker process running this case died {} times (killed, or out of memory); "
     "rerun the study, or run this case alone"
@@ -139,12 +141,21 @@ def run_chunks(
     load = [0] * len(lanes)
     todo: deque[Chunk] = deque(chunks)
     attempts: dict[int, int] = {}
+    restarts = 0
     try:
         while True:
             for i, lane in enumerate(lanes):
                 while load[i] < lane.capacity and todo:
                     chunk = todo.popleft()
-                    pending[lanes[i].executor.submit(run_chunk, chunk)] = (i, chunk)
+                    try:
+                        future = lanes[i].executor.submit(run_chunk, chunk)
+                    except BrokenExecutor:  # broke before one of its futures said so
+                        if lanes[i].restart is None or restarts >= MAX_RESTARTS:
+                            raise
+                        restarts += _restart(lanes, i)
+                        todo.appendleft(chunk)
+                        continue
+                    pending[future] = (i, chunk)
                     load[i] += 1
             if not pending:
                 return
@@ -155,9 +166,9 @@ def run_chunks(
                 try:
                     rows = future.result()
                 except BrokenExecutor:
-                    if lanes[i].restart is None:
+                    if lanes[i].restart is None or restarts >= MAX_RESTARTS:
                         raise
-                    _restart(lanes, i)
+                    restarts += _restart(lanes, i)
                     attempts[id(chunk)] = tries = attempts.get(id(chunk), 0) + 1
                     if tries < CHUNK_ATTEMPTS:
                         todo.appendleft(chunk)
@@ -169,13 +180,15 @@ def run_chunks(
             future.cancel()
 
 
-def _restart(lanes: MutableSequence[Lane], i: int) -> None:
+def _restart(lanes: MutableSequence[Lane], i: int) -> bool:
     """A new executor in lane i when its pool broke (once per break: a pool already replaced
     is not replaced again by the other chunks it failed)."""
     lane = lanes[i]
-    if lane.restart is not None and getattr(lane.executor, "_broken", True):
-        lane.executor.shutdown(wait=False, cancel_futures=True)
-        lanes[i] = lane._replace(executor=lane.restart())
+    if lane.restart is None or not getattr(lane.executor, "_broken", True):
+        return False
+    lane.executor.shutdown(wait=False, cancel_futures=True)
+    lanes[i] = lane._replace(executor=lane.restart())
+    return True
 
 
 def record_facts(plan: StudyPlan) -> tuple[list[int], dict[str, dict[str, Any]]]:

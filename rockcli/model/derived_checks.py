@@ -1,0 +1,58 @@
+"""The block derived from a valid model must be finite: checked once, at the edge.
+
+Every number of the file is bounded (:mod:`rockcli.model.bounds`), but a quantity derived
+from several (m = W/g, p² = 3g/(4R), c_K = K r²/I0) can still leave double precision when the
+inputs sit at opposite ends of their ranges, or come from a table whose bounds are looser
+(``analysis.g``). Such a block would reach the engine and end in OverflowError, a division by
+zero or a NaN that no guard catches; here it is an :class:`~rockcli.errors.InputError`
+naming the keys it comes from.
+
+Pure: :mod:`math`, the block and the error type only.
+"""
+
+from __future__ import annotations
+
+import math
+
+from rockcli.errors import InputError
+from rockcli.mechanics import Block, restrainer_coefficient
+
+#: What a derived quantity must be.
+FINITE_POSITIVE = "a finite number > 0 (the inputs it comes from are out of scale)"
+
+
+def check_block(block: Block) -> None:
+    """Raise InputError when a quantity the engine derives from the block is not usable.
+
+    Checked: b, h, R, α, g, p² = 3g/(4R) (paper Eq. 2); with a mass, m, W = m g and
+    I0 = 4/3 m R²; for each restrainer and side, c_K = K r²/I0 (paper §4.3) finite and
+    r > 0.
+    """
+    _positive("the semi-diagonal R", block.R, "geometry")
+    _positive("the half-thickness b = R sin α", block.b, "geometry")
+    _positive("the half-height h = R cos α", block.h, "geometry")
+    _positive("gravity g", block.g, "analysis.g")
+    _positive("p² = 3g/(4R)", block.p2, "geometry, analysis.g")
+    if block.mass is None:
+        return
+    _positive("the mass m = W/g", block.mass, "mass, analysis.g")
+    _positive("the weight W = m g", block.weight, "mass, analysis.g")
+    _positive("the polar inertia I0 = 4/3 m R²", block.inertia, "mass, geometry")
+    for i, restrainer in enumerate(block.restrainers):
+        for side in (1, -1):
+            k, r, _ = restrainer.side(side)
+            where = f"restrainers[{i}]"
+            _positive("the distance r of the attachment point from the pivot", r, where)
+            coefficient = restrainer_coefficient(k, r, block.inertia)
+            if not math.isfinite(coefficient):
+                raise InputError(
+                    "the stiffness term K r²/I0 is not finite",
+                    where=f"{where}, mass",
+                    value=coefficient,
+                    allowed="a stiffness and a weight of the same order as a real element's",
+                )
+
+
+def _positive(what: str, value: float, where: str) -> None:
+    if not (math.isfinite(value) and value > 0.0):
+        raise InputError(f"{what} is not usable", where=where, value=value, allowed=FINITE_POSITIVE)

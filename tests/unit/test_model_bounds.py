@@ -1,0 +1,180 @@
+"""Absurd magnitudes and deep nesting: an error line, never a traceback (issue 7, item 9).
+
+On main, ``g = 1e300``, ``weight = 1e-300``, ``radius = 1e300`` or ``k = 1.8e308`` loaded and
+reached the core (OverflowError, ZeroDivisionError or NaN), and a TOML value nested 500 deep
+raised RecursionError. Every number of the file now has a physical range
+(rockcli/model/bounds.py) and the derived block is checked finite.
+"""
+
+from __future__ import annotations
+
+import copy
+from pathlib import Path
+from typing import Any
+
+import pytest
+import tomli_w
+from click.testing import CliRunner
+
+from rockcli.cli.main import cli
+from rockcli.errors import InputError
+from rockcli.mechanics import Block
+from rockcli.model.derived_checks import check_block
+from rockcli.model.load import load_model, validate_model
+from rockcli.report.schema_doc import bounds, sections, table_class
+
+#: A valid wall with a spring at the top (needs a mass).
+VALID: dict[str, Any] = {
+    "name": "bounded wall",
+    "kind": "wall",
+    "geometry": {"thickness": 0.5, "height": 4.0, "width": 3.0},
+    "mass": {"unit_weight": 18.0},
+    "restrainers": [{"k": 1e6, "radius": 4.0, "angle": 0.1}],
+}
+
+#: The [analysis] table's bounds belong to the run settings (not this module's).
+NOT_HERE = {"analysis"}
+
+
+def with_value(path: tuple[Any, ...], value: Any) -> dict[str, Any]:
+    data = copy.deepcopy(VALID)
+    target: Any = data
+    for key in path[:-1]:
+        target = target.setdefault(key, {}) if isinstance(key, str) else target[key]
+    target[path[-1]] = value
+    return data
+
+
+ABSURD = [
+    (("geometry", "thickness"), 1e300),
+    (("geometry", "height"), 1e-300),
+    (("geometry", "width"), 1e300),
+    (("mass", "unit_weight"), 1e-300),
+    (("restrainers", 0, "radius"), 1e300),
+    (("restrainers", 0, "k"), 1.7e308),  # the issue's 1.8e308 is inf: refused on main too
+    (("ntc", "VN"), 1e300),
+    (("ntc", "q"), 1e300),
+    (("ntc", "gamma"), 1e300),
+]
+
+
+@pytest.mark.parametrize(("path", "value"), ABSURD, ids=[".".join(map(str, p)) for p, _ in ABSURD])
+def test_absurd_magnitude_is_out_of_range(path: tuple[Any, ...], value: float) -> None:
+    with pytest.raises(InputError, match="out of range") as info:
+        validate_model(with_value(path, value), file="m.toml")
+    where = "".join(f"[{p}]" if isinstance(p, int) else f".{p}" for p in path).lstrip(".")
+    assert (info.value.file, info.value.where, info.value.value) == ("m.toml", where, value)
+
+
+@pytest.mark.parametrize("weight", [1e-300, 1e300])
+def test_absurd_weight_is_out_of_range(weight: float) -> None:
+    data = copy.deepcopy(VALID)
+    data["mass"] = {"weight": weight}
+    with pytest.raises(InputError, match=r"mass\.weight: out of range"):
+        validate_model(data)
+
+
+def test_every_number_outside_analysis_has_a_lower_and_an_upper_bound() -> None:
+    # A one-sided bound (gt=0 on main) let 1e300 and 1e-300 through.
+    unbounded = []
+    for section in sections():
+        if set(section.paths) & NOT_HERE:
+            continue
+        for key, info in section.table.model_fields.items():
+            if table_class(info.annotation) is not None or info.annotation not in (
+                float | None,
+                float,
+                int | None,
+                int,
+            ):
+                continue
+            found = bounds(info)
+            if not ({"gt", "ge"} & found.keys() and {"lt", "le"} & found.keys()):
+                unbounded.append(f"{section.paths[0]}.{key}".lstrip("."))
+    assert not unbounded
+
+
+@pytest.mark.parametrize(
+    ("g", "problem"),
+    [(1e308, "p² = 3g/(4R)"), (5e-324, "p² = 3g/(4R)"), (1e305, "K r²/I0 is not finite")],
+)
+def test_gravity_out_of_scale_is_caught_on_the_derived_block(g: float, problem: str) -> None:
+    # g = 1e308 with R = 2.02 m: 3g/(4R) overflows to inf; g = 5e-324 (the smallest double):
+    # it underflows to 0; g = 1e305: W = 18 kN/m³·0.5·4·3 m³ = 108 kN, m = W/g = 1.1e-300 kg,
+    # I0 = 4/3·m·R² = 5.8e-300 and K r²/I0 = 1e9·16/5.8e-300 = 2.7e309 overflows.
+    data = copy.deepcopy(VALID)
+    data["restrainers"] = [{"k": 1e9, "radius": 4.0, "angle": 0.1}]
+    data["analysis"] = {"g": g}
+    with pytest.raises(InputError) as info:
+        validate_model(data, file="m.toml")
+    assert problem in str(info.value)
+    assert info.value.file == "m.toml"
+
+
+def test_check_block_accepts_a_real_block() -> None:
+    check_block(Block(R=1.499, alpha=0.163, mass=3000.0))
+
+
+@pytest.mark.parametrize(
+    "block",
+    [
+        Block(R=1e-320, alpha=0.163),
+        Block(R=1.0, alpha=0.1, mass=5e-324 / 9.81),
+        Block(R=1.0, alpha=0.1, g=float("nan")),
+    ],
+    ids=["subnormal R", "zero mass", "NaN gravity"],
+)
+def test_check_block_refuses_a_degenerate_block(block: Block) -> None:
+    with pytest.raises(InputError, match="not usable"):
+        check_block(block)
+
+
+@pytest.mark.parametrize(
+    "value", ["[" * 500 + "1" + "]" * 500, "{a=" * 500 + "1" + "}" * 500], ids=["array", "table"]
+)
+def test_toml_nested_500_deep_names_the_line(tmp_path: Path, value: str) -> None:
+    path = tmp_path / "deep.toml"
+    path.write_text(f'name = "x"\nkind = "wall"\nnotes = {value}\n', encoding="utf-8")
+    with pytest.raises(InputError, match="nested too deep") as info:
+        load_model(path)
+    assert (info.value.file, info.value.where) == (str(path), "line 3")
+
+
+def test_rock_kinematic_on_absurd_gravity_exits_2(tmp_path: Path) -> None:
+    path = tmp_path / "m.toml"
+    data = {**VALID, "restrainers": [{"k": 1e9, "radius": 4.0, "angle": 0.1}]}
+    path.write_text(tomli_w.dumps({**data, "analysis": {"g": 1e305}}), encoding="utf-8")
+    result = CliRunner().invoke(cli, ["kinematic", str(path)])
+    assert result.exit_code == 2, result.output
+    assert result.stderr.startswith(f"error: {path}: restrainers[0], mass: the stiffness term")
+
+
+#: Found by the model-fuzz campaign: each loaded on main and crashed `rock kinematic`
+#: (ZeroDivisionError for α = 5e-324; an infinite capacity/demand ratio, then a JSON
+#: ValueError, for ag = 5e-324; NaN in the JSON for T1 = 5e-324, OverflowError for 1e-300).
+FUZZ_FOUND = [
+    ({"geometry": {"R": 1.5, "alpha": 5e-324, "width": 3.0}}, "geometry.alpha"),
+    (
+        {"ntc": {"demand": {"SLV": {"ag": 5e-324, "F0": 2.5, "Tc_star": 0.3}}}},
+        "ntc.demand.SLV.ag",
+    ),
+    (
+        {"ntc": {"demand": {"SLV": {"ag": 0.15, "F0": 2.5, "Tc_star": 5e-324}}}},
+        "ntc.demand.SLV.Tc_star",
+    ),
+    ({"ntc": {"Z": 5e-324, "H": 9.0, "N": 3}}, "ntc.Z"),
+    ({"ntc": {"Z": 3.0, "H": 9.0, "N": 3, "psi": 5e-324}}, "ntc.psi"),
+    ({"ntc": {"Z": 3.0, "H": 9.0, "N": 3, "T1": 5e-324}}, "ntc.T1"),
+]
+
+
+@pytest.mark.parametrize(("tables", "where"), FUZZ_FOUND, ids=[w for _, w in FUZZ_FOUND])
+def test_subnormal_inputs_found_by_fuzzing_are_refused(
+    tables: dict[str, Any], where: str, tmp_path: Path
+) -> None:
+    path = tmp_path / "m.toml"
+    path.write_text(tomli_w.dumps({**VALID, **tables}), encoding="utf-8")
+    result = CliRunner().invoke(cli, ["kinematic", str(path), "--format", "json"])
+    assert result.exit_code == 2, result.output
+    assert result.stderr.startswith(f"error: {path}: {where}: ")
+    assert "5e-324" in result.stderr
