@@ -57,13 +57,14 @@ def assess(
     output,
 ):
     """Rocking time history of MODEL under a record, both polarities, with the verdict."""
+    from rockcli.report.assess import assessment_output_document
     from rockcli.studies.assess import run_assessment_output
 
     check_outputs(force, history=history_path, plot=plot_path)
     record = load_record(record_path, record_format, dt, units, scale, pga)
     history = history_path is not None or plot_path is not None
     out = run_assessment_output(model_path, record, engine, history=history)
-    doc = out.doc
+    doc = assessment_output_document(out, record)
     if history_path:
         from rockcli.outfile import write_text
         from rockcli.report.assess import history_csv

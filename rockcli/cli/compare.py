@@ -73,7 +73,11 @@ def compare(
     output,
 ):
     """Kinematic check and rocking time history of MODEL on the same record, side by side."""
-    from rockcli.report.compare import comparison_report, comparison_warnings
+    from rockcli.report.compare import (
+        comparison_output_document,
+        comparison_report,
+        comparison_warnings,
+    )
     from rockcli.report.table import show
     from rockcli.studies.compare import run_comparison_output
 
@@ -82,7 +86,7 @@ def compare(
     )
     check_outputs(force, plot=plot_path)
     record = load_record(record_path, record_format, dt, units, scale, pga)
-    doc, rocking = run_comparison_output(
+    out = run_comparison_output(
         model_path,
         record,
         engine=engine,
@@ -91,6 +95,7 @@ def compare(
         record_demand=record_demand,
         history=plot_path is not None,
     )
+    doc, rocking = comparison_output_document(out, record), out.rocking
     doc["warnings"] = comparison_warnings(doc)
     if plot_path:
         from rockcli.report.plots import plot_comparison

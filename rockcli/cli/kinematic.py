@@ -81,7 +81,7 @@ def kinematic(
     output,
 ):
     """NTC kinematic analysis of MODEL: α0, e*, a0*, capacity curve, DLS and ULS checks."""
-    from rockcli.report.kinematic import kinematic_report
+    from rockcli.report.kinematic import kinematic_document, kinematic_report
     from rockcli.report.table import show
     from rockcli.studies.kinematic import run_kinematic
 
@@ -93,9 +93,10 @@ def kinematic(
     record = None
     if record_path is not None:
         record = load_record(record_path, record_format, dt, units, scale, pga)
-    doc = run_kinematic(
+    out = run_kinematic(
         model_path, edition=edition, record=record, site=lon_lat, grid_file=grid_file
     )
+    doc = kinematic_document(out.name, out.result)
     if plot_path:
         from rockcli.report.plots import plot_kinematic
 

@@ -3,12 +3,92 @@
 from __future__ import annotations
 
 import os
+import signal
 import time
+from collections.abc import Iterator
+from contextlib import contextmanager
 
 import click
 
-from rockcli.cli.options import output_format
+from rockcli.cli.options import announce_written, output_format
 from rockcli.cli.plot_option import plot_option
+
+#: Name prefix of the thread that runs chunks in this process (studies.sweep.executor).
+CHUNK_THREAD = "rock-sweep"
+#: Exit code after Ctrl-C or SIGTERM (128 + SIGINT, the shell's convention).
+EXIT_INTERRUPTED = 130
+
+
+#: Longest default output folder name (file systems allow 255 bytes; room for a suffix).
+OUT_NAME_MAX = 100
+#: Hex digits of the study name's hash kept when the default folder name is shortened.
+OUT_HASH_DIGITS = 10
+
+
+def default_out(study_path: str) -> str:
+    """``sweep-STUDY`` next to the current folder; a long study name is cut and hashed so the
+    folder name stays within the file system's NAME_MAX."""
+    import hashlib
+
+    name = "sweep-" + os.path.splitext(os.path.basename(study_path))[0]
+    if len(name.encode("utf-8")) <= OUT_NAME_MAX:
+        return name
+    digest = hashlib.sha256(name.encode("utf-8", "surrogateescape")).hexdigest()
+    keep = name.encode("utf-8")[: OUT_NAME_MAX - OUT_HASH_DIGITS - 1].decode("utf-8", "ignore")
+    return f"{keep}-{digest[:OUT_HASH_DIGITS]}"
+
+
+def worker_count(jobs: int | None, cases: int) -> int:
+    """--jobs capped at the CPU count and the cases (an idle worker costs ~100 MB); a note on
+    stderr when capped. Default: the CPU count."""
+    cpus = os.cpu_count() or 1
+    wanted = jobs or cpus
+    count = max(1, min(wanted, cpus, cases))
+    if jobs is not None and count < jobs:
+        why = "the CPU count" if count == cpus else "the cases of the study"
+        click.echo(f"note: --jobs {jobs} capped to {count} ({why})", err=True)
+    return count
+
+
+def exit_now_if_busy(code: int) -> None:
+    """Exit at once when this process's chunk thread is still running a case.
+
+    The interpreter would wait for that case at exit (a case of the reference engine: up to
+    tens of seconds); its result is lost anyway, every finished row is on disk (rows are
+    written by the main thread only) and the worker processes end with this one.
+    """
+    import sys
+    import threading
+
+    if any(t.name.startswith(CHUNK_THREAD) and t.is_alive() for t in threading.enumerate()):
+        from contextlib import suppress
+        from multiprocessing import util
+
+        # The finalizers that never block (the pool queues' semaphores, priority ≥ 0), so
+        # that the resource tracker has nothing to warn about; not the joins (< 0).
+        with suppress(Exception):
+            util._run_finalizers(0)  # type: ignore[attr-defined]
+        sys.stdout.flush()
+        sys.stderr.flush()
+        os._exit(code)
+
+
+@contextmanager
+def terminate_as_interrupt() -> Iterator[None]:
+    """SIGTERM behaves like Ctrl-C during the study (finished cases saved, exit 130)."""
+
+    def interrupt(signum: int, frame: object) -> None:
+        raise KeyboardInterrupt
+
+    try:
+        previous = signal.signal(signal.SIGTERM, interrupt)
+    except ValueError:  # not the main thread (an embedding caller): leave SIGTERM alone
+        yield
+        return
+    try:
+        yield
+    finally:
+        signal.signal(signal.SIGTERM, previous)
 
 
 @click.command()
@@ -25,11 +105,22 @@ from rockcli.cli.plot_option import plot_option
     "-j",
     type=click.IntRange(min=1),
     default=None,
-    help="Workers on this machine: this process and N − 1 worker processes "
-    "[default: the CPU count].",
+    help="Workers on this machine: this process and N − 1 worker processes, at most the CPU "
+    "count and the number of cases [default: the CPU count].",
 )
 @click.option("--resume", is_flag=True, help="Skip the cases an interrupted run finished.")
-@click.option("--overwrite", is_flag=True, help="Start over in an output folder in use.")
+@click.option(
+    "--force",
+    "--overwrite",
+    "overwrite",
+    is_flag=True,
+    help="Start over in an output folder that holds another or an unfinished study.",
+)
+@click.option(
+    "--allow-outside",
+    is_flag=True,
+    help="Let the study's files (base model, records) lie outside the study file's folder.",
+)
 @click.option(
     "--scheduler",
     default=None,
@@ -65,6 +156,7 @@ def sweep(
     jobs,
     resume,
     overwrite,
+    allow_outside,
     scheduler,
     records_dir,
     chunk_size,
@@ -76,36 +168,52 @@ def sweep(
 
     The study names a base model, the axes (model fields by key path), the records and the
     analyses (examples/studies/). Every case goes to OUT/cases.csv as its chunk completes;
-    --resume continues an interrupted study.
+    --resume continues an interrupted study (Ctrl-C or SIGTERM: exit 130, finished cases
+    kept). A case that fails is a row with its error, and the study goes on.
     """
     from rockcli.report.sweep import progress_bar, sweep_report
     from rockcli.report.table import show
-    from rockcli.studies.sweep_exec import dask_executor, local_executor
-    from rockcli.studies.sweep_run import run_sweep
-    from rockcli.studies.sweep_study import load_study
-    from rockcli.studies.sweep_worker import quick_exit
+    from rockcli.studies.sweep.cases import expand
+    from rockcli.studies.sweep.executor import dask_executor, local_executor
+    from rockcli.studies.sweep.run import SweepInterrupted, run_sweep
+    from rockcli.studies.sweep.study import load_study
+    from rockcli.studies.sweep.worker import quick_exit
 
     started = time.perf_counter()
     quick_exit()
     if resume and overwrite:
-        raise click.UsageError("--resume and --overwrite exclude each other")
-    plan = load_study(study_path, records_dir)
-    jobs = jobs or os.cpu_count() or 1
-    out = out or f"sweep-{os.path.splitext(os.path.basename(study_path))[0]}"
+        raise click.UsageError("--resume and --force exclude each other")
+    plan = load_study(study_path, records_dir, allow_outside=allow_outside)
+    jobs = worker_count(jobs, len(expand(plan)))
+    out = out or default_out(study_path)
     where = dask_executor(scheduler) if scheduler else local_executor(jobs)
     facts = {"jobs": None if scheduler else jobs, "scheduler": scheduler}
-    with where as lanes, progress_bar(progress) as bar:
-        result = run_sweep(
-            plan,
-            out,
-            lanes,
-            resume=resume,
-            overwrite=overwrite,
-            chunk_size=chunk_size,
-            progress=bar,
-            run_facts=facts,
-            started=started,
+    try:
+        with terminate_as_interrupt(), where as lanes, progress_bar(progress) as bar:
+            result = run_sweep(
+                plan,
+                out,
+                lanes,
+                resume=resume,
+                overwrite=overwrite,
+                chunk_size=chunk_size,
+                progress=bar,
+                run_facts=facts,
+                started=started,
+            )
+    except SweepInterrupted as exc:
+        click.echo(
+            f"interrupted: {exc.saved} of {exc.total} cases saved in {exc.out}; "
+            "rerun with --resume",
+            err=True,
         )
+        exit_now_if_busy(EXIT_INTERRUPTED)
+        raise SystemExit(EXIT_INTERRUPTED) from None
+    except KeyboardInterrupt:
+        click.echo("interrupted before any case ran", err=True)
+        raise SystemExit(EXIT_INTERRUPTED) from None
+    for name in ("cases.csv", "summary.json"):
+        announce_written(os.path.join(result.out, name))
     if plot_path:
         from rockcli.report.plots import plot_sweep
 

@@ -5,7 +5,7 @@ from __future__ import annotations
 import csv
 import io
 import math
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
@@ -21,6 +21,9 @@ from rockcli.mechanics import (
 from rockcli.records.record import Record
 from rockcli.report.records import record_document, record_report
 from rockcli.report.table import Column, Report, Table, format_value, key_value
+
+if TYPE_CHECKING:
+    from rockcli.studies.assess import AssessmentOutput
 
 SCHEMA = 1
 
@@ -155,6 +158,12 @@ def assessment_document(
         "max_ratio_overturned": any(r.overturned for r in result.runs),
         "warnings": [w for r in result.runs for w in r.warnings],
     }
+
+
+def assessment_output_document(out: AssessmentOutput, record: Record) -> dict[str, Any]:
+    """The `rock assess --format json` document of an assess workflow's results."""
+    info = model_document(out.name, out.kind, out.block, out.e_rule)
+    return assessment_document(info, record, out.block, out.result)
 
 
 RUN_ROWS = (

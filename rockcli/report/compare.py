@@ -2,10 +2,59 @@
 
 from __future__ import annotations
 
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
+from rockcli import __version__
+from rockcli.records.record import Record
 from rockcli.report.kinematic import ULTIMATE_FIX
 from rockcli.report.table import Column, Report, Table, format_value
+
+if TYPE_CHECKING:
+    from rockcli.studies.compare import ComparisonOutput
+
+SCHEMA = 1
+
+
+def _negate(value: bool | None) -> bool | None:
+    return None if value is None else not value
+
+
+def comparison_document(
+    kin: dict[str, Any], roc: dict[str, Any], classification: str
+) -> dict[str, Any]:
+    """Both documents, the activation and collapse rows, and the classification."""
+    code_collapse = _negate(kin["verdict"]["ULS"])
+    rocking_collapse = None if roc["verdict"] == "undecided" else roc["verdict"] == "overturns"
+    uplifts = [r["t_uplift"] for r in roc["runs"] if r["t_uplift"] is not None]
+    overturns = [r["t_overturn"] for r in roc["runs"] if r["t_overturn"] is not None]
+    return {
+        "schema": SCHEMA,
+        "rock_version": __version__,
+        "kinematic": kin,
+        "rocking": roc,
+        "activation": {
+            "code": _negate(kin["verdict"]["DLS"]),
+            "rocking": bool(uplifts),
+            "t_uplift": min(uplifts) if uplifts else None,
+        },
+        "collapse": {
+            "code": code_collapse,
+            "rocking": rocking_collapse,
+            "t_overturn": min(overturns) if overturns else None,
+        },
+        "classification": classification,
+    }
+
+
+def comparison_output_document(out: ComparisonOutput, record: Record) -> dict[str, Any]:
+    """The `rock compare --format json` document of a comparison's results."""
+    from rockcli.report.assess import assessment_output_document
+    from rockcli.report.kinematic import kinematic_document
+
+    kin = kinematic_document(out.rocking.name, out.kinematic)
+    roc = assessment_output_document(out.rocking, record)
+    return comparison_document(kin, roc, str(out.classification))
+
 
 COLUMNS = (
     Column("label", ""),

@@ -1,11 +1,12 @@
 """The `rock sweep` summary as tables: the paper's Fig. 8 counts and the inconsistencies.
 
-Built from the summary document only (rockcli.studies.sweep_summary), rendered by the one
+Built from the summary document only (rockcli.studies.sweep.summary), rendered by the one
 generic renderer (:mod:`rockcli.report.table`).
 """
 
 from __future__ import annotations
 
+import unicodedata
 from collections.abc import Callable, Iterator, Sequence
 from contextlib import contextmanager
 from typing import Any
@@ -19,29 +20,37 @@ COUNT_COLUMNS = (
     Column("code_conservative", "code cons.", "", "{:d}"),
     Column("code_unconservative", "code uncons.", "", "{:d}"),
     Column("undetermined", "undetermined", "", "{:d}"),
+    Column("errors", "errors", "", "{:d}"),
 )
 
 
 def _cell(row: dict[str, Any], analyses: Sequence[str]) -> str:
-    """A pivot cell: code / rocking collapses (and code-conservative cases), as run."""
+    """A pivot cell: code / rocking collapses (and code-conservative cases), as run, and the
+    cases without a verdict (``+n ?``): never shown as if they were zero collapses."""
     if len(analyses) == 1:
         key = "code_collapses" if analyses[0] == "kinematic" else "rocking_collapses"
-        return str(row[key])
-    return f"{row['code_collapses']} / {row['rocking_collapses']} ({row['code_conservative']})"
+        text = str(row[key])
+    else:
+        text = f"{row['code_collapses']} / {row['rocking_collapses']} ({row['code_conservative']})"
+    unknown = row.get("undetermined") or 0
+    return f"{text} +{unknown} ?" if unknown else text
 
 
 def pivot(
     title: str, rows: list[dict[str, Any]], key: str, label: str, analyses: Sequence[str]
 ) -> Table:
     """Rows by `key`, one column per α, cells from :func:`_cell` (paper Fig. 8)."""
-    alphas = sorted({r["alpha"] for r in rows})
+    alphas = sorted({r["alpha"] for r in rows}, key=lambda a: (a is None, a or 0.0))
     names = list(dict.fromkeys(r[key] for r in rows))
     cells: dict[Any, dict[str, Any]] = {n: {"name": n} for n in names}
     for r in rows:
         cells[r[key]][f"a{alphas.index(r['alpha'])}"] = _cell(r, analyses)
     cols = (
         Column("name", label, align="left"),
-        *(Column(f"a{i}", f"α = {a:.4g}", "rad") for i, a in enumerate(alphas)),
+        *(
+            Column(f"a{i}", "α unknown" if a is None else f"α = {a:.4g}", "rad")
+            for i, a in enumerate(alphas)
+        ),
     )
     return Table(title, cols, tuple(cells[n] for n in names))
 
@@ -84,8 +93,26 @@ def _percent(value: float | None) -> str | None:
     return None if value is None else f"{100 * value:.0f} %"
 
 
+def printable(value: Any) -> Any:
+    """Every text inside value with its control characters escaped (``\\x1b``), so that a
+    name from a study or a record cannot drive the terminal (colours, cursor, title)."""
+    if isinstance(value, str):
+        return "".join(
+            ch.encode("unicode_escape").decode("ascii")
+            if unicodedata.category(ch) in ("Cc", "Cf") and ch != " "
+            else ch
+            for ch in value
+        )
+    if isinstance(value, dict):
+        return {printable(k): printable(v) for k, v in value.items()}
+    if isinstance(value, list | tuple):
+        return type(value)(printable(v) for v in value)
+    return value
+
+
 def sweep_report(doc: dict[str, Any]) -> Report:
-    """The terminal report of a study summary."""
+    """The terminal report of a study summary (names with control characters escaped)."""
+    doc = printable(doc)
     analyses = doc["analyses"]
     both = len(analyses) == 2
     what = "code / rocking collapses (code conservative)" if both else f"{analyses[0]} collapses"
@@ -106,11 +133,20 @@ def sweep_report(doc: dict[str, Any]) -> Report:
     notes = [
         *(
             [
-                f"undetermined: {doc['undetermined']} cases where a verdict was not reached (the"
-                " code's non-linear check without d0* — positive global stiffness, no limit —"
-                " or an undecided rocking run); not counted as collapses"
+                f"undetermined (+n ? in the tables): {doc['undetermined']} cases where a verdict"
+                " was not reached (the code's non-linear check without d0* — positive global"
+                " stiffness, no limit —, an undecided rocking run, or a failed case); not"
+                " counted as collapses nor as survivals"
             ]
             if doc["undetermined"]
+            else []
+        ),
+        *(
+            [
+                f"errors: {doc['errors']} cases failed; their message is in the error column of"
+                f" {doc['out']}/cases.csv"
+            ]
+            if doc.get("errors")
             else []
         ),
         f"{doc['cases']} cases ({doc['computed_cases']} run now, {doc['resumed_cases']} from an "

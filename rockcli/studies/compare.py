@@ -1,23 +1,22 @@
 """The comparison: the code's kinematic check and the rocking time history on the same record.
 
-The point of rock (spec/README.md; paper §3.3, §4.4): one element, one record, the two verdicts
-side by side, and a one-word classification of their agreement.
+The point of rock (paper §3.3, §4.4): one element, one record, the two verdicts side by side,
+and a one-word classification of their agreement. Results only: the command layer builds the
+document (rockcli.report.compare).
 """
 
 from __future__ import annotations
 
+from dataclasses import dataclass
 from enum import StrEnum
-from typing import TYPE_CHECKING, Any
+from typing import Any
 
-from rockcli import __version__
 from rockcli.codecheck.demand import Spectrum
+from rockcli.codecheck.result import KinematicResult
+from rockcli.dynamics.result import Assessment, Verdict
 from rockcli.model.schema import Model
 from rockcli.records.record import Record
-
-if TYPE_CHECKING:
-    from rockcli.studies.assess import AssessmentOutput
-
-SCHEMA = 1
+from rockcli.studies.assess import AssessmentOutput
 
 
 class Classification(StrEnum):
@@ -46,39 +45,36 @@ def classify(code_collapse: bool | None, rocking_collapse: bool | None) -> Class
     )
 
 
+def code_collapse(result: KinematicResult) -> bool | None:
+    """The code's collapse verdict: its ULS check not satisfied (None: not evaluated)."""
+    uls = result.verdict()["ULS"]
+    return None if uls is None else not uls
+
+
+def rocking_collapse(result: Assessment) -> bool | None:
+    """The rocking verdict: overturning in either polarity (None: undecided)."""
+    verdict = result.verdict
+    return None if verdict is Verdict.UNDECIDED else verdict is Verdict.OVERTURNS
+
+
 def code_sets_demand(model: Model) -> bool:
     """True when the model's [ntc] gives a code spectrum (parameters or a site)."""
     ntc = model.ntc
     return ntc is not None and (ntc.demand is not None or ntc.site is not None)
 
 
-def _negate(value: bool | None) -> bool | None:
-    return None if value is None else not value
+@dataclass(frozen=True)
+class ComparisonOutput:
+    """Both analyses of a model under a record and their classification.
 
+    Attributes:
+        kinematic: the code's check. rocking: both polarities and the block.
+        classification: how the two collapse verdicts relate.
+    """
 
-def comparison_document(kin: dict[str, Any], roc: dict[str, Any]) -> dict[str, Any]:
-    """Both documents, the activation and collapse rows, and the classification."""
-    code_collapse = _negate(kin["verdict"]["ULS"])
-    rocking_collapse = None if roc["verdict"] == "undecided" else roc["verdict"] == "overturns"
-    uplifts = [r["t_uplift"] for r in roc["runs"] if r["t_uplift"] is not None]
-    overturns = [r["t_overturn"] for r in roc["runs"] if r["t_overturn"] is not None]
-    return {
-        "schema": SCHEMA,
-        "rock_version": __version__,
-        "kinematic": kin,
-        "rocking": roc,
-        "activation": {
-            "code": _negate(kin["verdict"]["DLS"]),
-            "rocking": bool(uplifts),
-            "t_uplift": min(uplifts) if uplifts else None,
-        },
-        "collapse": {
-            "code": code_collapse,
-            "rocking": rocking_collapse,
-            "t_overturn": min(overturns) if overturns else None,
-        },
-        "classification": str(classify(code_collapse, rocking_collapse)),
-    }
+    kinematic: KinematicResult
+    rocking: AssessmentOutput
+    classification: Classification
 
 
 def compare_model_output(
@@ -91,13 +87,12 @@ def compare_model_output(
     grid_file: str | None = None,
     record_demand: bool = False,
     history: bool = False,
-) -> tuple[dict[str, Any], AssessmentOutput]:
-    """The comparison document of a validated model under a record, and the rocking runs.
+) -> ComparisonOutput:
+    """Both analyses of a validated model under a record, and their classification.
 
-    The code's demand is the record's response spectrum unless the model sets a code spectrum
-    (spec/README.md, `rock compare`), or record_demand asks for the record's anyway;
-    spectrum: the record's, when the caller has it already; history: keep θ(t) of both
-    polarities (for plots).
+    The code's demand is the record's response spectrum unless the model sets a code spectrum,
+    or record_demand asks for the record's anyway; spectrum: the record's, when the caller has
+    it already; history: keep θ(t) of both polarities (for plots).
     """
     from rockcli.studies.assess import assess_model_output
     from rockcli.studies.kinematic import kinematic_model
@@ -111,42 +106,12 @@ def compare_model_output(
         grid_file=grid_file,
     )
     rocking = assess_model_output(model, record, engine, history=history)
-    return comparison_document(kin, rocking.doc), rocking
+    kind = classify(code_collapse(kin), rocking_collapse(rocking.result))
+    return ComparisonOutput(kin, rocking, kind)
 
 
-def compare_model(
-    model: Model,
-    record: Record,
-    *,
-    engine: str = "fast",
-    edition: str | None = None,
-    spectrum: Spectrum | None = None,
-    grid_file: str | None = None,
-    record_demand: bool = False,
-) -> dict[str, Any]:
-    """The comparison document of a validated model under a record (see
-    :func:`compare_model_output`)."""
-    doc, _ = compare_model_output(
-        model,
-        record,
-        engine=engine,
-        edition=edition,
-        spectrum=spectrum,
-        grid_file=grid_file,
-        record_demand=record_demand,
-    )
-    return doc
-
-
-def run_comparison_output(
-    model_path: str, record: Record, **options: Any
-) -> tuple[dict[str, Any], AssessmentOutput]:
+def run_comparison_output(model_path: str, record: Record, **options: Any) -> ComparisonOutput:
     """Load the model file and run :func:`compare_model_output`."""
     from rockcli.model.load import load_model
 
     return compare_model_output(load_model(model_path), record, **options)
-
-
-def run_comparison(model_path: str, record: Record, **options: Any) -> dict[str, Any]:
-    """Load the model file and run :func:`compare_model`."""
-    return run_comparison_output(model_path, record, **options)[0]

@@ -8,7 +8,7 @@ model's [ntc.demand.*] parameters, the model's [ntc.site] with the hazard grid.
 
 from __future__ import annotations
 
-from dataclasses import replace
+from dataclasses import dataclass, replace
 from typing import Any
 
 from rockcli.codecheck import rules2009, rules2019
@@ -198,6 +198,14 @@ def _limit(cap: Capacity, settings: NtcSettings) -> float | None:
     return None if settings.limit is None else settings.limit * cap.factor
 
 
+@dataclass(frozen=True)
+class KinematicOutput:
+    """The kinematic analysis of a model: its name and the result (data, no document)."""
+
+    name: str
+    result: KinematicResult
+
+
 def kinematic_model(
     model: Model,
     *,
@@ -206,15 +214,14 @@ def kinematic_model(
     site: tuple[float, float] | None = None,
     grid_file: str | None = None,
     spectrum: Spectrum | None = None,
-) -> dict[str, Any]:
-    """The kinematic analysis of a validated model: the JSON document.
+) -> KinematicResult:
+    """The kinematic analysis of a validated model.
 
     spectrum: the record's response spectrum when the caller already has it (a study reuses
     one per record); record: the record, to compute it otherwise.
     """
     from rockcli.model.derive import to_block
     from rockcli.model.derive_ntc import ntc_settings
-    from rockcli.report.kinematic import kinematic_document
 
     settings = ntc_settings(model)
     if edition is not None:
@@ -225,11 +232,12 @@ def kinematic_model(
         )
     block = to_block(model)
     dem = demands(settings, block.g, record, site, grid_file, spectrum)
-    return kinematic_document(model.name, analyse(block, settings, dem))
+    return analyse(block, settings, dem)
 
 
-def run_kinematic(model_path: str, **options: Any) -> dict[str, Any]:
+def run_kinematic(model_path: str, **options: Any) -> KinematicOutput:
     """Load the model file and run :func:`kinematic_model`."""
     from rockcli.model.load import load_model
 
-    return kinematic_model(load_model(model_path), **options)
+    model = load_model(model_path)
+    return KinematicOutput(model.name, kinematic_model(model, **options))

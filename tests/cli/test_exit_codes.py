@@ -77,11 +77,11 @@ def test_closed_pipe_exits_0_without_noise(fmt: str) -> None:
 
 
 def _with_status(real, status: str):
-    """Wrap a study function so that its first run reports `status`."""
+    """Wrap a document builder so that its first run reports `status`."""
 
     def wrapped(*args: object, **kwargs: object):
         out = real(*args, **kwargs)
-        doc = out[0] if isinstance(out, tuple) else out.doc
+        doc = out[0] if isinstance(out, tuple) else out
         runs = doc["rocking"]["runs"] if "rocking" in doc else doc["runs"]
         runs[0]["status"] = status
         return out
@@ -92,8 +92,8 @@ def _with_status(real, status: str):
 @pytest.mark.parametrize(
     ("command", "target"),
     [
-        ("assess", "rockcli.studies.assess.run_assessment_output"),
-        ("compare", "rockcli.studies.compare.run_comparison_output"),
+        ("assess", "rockcli.report.assess.assessment_output_document"),
+        ("compare", "rockcli.report.compare.comparison_output_document"),
     ],
 )
 def test_a_non_finite_run_prints_the_report_then_exits_3(

@@ -7,14 +7,15 @@ its axis values) and the model's rule for position = "top": r = 2R, φ = α (pap
 
 from __future__ import annotations
 
+import csv
 import math
 
 import pytest
 
 from rockcli.errors import InputError
 from rockcli.model.derive import to_block
-from rockcli.studies.sweep_cases import Case, build_model, case_label, check_cases, expand
-from rockcli.studies.sweep_study import load_study
+from rockcli.studies.sweep.cases import Case, build_model, case_label, check_cases, expand
+from rockcli.studies.sweep.study import load_study
 from tests.sweep.conftest import STUDY, WriteStudy
 
 
@@ -91,14 +92,27 @@ def test_an_invalid_case_names_its_axis_values(write_study: WriteStudy) -> None:
     )
 
 
-def test_a_case_the_code_check_refuses_names_the_case(write_study: WriteStudy) -> None:
-    # The kinematic check alone, without records and without a code spectrum in the model.
-    from rockcli.studies.sweep_exec import local_executor
-    from rockcli.studies.sweep_run import run_sweep
+def test_a_case_the_code_check_refuses_is_a_row_with_its_error(
+    write_study: WriteStudy,
+) -> None:
+    # Issue 7, item 13: a case that fails at run time is recorded (cases.csv, column error)
+    # and the study goes on; the summary counts it, never as a collapse. The kinematic check
+    # alone, without records and without a code spectrum in the model: every case fails.
+    from rockcli.studies.sweep.executor import local_executor
+    from rockcli.studies.sweep.run import run_sweep
 
     text = STUDY.split("[[records]]")[0].replace("base =", 'analyses = ["kinematic"]\nbase =')
     path = write_study(text)
     plan = load_study(str(path))
-    with pytest.raises(InputError) as info, local_executor(1) as lanes:
-        run_sweep(plan, str(path.parent / "out"), lanes)
-    assert str(info.value).startswith(f"{path}: case 0 (R = 1.5, alpha = 0.1, K = 0.0): ntc: no")
+    with local_executor(1) as lanes:
+        result = run_sweep(plan, str(path.parent / "out"), lanes)
+    summary = result.summary
+    assert summary["cases"] == 8  # 2 R × 2 alpha × 2 K, no record
+    assert summary["errors"] == 8
+    assert summary["undetermined"] == 8
+    assert summary["code_collapses"] == 0
+    with (path.parent / "out" / "cases.csv").open(encoding="utf-8", newline="") as f:
+        rows = list(csv.DictReader(f))
+    assert len(rows) == 8
+    assert all(r["error"].startswith("ntc: no seismic demand") for r in rows)
+    assert {r["code_uls"] for r in rows} == {""}

@@ -14,10 +14,10 @@ from pathlib import Path
 import pytest
 
 from rockcli.model.load import load_model
-from rockcli.studies.sweep_cases import check_cases, expand
-from rockcli.studies.sweep_exec import local_executor
-from rockcli.studies.sweep_run import run_sweep
-from rockcli.studies.sweep_study import load_study
+from rockcli.studies.sweep.cases import check_cases, expand
+from rockcli.studies.sweep.executor import local_executor
+from rockcli.studies.sweep.run import run_sweep
+from rockcli.studies.sweep.study import load_study
 from tests.sweep.conftest import STUDIES
 
 

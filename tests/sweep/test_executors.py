@@ -15,10 +15,10 @@ import pytest
 from click.testing import CliRunner
 
 from rockcli.cli.main import cli
-from rockcli.studies import sweep_exec
-from rockcli.studies.sweep_exec import START_METHODS, local_executor, start_method
-from rockcli.studies.sweep_run import run_sweep
-from rockcli.studies.sweep_study import load_study
+from rockcli.studies.sweep import executor as sweep_exec
+from rockcli.studies.sweep.executor import START_METHODS, local_executor, start_method
+from rockcli.studies.sweep.run import run_sweep
+from rockcli.studies.sweep.study import load_study
 from tests.sweep.conftest import WriteStudy
 
 HAS_DISTRIBUTED = importlib.util.find_spec("distributed") is not None

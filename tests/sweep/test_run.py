@@ -18,14 +18,15 @@ import pytest
 from rockcli.errors import InputError
 from rockcli.model.load import validate_model
 from rockcli.records.files import read_record
-from rockcli.studies import sweep_run
-from rockcli.studies.compare import compare_model
-from rockcli.studies.sweep_cases import case_table, expand
-from rockcli.studies.sweep_exec import local_executor
-from rockcli.studies.sweep_output import RESULT_COLUMNS
-from rockcli.studies.sweep_run import SweepResult, run_sweep
-from rockcli.studies.sweep_study import StudyPlan, load_study
-from rockcli.studies.sweep_worker import Chunk
+from rockcli.report.compare import comparison_output_document
+from rockcli.studies.compare import compare_model_output
+from rockcli.studies.sweep import run as sweep_run
+from rockcli.studies.sweep.cases import case_table, expand
+from rockcli.studies.sweep.executor import local_executor
+from rockcli.studies.sweep.output import RESULT_COLUMNS
+from rockcli.studies.sweep.run import SweepResult, run_sweep
+from rockcli.studies.sweep.study import StudyPlan, load_study
+from rockcli.studies.sweep.worker import Chunk
 from tests.sweep.conftest import STUDY, WriteStudy
 
 N_CASES = 16
@@ -73,7 +74,8 @@ def test_the_counts_equal_a_loop_of_compare_model(plan: StudyPlan, tmp_path: Pat
     code = rocking = 0
     for case in expand(plan):
         model = validate_model(case_table(plan, case))
-        doc = compare_model(model, records[case.record or 0])
+        record = records[case.record or 0]
+        doc = comparison_output_document(compare_model_output(model, record), record)
         kinds[doc["classification"]] += 1
         code += doc["collapse"]["code"] is True
         rocking += doc["collapse"]["rocking"] is True

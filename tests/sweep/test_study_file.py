@@ -12,7 +12,7 @@ from pathlib import Path
 import pytest
 
 from rockcli.errors import InputError
-from rockcli.studies.sweep_study import load_study, parse_path
+from rockcli.studies.sweep.study import load_study, parse_path
 from tests.sweep.conftest import STUDY, WriteStudy
 
 

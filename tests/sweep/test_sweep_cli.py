@@ -26,7 +26,8 @@ def sweep(*args: str) -> tuple[int, str, str]:
 
 def test_the_pulse_study_runs(tmp_path: Path) -> None:
     out = tmp_path / "pulses"
-    code, stdout, _ = sweep(str(STUDIES / "pulses.toml"), "--out", str(out), "--no-progress")
+    study = str(STUDIES / "pulses.toml")
+    code, stdout, _ = sweep(study, "--out", str(out), "--no-progress", "--allow-outside")
     assert code == 0, stdout
     for text in (
         "Per record and α: code / rocking collapses (code conservative)",

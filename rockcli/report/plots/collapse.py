@@ -21,6 +21,7 @@ OUTCOMES = {
     "rocking": ("rocking only (code unconservative)", "v", "tab:purple", True),
     "neither": ("neither collapses", "o", "tab:green", False),
     "undetermined": ("a verdict is missing", "x", "0.4", True),
+    "error": ("the case failed (cases.csv: error)", "X", "black", True),
 }
 #: Where each outcome sits in a cell holding several cases (offsets in cell units).
 SLOTS = {
@@ -29,6 +30,7 @@ SLOTS = {
     "rocking": (-0.22, -0.2),
     "neither": (0.18, -0.2),
     "undetermined": (0.0, 0.0),
+    "error": (0.0, 0.0),
 }
 SWEEP_KEYS = ("R", "alpha", "record", "code_collapse", "rocking_collapse")
 #: Panel size [in] and panels per figure row when there is no `by` column.
@@ -37,7 +39,9 @@ PANEL_COLUMNS = 3
 
 
 def outcome(row: Mapping[str, Any]) -> str:
-    """The outcome of one case: both, code, rocking, neither or undetermined."""
+    """The outcome of one case: both, code, rocking, neither, undetermined or error."""
+    if row.get("error"):
+        return "error"
     code, rocking = row["code_collapse"], row["rocking_collapse"]
     if code is None or rocking is None:
         return "undetermined"
@@ -96,8 +100,11 @@ def _draw_map(
     ax.set_ylabel("slenderness α [rad]")
     code = sum(bool(r["code_collapse"]) for r in cases)
     rocking = sum(bool(r["rocking_collapse"]) for r in cases)
+    unknown = sum(outcome(r) in ("undetermined", "error") for r in cases)
     ax.set_title(
-        f"{title}\ncollapses: code {code}, rocking {rocking} of {len(cases)}", fontsize="small"
+        f"{title}\ncollapses: code {code}, rocking {rocking} of {len(cases)}"
+        + (f"; no verdict {unknown}" if unknown else ""),
+        fontsize="small",
     )
     # Cell borders, not lines through the markers: a cell may hold several markers.
     ax.set_xticks([x + 0.5 for x in range(len(Rs) - 1)], minor=True)
@@ -149,7 +156,10 @@ def plot_sweep(
         InputError: bad suffix, matplotlib missing, file not writable.
         ValueError: no rows, or a row without one of the keys above.
     """
-    cases = _check_rows(rows)
+    # A case whose block could not be computed has no place on the map (the tables count it).
+    cases = [r for r in _check_rows(rows) if r["R"] is not None and r["alpha"] is not None]
+    if not cases:
+        raise ValueError("plot_sweep: no case with a block to plot")
     Rs = sorted(_unique(r["R"] for r in cases))
     alphas = sorted(_unique(r["alpha"] for r in cases))
     panels = _panels(cases, by)
@@ -176,6 +186,6 @@ def _sweep_legend(fig: Figure, cases: list[Mapping[str, Any]]) -> None:
     handles = [
         Line2D([], [], ls="none", marker=m, color=c, mfc=c if f else "none", mew=1.5, label=label)
         for key, (label, m, c, f) in OUTCOMES.items()
-        if key in seen or key != "undetermined"
+        if key in seen or key not in ("undetermined", "error")
     ]
     fig.legend(handles=handles, loc="outside lower center", ncols=len(handles), fontsize="small")

@@ -17,7 +17,7 @@ from pydantic import BaseModel
 
 from rockcli.errors import InputError
 from rockcli.model.schema import Model
-from rockcli.studies.sweep_study import (
+from rockcli.studies.sweep.study import (
     PATH_ALLOWED,
     Axis,
     AxisSpec,
@@ -45,6 +45,7 @@ RESERVED = frozenset(
         "a0_star",
         "Ts",
         "classification",
+        "error",
     }
 )
 
@@ -103,6 +104,10 @@ def base_problem(path: KeyPath, base: Mapping[str, Any]) -> str | None:
             if not isinstance(node, list) or key >= len(node):
                 return f"{_text(path[: depth + 1])} is not in the base model"
         elif not isinstance(node, Mapping) or key not in node:
+            rest = path[depth + 1 :]
+            if any(isinstance(k, int) for k in rest):  # an element of an absent array
+                first = depth + 1 + next(i for i, k in enumerate(rest) if isinstance(k, int))
+                return f"{_text(path[: first + 1])} is not in the base model"
             return None  # an absent table or value: created when set
         node = node[key]
     return None

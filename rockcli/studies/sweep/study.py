@@ -13,7 +13,9 @@ every machine whatever the records folder.
 
 from __future__ import annotations
 
+import os
 import re
+import stat
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from enum import StrEnum
@@ -261,20 +263,72 @@ def validate_study(data: Mapping[str, Any], file: str) -> Study:
         raise study_error(exc.errors()[0], file) from None
 
 
-def load_study(file: str, records_dir: str | None = None) -> StudyPlan:
+#: What a path of the study file may name without --allow-outside.
+INSIDE_ALLOWED = (
+    "a path inside the study file's folder (or inside --records-dir), or --allow-outside"
+)
+
+
+def check_inside(path: Path, folder: Path, file: str, where: str, value: str) -> None:
+    """Refuse a path of the study file that leaves its folder (``..``, an absolute path, a
+    symlink to elsewhere): a study from an untrusted pull request reads only its own files."""
+    try:
+        inside = path.resolve().is_relative_to(folder.resolve())
+    except (OSError, ValueError) as exc:  # a NUL character, a name too long, a loop
+        raise path_error(exc, file, where) from None
+    if not inside:
+        raise InputError(
+            "leaves the study's folder",
+            file=file,
+            where=where,
+            value=value,
+            allowed=INSIDE_ALLOWED,
+        )
+
+
+def is_file(path: str | Path, file: str, where: str) -> bool:
+    """True for an existing regular file, False when absent; a path the system refuses (a
+    name longer than NAME_MAX, a loop of links) is an InputError naming the key."""
+    try:
+        return stat.S_ISREG(os.stat(path).st_mode)
+    except (FileNotFoundError, NotADirectoryError):
+        return False
+    except (OSError, ValueError) as exc:
+        raise path_error(exc, file, where) from None
+
+
+def path_error(exc: OSError | ValueError, file: str, where: str) -> InputError:
+    """A path the system refuses, as one error naming the key of the study file."""
+    reason = exc.strerror if isinstance(exc, OSError) and exc.strerror else str(exc)
+    return InputError(
+        f"cannot use this path: {reason}",
+        file=file,
+        where=where,
+        allowed="a path the file system accepts (no NUL character, each name at most 255 bytes)",
+    )
+
+
+def load_study(
+    file: str, records_dir: str | None = None, *, allow_outside: bool = False
+) -> StudyPlan:
     """Read and validate a study file: schema, base model, axis paths, record files.
 
     Args:
         file: the study TOML (named in errors as given).
         records_dir: replaces the file's records_dir (the --records-dir option).
+        allow_outside: let the file's paths leave its folder (the --allow-outside option).
     """
     from rockcli.model.load import read_toml
-    from rockcli.studies.sweep_paths import check_axes
+    from rockcli.studies.sweep.paths import check_axes
 
     study = validate_study(read_toml(file), file)
     here = Path(file).parent
     base_file = str(here / study.base)
-    if not Path(base_file).is_file():
+    if not allow_outside:
+        check_inside(here / study.base, here, file, "base", study.base)
+        if study.records_dir and not records_dir:
+            check_inside(here / study.records_dir, here, file, "records_dir", study.records_dir)
+    if not is_file(base_file, file, "base"):
         raise InputError(
             "base model file not found",
             file=file,
@@ -285,7 +339,7 @@ def load_study(file: str, records_dir: str | None = None) -> StudyPlan:
     base = read_toml(base_file)
     axes = check_axes(study.axes, base, file)
     folder = _records_folder(study, here, records_dir)
-    records, skipped = _records(study.records, folder, file)
+    records, skipped = _records(study.records, folder, file, allow_outside)
     if Analysis.ROCKING in study.analyses and not records:
         raise InputError(
             "no record to run" + (" (every record is optional and absent)" if skipped else ""),
@@ -314,7 +368,7 @@ def _records_folder(study: Study, here: Path, override: str | None) -> Path:
 
 
 def _records(
-    specs: Sequence[RecordSpec], folder: Path, file: str
+    specs: Sequence[RecordSpec], folder: Path, file: str, allow_outside: bool = False
 ) -> tuple[tuple[RecordSource, ...], tuple[SkippedRecord, ...]]:
     """The records present (paths resolved) and the optional ones absent."""
     from rockcli.records.files import record_name
@@ -323,6 +377,8 @@ def _records(
     skipped: list[SkippedRecord] = []
     for i, spec in enumerate(specs):
         path = folder / spec.path
+        if not allow_outside:
+            check_inside(path, folder, file, f"records[{i}].path", spec.path)
         name = spec.name or record_name(path)
         if spec.scale is not None and spec.pga is not None:
             raise InputError(
@@ -332,7 +388,7 @@ def _records(
                 value=spec.pga,
                 allowed="scale or pga, not both",
             )
-        if not path.is_file():
+        if not is_file(path, file, f"records[{i}].path"):
             if spec.optional:
                 skipped.append(SkippedRecord(name, str(path), spec.source))
                 continue

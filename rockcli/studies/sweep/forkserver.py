@@ -10,6 +10,9 @@ forking it is safe.
 
 from __future__ import annotations
 
-from rockcli.studies.sweep_worker import init_worker
+from rockcli.studies.sweep.worker import die_with_parent, quick_exit, single_thread, warm
 
-init_worker()
+single_thread()
+die_with_parent()  # the server dies with `rock sweep`, and its workers with it
+warm()
+quick_exit()

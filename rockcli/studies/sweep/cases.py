@@ -16,8 +16,8 @@ from typing import Any
 
 from rockcli.errors import InputError
 from rockcli.model.schema import Model
-from rockcli.studies.sweep_paths import with_values
-from rockcli.studies.sweep_study import StudyPlan
+from rockcli.studies.sweep.paths import with_values
+from rockcli.studies.sweep.study import StudyPlan
 
 
 @dataclass(frozen=True)

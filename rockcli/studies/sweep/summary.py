@@ -14,8 +14,8 @@ from collections.abc import Callable, Hashable, Iterable, Mapping, Sequence
 from typing import Any
 
 from rockcli import __version__
-from rockcli.studies.sweep_cases import Case
-from rockcli.studies.sweep_study import StudyPlan
+from rockcli.studies.sweep.cases import Case
+from rockcli.studies.sweep.study import StudyPlan
 
 SCHEMA = 1
 #: Digits α is rounded to when grouping cases by slenderness (α from thickness and height is
@@ -43,8 +43,19 @@ NEEDS = {
     "code_unconservative": {"kinematic", "rocking"},
     "consistent_safe": {"kinematic", "rocking"},
     "consistent_unsafe": {"kinematic", "rocking"},
-    "undetermined": {"kinematic", "rocking"},
 }
+
+
+def undetermined(row: Mapping[str, Any], analyses: Iterable[str]) -> bool:
+    """True when an analysis that ran gave no verdict: a failed case (its ``error``), the
+    code's check not evaluated, or an undecided rocking run (step or event limit). Such a
+    case is neither a collapse nor a survival: the summary counts it apart."""
+    ran = set(analyses)
+    return bool(
+        row.get("error")
+        or ("kinematic" in ran and code_collapse(row) is None)
+        or ("rocking" in ran and row.get("rocking") == "undecided")
+    )
 
 
 def tally(rows: Iterable[Mapping[str, Any]], analyses: Iterable[str]) -> dict[str, int | None]:
@@ -58,15 +69,18 @@ def tally(rows: Iterable[Mapping[str, Any]], analyses: Iterable[str]) -> dict[st
         "consistent_safe": 0,
         "consistent_unsafe": 0,
         "undetermined": 0,
+        "errors": 0,
     }
+    ran = set(analyses)
     for row in rows:
         out["cases"] += 1
         out["code_collapses"] += code_collapse(row) is True
         out["rocking_collapses"] += rocking_collapse(row) is True
         kind = row.get("classification")
-        if kind is not None:
+        if kind is not None and kind != "undetermined":
             out[kind.replace("-", "_")] += 1
-    ran = set(analyses)
+        out["undetermined"] += undetermined(row, ran)
+        out["errors"] += bool(row.get("error"))
     return {k: v if NEEDS.get(k, set()) <= ran else None for k, v in out.items()}
 
 
@@ -84,7 +98,21 @@ def grouped(
     groups: dict[tuple[Hashable, ...], list[Mapping[str, Any]]] = {}
     for row in rows:
         groups.setdefault(key(row), []).append(row)
-    return [(k, tally(groups[k], analyses)) for k in sorted(groups)]
+    return [(k, tally(groups[k], analyses)) for k in sorted(groups, key=sort_key)]
+
+
+def sort_key(key: tuple[Hashable, ...]) -> tuple[tuple[int, Any], ...]:
+    """An order for group keys whatever their parts: numbers, then text, then None (an axis
+    may mix numbers and text; a failed case may have no α)."""
+    out: list[tuple[int, Any]] = []
+    for part in key:
+        if isinstance(part, int | float) and not isinstance(part, bool):
+            out.append((0, part))
+        elif part is None:
+            out.append((2, ""))
+        else:
+            out.append((1, str(part)))
+    return tuple(out)
 
 
 def summarize(
@@ -187,6 +215,7 @@ def case_rows(
                 "code_collapse": code_collapse(result),
                 "rocking_collapse": rocking_collapse(result),
                 "classification": result.get("classification"),
+                "error": result.get("error"),
             }
         )
     return rows

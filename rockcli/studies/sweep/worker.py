@@ -14,15 +14,20 @@ import atexit
 import gc
 import os
 import threading
+import time
+import unicodedata
+from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
 from rockcli.errors import InputError
-from rockcli.studies.sweep_cases import Case, build_model, case_error
-from rockcli.studies.sweep_study import RecordSource, StudyPlan
+from rockcli.studies.sweep.cases import Case, build_model, case_error
+from rockcli.studies.sweep.study import RecordSource, StudyPlan
 
 if TYPE_CHECKING:
     from rockcli.codecheck.response import RecordSpectrum
+    from rockcli.codecheck.result import Check, KinematicResult
+    from rockcli.dynamics.result import Assessment
     from rockcli.model.schema import Model
     from rockcli.records.record import Record
 
@@ -49,12 +54,67 @@ class Chunk:
     cases: tuple[Case, ...]
 
 
+#: Seconds between two looks of a worker at its parent (how soon an orphan exits).
+PARENT_POLL = 0.5
+#: Linux prctl option: the signal a process gets when its parent dies (<linux/prctl.h>).
+PR_SET_PDEATHSIG = 1
+
+
 def init_worker() -> None:
-    """Process-pool initializer: one thread, the compiled kernels loaded, a quick exit."""
-    for key, value in SINGLE_THREAD.items():
-        os.environ.setdefault(key, value)
+    """Process-pool initializer: one thread, the compiled kernels loaded, a quick exit, and
+    an exit with the parent (a killed `rock sweep` leaves no worker behind)."""
+    single_thread()
+    exit_with_parent()
     warm()
     quick_exit()
+
+
+def single_thread() -> None:
+    """One numba/BLAS thread in this process (set before numpy and numba load)."""
+    for key, value in SINGLE_THREAD.items():
+        os.environ.setdefault(key, value)
+
+
+def exit_with_parent() -> None:
+    """End this process when its parent ends, whatever killed the parent (even SIGKILL).
+
+    A daemon thread looks at os.getppid() every PARENT_POLL s: an orphan is re-parented (to
+    init or a subreaper), so a changed parent id means the parent is gone.
+    """
+    parent = os.getppid()
+
+    def watch() -> None:
+        while os.getppid() == parent:
+            time.sleep(PARENT_POLL)
+        os._exit(1)
+
+    threading.Thread(target=watch, name="rock-parent-watch", daemon=True).start()
+
+
+def die_with_parent() -> bool:
+    """Ask Linux to SIGKILL this process when its parent thread ends (prctl PR_SET_PDEATHSIG).
+
+    For the fork server, which must stay single-threaded (it forks the workers): no watcher
+    thread there. False where prctl is not available (not Linux). The parent thread must be
+    the one that lives as long as the study (the main thread: see
+    :func:`rockcli.studies.sweep.executor.process_executor`).
+    """
+    import ctypes
+    import signal
+    import sys
+
+    if not sys.platform.startswith("linux"):
+        return False
+    parent = os.getppid()
+    try:
+        libc = ctypes.CDLL(None, use_errno=True)
+        if libc.prctl(PR_SET_PDEATHSIG, signal.SIGKILL, 0, 0, 0) != 0:
+            return False
+    except (OSError, AttributeError):
+        return False
+    if os.getppid() != parent:  # the parent died before prctl
+        os._exit(1)
+    return True
 
 
 def quick_exit() -> None:
@@ -106,26 +166,43 @@ def spectrum_of(source: RecordSource, g: float) -> RecordSpectrum:
 
 
 def run_chunk(chunk: Chunk) -> list[dict[str, Any]]:
-    """The result columns of every case of the chunk, each with its case id."""
+    """The result columns of every case of the chunk, each with its case id.
+
+    A case that fails (bad input found at run time, or an internal error) gives a row with
+    its ``error`` and no results: the study goes on, the summary counts it, and ``--resume``
+    does not run it again.
+    """
     plan = chunk.plan
     source = plan.records[chunk.record] if chunk.record is not None else None
     record = read_source(source) if source is not None else None
     rows = []
     for case in chunk.cases:
-        model = build_model(plan, case)
+        known: dict[str, Any] = {"case": case.id}  # the block's R and α once computed
         try:
+            model = build_model(plan, case)
+            known["block_R"], known["block_alpha"] = model.geometry.polar
             spectrum = spectrum_of(source, model.analysis.g) if source is not None else None
             rows.append({"case": case.id, **run_case(plan, model, record, spectrum)})
         except InputError as exc:
-            raise case_error(plan, case, exc) from None
+            named = case_error(plan, case, exc)
+            text = str(InputError(named.problem, value=named.value, allowed=named.allowed))
+            rows.append({**known, "error": one_line(text)})
+        except Exception as exc:  # noqa: BLE001 - any failure of one case is that case's row
+            text = f"internal error (please report): {type(exc).__name__}: {exc}"
+            rows.append({**known, "error": one_line(text)})
     return rows
+
+
+def one_line(text: str) -> str:
+    """Text with every control character (line breaks, tabs, escapes) made a space."""
+    return "".join(" " if unicodedata.category(ch) == "Cc" else ch for ch in text)
 
 
 def run_case(
     plan: StudyPlan, model: Model, record: Record | None, spectrum: RecordSpectrum | None
 ) -> dict[str, Any]:
     """The analyses of one case: the block, the rocking envelope, the code check."""
-    from rockcli.studies.compare import classify, code_sets_demand
+    from rockcli.studies.compare import classify, code_collapse, code_sets_demand, rocking_collapse
 
     R, alpha = model.geometry.polar
     row: dict[str, Any] = {"block_R": R, "block_alpha": alpha}
@@ -133,7 +210,7 @@ def run_case(
     if "rocking" in plan.analyses and record is not None:
         from rockcli.studies.assess import assess_model
 
-        roc, _ = assess_model(model, record, plan.engine)
+        roc = assess_model(model, record, plan.engine)
         row.update(rocking_columns(roc))
     if "kinematic" in plan.analyses:
         from rockcli.studies.kinematic import kinematic_model
@@ -144,49 +221,51 @@ def run_case(
         )
         row.update(kinematic_columns(kin))
     if roc is not None and kin is not None:
-        row["classification"] = str(classify(row["code_collapse"], row["rocking_collapse"]))
-    row.pop("code_collapse", None)
-    row.pop("rocking_collapse", None)
+        row["classification"] = str(classify(code_collapse(kin), rocking_collapse(roc)))
     return row
 
 
-def rocking_columns(roc: dict[str, Any]) -> dict[str, Any]:
-    """The polarity envelope of a rocking document (and each polarity's peak)."""
-    runs = {r["polarity"]: r for r in roc["runs"]}
-    overturns = [r["t_overturn"] for r in roc["runs"] if r["t_overturn"] is not None]
-    verdict = roc["verdict"]
+def rocking_columns(result: Assessment) -> dict[str, Any]:
+    """The polarity envelope of both rocking runs (and each polarity's peak)."""
+    runs = {r.polarity: r for r in result.runs}
+    overturns = [r.t_overturn for r in result.runs if r.t_overturn is not None]
     return {
-        "max_ratio": roc["max_ratio"],
-        "max_ratio_pos": runs[1]["max_ratio"] if 1 in runs else None,
-        "max_ratio_neg": runs[-1]["max_ratio"] if -1 in runs else None,
-        "overturned": any(r["overturned"] for r in roc["runs"]),
-        "t_overturn": min(overturns) if overturns else None,
-        "rocking": verdict,
-        "rocking_collapse": None if verdict == "undecided" else verdict == "overturns",
+        "max_ratio": _number(result.max_ratio),
+        "max_ratio_pos": _number(runs[1].max_ratio) if 1 in runs else None,
+        "max_ratio_neg": _number(runs[-1].max_ratio) if -1 in runs else None,
+        "overturned": any(r.overturned for r in result.runs),
+        "t_overturn": _number(min(overturns)) if overturns else None,
+        "rocking": str(result.verdict),
     }
 
 
-def kinematic_columns(kin: dict[str, Any]) -> dict[str, Any]:
+def kinematic_columns(result: KinematicResult) -> dict[str, Any]:
     """The code's verdicts (pass/fail), the governing ULS ratio and the mechanism's numbers."""
-    verdict = kin["verdict"]
+    verdict = result.verdict()
+    quantities = result.quantities
     return {
         "code_dls": _pass_fail(verdict["DLS"]),
         "code_uls": _pass_fail(verdict["ULS"]),
-        "uls_ratio": uls_ratio(kin["checks"]),
-        "a0_star": kin["a0_star"],
-        "Ts": kin.get("Ts", kin.get("T_SLV")),
-        "code_collapse": None if verdict["ULS"] is None else not verdict["ULS"],
+        "uls_ratio": uls_ratio(result.checks),
+        "a0_star": _number(result.a0_star),
+        "Ts": _number(quantities.get("Ts", quantities.get("T_SLV"))),
     }
 
 
-def uls_ratio(checks: list[dict[str, Any]]) -> float | None:
+def uls_ratio(checks: Sequence[Check]) -> float | None:
     """The governing ζ = capacity/demand of the ULS: the smallest over the checks that decide
     the verdict (the non-linear ones when the analysis has them, else the linear ones; the
     rule of :func:`rockcli.codecheck.result.deciding`); None when one is not evaluated."""
-    uls = [c for c in checks if c["limit_state"] in ("ULS", "SLV", "SLC")]
-    nonlinear = [c for c in uls if c["method"] == "nonlinear"]
-    ratios = [c["ratio"] for c in (nonlinear or uls)]
-    return min(ratios) if ratios and None not in ratios else None
+    from rockcli.codecheck.result import deciding
+
+    ratios = [c.ratio for c in deciding(tuple(checks), ("ULS", "SLV", "SLC"))]
+    known = [r for r in ratios if r is not None]
+    return min(known) if known and len(known) == len(ratios) else None
+
+
+def _number(value: float | None) -> float | None:
+    """A plain float (numpy scalars print as np.float64(…) in a CSV cell)."""
+    return None if value is None else float(value)
 
 
 def _pass_fail(value: bool | None) -> str | None:

@@ -8,7 +8,7 @@ scale"):
 - ``--jobs N``: that thread and a :class:`~concurrent.futures.ProcessPoolExecutor` of N − 1
   processes, forks of a ``forkserver`` that has loaded numpy, numba and the compiled kernels
   once (``spawn`` where there is no fork server; never ``fork``: numba and threads), each
-  with one thread (:func:`rockcli.studies.sweep_worker.init_worker`);
+  with one thread (:func:`rockcli.studies.sweep.worker.init_worker`);
 - ``--scheduler tcp://host:8786`` (or DASK_SCHEDULER_ADDRESS): ``distributed.Client(addr)
   .get_executor()``, from the ``dask`` extra (``pip install 'rockcli[dask]'``). The workers need
   rock installed and the record files at the same paths (a shared file system).
@@ -17,8 +17,9 @@ scale"):
 from __future__ import annotations
 
 import multiprocessing
+import re
 import threading
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 from concurrent.futures import Executor, ProcessPoolExecutor, ThreadPoolExecutor
 from contextlib import contextmanager, suppress
 from typing import NamedTuple
@@ -28,7 +29,7 @@ from rockcli.errors import InputError
 #: Start methods of the local worker processes, in order of preference (never fork: numba).
 START_METHODS = ("forkserver", "spawn")
 #: Module the fork server imports before forking workers (loads the compiled kernels).
-PRELOAD = "rockcli.studies.sweep_forkserver"
+PRELOAD = "rockcli.studies.sweep.forkserver"
 #: Seconds to wait for a dask scheduler to answer.
 CONNECT_TIMEOUT = 10.0
 #: Chunks in flight per worker process (one running, one queued).
@@ -36,11 +37,13 @@ IN_FLIGHT = 2
 
 
 class Lane(NamedTuple):
-    """An executor, the workers behind it and how many chunks to keep submitted to it."""
+    """An executor, the workers behind it and how many chunks to keep submitted to it;
+    restart: a new executor for a process pool that broke (a worker was killed)."""
 
     executor: Executor
     workers: int
     capacity: int
+    restart: Callable[[], Executor] | None = None
 
 
 def start_method() -> str:
@@ -56,12 +59,17 @@ def process_executor(workers: int) -> ProcessPoolExecutor:
     worker) imports numpy and numba while this process validates the cases and reads the
     records, and the first chunks start in this process meanwhile.
     """
-    from rockcli.studies.sweep_worker import init_worker
+    from rockcli.studies.sweep.worker import init_worker
 
     method = start_method()
     context = multiprocessing.get_context(method)
     if method == "forkserver":
+        from multiprocessing import forkserver
+
         context.set_forkserver_preload([PRELOAD])
+        # Started here, by the main thread: the server dies with its parent thread (prctl
+        # PR_SET_PDEATHSIG), which must live as long as the study.
+        forkserver.ensure_running()
     pool = ProcessPoolExecutor(max_workers=workers, mp_context=context, initializer=init_worker)
     threading.Thread(target=_start, args=(pool, workers), daemon=True).start()
     return pool
@@ -84,17 +92,80 @@ def local_executor(jobs: int) -> Iterator[list[Lane]]:
     thread = ThreadPoolExecutor(max_workers=1, thread_name_prefix="rock-sweep")
     lanes = [Lane(thread, 1, 1)]
     if jobs > 1:
-        lanes.append(Lane(process_executor(jobs - 1), jobs - 1, IN_FLIGHT * (jobs - 1)))
+        workers = jobs - 1
+        lanes.append(
+            Lane(
+                process_executor(workers),
+                workers,
+                IN_FLIGHT * workers,
+                lambda: process_executor(workers),
+            )
+        )
     try:
         yield lanes
-    finally:
+    except BaseException:
+        # Interrupted or failed: stop the worker processes now (their chunks are lost, the
+        # finished ones are on disk); the thread finishes its chunk (about a second).
+        for lane in reversed(lanes):
+            stop(lane.executor)
+        raise
+    else:
         for lane in reversed(lanes):
             lane.executor.shutdown(wait=True, cancel_futures=True)
+
+
+def stop(executor: Executor) -> None:
+    """Cancel what is queued and end the worker processes of a pool without waiting."""
+    executor.shutdown(wait=False, cancel_futures=True)
+    if isinstance(executor, ProcessPoolExecutor):
+        terminate = getattr(executor, "terminate_workers", None)  # Python 3.14
+        if terminate is not None:
+            terminate()
+            return
+        for process in list((getattr(executor, "_processes", None) or {}).values()):
+            with suppress(OSError, ValueError, AttributeError):
+                process.terminate()
+
+
+#: A scheduler address rock connects to: [tcp://]HOST:PORT, HOST a name, IPv4 or [IPv6].
+_ADDRESS = re.compile(
+    r"^(?:(?P<scheme>[A-Za-z][A-Za-z0-9+.-]*)://)?"
+    r"(?P<host>\[[0-9A-Fa-f:.]+\]|[A-Za-z0-9_.-]+):(?P<port>[0-9]{1,5})/?$"
+)
+#: The address of a dask cluster inside this process.
+_IN_PROCESS = re.compile(r"^inproc://[^\s]+$")
+#: Schemes that need no security configuration (TLS needs certificates rock does not set).
+PLAIN_SCHEMES = ("tcp", "ws")
+ADDRESS_ALLOWED = "tcp://HOST:PORT (or HOST:PORT), e.g. tcp://10.0.0.5:8786 or tcp://[::1]:8786"
+#: Highest TCP port number.
+PORT_MAX = 65535
+
+
+def check_address(address: str) -> None:
+    """Refuse a scheduler address rock cannot use, before importing dask (one error line)."""
+    if _IN_PROCESS.match(address):  # a cluster inside this process (tests, notebooks)
+        return
+    match = _ADDRESS.match(address)
+    problem = None
+    if match is None:
+        problem = "not a scheduler address"
+    elif match["scheme"] and match["scheme"].lower() not in PLAIN_SCHEMES:
+        scheme = match["scheme"].lower()
+        problem = (
+            f"{scheme}:// needs TLS certificates, which rock does not configure"
+            if scheme in ("tls", "wss")
+            else f"unsupported scheme {scheme}://"
+        )
+    elif not 1 <= int(match["port"]) <= PORT_MAX:
+        problem = f"port out of range (1 to {PORT_MAX})"
+    if problem:
+        raise InputError(problem, where="--scheduler", value=address, allowed=ADDRESS_ALLOWED)
 
 
 @contextmanager
 def dask_executor(address: str) -> Iterator[list[Lane]]:
     """The lane of a dask scheduler (its threads, IN_FLIGHT chunks each)."""
+    check_address(address)
     try:
         from distributed import Client
     except ImportError:
@@ -106,7 +177,7 @@ def dask_executor(address: str) -> Iterator[list[Lane]]:
         ) from None
     try:
         client = Client(address, timeout=CONNECT_TIMEOUT)
-    except (OSError, TimeoutError) as exc:
+    except (OSError, TimeoutError, ValueError, TypeError) as exc:
         raise InputError(
             f"cannot connect to the dask scheduler: {exc}",
             where="--scheduler",

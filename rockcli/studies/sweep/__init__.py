@@ -1,0 +1,1 @@
+"""`rock sweep`: systemic studies (the study file, its cases, where they run, the output)."""

@@ -1,0 +1,341 @@
+"""The output folder of a study: ``cases.csv`` written chunk by chunk, a state file, resume.
+
+``cases.csv`` holds one row per case (the rocking columns are the envelope of both
+polarities). Rows are appended as each chunk completes, so an interrupted study keeps every
+finished chunk; ``--resume`` reads them back (dropping a half-written last line), skips those
+cases and appends the rest. When the study completes, the file is rewritten sorted by case id,
+so its content does not depend on the order the chunks completed in. ``sweep.json`` holds the
+study's fingerprint (the study, the base model, the records, the rock version) so that a
+resume never mixes the results of two different studies.
+"""
+
+from __future__ import annotations
+
+import csv
+import hashlib
+import io
+import json
+import math
+import os
+from collections.abc import Iterable, Mapping, Sequence
+from dataclasses import asdict
+from pathlib import Path
+from typing import Any, NoReturn
+
+from rockcli import __version__
+from rockcli.errors import InputError
+from rockcli.outfile import write_text
+from rockcli.studies.sweep.study import StudyPlan
+
+CASES_FILE = "cases.csv"
+STATE_FILE = "sweep.json"
+SUMMARY_FILE = "summary.json"
+STATE_SCHEMA = 1
+#: Bytes read at a time when hashing a record file.
+HASH_BLOCK = 1 << 20
+
+#: Result columns and their types, after the case id, the record and the axis columns.
+RESULT_COLUMNS: dict[str, type] = {
+    "block_R": float,
+    "block_alpha": float,
+    "max_ratio": float,
+    "max_ratio_pos": float,
+    "max_ratio_neg": float,
+    "overturned": bool,
+    "t_overturn": float,
+    "rocking": str,
+    "code_dls": str,
+    "code_uls": str,
+    "uls_ratio": float,
+    "a0_star": float,
+    "Ts": float,
+    "classification": str,
+    "error": str,
+}
+
+
+def columns(plan: StudyPlan) -> list[str]:
+    """The header of cases.csv."""
+    return ["case", "record", *(a.name for a in plan.axes), *RESULT_COLUMNS]
+
+
+#: First characters that make a spreadsheet read a cell as a formula (OWASP, CSV injection).
+FORMULA_STARTS = ("=", "+", "-", "@", "\t", "\r")
+
+
+def cell(value: Any) -> str:
+    """One CSV cell: floats at full precision (repr), booleans true/false, None empty, text
+    escaped against formulas (:func:`escape`)."""
+    if value is None or (isinstance(value, float) and math.isnan(value)):
+        return ""
+    if isinstance(value, bool):
+        return "true" if value else "false"
+    if isinstance(value, float):
+        return repr(value)
+    if isinstance(value, str):
+        return escape(value)
+    return str(value)
+
+
+def _is_number(text: str) -> bool:
+    try:
+        float(text)
+    except ValueError:
+        return False
+    return True
+
+
+def escape(text: str) -> str:
+    """Text that a spreadsheet would run as a formula (it starts with = + - @, a tab or a
+    carriage return, after any leading quotes) prefixed with a single quote; numbers such as
+    -0.5 stay numbers (OWASP, CSV injection)."""
+    if text.lstrip("'").startswith(FORMULA_STARTS) and not _is_number(text):
+        return "'" + text
+    return text
+
+
+def unescape(text: str) -> str:
+    """The text :func:`escape` was given."""
+    if text.startswith("'") and text.lstrip("'").startswith(FORMULA_STARTS):
+        return text[1:]
+    return text
+
+
+def parse_cell(text: str, kind: type) -> Any:
+    """A result cell back to its value (None when empty; ValueError when not of its kind)."""
+    if text == "":
+        return None
+    if kind is bool:
+        if text not in ("true", "false"):
+            raise ValueError(text)
+        return text == "true"
+    if kind is float:
+        value = float(text)
+        if not math.isfinite(value):
+            raise ValueError(text)
+        return value
+    return kind(text)
+
+
+def csv_lines(rows: Iterable[Sequence[str]]) -> str:
+    """CSV text of rows of cells (\\n line ends)."""
+    buffer = io.StringIO()
+    csv.writer(buffer, lineterminator="\n").writerows(rows)
+    return buffer.getvalue()
+
+
+def file_digest(path: str) -> str:
+    """The sha256 of a file's bytes (a record edited at the same size changes it)."""
+    digest = hashlib.sha256()
+    with open(path, "rb") as fh:
+        for block in iter(lambda: fh.read(HASH_BLOCK), b""):
+            digest.update(block)
+    return digest.hexdigest()
+
+
+def fingerprint(plan: StudyPlan) -> str:
+    """A hash of what decides the results: rock's version, the study, base model, records
+    (each by its bytes, not its name or size)."""
+    records = [
+        {**asdict(r), "path": Path(r.path).name, "sha256": file_digest(r.path)}
+        for r in plan.records
+    ]
+    data = {
+        "rock": __version__,
+        "analyses": plan.analyses,
+        "engine": plan.engine,
+        "record_demand": plan.record_demand,
+        "axes": [(a.name, a.texts, a.values) for a in plan.axes],
+        "base": plan.base,
+        "records": records,
+    }
+    text = json.dumps(data, sort_keys=True, default=str)
+    return hashlib.sha256(text.encode()).hexdigest()
+
+
+class Output:
+    """The output folder of one study run."""
+
+    def __init__(
+        self,
+        folder: str,
+        plan: StudyPlan,
+        n_cases: int,
+        labels: Mapping[int, Sequence[str]] | None = None,
+    ) -> None:
+        """labels: per case id, the first cells of its row (case, record, axis values) as
+        written, to check the rows kept on --resume against."""
+        self.labels = labels or {}
+        self.folder = Path(folder)
+        self.header = columns(plan)
+        self.fingerprint = fingerprint(plan)
+        self.n_cases = n_cases
+        self.file = str(plan.file)
+
+    @property
+    def cases_path(self) -> Path:
+        return self.folder / CASES_FILE
+
+    def _state(self) -> dict[str, Any] | None:
+        try:
+            return dict(json.loads((self.folder / STATE_FILE).read_text(encoding="utf-8")))
+        except (OSError, ValueError):
+            return None
+
+    def check(self, *, resume: bool, overwrite: bool) -> dict[int, dict[str, str]]:
+        """Before any work: the folder can be written and may be used; the rows kept from an
+        earlier run (by case id) when resuming."""
+        self._check_writable()
+        state = self._state() if self.cases_path.exists() else None
+        same = state is not None and state.get("fingerprint") == self.fingerprint
+        if not overwrite:
+            self._check_reuse(state, same, resume)
+        return self.read_rows() if resume and same and not overwrite else {}
+
+    def start(self, kept: Mapping[int, Mapping[str, str]]) -> None:
+        """Mark the study unfinished and rewrite cases.csv with the rows kept."""
+        self._write_state(complete=False)
+        self._rewrite(kept)
+
+    def _check_writable(self) -> None:
+        folder = self.folder
+        try:
+            os.stat(folder)  # a name too long, a loop of links: refused here, not later
+        except FileNotFoundError:
+            pass
+        except OSError as exc:
+            self._refuse(f"cannot be used: {exc.strerror or exc}", "a shorter, plain folder path")
+        if folder.exists() and not folder.is_dir():
+            self._refuse("is a file", "a folder path")
+        target = folder if folder.is_dir() else _existing_parent(folder)
+        if not os.access(target, os.W_OK | os.X_OK):
+            self._refuse(f"cannot be written ({target} is not writable)", "a writable folder")
+
+    def _check_reuse(self, state: dict[str, Any] | None, same: bool, resume: bool) -> None:
+        """Refuse to replace what the folder holds unless it is this study, complete."""
+        if state is None:
+            if self.cases_path.exists():
+                self._refuse("holds a cases.csv that rock did not write", "--force")
+            return
+        if not same:
+            self._refuse(
+                "holds the results of another study (or the base model, the records or rock "
+                "changed since)",
+                "--force to start over, or another --out",
+            )
+        if not resume and not state.get("complete"):
+            self._refuse(
+                "holds an unfinished run of this study",
+                "--resume to continue it, or --force to start over",
+            )
+
+    def _refuse(self, problem: str, allowed: str) -> None:
+        raise InputError(
+            f"the output folder {problem}", file=str(self.folder), where="--out", allowed=allowed
+        )
+
+    def _write_state(self, *, complete: bool) -> None:
+        try:
+            self.folder.mkdir(parents=True, exist_ok=True)
+            state = {
+                "schema": STATE_SCHEMA,
+                "study": self.file,
+                "fingerprint": self.fingerprint,
+                "cases": self.n_cases,
+                "columns": self.header,
+                "complete": complete,
+            }
+            write_text(self.folder / STATE_FILE, json.dumps(state, indent=2))
+        except OSError as exc:
+            raise InputError(
+                f"cannot write the output folder: {exc.strerror or exc}",
+                file=str(self.folder),
+                where="--out",
+                allowed="a writable folder",
+            ) from None
+
+    def read_rows(self) -> dict[int, dict[str, str]]:
+        """The rows of cases.csv by case id (a half-written last line is dropped).
+
+        Every other line must be a row this study wrote: the header, then a case id below the
+        number of cases and a value of the right type in each result cell. A damaged file is
+        an InputError naming its line (start over with --force), never a silent gap.
+        """
+        try:
+            text = self.cases_path.read_text(encoding="utf-8")
+        except (OSError, UnicodeDecodeError) as exc:
+            self._damaged(None, f"cannot be read ({exc.__class__.__name__})")
+        lines = text.splitlines(keepends=True)
+        if lines and not lines[-1].endswith("\n"):
+            lines.pop()  # interrupted in the middle of a line
+        try:
+            rows = list(csv.reader(lines, strict=True))
+        except csv.Error as exc:
+            self._damaged(None, f"is not valid CSV ({exc})")
+        if not rows or rows[0] != self.header:
+            self._damaged(1, "the header is not this study's columns")
+        kept: dict[int, dict[str, str]] = {}
+        for number, row in enumerate(rows[1:], start=2):
+            problem = self._row_problem(row)
+            if problem:
+                self._damaged(number, problem)
+            kept.setdefault(int(row[0]), dict(zip(self.header, row, strict=True)))
+        return kept
+
+    def _row_problem(self, row: Sequence[str]) -> str | None:
+        """What is wrong with a row of cases.csv, or None."""
+        if len(row) != len(self.header):
+            return f"{len(row)} cells, not {len(self.header)}"
+        if not (row[0].isascii() and row[0].isdigit() and int(row[0]) < self.n_cases):
+            return f"not a case id of this study (0 to {self.n_cases - 1})"
+        expected = self.labels.get(int(row[0]))
+        if expected is not None and list(row[: len(expected)]) != list(expected):
+            return "the record or axis values are not those of its case"
+        cells = dict(zip(self.header, row, strict=True))
+        for name, kind in RESULT_COLUMNS.items():
+            try:
+                parse_cell(unescape(cells[name]), kind)
+            except ValueError:
+                return f"column {name} is not a {kind.__name__}"
+        return None
+
+    def _damaged(self, line: int | None, problem: str) -> NoReturn:
+        raise InputError(
+            f"cannot resume: {CASES_FILE} {problem}",
+            file=str(self.cases_path),
+            where=f"line {line}" if line else None,
+            allowed="a cases.csv written by rock sweep, or --force to start over",
+        )
+
+    def _rewrite(self, rows: Mapping[int, Mapping[str, str]]) -> None:
+        """cases.csv with the header and the given rows sorted by case id (atomically)."""
+        body = [self.header, *([rows[k][c] for c in self.header] for k in sorted(rows))]
+        write_text(self.cases_path, csv_lines(body))
+
+    def append(self, rows: Iterable[Mapping[str, Any]]) -> list[dict[str, str]]:
+        """Append the rows of a completed chunk; returns them as written (text cells)."""
+        written = [{c: cell(row.get(c)) for c in self.header} for row in rows]
+        flags = os.O_WRONLY | os.O_APPEND | getattr(os, "O_NOFOLLOW", 0)  # never via a link
+        with open(os.open(self.cases_path, flags), "a", encoding="utf-8") as out:
+            out.write(csv_lines([[r[c] for c in self.header] for r in written]))
+            out.flush()
+        return written
+
+    def finish(self, rows: Mapping[int, Mapping[str, str]], summary: dict[str, Any]) -> None:
+        """Sort cases.csv by case id, write summary.json and mark the study complete."""
+        self._rewrite(rows)
+        write_text(self.folder / SUMMARY_FILE, json.dumps(summary, indent=2, allow_nan=False))
+        self._write_state(complete=True)
+
+
+def _existing_parent(path: Path) -> Path:
+    """The nearest folder above path that exists (where the output folder will be made)."""
+    for parent in path.absolute().parents:
+        if parent.is_dir():
+            return parent
+    return Path(".")
+
+
+def typed(row: Mapping[str, str]) -> dict[str, Any]:
+    """The result cells of a row as values (floats, booleans, text, None)."""
+    return {k: parse_cell(unescape(row[k]), kind) for k, kind in RESULT_COLUMNS.items()}

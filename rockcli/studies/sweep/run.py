@@ -1,0 +1,308 @@
+"""Run a study: expand and validate the cases, cut them in chunks, run the chunks on an
+executor, write each chunk's rows as it completes, summarise.
+
+Coded against :class:`concurrent.futures.Executor` (spec/engine.md, "Studies at scale"): the
+main process (``--jobs 1``), a local process pool, or a dask cluster run the same chunks.
+Chunks hold the cases of one record and about :data:`CHUNK_SECONDS` of work (fewer when the
+study is small, so every worker gets several); at most a few chunks per worker are in flight,
+so an error or an interruption stops the study soon, with every finished chunk on disk.
+"""
+
+from __future__ import annotations
+
+import math
+import time
+from collections import deque
+from collections.abc import Callable, Iterator, MutableSequence, Sequence
+from concurrent.futures import FIRST_COMPLETED, BrokenExecutor, Future, wait
+from dataclasses import dataclass
+from typing import Any
+
+from rockcli.errors import InputError
+from rockcli.studies.sweep.cases import Case, check_cases, expand
+from rockcli.studies.sweep.executor import Lane
+from rockcli.studies.sweep.output import Output, cell, typed
+from rockcli.studies.sweep.study import StudyPlan
+from rockcli.studies.sweep.worker import Chunk, read_source, run_chunk
+
+#: Work per chunk aimed at [s]: long enough that pickling and scheduling (≈ 1 ms per task)
+#: do not matter, short enough for a live progress bar and little lost work on interruption.
+CHUNK_SECONDS = 1.0
+#: Chunks per worker at least, when the study is small (load balance).
+CHUNKS_PER_WORKER = 4
+#: Estimated cost of a case, for the chunk size only [s]: the kinematic analysis (its
+#: capacity curve with restrainers dominates), the rocking run per record sample (both
+#: polarities). Measured on this machine: 1–2 ms and ≈ 20 ns per sample (benchmarks/sweep.py).
+KINEMATIC_COST = 1.5e-3
+ROCKING_COST = 2e-4
+ROCKING_COST_PER_SAMPLE = 2e-8
+
+Progress = Callable[[int, int], None]
+#: Lowest measured speed factor used (a case timed much faster than estimated is a fluke of
+#: the clock; chunks stay at most CHUNK_SECONDS / MIN_SPEED of estimated work).
+MIN_SPEED = 0.25
+#: Times a chunk is run when the worker running it dies (then its cases are error rows).
+CHUNK_ATTEMPTS = 3
+#: Pool breaks a study survives (a pool that breaks at every start is a broken setup).
+MAX_RESTARTS = 20
+WORKER_DIED = (
+    "the worker process running this case died {} times (killed, or out of memory); "
+    "rerun the study, or run this case alone"
+)
+
+
+class SweepInterrupted(KeyboardInterrupt):
+    """Ctrl-C (or SIGTERM) during a study: how many cases are saved, and where."""
+
+    def __init__(self, saved: int, total: int, out: str) -> None:
+        super().__init__(f"{saved} of {total} cases saved")
+        self.saved, self.total, self.out = saved, total, out
+
+
+@dataclass(frozen=True)
+class SweepResult:
+    """The summary document, every case's verdicts (for the collapse map) and the folder.
+
+    Attributes:
+        summary: the `rock sweep --format json` document.
+        cases: per case, R, alpha, record, code_collapse, rocking_collapse and the axes.
+        split: the axis to draw one panel per value of (the first non-geometric one).
+        out: the output folder.
+    """
+
+    summary: dict[str, Any]
+    cases: list[dict[str, Any]]
+    split: str | None
+    out: str
+
+
+def case_cost(plan: StudyPlan, npts: int) -> float:
+    """The estimated seconds of one case on a record of npts samples."""
+    cost = KINEMATIC_COST if "kinematic" in plan.analyses else 0.0
+    if "rocking" in plan.analyses:
+        cost += ROCKING_COST + ROCKING_COST_PER_SAMPLE * npts
+    return cost
+
+
+def make_chunks(
+    plan: StudyPlan,
+    cases: Sequence[Case],
+    npts: Sequence[int],
+    workers: int,
+    chunk_size: int | None = None,
+    speed: float = 1.0,
+) -> list[Chunk]:
+    """The chunks of the cases to run: cases of one record together, ≈ CHUNK_SECONDS each.
+
+    speed: measured time of a case over its estimate (:func:`measure`; the reference engine
+    is ≈ 1000 times the estimate, which is the fast engine's).
+    """
+    by_record: dict[int | None, list[Case]] = {}
+    for case in cases:
+        by_record.setdefault(case.record, []).append(case)
+    costs = {r: speed * case_cost(plan, npts[r] if r is not None else 0) for r in by_record}
+    total = sum(costs[r] * len(c) for r, c in by_record.items())
+    target = min(CHUNK_SECONDS, total / (CHUNKS_PER_WORKER * workers))
+    chunks = []
+    for record, group in by_record.items():
+        size = chunk_size or max(1, math.floor(target / costs[record]) if costs[record] else 1)
+        for start in range(0, len(group), size):
+            chunks.append(Chunk(plan, record, tuple(group[start : start + size])))
+    return chunks
+
+
+def measure(plan: StudyPlan, case: Case, npts: Sequence[int]) -> tuple[list[dict[str, Any]], float]:
+    """Run one case here and time it: its rows, and its time over the estimate (the chunks are
+    then sized by measured time, so a slow engine or machine still gets chunks of about
+    CHUNK_SECONDS, and Ctrl-C stops within about that). The kernels are loaded first, so
+    their loading is not timed."""
+    from rockcli.studies.sweep.worker import warm
+
+    warm()
+    start = time.perf_counter()
+    rows = run_chunk(Chunk(plan, case.record, (case,)))
+    elapsed = time.perf_counter() - start
+    estimate = case_cost(plan, npts[case.record] if case.record is not None else 0)
+    return rows, max(MIN_SPEED, elapsed / estimate) if estimate else 1.0
+
+
+def run_chunks(
+    lanes: MutableSequence[Lane], chunks: Sequence[Chunk]
+) -> Iterator[list[dict[str, Any]]]:
+    """The rows of each chunk as it completes (any order).
+
+    Each lane (an executor and its capacity) holds at most its capacity of submitted chunks;
+    the next chunk goes to the first lane with room. A process pool that breaks (a worker
+    killed: the OOM killer, a signal) is restarted and its chunks submitted again, up to
+    :data:`CHUNK_ATTEMPTS` times each; then the chunk's cases are rows with an error. Any
+    other error cancels what is queued and is raised.
+    """
+    pending: dict[Future[list[dict[str, Any]]], tuple[int, Chunk]] = {}
+    load = [0] * len(lanes)
+    todo: deque[Chunk] = deque(chunks)
+    attempts: dict[int, int] = {}
+    restarts = 0
+    try:
+        while True:
+            for i, lane in enumerate(lanes):
+                while load[i] < lane.capacity and todo:
+                    chunk = todo.popleft()
+                    try:
+                        future = lanes[i].executor.submit(run_chunk, chunk)
+                    except BrokenExecutor:  # broke before one of its futures said so
+                        if lanes[i].restart is None or restarts >= MAX_RESTARTS:
+                            raise
+                        restarts += _restart(lanes, i)
+                        todo.appendleft(chunk)
+                        continue
+                    pending[future] = (i, chunk)
+                    load[i] += 1
+            if not pending:
+                return
+            done, _ = wait(pending, return_when=FIRST_COMPLETED)
+            for future in done:
+                i, chunk = pending.pop(future)
+                load[i] -= 1
+                try:
+                    rows = future.result()
+                except BrokenExecutor:
+                    if lanes[i].restart is None or restarts >= MAX_RESTARTS:
+                        raise
+                    restarts += _restart(lanes, i)
+                    attempts[id(chunk)] = tries = attempts.get(id(chunk), 0) + 1
+                    if tries < CHUNK_ATTEMPTS:
+                        todo.appendleft(chunk)
+                        continue
+                    rows = [{"case": c.id, "error": WORKER_DIED.format(tries)} for c in chunk.cases]
+                yield rows
+    finally:
+        for future in pending:
+            future.cancel()
+
+
+def _restart(lanes: MutableSequence[Lane], i: int) -> bool:
+    """A new executor in lane i when its pool broke (once per break: a pool already replaced
+    is not replaced again by the other chunks it failed)."""
+    lane = lanes[i]
+    if lane.restart is None or not getattr(lane.executor, "_broken", True):
+        return False
+    lane.executor.shutdown(wait=False, cancel_futures=True)
+    lanes[i] = lane._replace(executor=lane.restart())
+    return True
+
+
+def record_facts(plan: StudyPlan) -> tuple[list[int], dict[str, dict[str, Any]]]:
+    """Each record read once here (a bad file fails before any work): samples and facts."""
+    npts, facts = [], {}
+    for source in plan.records:
+        try:
+            record = read_source(source)
+        except InputError as exc:
+            raise unquoted(exc) from None
+        npts.append(record.npts)
+        facts[source.name] = {
+            "path": source.path,
+            "pga_g": record.pga,
+            "npts": record.npts,
+            "duration_s": record.duration,
+        }
+    return npts, facts
+
+
+def unquoted(exc: InputError) -> InputError:
+    """A record's error without the file's content when rock did not recognise the file: a
+    study from an untrusted pull request must not make rock print what another file holds."""
+    if "unrecognised" not in exc.problem:
+        return exc
+    return InputError(exc.problem, file=exc.file, where=exc.where, allowed=exc.allowed)
+
+
+def run_sweep(
+    plan: StudyPlan,
+    out: str,
+    lanes: MutableSequence[Lane],
+    *,
+    resume: bool = False,
+    overwrite: bool = False,
+    chunk_size: int | None = None,
+    progress: Progress | None = None,
+    run_facts: dict[str, Any] | None = None,
+    started: float | None = None,
+) -> SweepResult:
+    """Run every case of a study not already in the output folder; the summary.
+
+    Args:
+        plan: the validated study. out: the output folder.
+        lanes: where the chunks run: executors and how many chunks each takes at a time.
+        resume: keep the cases an earlier run of the same study finished.
+        overwrite: start over even if the folder holds another or an unfinished study.
+        chunk_size: cases per chunk instead of the estimate.
+        progress: called with (cases done, cases in all) after each chunk.
+        run_facts: extra facts for the summary (jobs, scheduler).
+        started: time.perf_counter() when the command started (the summary's wall time).
+    """
+    from rockcli.studies.sweep.summary import case_rows, split_axis, summarize
+
+    start = time.perf_counter() if started is None else started
+    cases = expand(plan)
+    first = {c.id: [cell(v) for v in _labels(plan, c).values()] for c in cases}
+    output = Output(out, plan, len(cases), first)
+    rows = output.check(resume=resume, overwrite=overwrite)  # before any work
+    check_cases(plan)
+    npts, facts = record_facts(plan)
+    output.start(rows)
+    resumed = len(rows)
+    todo = [c for c in cases if c.id not in rows]
+    labels = {c.id: _labels(plan, c) for c in todo}
+    if progress:
+        progress(len(rows), len(cases))
+    workers = sum(lane.workers for lane in lanes)
+
+    def save(chunk_rows: list[dict[str, Any]]) -> None:
+        written = output.append({**labels[r["case"]], **r} for r in chunk_rows)
+        rows.update((int(w["case"]), w) for w in written)
+        if progress:
+            progress(len(rows), len(cases))
+
+    try:
+        speed = 1.0
+        if todo and chunk_size is None:
+            first_rows, speed = measure(plan, todo[0], npts)
+            save(first_rows)
+            todo = todo[1:]
+        for chunk_rows in run_chunks(
+            lanes, make_chunks(plan, todo, npts, workers, chunk_size, speed)
+        ):
+            save(chunk_rows)
+    except KeyboardInterrupt:
+        raise SweepInterrupted(len(rows), len(cases), str(output.folder)) from None
+    except OSError as exc:  # a full disk, a folder turned read-only
+        raise InputError(
+            f"cannot write the output folder: {exc.strerror or exc}; "
+            f"{len(rows)} of {len(cases)} cases saved",
+            file=str(output.folder),
+            where="--out",
+            allowed="a writable folder with free space, then rerun with --resume",
+        ) from None
+    run = {
+        "out": str(output.folder),
+        "computed_cases": len(cases) - resumed,
+        "resumed_cases": resumed,
+        **(run_facts or {}),
+        "wall_time_s": time.perf_counter() - start,
+    }
+    results = {k: typed(v) for k, v in rows.items()}
+    summary = summarize(plan, cases, results, facts, run)
+    output.finish(rows, summary)
+    return SweepResult(
+        summary, case_rows(plan, cases, results), split_axis(plan), str(output.folder)
+    )
+
+
+def _labels(plan: StudyPlan, case: Case) -> dict[str, Any]:
+    """The case's id, record and axis values: the first columns of its row."""
+    return {
+        "case": case.id,
+        "record": plan.records[case.record].name if case.record is not None else None,
+        **{a.name: a.label(i) for a, i in zip(plan.axes, case.indices, strict=True)},
+    }

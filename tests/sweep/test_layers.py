@@ -1,0 +1,59 @@
+"""`rockcli.studies` composes the cores (dynamics, codecheck, mechanics), the records and the
+model into results; the command layer (rockcli.cli) turns them into documents and reports.
+Read from the source with ast, so a lazy import inside a function counts too."""
+
+from __future__ import annotations
+
+import ast
+from pathlib import Path
+
+import pytest
+
+ROOT = Path(__file__).resolve().parents[2] / "rockcli"
+STUDIES = sorted((ROOT / "studies").rglob("*.py"))
+#: What a study module may not import: the document and terminal layers, the command line.
+FORBIDDEN = ("rockcli.report", "rockcli.cli", "click", "rich")
+
+
+def imported_modules(path: Path, root: Path = ROOT) -> set[str]:
+    """Every module a file imports, absolute (``from rockcli import report`` → rockcli.report)."""
+    package = ".".join(path.relative_to(root.parent).with_suffix("").parts[:-1])
+    names = set()
+    for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
+        if isinstance(node, ast.Import):
+            names |= {alias.name for alias in node.names}
+        elif isinstance(node, ast.ImportFrom):
+            base = node.module or ""
+            if node.level:
+                parent = package.rsplit(".", node.level - 1)[0] if node.level > 1 else package
+                base = f"{parent}.{base}" if base else parent
+            names.add(base)
+            names |= {f"{base}.{alias.name}" for alias in node.names}
+    return names
+
+
+def forbidden(names: set[str]) -> set[str]:
+    return {n for n in names for f in FORBIDDEN if n == f or n.startswith(f + ".")}
+
+
+def test_the_check_sees_every_form_of_import(tmp_path: Path) -> None:
+    """The checker itself: each way of importing the report layer is caught."""
+    folder = tmp_path / "rockcli" / "studies"
+    folder.mkdir(parents=True)
+    sample = folder / "x.py"
+    sample.write_text(
+        "import rich.console\nfrom rockcli import report\nfrom ..cli import main\n"
+        "def f():\n    from rockcli.report.assess import assessment_document\n"
+    )
+    found = forbidden(imported_modules(sample, tmp_path / "rockcli"))
+    assert {"rich.console", "rockcli.report", "rockcli.cli", "rockcli.report.assess"} <= found
+
+
+def test_studies_has_its_sweep_package() -> None:
+    assert (ROOT / "studies" / "sweep" / "__init__.py").is_file()
+    assert not list((ROOT / "studies").glob("sweep_*.py"))
+
+
+@pytest.mark.parametrize("path", STUDIES, ids=lambda p: str(p.relative_to(ROOT)))
+def test_a_study_module_imports_no_report_cli_click_or_rich(path: Path) -> None:
+    assert not forbidden(imported_modules(path))
