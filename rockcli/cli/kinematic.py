@@ -96,7 +96,7 @@ def kinematic(
     out = run_kinematic(
         model_path, edition=edition, record=record, site=lon_lat, grid_file=grid_file
     )
-    doc = kinematic_document(out.name, out.result)
+    doc = kinematic_document(out.name, out.result, out.warnings)
     if plot_path:
         from rockcli.report.plots import plot_kinematic
 

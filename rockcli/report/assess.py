@@ -135,9 +135,14 @@ def impact_rule(block: Block) -> str:
 
 
 def assessment_document(
-    model: dict[str, Any], record: Record, block: Block, result: Assessment
+    model: dict[str, Any],
+    record: Record,
+    block: Block,
+    result: Assessment,
+    warnings: tuple[str, ...] = (),
 ) -> dict[str, Any]:
-    """The whole `rock assess --format json` document (schema 1)."""
+    """The whole `rock assess --format json` document (schema 1); ``warnings``: the inputs'
+    (model and record magnitudes that look like unit slips), before the runs' own."""
     first = result.runs[0]
     return {
         "schema": SCHEMA,
@@ -156,14 +161,14 @@ def assessment_document(
         "max_ratio": result.max_ratio,
         # max_ratio of an overturned run is the overturn angle over α, not an amplitude
         "max_ratio_overturned": any(r.overturned for r in result.runs),
-        "warnings": [w for r in result.runs for w in r.warnings],
+        "warnings": [*warnings, *(w for r in result.runs for w in r.warnings)],
     }
 
 
 def assessment_output_document(out: AssessmentOutput, record: Record) -> dict[str, Any]:
     """The `rock assess --format json` document of an assess workflow's results."""
     info = model_document(out.name, out.kind, out.block, out.e_rule)
-    return assessment_document(info, record, out.block, out.result)
+    return assessment_document(info, record, out.block, out.result, out.warnings)
 
 
 RUN_ROWS = (
@@ -265,7 +270,6 @@ def assessment_report(doc: dict[str, Any]) -> Report:
         f"engine {eng['name']}, rtol {eng['rtol']:g}, atol {eng['atol']:g}, "
         f"rest threshold {eng['rest_velocity']:g} rad/s",
         *rec["notes"],
-        *doc["warnings"],
     ]
     verdict = _verdict_line(doc)
     return Report(
@@ -273,6 +277,7 @@ def assessment_report(doc: dict[str, Any]) -> Report:
         tables=tuple(tables),
         notes=tuple(notes),
         verdict=verdict,
+        warnings=tuple(doc["warnings"]),
     )
 
 

@@ -51,7 +51,7 @@ def comparison_output_document(out: ComparisonOutput, record: Record) -> dict[st
     from rockcli.report.assess import assessment_output_document
     from rockcli.report.kinematic import kinematic_document
 
-    kin = kinematic_document(out.rocking.name, out.kinematic)
+    kin = kinematic_document(out.rocking.name, out.kinematic, out.rocking.warnings)
     roc = assessment_output_document(out.rocking, record)
     return comparison_document(kin, roc, str(out.classification))
 
@@ -148,9 +148,14 @@ def comparison_report(doc: dict[str, Any]) -> Report:
         f"code: {edition[kin['edition']]}, Ts/T_SLV as in `rock kinematic`; demand: "
         + "; ".join(f"{k} {v}" for k, v in kin["demand"].items()),
         f"rocking: both polarities, engine {roc['engine']['name']}",
-        *doc.get("warnings", comparison_warnings(doc)),
     )
-    return Report(title="rock compare", tables=(table,), notes=notes, verdict=doc["classification"])
+    return Report(
+        title="rock compare",
+        tables=(table,),
+        notes=notes,
+        verdict=doc["classification"],
+        warnings=tuple(doc.get("warnings", comparison_warnings(doc))),
+    )
 
 
 def comparison_warnings(doc: dict[str, Any]) -> list[str]:

@@ -34,7 +34,9 @@ def check_document(c: Check, edition: str) -> dict[str, Any]:
     }
 
 
-def kinematic_document(name: str, result: KinematicResult) -> dict[str, Any]:
+def kinematic_document(
+    name: str, result: KinematicResult, warnings: tuple[str, ...] = ()
+) -> dict[str, Any]:
     """The whole `rock kinematic --format json` document (schema 1)."""
     return {
         "schema": SCHEMA,
@@ -53,7 +55,7 @@ def kinematic_document(name: str, result: KinematicResult) -> dict[str, Any]:
         "curve": list(result.curve),
         "demand": result.demand,
         "notes": list(result.notes),
-        "warnings": [],
+        "warnings": list(warnings),
         "verdict": result.verdict(),
     }
 
@@ -130,7 +132,8 @@ def kinematic_report(doc: dict[str, Any]) -> Report:
     return Report(
         title=f"rock kinematic — {doc['model']['name']}",
         tables=tables,
-        notes=(*notes, *doc.get("warnings", ())),
+        notes=tuple(notes),
+        warnings=tuple(doc.get("warnings", ())),
         verdict=verdict_line(doc["edition"], doc["verdict"]),
     )
 

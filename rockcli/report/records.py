@@ -66,17 +66,23 @@ def record_table(doc: dict[str, Any]) -> Table:
 
 
 def record_notes(doc: dict[str, Any], *, named: bool = False) -> tuple[str, ...]:
-    """The record's warnings (first, marked) and notes, prefixed by its name if ``named``."""
-    lines = [*(f"warning: {w}" for w in doc.get("warnings", ())), *doc["notes"]]
+    """The record's notes, prefixed by its name if ``named``."""
+    return tuple(f"{doc['name']}: {line}" if named else line for line in doc["notes"])
+
+
+def record_warnings(doc: dict[str, Any], *, named: bool = False) -> tuple[str, ...]:
+    """The record's warnings, prefixed by its name if ``named``."""
+    lines = doc.get("warnings", ())
     return tuple(f"{doc['name']}: {line}" if named else line for line in lines)
 
 
 def record_report(doc: dict[str, Any]) -> Report:
-    """The Report of one record document (its table, then its warnings and notes)."""
+    """The Report of one record document (its table, then its notes and warnings)."""
     return Report(
         title=f"rock record info — {doc['name']}",
         tables=(record_table(doc),),
         notes=record_notes(doc),
+        warnings=record_warnings(doc),
     )
 
 
@@ -89,4 +95,5 @@ def info_report(doc: dict[str, Any]) -> Report:
         title=f"rock record info — {len(records)} records",
         tables=tuple(record_table(rec) for rec in records),
         notes=tuple(note for rec in records for note in record_notes(rec, named=True)),
+        warnings=tuple(w for rec in records for w in record_warnings(rec, named=True)),
     )

@@ -51,6 +51,8 @@ class Report:
     tables: tuple[Table, ...]
     notes: tuple[str, ...] = field(default_factory=tuple)
     verdict: str | None = None
+    #: Inputs that look wrong (a unit slip, a record above 3 g): shown after the notes.
+    warnings: tuple[str, ...] = field(default_factory=tuple)
 
 
 def key_value(title: str, items: list[tuple[str, Any, str, str]]) -> Table:
@@ -74,7 +76,7 @@ def format_value(value: Any, fmt: str = "{:.4g}") -> str:
 
 
 def render(report: Report, console: Console) -> None:
-    """Print a Report: its tables, then the notes, then the verdict line.
+    """Print a Report: its tables, then the notes and warnings, then the verdict line.
 
     Every text is made safe for the terminal first (control characters escaped, symbols the
     console's encoding cannot carry spelled in ASCII); numbers are never cut (see
@@ -86,6 +88,8 @@ def render(report: Report, console: Console) -> None:
         _print_table(console, table, text)
     for note in report.notes:
         console.print(f"[yellow]note:[/yellow] {escape(text(note))}")
+    for warning in report.warnings:
+        console.print(f"[bold red]warning:[/bold red] {escape(text(warning))}")
     if report.verdict:
         console.print(f"[bold]verdict:[/bold] {escape(text(report.verdict))}")
 

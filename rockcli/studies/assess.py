@@ -23,6 +23,7 @@ class AssessmentOutput:
         e_rule: how the coefficient of restitution was chosen.
         result: both polarities (with θ(t), θ̇(t) when asked for).
         overturn_angle: |θ| at which a run counts as overturned [rad] (the model's setting).
+        warnings: magnitudes of the model and the record that look like unit slips.
     """
 
     name: str
@@ -31,6 +32,7 @@ class AssessmentOutput:
     e_rule: str
     result: Assessment
     overturn_angle: float
+    warnings: tuple[str, ...] = ()
 
 
 def settings_from(options: Any) -> SolverSettings:
@@ -44,6 +46,7 @@ def assess_model_output(
     """Both polarities of a validated model under a record."""
     from rockcli.dynamics.simulate import assess
     from rockcli.model.derive import describe, solver_options, to_block
+    from rockcli.model.plausible import model_warnings
 
     block = to_block(model)
     settings = settings_from(solver_options(model))
@@ -57,7 +60,13 @@ def assess_model_output(
         history=history,
     )
     return AssessmentOutput(
-        model.name, str(model.kind), block, describe(model).e_rule, result, settings.overturn_angle
+        model.name,
+        str(model.kind),
+        block,
+        describe(model).e_rule,
+        result,
+        settings.overturn_angle,
+        warnings=(*model_warnings(model), *record.warnings),
     )
 
 

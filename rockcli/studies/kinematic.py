@@ -200,10 +200,12 @@ def _limit(cap: Capacity, settings: NtcSettings) -> float | None:
 
 @dataclass(frozen=True)
 class KinematicOutput:
-    """The kinematic analysis of a model: its name and the result (data, no document)."""
+    """The kinematic analysis of a model: its name, the result and the warnings on its inputs
+    (magnitudes that look like unit slips), as data, no document."""
 
     name: str
     result: KinematicResult
+    warnings: tuple[str, ...] = ()
 
 
 def kinematic_model(
@@ -238,6 +240,9 @@ def kinematic_model(
 def run_kinematic(model_path: str, **options: Any) -> KinematicOutput:
     """Load the model file and run :func:`kinematic_model`."""
     from rockcli.model.load import load_model
+    from rockcli.model.plausible import model_warnings
 
     model = load_model(model_path)
-    return KinematicOutput(model.name, kinematic_model(model, **options))
+    record = options.get("record")
+    warnings = (*model_warnings(model), *(record.warnings if record is not None else ()))
+    return KinematicOutput(model.name, kinematic_model(model, **options), warnings)

@@ -176,8 +176,16 @@ def test_a_killed_worker_is_replaced_and_its_chunk_run_again(
                     return
             time.sleep(0.05)
 
+    def workers() -> list:
+        return [p for p in psutil.Process().children(recursive=True) if p.ppid() != os.getpid()]
+
     killer = threading.Thread(target=kill_a_worker)
     with local_executor(2) as lanes:
+        # The pool's process starts in the background; with warm kernels this process's own
+        # lane could finish every case first, so wait for the worker to exist before the run.
+        deadline = time.monotonic() + 60
+        while not workers() and time.monotonic() < deadline:
+            time.sleep(0.05)
         killer.start()
         summary = run_sweep(plan, str(tmp_path / "two"), lanes, chunk_size=1).summary
     killer.join()
