@@ -110,7 +110,10 @@ def _print_table(console: Console, table: Table, text: Callable[[str], str]) -> 
     columns = [[label, *(row[i] for row in cells)] for i, label in enumerate(labels)]
     extra = TABLE_FRAME + len(columns) * (CELL_PADDING + 1)
     widths = column_widths(columns, console.width - extra)
-    out = RichTable(title=escape(text(table.title)), title_justify="left")
+    # The title is its own line (a rich table title is padded to the table's width, which
+    # leaves trailing blanks in a file).
+    console.print(escape(text(table.title)), style="italic")
+    out = RichTable()
     for i, col in enumerate(table.columns):
         default = "left" if col.key in ("label", "unit", "name") else "right"
         width = None if widths is None else widths[i]

@@ -107,6 +107,13 @@ def test_a_redirected_report_is_not_wrapped_at_80_columns() -> None:
     )
 
 
+def test_a_redirected_report_has_no_trailing_blanks() -> None:
+    # Item 15: a report written to a file is read and diffed; table titles padded to the
+    # table's width left trailing blanks on every title line.
+    result = CliRunner().invoke(cli, ["kinematic", str(ALTAR)])
+    assert [line for line in result.stdout.splitlines() if line != line.rstrip()] == []
+
+
 def test_column_widths_keep_every_word_whole() -> None:
     # Two columns (a long text, a number) in 20 characters: the text wraps at spaces, the
     # number keeps its 10 characters.
