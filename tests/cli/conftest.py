@@ -16,5 +16,8 @@ SHARED_RECORDS = ROOT.parent / "shared" / "records"
 def shared_records() -> Path:
     """The folder of real records, or a skip when this clone has no ../shared/records."""
     if not SHARED_RECORDS.is_dir():
-        pytest.skip(f"real records not available: {SHARED_RECORDS} is absent (a user's clone)")
+        pytest.skip(
+            f"real records not available: {SHARED_RECORDS} is absent "
+            "(rock does not ship it; see Development in the README)"
+        )
     return SHARED_RECORDS

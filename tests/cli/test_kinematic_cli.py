@@ -92,7 +92,10 @@ def test_record_spectrum_as_demand(shared_records: Path) -> None:
 
 def test_site_from_the_hazard_grid(tmp_path: Path) -> None:
     if not GRID.is_file():
-        pytest.skip(f"hazard grid not available: {GRID} is absent (a user's clone)")
+        pytest.skip(
+            f"hazard grid not available: {GRID} is absent "
+            "(rock does not ship it; see Development in the README)"
+        )
     # The example's [ntc.demand] values are the grid at Reggiolo, rounded: the site gives the
     # same verdict and a DLS demand within the rounding (3 significant digits of ag).
     doc = kinematic_json(str(ALTAR), "--site", "10.807,44.918", "--hazard-grid", str(GRID))
@@ -104,7 +107,10 @@ def test_site_from_the_hazard_grid(tmp_path: Path) -> None:
 
 def test_site_outside_the_grid_is_one_error_line() -> None:
     if not GRID.is_file():
-        pytest.skip(f"hazard grid not available: {GRID} is absent (a user's clone)")
+        pytest.skip(
+            f"hazard grid not available: {GRID} is absent "
+            "(rock does not ship it; see Development in the README)"
+        )
     code, _, err = run("kinematic", str(ALTAR), "--site", "9.1,39.2", "--hazard-grid", str(GRID))
     assert code == 2 and err.startswith("error: ") and len(err.strip().splitlines()) == 1
 

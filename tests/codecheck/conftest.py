@@ -1,7 +1,8 @@
 """Fixtures of the code-check tests: the NTC hazard grid and a real record, both shared.
 
 Both live next to the repository (../shared), never inside it (rock must not ship the grid);
-a user's clone has neither, so the tests that need them skip with the reason.
+rock ships neither (users bring their own copies), so the tests that need them skip with
+the reason.
 """
 
 from __future__ import annotations
@@ -25,7 +26,10 @@ ELC180 = SHARED / "records" / "ELC180.AT2"
 def ntc_grid() -> HazardGrid:
     """The NTC hazard grid, or a skip when this clone has no ../shared/ntc/AllegatoB.txt."""
     if not GRID_FILE.is_file():
-        pytest.skip(f"NTC hazard grid not available: {GRID_FILE} is absent (a user's clone)")
+        pytest.skip(
+            f"NTC hazard grid not available: {GRID_FILE} is absent "
+            "(rock does not ship it; see Development in the README)"
+        )
     return read_grid(GRID_FILE)
 
 
@@ -33,5 +37,8 @@ def ntc_grid() -> HazardGrid:
 def elc180() -> Record:
     """ELC180.AT2 read by rock's own reader, or a skip when ../shared/records is absent."""
     if not ELC180.is_file():
-        pytest.skip(f"real records not available: {ELC180} is absent (a user's clone)")
+        pytest.skip(
+            f"real records not available: {ELC180} is absent "
+            "(rock does not ship it; see Development in the README)"
+        )
     return read_record(ELC180)

@@ -6,7 +6,7 @@
 - every relative link of docs/*.md points to a file that exists (and to an anchor that exists
   when it names one);
 - every ``$ rock …`` line of docs/examples.md runs with exit code 0 (CliRunner); the lines
-  that read ``../shared`` skip when the shared folder is absent (a user's clone).
+  that read ``../shared`` skip when the shared folder is absent (rock does not ship it).
 """
 
 from __future__ import annotations

@@ -1,7 +1,8 @@
 """Fixtures of the rocking-physics tests: the shared real records and small synthetic records.
 
 The real records of spec/records.md live next to the repository (../shared/records), never
-inside it; a user's clone has none, so the tests that need them skip with the reason.
+inside it; rock does not ship them (users bring their own), so the tests that need them
+skip with the reason.
 
 The AT2 loader here is deliberately tiny and independent of :mod:`rockcli.records` (the record
 parsers have tests of their own): a physics test must not fail because a parser changed. It
@@ -39,7 +40,10 @@ def load_at2(path: Path) -> Record:
 def shared_record() -> Callable[[str], Record]:
     """Load a real record by file name, or skip when this clone has no ../shared/records."""
     if not SHARED_RECORDS.is_dir():
-        pytest.skip(f"real records not available: {SHARED_RECORDS} is absent (a user's clone)")
+        pytest.skip(
+            f"real records not available: {SHARED_RECORDS} is absent "
+            "(rock does not ship it; see Development in the README)"
+        )
     cache: dict[str, Record] = {}
 
     def load(name: str) -> Record:

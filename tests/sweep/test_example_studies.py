@@ -1,5 +1,5 @@
 """The shipped studies (examples/studies): they load, and the paper's ones run on the real
-records of ../shared/records (skipped on a user's clone, where those are absent).
+records of ../shared/records (skipped where those are absent: rock does not ship them).
 
 The paper's counts (§3.3: 14 of 26 code collapses survive the rocking analysis, 54 %; §4.4:
 8 of 14 for K = 1e3 N/m and α = 0.05 rad, 57 %) are for its five records, three of them not
