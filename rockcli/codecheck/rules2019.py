@@ -34,7 +34,7 @@ PLATEAU_A, PLATEAU_B = 0.8, 1.1
 FLOOR_READING = (
     "floor spectrum: ξ_k as a fraction (0.05) in 1.1·ξ_k^−0.5 (plateau factor 4.92 at 5 %) and "
     "in percent (5) in √(1 + 0.0004·ξ_k²); the text says percent for both, which would give a "
-    "plateau factor of 0.49 (spec/ntc.md, 'Ambiguity')"
+    "plateau factor of 0.49 (docs/interpretations.md)"
 )
 
 
