@@ -243,10 +243,25 @@ def test_help_imports_no_numeric_stack() -> None:
     assert not {"numpy", "scipy", "numba"} & mods
 
 
+#: Bound on a warm `rock assess` [s] on a machine as fast as the one the test was written on.
+WARM_START_LIMIT = 1.5
+#: ...and relative to importing its dependencies in the same run, on a slower machine: a
+#: recompiled engine (10–25 s) or a heavy new import would exceed it; loading the cached
+#: kernels and running the altar cost about 0.6 × the import time (measured: 1.75 s against
+#: 1.11 s on a slow 2-core machine, 0.5 s against ~0.3 s on a fast one).
+WARM_START_FACTOR = 3.0
+
+
 def test_second_start_is_fast() -> None:
     # Issue #2: with the numba cache warm, a second `rock assess` starts in well under a
-    # second. Measured here ≈ 0.5 s for the whole process; the bound leaves room for a loaded
-    # CI machine.
+    # second on a fast machine (≈ 0.5 s for the whole process). The bound is the larger of
+    # WARM_START_LIMIT and WARM_START_FACTOR × the time to import numpy, scipy and numba
+    # measured in the same run, so that a slow or loaded machine does not fail it.
+    baseline_cmd = [sys.executable, "-c", "import numpy, scipy.integrate, numba"]
+    subprocess.run(baseline_cmd, check=True, capture_output=True)  # warm the file cache
+    start = time.perf_counter()
+    subprocess.run(baseline_cmd, check=True, capture_output=True)
+    baseline = time.perf_counter() - start
     cmd = [
         sys.executable,
         "-m",
@@ -261,7 +276,9 @@ def test_second_start_is_fast() -> None:
     subprocess.run(cmd, cwd=ROOT, check=True, capture_output=True)  # compile or load
     start = time.perf_counter()
     subprocess.run(cmd, cwd=ROOT, check=True, capture_output=True)
-    assert time.perf_counter() - start < 1.5
+    elapsed = time.perf_counter() - start
+    limit = max(WARM_START_LIMIT, WARM_START_FACTOR * baseline)
+    assert elapsed < limit, f"{elapsed:.2f} s (imports alone: {baseline:.2f} s)"
 
 
 @pytest.mark.parametrize(("option", "value"), [("--scale", "-1"), ("--pga", "0")])
