@@ -45,7 +45,7 @@ def _write_record(rec, output: str, detail: str) -> None:
 
 @click.group()
 def record() -> None:
-    """Ground-motion records: inspect, convert (scale, flip, trim, resample), generate a pulse."""
+    """Ground-motion records: inspect, convert, generate a pulse, compute a floor motion."""
 
 
 @record.command("info")
@@ -200,3 +200,85 @@ def pulse(
     outfile.check_writable(output, force=force, where="--output")
     rec = make_pulse(kind, amplitude, period, dt=dt, total=duration)
     _write_record(rec, output, f"{rec.name}, {rec.npts} samples, dt = {rec.dt:g} s")
+
+
+#: ψ(Z) above this is refused: the mode shapes of the code's formulas stay below it.
+MAX_PSI = 1.5
+
+
+@record.command("floor")
+@click.argument("file", type=click.Path())
+@record_format
+@plain_dt
+@plain_units
+@click.option("--T1", "t1", type=float, required=True, help="First-mode period T1 [s], > 0.")
+@click.option(
+    "--psi", type=float, required=True, help="Mode shape ψ at the element's height, 0 to 1.5."
+)
+@click.option("--gamma", type=float, required=True, help="Participation factor γ, > 0.")
+@click.option(
+    "--xi",
+    type=float,
+    default=0.05,
+    show_default=True,
+    help="First-mode damping ratio, a fraction of critical (0.05 = 5 %).",
+)
+@plain_output
+@force_option
+def floor(
+    file: str,
+    record_format: str | None,
+    dt: float | None,
+    units: str | None,
+    t1: float,
+    psi: float,
+    gamma: float,
+    xi: float,
+    output: str,
+    force: bool,
+) -> None:
+    """Write the floor acceleration at a height of a building under the ground record FILE.
+
+    ü_Z(t) = ü_g(t) + γ·ψ·ẍ₁(t), with ẍ₁ the relative acceleration of the building's first
+    mode (a linear oscillator of period T1 and damping ξ, at rest at the first sample) under
+    the record, integrated exactly between samples. Written as two-column plain text in g,
+    the parameters noted in the header.
+    """
+    from rockcli import outfile
+    from rockcli.cli.options import load_record
+
+    _check_floor_parameters(t1, psi, gamma, xi)
+    outfile.check_writable(output, force=force, where="--output")
+    rec = _floor_record(load_record(file, record_format, dt, units, None, None), t1, psi, gamma, xi)
+    _write_record(rec, output, f"{rec.npts} samples, dt = {rec.dt:g} s, PGA {rec.pga:.4g} g")
+
+
+def _check_floor_parameters(t1: float, psi: float, gamma: float, xi: float) -> None:
+    """One InputError naming the option for each value out of range (NaN included)."""
+    import math
+
+    from rockcli.errors import InputError
+
+    checks = (
+        ("--T1", t1, math.isfinite(t1) and t1 > 0, "a period > 0 [s]"),
+        ("--psi", psi, 0 <= psi <= MAX_PSI, f"0 ≤ ψ ≤ {MAX_PSI:g}"),
+        ("--gamma", gamma, math.isfinite(gamma) and gamma > 0, "a number > 0"),
+        ("--xi", xi, 0 <= xi < 1, "a fraction of critical, 0 ≤ ξ < 1 (0.05 = 5 %)"),
+    )
+    for option, value, ok, allowed in checks:
+        if not ok:
+            raise InputError("out of range", where=option, value=value, allowed=allowed)
+
+
+def _floor_record(rec, t1: float, psi: float, gamma: float, xi: float):
+    """The record's floor motion, as a Record whose notes say how it was made."""
+    from dataclasses import replace
+
+    from rockcli.codecheck.floor import floor_motion
+
+    accel = floor_motion(rec.time, rec.accel, T1=t1, psi=psi, gamma=gamma, xi=xi)
+    note = (
+        f"floor motion ü_g + γ·ψ·ẍ₁ of {rec.name}: T1 = {t1:g} s, ψ = {psi:g}, "
+        f"γ = {gamma:g}, ξ = {xi:g}"
+    )
+    return replace(rec, name=f"{rec.name} floor", accel=accel, notes=(*rec.notes, note))
