@@ -1,8 +1,9 @@
 """The floor motion at a height of a building, from the ground record through its first mode.
 
 An element at height Z does not feel the ground acceleration but that of its floor. The code's
-demand on such an element (NTC 2018 §7.2.3 and Circolare 7/2019 §C7.2.3 floor spectra; NTC 2008
-and Circolare 617/2009 §C8A.4.2.3 for local mechanisms at height) models the building as its
+demand on such an element (NTC 2018 §7.2.3 and Circolare 7/2019 §C7.2.3 floor spectra, which
+§C8.7.1.2.1 applies to local mechanisms at height; Circolare 617/2009 §C8A.4.2.2–C8A.4.2.3,
+ψ(Z) = Z/H and γ = 3N/(2N+1) in :mod:`rockcli.codecheck.position`) models the building as its
 first mode only: the floor at Z moves with the ground plus the first mode's relative response,
 scaled by the participation factor γ and the mode shape ψ(Z). The same idea in the time domain:
 
