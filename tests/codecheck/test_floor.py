@@ -85,7 +85,8 @@ def test_gamma_psi_zero_is_the_ground_exactly(elc180: Record) -> None:
 
 def test_gamma_psi_one_is_the_absolute_acceleration(elc180: Record) -> None:
     # γψ = 1: ü_g + ẍ = −2ξωẋ − ω²x, the oscillator's absolute acceleration, whose peak is the
-    # record's 5 % spectral acceleration near Sa = ω²·Sd (pseudo- vs absolute: within 2ξ).
+    # record's 5 % spectral acceleration near Sa = ω²·Sd: they differ by the damping term
+    # 2ξω·ẋ ≲ 2ξ·Sa (Chopra §6.12.2), so tolerance 2ξ (measured 0.56 % at T1 = 0.5 s).
     from rockcli.codecheck.response import response_spectrum
 
     T1 = 0.5
