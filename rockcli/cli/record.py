@@ -135,9 +135,10 @@ def convert(
     warns (on stderr and in the file's header).
     """
     from rockcli import outfile
-    from rockcli.cli.options import load_record, scale_record
+    from rockcli.cli.options import check_record_options, load_record, scale_record
     from rockcli.records import transform
 
+    check_record_options(file, record_format, dt, units, scale, pga)
     outfile.check_writable(output, force=force, where="--output")
     rec = load_record(file, record_format, dt, units, None, None)
     span = _window(window)

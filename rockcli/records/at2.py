@@ -98,14 +98,16 @@ def looks_like_at2(lines: list[str]) -> bool:
     """True when line 4 declares NPTS and DT (spec/records.md: "line 4 holds NPTS and DT").
 
     A ``#`` line 4 is a comment of a plain-text file, never an AT2 header. Two bare numbers
-    on line 4 count only under an AT2 units line (a plain file's fourth row is two numbers).
+    on line 4 count only under an AT2 units line that is not a ``#`` comment (a plain file's
+    fourth row is two numbers, and its comments may well say "units of g").
     """
     line = lines[NPTS_LINE - 1] if len(lines) >= NPTS_LINE else ""
     if line.lstrip().startswith("#"):
         return False
     if find_npts_dt(line) is not None:
         return True
-    return _bare_pair(line) is not None and _units_line_ok(lines)
+    commented = any(head.lstrip().startswith("#") for head in lines[: NPTS_LINE - 1])
+    return _bare_pair(line) is not None and not commented and _units_line_ok(lines)
 
 
 def _check_units_line(lines: list[str], *, file: str) -> None:

@@ -67,7 +67,10 @@ def header_unit(lines: list[str], *, file: str) -> tuple[AccelUnit, tuple[str, .
     """
     named: set[AccelUnit] = set()
     for line in lines[:HEADER_LINES]:
-        named |= units_named(line)
+        # A "Label : value" line names its unit in the label; free text (a station called
+        # "Gal", a processing note "1 gal = 1 cm/s2") is not a unit declaration.
+        label, colon, _ = line.partition(":")
+        named |= units_named(label if colon else line)
     if len(named) > 1:
         raise InputError(
             "the header names two acceleration units",

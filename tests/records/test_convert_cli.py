@@ -64,6 +64,16 @@ def test_bad_scale_names_the_option(tmp_path: Path) -> None:
     assert code == 2 and err.startswith("error: --scale: ")
 
 
+def test_scale_and_pga_together_are_refused(tmp_path: Path) -> None:
+    # Item 17, found in review: convert accepted both and let --pga override --scale silently.
+    out = tmp_path / "x.txt"
+    code, _, err = run(
+        "record", "convert", str(PULSE), "--scale", "2", "--pga", "0.3", "-o", str(out)
+    )
+    assert code == 2 and err.startswith("error: --scale: conflicts with --pga")
+    assert not out.exists()
+
+
 def test_output_is_checked_before_reading(tmp_path: Path) -> None:
     """An existing output without --force is refused before the (missing) input is read."""
     out = tmp_path / "exists.txt"

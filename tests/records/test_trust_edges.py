@@ -256,6 +256,17 @@ def test_coracc_two_units_are_refused() -> None:
     assert "two acceleration units" in error_of(text).problem
 
 
+def test_coracc_units_in_free_text_are_not_declarations() -> None:
+    # Found in review: a station named "Gal" or a processing note "1 gal = 1 cm/s2" made a
+    # valid m/s/s file "name two units"; only the labels and the title declare the unit.
+    text = CORACC_HEAD.format(pga="1.2500000E+00", unit="m/s/s")
+    text = text.replace("3614 / L Aquila", "3614 / Gal, Italy").replace(
+        "Processing Info               : none", "Processing Info               : 1 gal = 1 cm/s2"
+    )
+    record = parse_text(text + CORACC_DATA)
+    assert record.unit == "m/s2" and record.pga == 1.25 * AccelUnit.M_S2.to_g
+
+
 def test_rock_plain_output_cut_at_a_line_boundary() -> None:
     text = format_plain(make_pulse("half-sine", 0.3, 0.5, dt=0.01))
     cut = text[: text.rstrip("\n").rindex("\n") + 1]  # the last line removed whole
@@ -295,6 +306,17 @@ def test_at2_bare_ambiguous_is_refused(line4: str) -> None:
 
 def test_plain_file_with_two_numbers_on_line_4_stays_plain() -> None:
     assert parse_text("0 0.1\n1 0.2\n2 0.3\n3 0.004\n").format == "plain"
+
+
+def test_plain_file_whose_comment_says_units_of_g_stays_plain() -> None:
+    # Found in review: a plain file whose third line is a comment mentioning "units of g" was
+    # taken for an AT2 with a bare line 4 and refused as ambiguous; it read as plain before.
+    text = (
+        "# El Centro, converted\n# time [s], acceleration\n# acceleration in units of g\n"
+        "0.00 0.0100\n0.01 0.0200\n0.02 -0.0150\n0.03 0.0000\n"
+    )
+    record = parse_text(text)
+    assert record.format == "plain" and record.npts == 4
 
 
 # Item 11: capped sample counts ----------------------------------------------------------------
