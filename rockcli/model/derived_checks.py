@@ -16,6 +16,7 @@ import math
 
 from rockcli.errors import InputError
 from rockcli.mechanics import Block, restrainer_coefficient
+from rockcli.model.bounds import MAX_STIFFNESS
 
 #: What a derived quantity must be.
 FINITE_POSITIVE = "a finite number > 0 (the inputs it comes from are out of scale)"
@@ -42,6 +43,13 @@ def check_block(block: Block) -> None:
         for side in (1, -1):
             k, r, _ = restrainer.side(side)
             where = f"restrainers[{i}]"
+            if k > MAX_STIFFNESS:  # a tie-rod's E·A/L is derived, not bounded by the schema
+                raise InputError(
+                    "the stiffness E·A/L of this restrainer is out of range",
+                    where=where,
+                    value=k,
+                    allowed=f"at most {MAX_STIFFNESS:g} N/m (check diameter, length and E)",
+                )
             _positive("the distance r of the attachment point from the pivot", r, where)
             coefficient = restrainer_coefficient(k, r, block.inertia)
             if not math.isfinite(coefficient):

@@ -178,3 +178,19 @@ def test_subnormal_inputs_found_by_fuzzing_are_refused(
     assert result.exit_code == 2, result.output
     assert result.stderr.startswith(f"error: {path}: {where}: ")
     assert "5e-324" in result.stderr
+
+
+def test_a_tie_rod_whose_derived_stiffness_is_out_of_range_is_refused(tmp_path: Path) -> None:
+    # Found in review: a tie-rod's K = E·A/L is derived, so the schema's stiffness bound did not
+    # hold it (d = 1000 m, L = 1 mm, E = 1.2e12 Pa → K ≈ 9.4e20 N/m ran for minutes).
+    from rockcli.model.load import load_model
+
+    path = tmp_path / "rod.toml"
+    path.write_text(
+        'name = "rod"\nkind = "wall"\n[geometry]\nthickness = 0.5\nheight = 4.0\nwidth = 3.0\n'
+        '[mass]\nunit_weight = 18.0\n[[restrainers]]\nname = "rod"\nkind = "tie-rod"\n'
+        'diameter = 1000.0\nlength = 0.001\nE = 1.2e12\nposition = "top"\n',
+        encoding="utf-8",
+    )
+    with pytest.raises(InputError, match="stiffness E·A/L"):
+        load_model(path)
