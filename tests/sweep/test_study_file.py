@@ -85,13 +85,13 @@ def test_the_study_loads(write_study: WriteStudy) -> None:
         (
             ("base =", "record_demand = true\nbase ="),
             "record_demand: removed: each record's spectrum is the code demand by default now "
-            "(got True; allowed: code_demand = \"record\" (the default) or \"model\" (the base "
+            '(got True; allowed: code_demand = "record" (the default) or "model" (the base '
             "model's code spectrum))",
         ),
         (
             ("base =", 'code_demand = "model"\nbase ='),
             "code_demand: the base model sets no code spectrum ([ntc.demand] or [ntc.site]) "
-            "(got 'model'; allowed: \"record\" (the default), or \"model\" with a base model "
+            '(got \'model\'; allowed: "record" (the default), or "model" with a base model '
             "that sets [ntc.demand] or [ntc.site])",
         ),
         (
