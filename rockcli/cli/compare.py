@@ -30,6 +30,20 @@ CLASSIFICATIONS = (
     "code-unconservative",
     "undetermined",
 )
+#: The values of --code-demand (rockcli.studies.compare.CodeDemand).
+CODE_DEMANDS = ("record", "model")
+
+
+def refuse_record_demand(record_demand: bool) -> None:
+    """--record-demand is the default now: refused with the way out (0.x, no silent alias)."""
+    from rockcli.errors import InputError
+
+    if record_demand:
+        raise InputError(
+            "removed: the record's spectrum is the code demand by default now",
+            where="--record-demand",
+            allowed="drop --record-demand (--code-demand model uses the model's spectrum)",
+        )
 
 
 @click.command()
@@ -38,11 +52,15 @@ CLASSIFICATIONS = (
 @edition_option
 @engine_option
 @click.option(
-    "--record-demand",
-    is_flag=True,
-    help="Use the record's response spectrum as the code demand even when the model sets a "
-    "code spectrum ([ntc.demand] or [ntc.site]).",
+    "--code-demand",
+    type=click.Choice(CODE_DEMANDS),
+    default="record",
+    show_default=True,
+    help="The code check's demand: the record's response spectrum (one earthquake on both "
+    "sides), or the model's own code spectrum ([ntc.demand] or [ntc.site]; the two sides then "
+    "see different earthquakes).",
 )
+@click.option("--record-demand", is_flag=True, hidden=True)
 @hazard_grid_option
 @click.option(
     "--fail-on",
@@ -65,6 +83,7 @@ def compare(
     pga,
     edition,
     engine,
+    code_demand,
     record_demand,
     grid_file,
     fail_on,
@@ -81,8 +100,9 @@ def compare(
     from rockcli.report.table import show
     from rockcli.studies.compare import run_comparison_output
 
+    refuse_record_demand(record_demand)
     check_hazard_grid(
-        grid_file, model_path, demand_from="--record-demand" if record_demand else None
+        grid_file, model_path, demand_from="--record" if code_demand == "record" else None
     )
     check_outputs(force, plot=plot_path)
     record = load_record(record_path, record_format, dt, units, scale, pga)
@@ -92,7 +112,7 @@ def compare(
         engine=engine,
         edition=edition,
         grid_file=grid_file,
-        record_demand=record_demand,
+        code_demand=code_demand,
         history=plot_path is not None,
     )
     doc, rocking = comparison_output_document(out, record), out.rocking

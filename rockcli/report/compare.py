@@ -13,6 +13,12 @@ if TYPE_CHECKING:
     from rockcli.studies.compare import ComparisonOutput
 
 SCHEMA = 1
+#: The warning and the verdict's tail when the code check did not see the record
+#: (`--code-demand model`).
+DIFFERENT_EARTHQUAKES = (
+    "the code check used the model's spectrum, not the record: "
+    "the two sides see different earthquakes"
+)
 
 
 def _negate(value: bool | None) -> bool | None:
@@ -20,9 +26,11 @@ def _negate(value: bool | None) -> bool | None:
 
 
 def comparison_document(
-    kin: dict[str, Any], roc: dict[str, Any], classification: str
+    kin: dict[str, Any], roc: dict[str, Any], classification: str, code_demand: str = "record"
 ) -> dict[str, Any]:
-    """Both documents, the activation and collapse rows, and the classification."""
+    """Both documents, the activation and collapse rows, the classification and the code
+    check's demand (``"record"``: the record on both sides; ``"model"``: the model's
+    spectrum)."""
     code_collapse = _negate(kin["verdict"]["ULS"])
     rocking_collapse = None if roc["verdict"] == "undecided" else roc["verdict"] == "overturns"
     uplifts = [r["t_uplift"] for r in roc["runs"] if r["t_uplift"] is not None]
@@ -43,6 +51,7 @@ def comparison_document(
             "t_overturn": min(overturns) if overturns else None,
         },
         "classification": classification,
+        "code_demand": code_demand,
     }
 
 
@@ -53,7 +62,7 @@ def comparison_output_document(out: ComparisonOutput, record: Record) -> dict[st
 
     kin = kinematic_document(out.rocking.name, out.kinematic, out.rocking.warnings)
     roc = assessment_output_document(out.rocking, record)
-    return comparison_document(kin, roc, str(out.classification))
+    return comparison_document(kin, roc, str(out.classification), str(out.code_demand))
 
 
 COLUMNS = (
@@ -153,12 +162,24 @@ def comparison_report(doc: dict[str, Any]) -> Report:
         title="rock compare",
         tables=(table,),
         notes=notes,
-        verdict=doc["classification"],
-        warnings=tuple(doc.get("warnings", comparison_warnings(doc))),
+        verdict=comparison_verdict(doc),
+        warnings=tuple(
+            w for w in doc.get("warnings", comparison_warnings(doc)) if w != DIFFERENT_EARTHQUAKES
+        ),
     )
 
 
+def comparison_verdict(doc: dict[str, Any]) -> str:
+    """The verdict line: the classification, and whether the two sides saw one earthquake."""
+    if doc.get("code_demand") == "model":
+        return f"{doc['classification']} — {DIFFERENT_EARTHQUAKES}"
+    return str(doc["classification"])
+
+
 def comparison_warnings(doc: dict[str, Any]) -> list[str]:
-    """The warnings of both analyses, each once, in order (the document's ``"warnings"``)."""
+    """The warnings of both analyses, each once, in order (the document's ``"warnings"``),
+    first whether the two sides saw different earthquakes."""
     both = [*doc["kinematic"].get("warnings", ()), *doc["rocking"].get("warnings", ())]
+    if doc.get("code_demand") == "model":
+        both.insert(0, DIFFERENT_EARTHQUAKES)
     return list(dict.fromkeys(both))

@@ -63,6 +63,35 @@ def code_sets_demand(model: Model) -> bool:
     return ntc is not None and (ntc.demand is not None or ntc.site is not None)
 
 
+class CodeDemand(StrEnum):
+    """Which earthquake the code check of a comparison sees (issue #8 item 4)."""
+
+    RECORD = "record"  # the record's response spectrum: one earthquake on both sides
+    MODEL = "model"  # the model's own code spectrum ([ntc.demand] or [ntc.site])
+
+
+#: What --code-demand / code_demand accept when the model sets no code spectrum.
+CODE_DEMAND_ALLOWED = (
+    '"record" (the default), or "model" with a model that sets [ntc.demand] or [ntc.site]'
+)
+
+
+def check_code_demand(
+    model: Model, code_demand: str, *, file: str | None = None, where: str = "--code-demand"
+) -> None:
+    """Refuse the model's code spectrum on a model that sets none (InputError naming where)."""
+    from rockcli.errors import InputError
+
+    if code_demand == CodeDemand.MODEL and not code_sets_demand(model):
+        raise InputError(
+            "the model sets no code spectrum ([ntc.demand] or [ntc.site])",
+            file=file,
+            where=where,
+            value=str(code_demand),
+            allowed=CODE_DEMAND_ALLOWED,
+        )
+
+
 @dataclass(frozen=True)
 class ComparisonOutput:
     """Both analyses of a model under a record and their classification.
@@ -70,11 +99,13 @@ class ComparisonOutput:
     Attributes:
         kinematic: the code's check. rocking: both polarities and the block.
         classification: how the two collapse verdicts relate.
+        code_demand: the earthquake the code check saw (the record, or the model's spectrum).
     """
 
     kinematic: KinematicResult
     rocking: AssessmentOutput
     classification: Classification
+    code_demand: CodeDemand = CodeDemand.RECORD
 
 
 def compare_model_output(
@@ -85,19 +116,21 @@ def compare_model_output(
     edition: str | None = None,
     spectrum: Spectrum | None = None,
     grid_file: str | None = None,
-    record_demand: bool = False,
+    code_demand: str = CodeDemand.RECORD,
     history: bool = False,
 ) -> ComparisonOutput:
     """Both analyses of a validated model under a record, and their classification.
 
-    The code's demand is the record's response spectrum unless the model sets a code spectrum,
-    or record_demand asks for the record's anyway; spectrum: the record's, when the caller has
-    it already; history: keep θ(t) of both polarities (for plots).
+    One earthquake on both sides: the code's demand is the record's response spectrum, even
+    when the model sets a code spectrum; code_demand "model" uses the model's spectrum instead
+    (InputError when it sets none). spectrum: the record's, when the caller has it already;
+    history: keep θ(t) of both polarities (for plots).
     """
     from rockcli.studies.assess import assess_model_output
     from rockcli.studies.kinematic import kinematic_model
 
-    own = record_demand or not code_sets_demand(model)
+    check_code_demand(model, code_demand)
+    own = code_demand == CodeDemand.RECORD
     kin = kinematic_model(
         model,
         edition=edition,
@@ -107,11 +140,13 @@ def compare_model_output(
     )
     rocking = assess_model_output(model, record, engine, history=history)
     kind = classify(code_collapse(kin), rocking_collapse(rocking.result))
-    return ComparisonOutput(kin, rocking, kind)
+    return ComparisonOutput(kin, rocking, kind, CodeDemand(code_demand))
 
 
 def run_comparison_output(model_path: str, record: Record, **options: Any) -> ComparisonOutput:
     """Load the model file and run :func:`compare_model_output`."""
     from rockcli.model.load import load_model
 
-    return compare_model_output(load_model(model_path), record, **options)
+    model = load_model(model_path)
+    check_code_demand(model, options.get("code_demand", CodeDemand.RECORD), file=model_path)
+    return compare_model_output(model, record, **options)

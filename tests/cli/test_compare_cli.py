@@ -8,8 +8,10 @@ from pathlib import Path
 import pytest
 from click.testing import CliRunner
 
+from rockcli.cli.compare import CLASSIFICATIONS
 from rockcli.cli.main import cli
 from rockcli.model.load import load_model
+from rockcli.report.compare import DIFFERENT_EARTHQUAKES
 from rockcli.studies.compare import Classification, classify, code_sets_demand
 from tests.cli.conftest import PULSES, ROOT
 
@@ -19,6 +21,12 @@ ALTAR = ROOT / "examples" / "altar.toml"
 def run(*args: str) -> tuple[int, str, str]:
     result = CliRunner().invoke(cli, list(args))
     return result.exit_code, result.stdout, result.stderr
+
+
+def demand_source(doc: dict, state: str) -> str:
+    """Where the kinematic document says its demand of a limit state comes from."""
+    demand = doc["kinematic"]["demand"][state]
+    return demand if isinstance(demand, str) else demand["source"]
 
 
 @pytest.mark.parametrize(
@@ -74,8 +82,6 @@ def test_json_reuses_both_schemas(shared_records: Path) -> None:
     code_collapse = doc["kinematic"]["verdict"]["ULS"] is False
     rocking_collapse = doc["rocking"]["verdict"] == "overturns"
     assert doc["classification"] == classify(code_collapse, rocking_collapse).value
-    # The model sets a code spectrum: the code demand is that, not the record's.
-    assert "[ntc.demand]" in doc["kinematic"]["demand"]["SLV"]
 
 
 def test_record_demand_when_the_model_sets_none(tmp_path: Path) -> None:
@@ -94,18 +100,70 @@ def test_record_demand_when_the_model_sets_none(tmp_path: Path) -> None:
     assert doc["kinematic"]["demand"]["SLV"].startswith("record ")
 
 
-def test_record_demand_flag_overrides_the_model(shared_records: Path) -> None:
-    code, out, err = run(
-        "compare",
-        str(ALTAR),
-        "--record",
-        str(shared_records / "ELC180.AT2"),
-        "--record-demand",
-        "--format",
-        "json",
-    )
+def test_the_record_is_both_sides_earthquake_by_default(shared_records: Path) -> None:
+    # Issue #8 item 4: one earthquake on both sides. The altar sets [ntc.demand], yet the code
+    # check sees the record's response spectrum, and the verdict line says nothing more.
+    args = ("compare", str(ALTAR), "--record", str(shared_records / "ELC180.AT2"))
+    code, out, err = run(*args, "--format", "json")
     assert code == 0, err
-    assert json.loads(out)["kinematic"]["demand"]["SLV"].startswith("record ELC180")
+    doc = json.loads(out)
+    assert doc["code_demand"] == "record"
+    for state in ("SLD", "SLV"):
+        assert demand_source(doc, state).startswith("record ELC180")
+    assert DIFFERENT_EARTHQUAKES not in doc["warnings"]
+    code, out, err = run(*args)
+    assert code == 0, err
+    assert f"verdict: {doc['classification']}\n" in out
+
+
+def test_code_demand_model_uses_the_models_spectrum_and_says_so(shared_records: Path) -> None:
+    args = ("compare", str(ALTAR), "--record", str(shared_records / "ELC180.AT2"))
+    code, out, err = run(*args, "--code-demand", "model", "--format", "json")
+    assert code == 0, err
+    doc = json.loads(out)
+    assert doc["code_demand"] == "model"
+    for state in ("SLD", "SLV"):
+        assert "[ntc.demand]" in demand_source(doc, state)
+    assert doc["warnings"][0] == DIFFERENT_EARTHQUAKES
+    assert DIFFERENT_EARTHQUAKES == (
+        "the code check used the model's spectrum, not the record: "
+        "the two sides see different earthquakes"
+    )
+    # The classification stays the bare word (--fail-on compares it); the verdict line says
+    # the two sides saw different earthquakes, once (not repeated as a warning).
+    assert doc["classification"] in CLASSIFICATIONS
+    code, out, err = run(*args, "--code-demand", "model")
+    assert code == 0, err
+    assert f"verdict: {doc['classification']} — {DIFFERENT_EARTHQUAKES}" in " ".join(out.split())
+    assert " ".join(out.split()).count(DIFFERENT_EARTHQUAKES) == 1
+
+
+def test_code_demand_model_on_a_model_without_a_code_spectrum_is_refused() -> None:
+    wall = str(ROOT / "examples" / "wall.toml")
+    code, out, err = run("compare", wall, "--record", str(PULSES[0]), "--code-demand", "model")
+    assert code == 2 and out == ""
+    assert err == (
+        f"error: {wall}: --code-demand: the model sets no code spectrum ([ntc.demand] or "
+        '[ntc.site]) (got \'model\'; allowed: "record" (the default), or "model" with a model '
+        "that sets [ntc.demand] or [ntc.site])\n"
+    )
+
+
+def test_the_old_record_demand_flag_is_refused() -> None:
+    # 0.x: no silent alias. The record's spectrum is the default now.
+    code, out, err = run("compare", str(ALTAR), "--record", str(PULSES[0]), "--record-demand")
+    assert code == 2 and out == ""
+    assert err == (
+        "error: --record-demand: removed: the record's spectrum is the code demand by default "
+        "now (allowed: drop --record-demand (--code-demand model uses the model's spectrum))\n"
+    )
+
+
+def test_the_code_demand_choices_are_the_studies() -> None:
+    from rockcli.cli.compare import CODE_DEMANDS
+    from rockcli.studies.compare import CodeDemand
+
+    assert CODE_DEMANDS == tuple(c.value for c in CodeDemand)
 
 
 def test_bad_record_is_one_error_line(tmp_path: Path) -> None:

@@ -60,11 +60,15 @@ def test_a_hazard_grid_without_a_site_is_refused(tmp_path: Path) -> None:
     code, _, err = run("kinematic", WALL, "--record", RECORD, "--hazard-grid", grid)
     assert code == 2
     assert err.startswith("error: --hazard-grid: not used: --record sets the demand")
+    # compare: the record is the code demand unless --code-demand model asks for the model's.
+    code, _, err = run("compare", ALTAR, "--record", RECORD, "--hazard-grid", grid)
+    assert code == 2
+    assert err.startswith("error: --hazard-grid: not used: --record sets the demand")
     code, _, err = run(
-        "compare", ALTAR, "--record", RECORD, "--record-demand", "--hazard-grid", grid
+        "compare", ALTAR, "--record", RECORD, "--code-demand", "model", "--hazard-grid", grid
     )
     assert code == 2
-    assert err.startswith("error: --hazard-grid: not used: --record-demand sets the demand")
+    assert err.startswith(f"error: {ALTAR}: --hazard-grid: not used: no site sets the demand")
 
 
 @pytest.mark.parametrize(

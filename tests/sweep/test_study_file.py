@@ -83,6 +83,22 @@ def test_the_study_loads(write_study: WriteStudy) -> None:
         ),
         (("base =", 'analyses = ["dynamic"]\nbase ='), "analyses[0]: Input should be 'rocking' or"),
         (
+            ("base =", "record_demand = true\nbase ="),
+            "record_demand: removed: each record's spectrum is the code demand by default now "
+            '(got True; allowed: code_demand = "record" (the default) or "model" (the base '
+            "model's code spectrum))",
+        ),
+        (
+            ("base =", 'code_demand = "model"\nbase ='),
+            "code_demand: the base model sets no code spectrum ([ntc.demand] or [ntc.site]) "
+            '(got \'model\'; allowed: "record" (the default), or "model" with a base model '
+            "that sets [ntc.demand] or [ntc.site])",
+        ),
+        (
+            ("base =", 'code_demand = "code"\nbase ='),
+            "code_demand: Input should be 'record' or 'model'",
+        ),
+        (
             ('[[axes]]\npath = "geometry.R"', '[[axes]\npath = "geometry.R"'),
             "line 4, column 7: malformed",
         ),

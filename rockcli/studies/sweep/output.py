@@ -144,7 +144,7 @@ def fingerprint(plan: StudyPlan) -> str:
         "rock": __version__,
         "analyses": plan.analyses,
         "engine": plan.engine,
-        "record_demand": plan.record_demand,
+        "code_demand": plan.code_demand,
         "axes": [(a.name, a.texts, a.values) for a in plan.axes],
         "base": plan.base,
         "records": records,

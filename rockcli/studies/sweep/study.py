@@ -108,6 +108,22 @@ class RecordSpec(Table):
         return value
 
 
+class CodeDemandName(StrEnum):
+    """The study key code_demand (as rockcli.studies.compare.CodeDemand)."""
+
+    RECORD = "record"
+    MODEL = "model"
+
+
+#: A key of older study files and the error that names its replacement (0.x: no silent alias).
+REMOVED_KEYS = {
+    "record_demand": (
+        "removed: each record's spectrum is the code demand by default now",
+        'code_demand = "record" (the default) or "model" (the base model\'s code spectrum)',
+    ),
+}
+
+
 class Study(Table):
     """The whole study file."""
 
@@ -122,11 +138,10 @@ class Study(Table):
         description='"rocking", "kinematic" or both, each once',
     )
     engine: EngineName = Field(EngineName.FAST, description='"fast" or "reference"')
-    record_demand: bool = Field(
-        False,
-        strict=True,
-        description="true (each record's spectrum is the code demand even when the base model "
-        "sets a code spectrum) or false",
+    code_demand: CodeDemandName = Field(
+        CodeDemandName.RECORD,
+        description='"record" (each record\'s spectrum is the code demand: one earthquake on '
+        'both sides) or "model" (the base model\'s [ntc.demand] or [ntc.site])',
     )
     records_dir: str | None = Field(
         None, description="the folder the record paths are relative to (from the study file)"
@@ -191,7 +206,7 @@ class StudyPlan:
     base: dict[str, Any]
     analyses: tuple[str, ...]
     engine: str
-    record_demand: bool
+    code_demand: str
     axes: tuple[Axis, ...]
     records: tuple[RecordSource, ...]
     skipped: tuple[SkippedRecord, ...]
@@ -257,6 +272,9 @@ def _dotted(loc: Sequence[str | int]) -> str:
 
 def validate_study(data: Mapping[str, Any], file: str) -> Study:
     """The study table validated; InputError (the first problem) naming the key."""
+    for key, (problem, allowed) in REMOVED_KEYS.items():
+        if key in data:
+            raise InputError(problem, file=file, where=key, value=data[key], allowed=allowed)
     try:
         return Study.model_validate(data)
     except ValidationError as exc:
@@ -337,6 +355,7 @@ def load_study(
             allowed=f"a model file, relative to the study file ({base_file} is absent)",
         )
     base = read_toml(base_file)
+    _check_code_demand(study, base, file)
     axes = check_axes(study.axes, base, file)
     folder = _records_folder(study, here, records_dir)
     records, skipped = _records(study.records, folder, file, allow_outside)
@@ -354,11 +373,26 @@ def load_study(
         base=base,
         analyses=tuple(str(a) for a in study.analyses),
         engine=str(study.engine),
-        record_demand=study.record_demand,
+        code_demand=str(study.code_demand),
         axes=axes,
         records=records,
         skipped=skipped,
     )
+
+
+def _check_code_demand(study: Study, base: Mapping[str, Any], file: str) -> None:
+    """Refuse code_demand = "model" when the base model sets no code spectrum."""
+    ntc = base.get("ntc")
+    sets = isinstance(ntc, Mapping) and ("demand" in ntc or "site" in ntc)
+    if study.code_demand is CodeDemandName.MODEL and not sets:
+        raise InputError(
+            "the base model sets no code spectrum ([ntc.demand] or [ntc.site])",
+            file=file,
+            where="code_demand",
+            value=str(study.code_demand),
+            allowed='"record" (the default), or "model" with a base model that sets '
+            "[ntc.demand] or [ntc.site]",
+        )
 
 
 def _records_folder(study: Study, here: Path, override: str | None) -> Path:

@@ -202,7 +202,7 @@ def run_case(
     plan: StudyPlan, model: Model, record: Record | None, spectrum: RecordSpectrum | None
 ) -> dict[str, Any]:
     """The analyses of one case: the block, the rocking envelope, the code check."""
-    from rockcli.studies.compare import classify, code_collapse, code_sets_demand, rocking_collapse
+    from rockcli.studies.compare import CodeDemand, classify, code_collapse, rocking_collapse
 
     R, alpha = model.geometry.polar
     row: dict[str, Any] = {"block_R": R, "block_alpha": alpha}
@@ -215,7 +215,7 @@ def run_case(
     if "kinematic" in plan.analyses:
         from rockcli.studies.kinematic import kinematic_model
 
-        own = record is not None and (plan.record_demand or not code_sets_demand(model))
+        own = record is not None and plan.code_demand == CodeDemand.RECORD
         kin = kinematic_model(
             model, record=record if own else None, spectrum=spectrum if own else None
         )
