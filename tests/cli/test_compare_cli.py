@@ -75,7 +75,7 @@ def test_json_reuses_both_schemas(shared_records: Path) -> None:
     rocking_collapse = doc["rocking"]["verdict"] == "overturns"
     assert doc["classification"] == classify(code_collapse, rocking_collapse).value
     # The model sets a code spectrum: the code demand is that, not the record's.
-    assert "[ntc.demand]" in doc["kinematic"]["demand"]["SLV"]
+    assert doc["kinematic"]["demand"]["SLV"]["source"] == "[ntc.demand.SLV]"
 
 
 def test_record_demand_when_the_model_sets_none(tmp_path: Path) -> None:
@@ -91,7 +91,7 @@ def test_record_demand_when_the_model_sets_none(tmp_path: Path) -> None:
     )
     assert code == 0, err
     doc = json.loads(out)
-    assert doc["kinematic"]["demand"]["SLV"].startswith("record ")
+    assert doc["kinematic"]["demand"]["SLV"]["record"] == PULSES[0].stem
 
 
 def test_record_demand_flag_overrides_the_model(shared_records: Path) -> None:
@@ -105,7 +105,7 @@ def test_record_demand_flag_overrides_the_model(shared_records: Path) -> None:
         "json",
     )
     assert code == 0, err
-    assert json.loads(out)["kinematic"]["demand"]["SLV"].startswith("record ELC180")
+    assert json.loads(out)["kinematic"]["demand"]["SLV"]["record"] == "ELC180"
 
 
 def test_bad_record_is_one_error_line(tmp_path: Path) -> None:
