@@ -87,7 +87,7 @@ def record_demand(limit_state: str, spectrum: Spectrum, name: str) -> LimitState
         limit_state=limit_state,
         ag=pga,
         at_ag=lambda ag: ScaledSpectrum(spectrum, ag / pga),
-        source=f"record {name} (its response spectrum; PGA {pga:.4g} g in place of ag·S)",
+        source="its response spectrum, PGA in place of ag·S",
         record=name,
     )
 

@@ -92,7 +92,7 @@ def test_record_gives_its_name_and_pga(shared_records: Path) -> None:
         assert numbers["record"] == "ELC180"
         # 7 digits given: half a unit of the 7th.
         assert numbers["PGA"] == pytest.approx(ELC180_PGA, abs=5e-8)
-        assert numbers["source"].startswith("record ELC180")
+        assert numbers["source"] == "its response spectrum, PGA in place of ag·S"
 
 
 def test_terminal_shows_the_demand_as_a_table() -> None:
