@@ -61,6 +61,9 @@ class LimitStateDemand:
         at_ag: the spectrum for another ag (same F0, Tc*, soil; or the record scaled).
         source: how it was obtained, for the report.
         parameters: (ag, F0, Tc*) when from the code, None for a record.
+        TR: the return period the parameters belong to [years]; None when the model gives
+            the parameters directly, or for a record.
+        record: the record's name when the demand is a record, None for the code spectrum.
     """
 
     limit_state: str
@@ -68,6 +71,8 @@ class LimitStateDemand:
     at_ag: Callable[[float], Spectrum]
     source: str
     parameters: tuple[float, float, float] | None = None
+    TR: float | None = None
+    record: str | None = None
 
     @property
     def spectrum(self) -> Spectrum:
@@ -82,7 +87,8 @@ def record_demand(limit_state: str, spectrum: Spectrum, name: str) -> LimitState
         limit_state=limit_state,
         ag=pga,
         at_ag=lambda ag: ScaledSpectrum(spectrum, ag / pga),
-        source=f"record {name} (its response spectrum; PGA {pga:.4g} g in place of ag·S)",
+        source="its response spectrum, PGA in place of ag·S",
+        record=name,
     )
 
 

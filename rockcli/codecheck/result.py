@@ -71,7 +71,8 @@ class KinematicResult:
             T_SLV, d_SLC, T_SLC …), by name, SI units.
         checks: every verification.
         curve: the capacity curve as rows (θ, d_k, d*, α, α sure, a*).
-        demand: a description of the demand (parameters per limit state, or the record).
+        demand: per limit state, the demand's numbers and their source (TR, ag, F0, Tc*, SS,
+            ST, S, TB, TC, TD; or a record's name and PGA).
         notes: interpretations and warnings to show with the result.
     """
 

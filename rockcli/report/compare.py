@@ -6,7 +6,7 @@ from typing import TYPE_CHECKING, Any
 
 from rockcli import __version__
 from rockcli.records.record import Record
-from rockcli.report.kinematic import ULTIMATE_FIX
+from rockcli.report.kinematic import ULTIMATE_FIX, demand_line
 from rockcli.report.table import Column, Report, Table, format_value
 
 if TYPE_CHECKING:
@@ -155,7 +155,7 @@ def comparison_report(doc: dict[str, Any]) -> Report:
     edition = {"2009": "NTC 2008 + Circ. 617/2009", "2019": "NTC 2018 + Circ. 7/2019"}
     notes = (
         f"code: {edition[kin['edition']]}, Ts/T_SLV as in `rock kinematic`; demand: "
-        + "; ".join(f"{k} {v}" for k, v in kin["demand"].items()),
+        + "; ".join(demand_line(k, v) for k, v in kin["demand"].items()),
         f"rocking: both polarities, engine {roc['engine']['name']}",
     )
     return Report(

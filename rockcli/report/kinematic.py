@@ -78,6 +78,26 @@ CURVE_COLUMNS = (
     Column("alpha_sure", "α sure", "", "{:.5f}"),
     Column("a_star", "a*", "m/s²", "{:.4f}"),
 )
+#: The code spectrum's numbers per limit state (NTC 2018 §3.2.3.2.1).
+SPECTRUM_COLUMNS = (
+    Column("limit_state", "LS"),
+    Column("TR", "TR", "years", "{:.0f}"),
+    Column("ag", "ag", "g", "{:.4f}"),
+    Column("F0", "F0", "", "{:.3f}"),
+    Column("Tc_star", "Tc*", "s", "{:.3f}"),
+    Column("S", "S", "", "{:.3f}"),
+    Column("TB", "TB", "s", "{:.3f}"),
+    Column("TC", "TC", "s", "{:.3f}"),
+    Column("TD", "TD", "s", "{:.3f}"),
+    Column("source", "source", align="left"),
+)
+#: A record as the demand of each limit state.
+RECORD_COLUMNS = (
+    Column("limit_state", "LS"),
+    Column("record", "record", align="left"),
+    Column("PGA", "PGA", "g", "{:.4f}"),
+    Column("source", "source", align="left"),
+)
 QUANTITIES = {
     "du_star": ("ultimate displacement du*", "m"),
     "ds_star": ("ds* = 0.4 du*", "m"),
@@ -110,7 +130,7 @@ def kinematic_report(doc: dict[str, Any]) -> Report:
             if key in doc
         ),
     ]
-    demand = key_value("Demand", [(ls, src, "", "") for ls, src in doc["demand"].items()])
+    demand = demand_table(doc["demand"])
     tables = (
         key_value("Mechanism and equivalent oscillator", items),
         Table("Capacity curve", CURVE_COLUMNS, tuple(doc["curve"])),
@@ -135,6 +155,24 @@ def kinematic_report(doc: dict[str, Any]) -> Report:
         notes=tuple(notes),
         warnings=tuple(doc.get("warnings", ())),
         verdict=verdict_line(doc["edition"], doc["verdict"]),
+    )
+
+
+def demand_table(demand: dict[str, dict[str, Any]]) -> Table:
+    """The demand of each limit state as numbers: the code spectrum's, or the record's."""
+    rows = tuple({"limit_state": ls, **numbers} for ls, numbers in demand.items())
+    is_record = any("record" in row for row in rows)
+    return Table("Demand", RECORD_COLUMNS if is_record else SPECTRUM_COLUMNS, rows)
+
+
+def demand_line(ls: str, numbers: dict[str, Any]) -> str:
+    """One limit state's demand in a sentence: "SLV ag 0.15 g, F0 2.5, Tc* 0.3 s, S 1.2 …"."""
+    if "record" in numbers:
+        return f"{ls} record {numbers['record']}, PGA {numbers['PGA']:.4g} g"
+    tr = "" if numbers["TR"] is None else f"TR {numbers['TR']:.0f} years, "
+    return (
+        f"{ls} {tr}ag {numbers['ag']:.4g} g, F0 {numbers['F0']:.4g}, "
+        f"Tc* {numbers['Tc_star']:.4g} s, S {numbers['S']:.4g} ({numbers['source']})"
     )
 
 

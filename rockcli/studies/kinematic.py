@@ -58,7 +58,12 @@ def governing_capacity(block: Block, settings: NtcSettings) -> Capacity:
 
 
 def code_demand(
-    ls: str, params: tuple[float, float, float], settings: NtcSettings, g: float, source: str
+    ls: str,
+    params: tuple[float, float, float],
+    settings: NtcSettings,
+    g: float,
+    source: str,
+    TR: float | None = None,  # noqa: N803 (the code's symbol)
 ) -> LimitStateDemand:
     """The code's elastic spectrum of one limit state, for any ag with F0 and Tc* fixed."""
     from rockcli.codecheck.spectra import ElasticSpectrum, Soil, Topography
@@ -71,7 +76,35 @@ def code_demand(
         parameters=params,
         source=source,
         at_ag=lambda a: ElasticSpectrum(ag=a, F0=F0, Tc_star=Tc, soil=soil, topography=topo, g=g),
+        TR=TR,
     )
+
+
+def demand_numbers(demand: LimitStateDemand) -> dict[str, object]:
+    """The numbers of one limit state's demand, read from the spectrum the checks use.
+
+    A code spectrum (NTC 2018 §3.2.3.2.1): TR [years] (None when the model gives the
+    parameters), ag [g], F0, Tc* [s], SS, ST, S, TB, TC, TD [s]. A record: its name and PGA [g].
+    Both with the `source` they come from.
+    """
+    from rockcli.codecheck.spectra import ElasticSpectrum
+
+    spectrum = demand.spectrum
+    if demand.record is not None or not isinstance(spectrum, ElasticSpectrum):
+        return {"record": demand.record, "PGA": float(demand.ag), "source": demand.source}
+    return {
+        "TR": None if demand.TR is None else float(demand.TR),
+        "ag": float(spectrum.ag),
+        "F0": float(spectrum.F0),
+        "Tc_star": float(spectrum.Tc_star),
+        "SS": float(spectrum.S_S),
+        "ST": float(spectrum.S_T),
+        "S": float(spectrum.S),
+        "TB": float(spectrum.TB),
+        "TC": float(spectrum.TC),
+        "TD": float(spectrum.TD),
+        "source": demand.source,
+    }
 
 
 def site_demands(
@@ -87,7 +120,7 @@ def site_demands(
         TR = return_period(settings.VN, settings.CU, LimitState(ls), settings.edition)
         params = site_parameters(grid, site[0], site[1], TR)
         out[ls] = code_demand(
-            ls, params, settings, g, f"site {site[0]:.4f} E {site[1]:.4f} N, TR = {TR:.0f} years"
+            ls, params, settings, g, f"hazard grid at {site[0]:.4f} E, {site[1]:.4f} N", TR
         )
     return out
 
@@ -102,7 +135,7 @@ def given_demands(settings: NtcSettings, g: float) -> dict[str, LimitStateDemand
                 where=f"ntc.demand.{ls}",
                 allowed="ag [g], F0, Tc_star [s]",
             )
-        out[ls] = code_demand(ls, settings.demand[ls], settings, g, "[ntc.demand] parameters")
+        out[ls] = code_demand(ls, settings.demand[ls], settings, g, f"[ntc.demand.{ls}]")
     return out
 
 
@@ -188,7 +221,7 @@ def analyse(
         quantities=values,
         checks=tuple(checks),
         curve=tuple(curve_points(cap)),
-        demand={ls: d.source for ls, d in dem.items()},
+        demand={ls: demand_numbers(d) for ls, d in dem.items()},
         notes=tuple(notes),
     )
 
