@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import os
 import tempfile
+from contextlib import suppress
 from pathlib import Path
 
 from rockcli.errors import InputError
@@ -45,7 +46,7 @@ def check_writable(path: str | Path, *, force: bool, where: str | None = None) -
         raise InputError(
             "file exists", file=str(path), where=where, allowed="another path, or --force"
         )
-    parent = target.parent if str(target.parent) else Path(".")
+    parent = target.parent  # Path("out.txt").parent is Path(".")
     if not parent.is_dir():
         raise InputError(
             "the folder does not exist",
@@ -67,7 +68,7 @@ def check_writable(path: str | Path, *, force: bool, where: str | None = None) -
 def write_bytes(path: str | Path, data: bytes, *, where: str | None = None) -> None:
     """Write ``data`` to ``path`` atomically (temporary file + rename; symlinks not followed)."""
     target = Path(path)
-    folder = target.parent if str(target.parent) else Path(".")
+    folder = target.parent
     tmp_name = None
     try:
         fd, tmp_name = tempfile.mkstemp(prefix=f".{target.name}.", suffix=".tmp", dir=folder)
@@ -85,16 +86,10 @@ def write_bytes(path: str | Path, data: bytes, *, where: str | None = None) -> N
         ) from None
     finally:
         if tmp_name is not None:
-            with _ignored():
+            with suppress(OSError):
                 os.unlink(tmp_name)
 
 
 def write_text(path: str | Path, text: str, *, where: str | None = None) -> None:
     """Write UTF-8 ``text`` to ``path`` atomically (see :func:`write_bytes`)."""
     write_bytes(path, text.encode("utf-8"), where=where)
-
-
-def _ignored():
-    from contextlib import suppress
-
-    return suppress(OSError)

@@ -116,3 +116,12 @@ def test_a_non_finite_run_prints_the_report_then_exits_3(
     assert line.endswith(
         "); the result above is not reliable — please report it to the rock maintainers"
     )
+
+
+def test_the_cli_names_the_engines_non_finite_status() -> None:
+    # cli/exits.py spells the status itself so that `rock --help` does not import the engine
+    # (numpy); it must stay the engine's own value.
+    from rockcli.cli.exits import NON_FINITE
+    from rockcli.dynamics.result import RunStatus
+
+    assert NON_FINITE == RunStatus.NONFINITE.value
