@@ -62,6 +62,54 @@ class Restrainer:
 
 
 @dataclass(frozen=True)
+class Load:
+    """A weight carried by or pushing on the block, as a point of the block.
+
+    Circolare 617/2009 §C8A.4.1 and Circolare 7/2019 §C8.7.1.1: the weights P_i bear on the
+    blocks (their weight restores, their mass is shaken with the block), the weights P_j do not
+    bear on them but their masses push them. ``bears`` and ``moves`` say which of the two a
+    load does (both: the load rests on the block and moves with it, a rigid point mass).
+
+    Attributes:
+        name: label shown in reports.
+        weight: weight [N] (mass = weight / g).
+        x_pos: horizontal distance of its point from pivot O (θ > 0), into the block [m].
+        x_neg: the same from pivot O′ (θ < 0), 2b − x_pos [m].
+        z: height of its point above the base [m].
+        bears: its weight rests on the block (vertical load and vertical inertia).
+        moves: its mass follows the block horizontally (horizontal inertia).
+    """
+
+    name: str
+    weight: float
+    x_pos: float
+    x_neg: float
+    z: float
+    bears: bool = True
+    moves: bool = True
+
+
+@dataclass(frozen=True)
+class Thrust:
+    """A horizontal force independent of the earthquake (roof or arch thrust) on the block.
+
+    Attributes:
+        name: label shown in reports.
+        force: its magnitude [N], > 0.
+        direction: the sense of rotation it pushes towards, +1 (θ > 0) or −1 (θ < 0).
+        x_pos, x_neg: horizontal distance of its point from pivot O and from O′ [m].
+        z: height of its point above the base [m].
+    """
+
+    name: str
+    force: float
+    direction: int
+    x_pos: float
+    x_neg: float
+    z: float
+
+
+@dataclass(frozen=True)
 class Block:
     """A rigid rectangular block rocking on a rigid base, with its restrainers.
 
@@ -77,6 +125,8 @@ class Block:
         rebound: r_f, the rebound reduction factor of one-sided motion [-].
         linearized: use sin x ≈ x, cos x ≈ 1 (slender-block approximation).
         restrainers: the horizontal springs.
+        loads: weights carried by or pushing on the block (mass required).
+        thrusts: horizontal forces independent of the earthquake (mass required).
     """
 
     R: float
@@ -89,6 +139,8 @@ class Block:
     rebound: float = 1.0
     linearized: bool = False
     restrainers: tuple[Restrainer, ...] = field(default_factory=tuple)
+    loads: tuple[Load, ...] = field(default_factory=tuple)
+    thrusts: tuple[Thrust, ...] = field(default_factory=tuple)
 
     @property
     def b(self) -> float:
