@@ -13,7 +13,7 @@ from typing import Any
 
 from rockcli.codecheck import rules2009, rules2019
 from rockcli.codecheck.demand import LimitStateDemand, Spectrum, record_demand
-from rockcli.codecheck.kinematic import Capacity, Mechanism, PointLoad, capacity, curve_points
+from rockcli.codecheck.kinematic import Capacity, Mechanism, alpha0, capacity, curve_points
 from rockcli.codecheck.position import position
 from rockcli.codecheck.result import KinematicResult
 from rockcli.errors import InputError
@@ -30,20 +30,10 @@ UNIT_MASS = 1.0
 
 
 def mechanism(block: Block, settings: NtcSettings, side: int) -> Mechanism:
-    """The mechanism on one side, with the extra loads placed on it."""
+    """The mechanism on one side: the block with its loads and thrusts (the model's own)."""
     if block.mass is None:
-        if settings.loads:
-            raise InputError(
-                "extra loads need the block's own weight",
-                where="mass",
-                allowed="a [mass] table with weight [kN] or unit_weight [kN/m³]",
-            )
         block = replace(block, mass=UNIT_MASS)
-    loads = tuple(
-        PointLoad(ld.name, ld.weight, block.b if ld.x is None else ld.x, ld.z, ld.bears)
-        for ld in settings.loads
-    )
-    return Mechanism(block=block, side=side, loads=loads, distributed=settings.distributed)
+    return Mechanism(block=block, side=side, distributed=settings.distributed)
 
 
 def governing_capacity(block: Block, settings: NtcSettings) -> Capacity:
@@ -223,6 +213,7 @@ def analyse(
         curve=tuple(curve_points(cap)),
         demand={ls: demand_numbers(d) for ls, d in dem.items()},
         notes=tuple(notes),
+        alpha0_by_side={str(s): alpha0(mechanism(block, settings, s)) for s in (1, -1)},
     )
 
 
