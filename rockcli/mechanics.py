@@ -458,7 +458,7 @@ def point_table(block: Block) -> tuple[float, ...]:
     return tuple(rows)
 
 
-def point_moments(points, s, sin_a, cos_a):  # type: ignore[no-untyped-def]
+def point_moments(points, s, sin_a, cos_a):
     """Moments about pivot s of the weights, the earthquake and the thrusts at rotation a.
 
     A point at (x, z) from the pivot at rest is, after a rotation a about it, at horizontal
