@@ -112,7 +112,9 @@ def model_document(name: str, kind: str, block: Block, e_rule: str) -> dict[str,
         "impact_rule": impact_rule(block),
         "linearized": block.linearized,
         "uplift_acceleration_g": block.uplift_acceleration,
-        "uplift_acceleration_by_side_g": dict(zip(("1", "-1"), uplift_accelerations(block), strict=True)),
+        "uplift_acceleration_by_side_g": dict(
+            zip(("1", "-1"), uplift_accelerations(block), strict=True)
+        ),
         "e_by_side": {"1": block.restitution(1), "-1": block.restitution(-1)},
         "loads": [
             {
