@@ -11,6 +11,7 @@ from rockcli.cli.options import (
     engine_option,
     exit_if_non_finite,
     force_option,
+    ground_option,
     load_record,
     output_format,
     with_record_options,
@@ -25,6 +26,7 @@ EXIT_OVERTURNS = EXIT_GATE
 @click.argument("model_path", metavar="MODEL", type=click.Path(dir_okay=False))
 @with_record_options()
 @engine_option
+@ground_option
 @click.option(
     "--history",
     "history_path",
@@ -50,6 +52,7 @@ def assess(
     scale,
     pga,
     engine,
+    ground,
     history_path,
     fail_on_overturn,
     plot_path,
@@ -63,21 +66,22 @@ def assess(
     check_outputs(force, history=history_path, plot=plot_path)
     record = load_record(record_path, record_format, dt, units, scale, pga)
     history = history_path is not None or plot_path is not None
-    out = run_assessment_output(model_path, record, engine, history=history)
+    out = run_assessment_output(model_path, record, engine, history=history, ground=ground)
+    shaking = out.shaking or record
     doc = assessment_output_document(out, record)
     if history_path:
         from rockcli.outfile import write_text
         from rockcli.report.assess import history_csv
 
         write_text(
-            history_path, history_csv(out.result.worst, record, doc["model"]), where="--history"
+            history_path, history_csv(out.result.worst, shaking, doc["model"]), where="--history"
         )
         announce_written(history_path)
     if plot_path:
         from rockcli.report.plots import plot_assessment
 
         plot_assessment(
-            doc, out.result.runs, plot_path, record=record, overturn_angle=out.overturn_angle
+            doc, out.result.runs, plot_path, record=shaking, overturn_angle=out.overturn_angle
         )
         announce_written(plot_path)
     from rockcli.report.assess import assessment_report

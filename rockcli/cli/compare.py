@@ -12,6 +12,7 @@ from rockcli.cli.options import (
     engine_option,
     exit_if_non_finite,
     force_option,
+    ground_option,
     hazard_grid_option,
     load_record,
     output_format,
@@ -51,6 +52,7 @@ def refuse_record_demand(record_demand: bool) -> None:
 @with_record_options()
 @edition_option
 @engine_option
+@ground_option
 @click.option(
     "--code-demand",
     type=click.Choice(CODE_DEMANDS),
@@ -83,6 +85,7 @@ def compare(
     pga,
     edition,
     engine,
+    ground,
     code_demand,
     record_demand,
     grid_file,
@@ -114,6 +117,7 @@ def compare(
         grid_file=grid_file,
         code_demand=code_demand,
         history=plot_path is not None,
+        ground=ground,
     )
     doc, rocking = comparison_output_document(out, record), out.rocking
     doc["warnings"] = comparison_warnings(doc)
@@ -121,7 +125,8 @@ def compare(
         from rockcli.report.plots import plot_comparison
 
         runs = rocking.result.runs
-        plot_comparison(doc, runs, plot_path, record=record, overturn_angle=rocking.overturn_angle)
+        shaking = rocking.shaking or record
+        plot_comparison(doc, runs, plot_path, record=shaking, overturn_angle=rocking.overturn_angle)
         announce_written(plot_path)
     show(doc, output, comparison_report)
     exit_if_non_finite(doc["rocking"]["runs"])

@@ -191,6 +191,12 @@ def scale_record(record, scale, pga):
     return record
 
 
+ground_option = click.option(
+    "--ground",
+    is_flag=True,
+    help="For a block at height ([building] Z > 0): rock it on the record itself instead of "
+    "the record's floor motion at its height (the default).",
+)
 force_option = click.option(
     "--force", is_flag=True, help="Overwrite output files that already exist."
 )

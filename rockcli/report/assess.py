@@ -199,7 +199,28 @@ def assessment_document(
 def assessment_output_document(out: AssessmentOutput, record: Record) -> dict[str, Any]:
     """The `rock assess --format json` document of an assess workflow's results."""
     info = model_document(out.name, out.kind, out.block, out.e_rule)
-    return assessment_document(info, record, out.block, out.result, out.warnings)
+    doc = assessment_document(info, record, out.block, out.result, out.warnings)
+    doc["record"] = {**doc["record"], **input_document(out)}
+    return doc
+
+
+def input_document(out: AssessmentOutput) -> dict[str, Any]:
+    """``record.input`` ("ground" or "floor") and, for a floor input, ``record.floor`` (its
+    first mode: T1, psi, gamma, xi, Z) and the notes on how it was made."""
+    if out.floor is None:
+        note = "the record itself, at the block's base" + (
+            " (--ground: the block stands at height; the code check still applies the "
+            "code's at-height rules)"
+            if out.ground
+            else ""
+        )
+        return {"input": "ground", "input_note": note}
+    return {
+        "input": "floor",
+        "floor": out.floor.document(),
+        "input_note": out.floor.label,
+        "floor_notes": list(out.floor.notes),
+    }
 
 
 RUN_ROWS = (
@@ -273,12 +294,12 @@ def assessment_report(doc: dict[str, Any]) -> Report:
             ("frequency parameter p", m["p"], "rad/s", "{:.4g}"),
             ("restitution e", f"{m['e']:.4f} ({m['e_rule']})", "", ""),
             ("impact rule", m["impact_rule"], "", ""),
-            ("uplift acceleration", m["uplift_acceleration_g"], "g", "{:.4f}"),
+            _uplift_row(m),
         ],
     )
     record = record_report(rec).tables[0]
     runs = runs_table(doc["runs"])
-    tables = [block, record, runs]
+    tables = [block, *_loads_tables(m), record, runs]
     springs = tuple(
         {
             **p,
@@ -298,10 +319,13 @@ def assessment_report(doc: dict[str, Any]) -> Report:
             )
         )
     notes = [
+        f"input: {rec['input_note']}" if "input_note" in rec else None,
+        *rec.get("floor_notes", ()),
         f"engine {eng['name']}, rtol {eng['rtol']:g}, atol {eng['atol']:g}, "
         f"rest threshold {eng['rest_velocity']:g} rad/s",
         *rec["notes"],
     ]
+    notes = [n for n in notes if n]
     verdict = _verdict_line(doc)
     return Report(
         title=f"rock assess — {m['name']}",
@@ -310,6 +334,46 @@ def assessment_report(doc: dict[str, Any]) -> Report:
         verdict=verdict,
         warnings=tuple(doc["warnings"]),
     )
+
+
+def _uplift_row(m: dict[str, Any]) -> tuple[str, Any, str, str]:
+    """The uplift acceleration: one value, or one per side when loads or thrusts differ."""
+    by_side = m.get("uplift_acceleration_by_side_g", {})
+    if len(set(by_side.values())) > 1:
+        text = f"{by_side['1']:.4f} towards θ > 0, {by_side['-1']:.4f} towards θ < 0"
+        return ("uplift acceleration", text, "g", "")
+    return ("uplift acceleration", m["uplift_acceleration_g"], "g", "{:.4f}")
+
+
+LOAD_COLUMNS = (
+    Column("name", "load", ""),
+    Column("weight", "weight", "kN", "{:.4g}"),
+    Column("z", "height", "m", "{:.3f}"),
+    Column("x_pos", "from pivot O", "m", "{:.3f}"),
+    Column("bears", "bears", ""),
+    Column("moves", "moves", ""),
+)
+THRUST_COLUMNS = (
+    Column("name", "thrust", ""),
+    Column("force", "force", "kN", "{:.4g}"),
+    Column("z", "height", "m", "{:.3f}"),
+    Column("towards", "towards", ""),
+)
+
+
+def _loads_tables(m: dict[str, Any]) -> list[Table]:
+    """The loads and thrusts on the block, when there are any (kN for reading)."""
+    tables = []
+    if m.get("loads"):
+        rows = tuple({**ld, "weight": ld["weight"] / 1e3} for ld in m["loads"])
+        tables.append(Table("Loads on the block", LOAD_COLUMNS, rows))
+    if m.get("thrusts"):
+        rows = tuple(
+            {**t, "force": t["force"] / 1e3, "towards": "θ > 0" if t["direction"] > 0 else "θ < 0"}
+            for t in m["thrusts"]
+        )
+        tables.append(Table("Thrusts on the block", THRUST_COLUMNS, rows))
+    return tables
 
 
 def _verdict_line(doc: dict[str, Any]) -> str:

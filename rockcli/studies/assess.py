@@ -4,13 +4,16 @@ from __future__ import annotations
 
 import dataclasses
 from dataclasses import dataclass
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from rockcli.dynamics.result import Assessment
 from rockcli.dynamics.settings import Engine, SolverSettings
 from rockcli.mechanics import Block
 from rockcli.model.schema import Model
 from rockcli.records.record import Record
+
+if TYPE_CHECKING:
+    from rockcli.studies.floor import Floor
 
 
 @dataclass(frozen=True)
@@ -24,6 +27,9 @@ class AssessmentOutput:
         result: both polarities (with θ(t), θ̇(t) when asked for).
         overturn_angle: |θ| at which a run counts as overturned [rad] (the model's setting).
         warnings: magnitudes of the model and the record that look like unit slips.
+        floor: the floor whose motion shook the block (None: the record itself, at the base).
+        ground: True when the user asked to run the record at the base of a block at height.
+        shaking: the floor motion the block saw (None: the record itself).
     """
 
     name: str
@@ -33,6 +39,9 @@ class AssessmentOutput:
     result: Assessment
     overturn_angle: float
     warnings: tuple[str, ...] = ()
+    floor: Floor | None = None
+    ground: bool = False
+    shaking: Record | None = None
 
 
 def settings_from(options: Any) -> SolverSettings:
@@ -41,20 +50,29 @@ def settings_from(options: Any) -> SolverSettings:
 
 
 def assess_model_output(
-    model: Model, record: Record, engine: str, *, history: bool = False
+    model: Model,
+    record: Record,
+    engine: str,
+    *,
+    history: bool = False,
+    ground: bool = False,
+    file: str | None = None,
 ) -> AssessmentOutput:
-    """Both polarities of a validated model under a record."""
+    """Both polarities of a validated model under a record: the record itself for a block on
+    the ground (or with ``ground``), its floor motion for a block at height (studies.floor)."""
     from rockcli.dynamics.simulate import assess
     from rockcli.model.derive import describe, solver_options, to_block
     from rockcli.model.plausible import model_warnings
+    from rockcli.studies.floor import block_input
 
+    shaking, floor = block_input(model, record, ground=ground, file=file)
     block = to_block(model)
     settings = settings_from(solver_options(model))
     result = assess(
         block,
-        record.time,
-        record.accel,
-        record.dt,
+        shaking.time,
+        shaking.accel,
+        shaking.dt,
         settings=settings,
         engine=Engine(engine),
         history=history,
@@ -67,6 +85,9 @@ def assess_model_output(
         result,
         settings.overturn_angle,
         warnings=(*model_warnings(model), *record.warnings),
+        floor=floor,
+        ground=ground,
+        shaking=shaking if floor is not None else None,
     )
 
 
@@ -76,9 +97,11 @@ def assess_model(model: Model, record: Record, engine: str) -> Assessment:
 
 
 def run_assessment_output(
-    model_path: str, record: Record, engine: str, *, history: bool = False
+    model_path: str, record: Record, engine: str, *, history: bool = False, ground: bool = False
 ) -> AssessmentOutput:
     """Load the model file and run :func:`assess_model_output`."""
     from rockcli.model.load import load_model
 
-    return assess_model_output(load_model(model_path), record, engine, history=history)
+    return assess_model_output(
+        load_model(model_path), record, engine, history=history, ground=ground, file=model_path
+    )

@@ -118,13 +118,17 @@ def compare_model_output(
     grid_file: str | None = None,
     code_demand: str = CodeDemand.RECORD,
     history: bool = False,
+    ground: bool = False,
+    file: str | None = None,
 ) -> ComparisonOutput:
     """Both analyses of a validated model under a record, and their classification.
 
     One earthquake on both sides: the code's demand is the record's response spectrum, even
     when the model sets a code spectrum; code_demand "model" uses the model's spectrum instead
     (InputError when it sets none). spectrum: the record's, when the caller has it already;
-    history: keep θ(t) of both polarities (for plots).
+    history: keep θ(t) of both polarities (for plots). A block at height rocks on the floor
+    motion of the record (the code check applies the code's at-height rules to the record's
+    spectrum); ground: rock it on the record itself.
     """
     from rockcli.studies.assess import assess_model_output
     from rockcli.studies.kinematic import kinematic_model
@@ -138,7 +142,7 @@ def compare_model_output(
         spectrum=spectrum if own else None,
         grid_file=grid_file,
     )
-    rocking = assess_model_output(model, record, engine, history=history)
+    rocking = assess_model_output(model, record, engine, history=history, ground=ground, file=file)
     kind = classify(code_collapse(kin), rocking_collapse(rocking.result))
     return ComparisonOutput(kin, rocking, kind, CodeDemand(code_demand))
 
@@ -149,4 +153,4 @@ def run_comparison_output(model_path: str, record: Record, **options: Any) -> Co
 
     model = load_model(model_path)
     check_code_demand(model, options.get("code_demand", CodeDemand.RECORD), file=model_path)
-    return compare_model_output(model, record, **options)
+    return compare_model_output(model, record, file=model_path, **options)

@@ -1,0 +1,94 @@
+"""Which motion shakes the block: the ground record, or its floor motion at the block's height.
+
+An element at height Z > 0 in a building feels the acceleration of its floor, not the
+ground's. The code check amplifies its demand through the building's first mode (ψ(Z), γ, T1;
+Circolare 617/2009 §C8A.4.2.3, Circolare 7/2019 §C8.7.1.2 and §C7.2.3); the rocking analysis
+is driven, in the same spirit, by the floor acceleration ü_Z = ü_g + γ·ψ·ẍ₁ of the first mode
+under the ground record (:mod:`rockcli.codecheck.floor`), with the same γ, ψ and T1 the code
+check uses (:func:`rockcli.codecheck.position.position`).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, replace
+
+from rockcli.codecheck.floor import floor_motion
+from rockcli.codecheck.position import position
+from rockcli.errors import InputError
+from rockcli.model.schema import Model
+from rockcli.records.record import Record
+
+
+@dataclass(frozen=True)
+class Floor:
+    """The floor at the block's height: the building's first mode that filters the record.
+
+    Attributes:
+        Z: height of the block's base above the foundation [m].
+        T1: first period of the building [s]. psi: its mode shape at Z [-]. gamma: its
+        participation factor [-]. xi: its damping ratio [-].
+        notes: how defaults were taken (T1 from H, ψ = Z/H, γ from N).
+    """
+
+    Z: float
+    T1: float
+    psi: float
+    gamma: float
+    xi: float
+    notes: tuple[str, ...] = ()
+
+    def document(self) -> dict[str, float]:
+        """The JSON object ``record.floor`` (contract: T1, psi, gamma, xi, Z)."""
+        return {"T1": self.T1, "psi": self.psi, "gamma": self.gamma, "xi": self.xi, "Z": self.Z}
+
+    @property
+    def label(self) -> str:
+        """One line for reports."""
+        return (
+            f"floor motion at Z = {self.Z:g} m: ü_g + γ·ψ·ẍ₁ with T1 = {self.T1:.3g} s, "
+            f"ψ = {self.psi:.3g}, γ = {self.gamma:.3g}, ξ = {self.xi:g}"
+        )
+
+
+def model_floor(model: Model) -> Floor | None:
+    """The floor of the model's [building] at the block's height, or None on the ground."""
+    b = model.building
+    if b is None or b.Z <= 0.0:
+        return None
+    pos = position(b.Z, b.H, b.N, b.T1, b.gamma, b.psi)
+    assert pos.T1 is not None
+    return Floor(Z=b.Z, T1=pos.T1, psi=pos.psi, gamma=pos.gamma, xi=b.damping, notes=pos.notes)
+
+
+def floor_record(rec: Record, floor: Floor) -> Record:
+    """The record's floor motion as a Record whose name and notes say how it was made."""
+    accel = floor_motion(
+        rec.time, rec.accel, T1=floor.T1, psi=floor.psi, gamma=floor.gamma, xi=floor.xi
+    )
+    note = f"{floor.label}, from the ground record {rec.name}"
+    return replace(
+        rec, name=f"{rec.name} at Z = {floor.Z:g} m", accel=accel, notes=(*rec.notes, note)
+    )
+
+
+def block_input(
+    model: Model, record: Record, *, ground: bool = False, file: str | None = None
+) -> tuple[Record, Floor | None]:
+    """The motion the block sees: the floor motion at its height, or the record itself.
+
+    ``ground``: run the record at the base although the block is at height (``--ground``);
+    refused for a block on the ground, where it would change nothing the user asked for.
+    """
+    floor = model_floor(model)
+    if ground:
+        if floor is None:
+            raise InputError(
+                "the block is on the ground already (building.Z = 0 or no [building])",
+                file=file,
+                where="--ground",
+                allowed="--ground only with a block at height ([building] Z > 0)",
+            )
+        return record, None
+    if floor is None:
+        return record, None
+    return floor_record(record, floor), floor
