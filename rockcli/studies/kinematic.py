@@ -30,18 +30,15 @@ UNIT_MASS = 1.0
 
 
 def mechanism(block: Block, settings: NtcSettings, side: int) -> Mechanism:
-    """The mechanism on one side, with the extra loads placed on it."""
+    """The mechanism on one side, with the block's loads placed on it.
+
+    The model requires a [mass] table with loads, so a block without a mass has none.
+    """
     if block.mass is None:
-        if settings.loads:
-            raise InputError(
-                "extra loads need the block's own weight",
-                where="mass",
-                allowed="a [mass] table with weight [kN] or unit_weight [kN/m³]",
-            )
         block = replace(block, mass=UNIT_MASS)
     loads = tuple(
-        PointLoad(ld.name, ld.weight, block.b if ld.x is None else ld.x, ld.z, ld.bears)
-        for ld in settings.loads
+        PointLoad(ld.name, ld.weight, ld.x_pos if side > 0 else ld.x_neg, ld.z, ld.bears)
+        for ld in block.loads
     )
     return Mechanism(block=block, side=side, loads=loads, distributed=settings.distributed)
 
@@ -181,7 +178,8 @@ def analyse(
 ) -> KinematicResult:
     """The kinematic analysis and the checks of the settings' edition."""
     cap = governing_capacity(block, settings)
-    pos = position(settings.Z, settings.H, settings.N, settings.T1, settings.gamma, settings.psi)
+    b = settings.building
+    pos = position(b.Z, b.H, b.N, b.T1, b.gamma, b.psi)
     notes = list(pos.notes)
     if settings.defaults:
         notes.append("defaults (not in the model's [ntc]): " + ", ".join(settings.defaults))
