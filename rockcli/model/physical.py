@@ -130,12 +130,12 @@ class Thrust(Table):
 
     name: str | None = Field(None, min_length=1, description="Label; default 'thrust N'")
     force: float = number("Horizontal force [kN]", ..., ge=MIN_WEIGHT, le=MAX_WEIGHT)
-    height: float | None = height_field()
-    position: Position | None = position_field()
-    from_pivot: float | None = from_pivot_field()
     direction: Direction = Field(
         ..., description="'positive' or 'negative': the sense of rotation it pushes towards"
     )
+    height: float | None = height_field()
+    position: Position | None = position_field()
+    from_pivot: float | None = from_pivot_field()
 
     @model_validator(mode="after")
     def _placed(self) -> Thrust:

@@ -14,7 +14,7 @@ one-sided motion), the brief of the model package (the decisions listed on each 
 from __future__ import annotations
 
 import math
-from collections.abc import Mapping
+from collections.abc import Mapping, Sequence
 from enum import StrEnum
 from typing import Any
 
@@ -439,7 +439,10 @@ class Model(Table):
         self._check_mass()
         self._check_points()
         b, h = self.geometry.half_sizes
-        physical = {"loads": self.loads, "thrusts": self.thrusts}
+        physical: dict[str, Sequence[Load | Thrust]] = {
+            "loads": self.loads,
+            "thrusts": self.thrusts,
+        }
         check_mass(physical, self.mass is not None)
         check_points(physical, 2.0 * b, 2.0 * h, CONTAINMENT_RTOL)
         return self
