@@ -57,6 +57,11 @@ MOVED_KEYS = {
 }
 
 
+def _new_place(key: str) -> str:
+    """The table a key of [ntc] moved to."""
+    return "[[loads]]" if key == "loads" else "[building]"
+
+
 def _scalar(value: Any) -> Any:
     """The value to quote back: a number or text, not a whole table."""
     return value if isinstance(value, int | float | str) else None
@@ -172,11 +177,19 @@ class Ntc(Table):
     @model_validator(mode="before")
     @classmethod
     def _moved_keys(cls, data: Any) -> Any:
-        """The keys that moved out of [ntc] (0.x: an error naming the new place, no alias)."""
-        if isinstance(data, Mapping):
-            for key, (problem, allowed) in MOVED_KEYS.items():
-                if key in data:
-                    raise rule_error(key, problem, allowed, _scalar(data[key]))
+        """The keys that moved out of [ntc] (0.x: an error naming the new place, no alias).
+
+        One error for the first, naming the others too, so that an old file is fixed in one go.
+        """
+        if not isinstance(data, Mapping):
+            return data
+        moved = [key for key in MOVED_KEYS if key in data]
+        if moved:
+            first, others = moved[0], moved[1:]
+            problem, allowed = MOVED_KEYS[first]
+            also = "; also moved: " + ", ".join(f"ntc.{k} to {_new_place(k)}" for k in others)
+            also = also if others else ""
+            raise rule_error(first, problem + also, allowed, _scalar(data[first]))
         return data
 
     @model_validator(mode="after")

@@ -218,6 +218,16 @@ def test_each_old_ntc_key_names_its_new_place(
     assert str(err).count("ntc.") == 1
 
 
+def test_an_old_file_hears_of_every_moved_key_at_once(tmp_path: Path) -> None:
+    # An [ntc] table written for rock before the move: one line, the first key as the error,
+    # the others named with their new place, so the file is fixed in one edit.
+    data = copy.deepcopy(VALID)
+    data["ntc"].update({"Z": 3.0, "H": 9.0, "loads": [{"weight": 5.0, "height": 1.0}]})
+    err = error_of(tmp_path, data)
+    assert err.where == "ntc.Z"
+    assert err.problem.endswith("also moved: ntc.H to [building], ntc.loads to [[loads]]")
+
+
 # --- through the CLI: exit 2 and the one line the user sees ---------------------------------
 
 
