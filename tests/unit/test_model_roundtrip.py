@@ -195,9 +195,11 @@ def test_every_valid_model_derives_a_block(data: dict[str, Any]) -> None:
         assert spring.k_pos >= 0 and spring.k_neg >= 0
         assert spring.r_pos > 0 and spring.r_neg > 0
     # Loads and thrusts within the block: x from each pivot in [0, 2b], z in [0, 2h]
-    # (the strategy draws points inside; 1e-9 relative: the rounding of the products).
+    # (the strategy draws points inside; 1e-9 relative: the rounding of the products and of
+    # b = R sin α, which the block recomputes from the file's thickness).
     for p in (*block.loads, *block.thrusts):
-        assert 0.0 <= p.x_pos <= 2 * block.b * (1 + 1e-9) and 0.0 <= p.x_neg <= 2 * block.b
+        top = 2 * block.b * (1 + 1e-9)
+        assert 0.0 <= p.x_pos <= top and 0.0 <= p.x_neg <= top
         assert 0.0 <= p.z <= 2 * block.h * (1 + 1e-9)
         assert p.x_pos + p.x_neg == pytest.approx(2 * block.b, rel=1e-9)
 
