@@ -145,7 +145,7 @@ class Thrust(Table):
 
 
 class Building(Table):
-    """Where the element stands in the building; read by the code check and the time history."""
+    """Where the element stands in the building: a property of the element, not of a code."""
 
     Z: float = number(
         "Height of the base of the mechanism above the foundation; 0 on the ground [m]",

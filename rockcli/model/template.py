@@ -164,7 +164,7 @@ TABLE_NOTES: dict[str, tuple[str, ...]] = {
         "Optional: fails_at = elongation [m] at which the spring is lost for good.",
     ),
     "building": (
-        "Where the element stands in the building; read by both analyses.",
+        "Where the element stands in the building (a property of the element, not of a code).",
         "Z = 0: on the ground. An element at height: Z > 0 with H, N (or gamma), T1 (default "
         "0.05·H^0.75), psi (default Z/H).",
     ),
