@@ -79,6 +79,7 @@ class Description:
         e: coefficient of restitution in force [-].
         e_rule: how e was obtained, e.g. "0.9 × Housner (1 − 1.5 sin²α)".
         p: frequency parameter √(3g/(4R)) [rad/s].
+        loads, thrusts: the block's loads and thrusts, one row each (SI, as in the block).
     """
 
     b: float
@@ -94,6 +95,8 @@ class Description:
     e: float
     e_rule: str
     p: float
+    loads: tuple[Load, ...] = ()
+    thrusts: tuple[Thrust, ...] = ()
 
 
 def to_block(model: Model) -> Block:
@@ -150,6 +153,8 @@ def describe(model: Model) -> Description:
         e=e,
         e_rule=rule,
         p=math.sqrt(frequency_parameter_sq(R, g)),
+        loads=tuple(to_load(model, i) for i in range(len(model.loads))),
+        thrusts=tuple(to_thrust(model, i) for i in range(len(model.thrusts))),
     )
 
 

@@ -20,7 +20,7 @@ from click.testing import CliRunner
 from rockcli.cli.main import cli
 from rockcli.errors import InputError
 from rockcli.mechanics import NEGATIVE, POSITIVE
-from rockcli.model.derive import to_block
+from rockcli.model.derive import describe, to_block
 from rockcli.model.derive_ntc import building_settings, ntc_settings
 from rockcli.model.load import load_model
 from rockcli.studies.kinematic import mechanism
@@ -103,6 +103,12 @@ def test_the_block_carries_the_thrusts_with_their_direction(tmp_path: Path) -> N
     assert (roof.x_pos, roof.x_neg, roof.z) == (0.25, 0.25, 2.5)
     data = changed(("thrusts", 0, "direction"), "positive")
     assert to_block(load_model(write(tmp_path, data))).thrusts[0].direction == POSITIVE
+
+
+def test_the_description_lists_the_loads_and_thrusts_of_the_block(tmp_path: Path) -> None:
+    model = load_model(write(tmp_path, VALID))
+    block, description = to_block(model), describe(model)
+    assert (description.loads, description.thrusts) == (block.loads, block.thrusts)
 
 
 def test_a_point_on_the_face_within_the_rounding_slack_is_at_zero_from_the_other_pivot(
