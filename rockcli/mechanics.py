@@ -123,6 +123,8 @@ class Block:
         one_sided: True when transverse walls stop the rotation towards one side.
         free_side: with ``one_sided``, the side the block can rotate to (+1 or −1).
         rebound: r_f, the rebound reduction factor of one-sided motion [-].
+        e_neg: e after an impact from side −1, when it differs from ``e`` (loads off the
+            mid-plane change the angular momentum balance of each side); ``None``: ``e``.
         linearized: use sin x ≈ x, cos x ≈ 1 (slender-block approximation).
         restrainers: the horizontal springs.
         loads: weights carried by or pushing on the block (mass required).
@@ -138,6 +140,7 @@ class Block:
     free_side: int = POSITIVE
     rebound: float = 1.0
     linearized: bool = False
+    e_neg: float | None = None
     restrainers: tuple[Restrainer, ...] = field(default_factory=tuple)
     loads: tuple[Load, ...] = field(default_factory=tuple)
     thrusts: tuple[Thrust, ...] = field(default_factory=tuple)
@@ -178,8 +181,17 @@ class Block:
 
     @property
     def uplift_acceleration(self) -> float:
-        """Ground acceleration that starts rocking from rest [g]: tan α (α when linearized)."""
-        return uplift_threshold(self.alpha, self.linearized)
+        """Ground acceleration that starts rocking from rest [g]: the lower of the two sides."""
+        return min(uplift_accelerations(self))
+
+    @property
+    def loaded(self) -> bool:
+        """True when loads or thrusts act on the block (the general equation of motion)."""
+        return bool(self.loads or self.thrusts)
+
+    def restitution(self, s: int) -> float:
+        """Coefficient of restitution of an impact that ends a phase on side s [-]."""
+        return self.e if s > 0 or self.e_neg is None else self.e_neg
 
 
 def frequency_parameter_sq(R: float, g: float) -> float:
@@ -406,3 +418,137 @@ def restrainer_coefficient(k: float, r: float, inertia: float) -> float:
     KSTAB term of Eq. (12), written for any attachment radius (spec/rocking.md, M(θ)).
     """
     return k * r * r / inertia
+
+
+# Columns of a row of the point table (point_table): the block at its centroid, each load,
+# each thrust. Weights [N] that bear on the block and that move with it horizontally, the
+# thrust d·F [N] (d = ±1 its direction), the point's x from pivot O and from O′ [m], its height
+# z [m], and its mass [kg] by how it follows the block: rigidly (full), horizontally only, or
+# vertically only. The block's own rotational inertia I0 is not in the table.
+PT_BEARS, PT_MOVES, PT_PUSH, PT_X_POS, PT_X_NEG, PT_Z = 0, 1, 2, 3, 4, 5
+PT_M_FULL, PT_M_HOR, PT_M_VER = 6, 7, 8
+N_POINT_COLS = 9
+
+
+def point_table(block: Block) -> tuple[float, ...]:
+    """The block, its loads and its thrusts as a flat table of N_POINT_COLS columns per row.
+
+    Row 0 is the block: its weight bears and moves, at its centroid (b, h) from either pivot
+    (its inertia I0 is added apart). A load of mass m = P/g that bears and moves is a rigid
+    point mass; one that only moves (Circolare's P_j) follows the block horizontally; one that
+    only bears follows it vertically. A thrust has no mass. Needs the block's mass.
+    """
+    w = block.weight
+    rows: list[float] = [w, w, 0.0, block.b, block.b, block.h, 0.0, 0.0, 0.0]
+    for ld in block.loads:
+        m = ld.weight / block.g
+        rows += [
+            ld.weight if ld.bears else 0.0,
+            ld.weight if ld.moves else 0.0,
+            0.0,
+            ld.x_pos,
+            ld.x_neg,
+            ld.z,
+            m if ld.bears and ld.moves else 0.0,
+            m if ld.moves and not ld.bears else 0.0,
+            m if ld.bears and not ld.moves else 0.0,
+        ]
+    for th in block.thrusts:
+        rows += [0.0, 0.0, th.direction * th.force, th.x_pos, th.x_neg, th.z, 0.0, 0.0, 0.0]
+    return tuple(rows)
+
+
+def point_moments(points, s, sin_a, cos_a):
+    """Moments about pivot s of the weights, the earthquake and the thrusts at rotation a.
+
+    A point at (x, z) from the pivot at rest is, after a rotation a about it, at horizontal
+    distance X = x cos a − z sin a inside the pivot and at height Y = z cos a + x sin a; its
+    horizontal velocity is −Y·ȧ and its vertical velocity X·ȧ (rigid rotation; Sorrentino,
+    Masiani & Griffith 2008 and DeJong & Dimitrakopoulos 2014 write the overburden wall the
+    same way). Hence, summed over the rows of ``points`` (point_table):
+
+    - G = Σ P_bears·X: restoring moment of the weights that bear (the block: m g R sin(α − a),
+      paper Eq. 1);
+    - H = Σ P_moves·Y: overturning moment of a unit horizontal acceleration (1 g) of the masses
+      that move with the block (the block: m g R cos(α − a));
+    - T = Σ d·F·Y: moment of the thrusts towards θ > 0 (times s: towards side s);
+    - J = Σ m_full (X² + Y²) + m_hor Y² + m_ver X²: rotational inertia added to I0 (kinetic
+      energy ½ J ȧ²);
+    - dJ = dJ/da = 2 Σ (m_hor − m_ver) X Y.
+
+    ``points`` is any flat sequence indexable by integers (a tuple, or a numpy array in the
+    compiled engine). Returns (G, H, T, J, dJ) [N·m, N·m per g, N·m, kg·m², kg·m²/rad].
+    """
+    col = PT_X_POS if s > 0 else PT_X_NEG
+    g = 0.0
+    h = 0.0
+    t = 0.0
+    j = 0.0
+    dj = 0.0
+    for k in range(0, len(points), N_POINT_COLS):
+        x = points[k + col]
+        z = points[k + PT_Z]
+        big_x = x * cos_a - z * sin_a
+        big_y = z * cos_a + x * sin_a
+        g += points[k + PT_BEARS] * big_x
+        h += points[k + PT_MOVES] * big_y
+        t += points[k + PT_PUSH] * big_y
+        m_hor = points[k + PT_M_HOR]
+        m_ver = points[k + PT_M_VER]
+        j += (
+            points[k + PT_M_FULL] * (big_x * big_x + big_y * big_y)
+            + m_hor * big_y * big_y
+            + m_ver * big_x * big_x
+        )
+        dj += 2.0 * (m_hor - m_ver) * big_x * big_y
+    return g, h, t, j, dj
+
+
+def uplift_accelerations(block: Block) -> tuple[float, float]:
+    """(α0⁺, α0⁻): the ground acceleration [g] that starts rocking from rest towards each side.
+
+    Free block: tan α on both sides (α linearized; spec/rocking.md, "Uplift from rest"). With
+    loads and thrusts, from the equation of motion at a = 0 (point_moments): the block leaves
+    rest towards s when s·üg·H(0) + s·T(0) > G(0), so α0_s = (G(0) − s·T(0)) / H(0) — the
+    Circolare's virtual-work multiplier (Circ. 617/2009 Eq. C8A.4.1; Circ. 7/2019 C8.7.1.1)
+    with the thrust as an external force F_h, the same expression by construction.
+    A restrainer with no initial force does not change it.
+    """
+    if not block.loaded:
+        a0 = uplift_threshold(block.alpha, block.linearized)
+        return a0, a0
+    points = point_table(block)
+    out = []
+    for s in (POSITIVE, NEGATIVE):
+        g, h, t, _, _ = point_moments(points, s, 0.0, 1.0)
+        out.append((g - s * t) / h)
+    return out[0], out[1]
+
+
+def impact_restitution(block: Block, s: int) -> float:
+    """Housner's coefficient of restitution for an impact ending a phase on side s, with loads.
+
+    Conservation of angular momentum about the new pivot O′ (Housner 1963; paper Eq. 3): a
+    particle at (x, z) from the old pivot, x′ = 2b − x from the new one, brings
+    m(z² − x·x′)·θ̇⁻ to the momentum about O′ if it moves rigidly (z² alone if it follows the
+    block horizontally only, −x·x′ if vertically only); after the impact the whole turns about
+    O′ with the inertia J′(0) = I0 + Σ m(x′² + z²) (its horizontal and vertical parts likewise).
+    The block alone gives (I0 − 2 m b²)/I0 = 1 − 1.5 sin²α. Returns the ratio θ̇⁺/θ̇⁻
+    (may be ≤ 0 for squat systems; the model clips it at 0).
+    """
+    i0 = block.inertia
+    b, h = block.b, block.h
+    m = block.mass
+    assert m is not None
+    num = m * (4.0 * h * h - 2.0 * b * b) / 3.0
+    den = i0
+    for ld in block.loads:
+        mass = ld.weight / block.g
+        x, x_new = (ld.x_pos, ld.x_neg) if s > 0 else (ld.x_neg, ld.x_pos)
+        if ld.moves:
+            num += mass * ld.z * ld.z
+            den += mass * ld.z * ld.z
+        if ld.bears:
+            num -= mass * x * x_new
+            den += mass * x_new * x_new
+    return num / den

@@ -3,11 +3,12 @@
 Circolare 617/2009 §C8A.4 and Circolare 7/2019 §C8.7.1.1–C8.7.1.5 (the same formulas in both
 editions; spec/ntc.md, "Common"). The block turns about its base edge on side s; weights P_i
 at points (x_i, z_i) from the pivot (x into the block, z up) have virtual displacements
-δx_i = z_i·δθ (horizontal) and δy_i = x_i·δθ (up). The restoring moment of the restrainers is
-the one the rocking engine uses (:mod:`rockcli.mechanics`), so a0*·e*·FC = g·tan α equals
-the engine's uplift threshold by construction.
+δx_i = z_i·δθ (horizontal) and δy_i = x_i·δθ (up). The moments of the weights, loads and
+thrusts (:func:`rockcli.mechanics.point_moments`) and of the restrainers are the very functions
+the rocking engine integrates, so α0 of each side equals the engine's uplift acceleration of
+that side by construction.
 
-Pure and silent: only :mod:`math`.
+Pure and silent: only :mod:`math` and :mod:`rockcli.mechanics`.
 """
 
 from __future__ import annotations
@@ -15,7 +16,13 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from rockcli.mechanics import Block, spring_failure_rotation, spring_moment
+from rockcli.mechanics import (
+    Block,
+    point_moments,
+    point_table,
+    spring_failure_rotation,
+    spring_moment,
+)
 
 #: Rotation searched for the zero of the capacity curve [rad]: beyond π/2 the block is flat.
 THETA_MAX = math.pi / 2
@@ -29,57 +36,46 @@ FAILURE_DROP = 0.5
 
 
 @dataclass(frozen=True)
-class PointLoad:
-    """A weight acting on the mechanism.
-
-    Attributes:
-        name: label. weight: P [N]. x: horizontal distance from the pivot, into the block [m].
-        z: height above the pivot [m]. bears: True if it rests on the block (restoring and
-        overturning); False for a weight Q_k that only pushes it (C8A.4.1; C8.7.1.1).
-    """
-
-    name: str
-    weight: float
-    x: float
-    z: float
-    bears: bool = True
-
-
-@dataclass(frozen=True)
 class Mechanism:
-    """The block turning about one base edge, with its extra weights.
+    """The block turning about one base edge, with its loads and thrusts (``block.loads``,
+    ``block.thrusts``: the model's physical description, shared with the rocking analysis).
 
     Attributes:
-        block: the rigid block and its restrainers (mass required).
+        block: the rigid block, its restrainers, loads and thrusts (mass required).
         side: the side it overturns to (+1: θ > 0, pivot O; −1: θ < 0, pivot O′).
-        loads: extra weights (floors, roof).
         distributed: True when the block's mass is spread over its height for M* and e*
             (e* = 0.75 for a lone rectangle), False when lumped at the centroid (e* = 1).
     """
 
     block: Block
     side: int = 1
-    loads: tuple[PointLoad, ...] = ()
     distributed: bool = False
 
     @property
-    def weights(self) -> tuple[PointLoad, ...]:
-        """The block's own weight at its centroid (b, h), then the extra loads."""
-        own = PointLoad("block", self.block.weight, self.block.b, self.block.h)
-        return (own, *self.loads)
+    def points(self) -> tuple[float, ...]:
+        """The block, its loads and thrusts as the point table (mechanics.point_table)."""
+        return point_table(self.block)
+
+    @property
+    def moving(self) -> tuple[tuple[float, float], ...]:
+        """(P, z) of the weights whose masses move with the block: the block's own at h, then
+        every load that moves (the Circolare's P_i and P_j; a load that only bears is carried
+        horizontally by something else and has no horizontal inertia here)."""
+        own = (self.block.weight, self.block.h)
+        return (own, *((ld.weight, ld.z) for ld in self.block.loads if ld.moves))
 
 
 def alpha0(mech: Mechanism) -> float:
-    """Load multiplier at activation α0 = Σ_bearing P_i x_i / Σ_all P_i z_i [-].
+    """Load multiplier at activation α0 = (Σ_bearing P_i x_i − s·Σ d_h F_h z_h) / Σ_moving P_i z_i.
 
-    Circolare 617/2009 Eq. C8A.4.1 (virtual work α0 ΣP δx − ΣP δy = 0 with δx = z δθ,
-    δy = x δθ; external forces and internal work zero); Circolare 7/2019 §C8.7.1.1 (weights
-    that do not bear on the block only in the denominator). The block alone: tan α.
-    Restrainers without initial force do no virtual work at θ = 0 (spec/ntc.md).
+    Circolare 617/2009 Eq. C8A.4.1 (virtual work α0 ΣP δx − ΣP δy − ΣF_h δ_h = 0 with
+    δx = z δθ, δy = x δθ; internal work zero); Circolare 7/2019 §C8.7.1.1 (weights that do not
+    bear on the block only in the denominator). A thrust pushing towards the side checked does
+    positive work (it lowers α0), one pushing back restores. The block alone: tan α.
+    Restrainers without initial force do no virtual work at θ = 0 (spec/ntc.md). It is
+    :func:`load_multiplier` at θ = 0, the uplift acceleration of the rocking engine.
     """
-    num = sum(p.weight * p.x for p in mech.weights if p.bears)
-    den = sum(p.weight * p.z for p in mech.weights)
-    return num / den
+    return load_multiplier(mech, 0.0)
 
 
 def _moments(mech: Mechanism) -> tuple[float, float]:
@@ -96,8 +92,9 @@ def _moments(mech: Mechanism) -> tuple[float, float]:
             b.weight * b.h**2,
         )
     )
-    first = own_1 + sum(p.weight * p.z for p in mech.loads)
-    second = own_2 + sum(p.weight * p.z**2 for p in mech.loads)
+    loads = mech.moving[1:]
+    first = own_1 + sum(w * z for w, z in loads)
+    second = own_2 + sum(w * z**2 for w, z in loads)
     return first, second
 
 
@@ -111,12 +108,12 @@ def participating_mass(mech: Mechanism) -> float:
 
 
 def e_star(mech: Mechanism) -> float:
-    """Participating mass fraction e* = g M* / Σ P_i [-].
+    """Participating mass fraction e* = g M* / Σ P_i [-], over the weights that move.
 
     Circolare 617/2009 Eq. C8A.4.3; Circolare 7/2019 Eq. C8.7.1.3. Block alone: 1 lumped,
     0.75 spread over the height (spec/ntc.md).
     """
-    total = sum(p.weight for p in mech.weights)
+    total = sum(w for w, _ in mech.moving)
     return mech.block.g * participating_mass(mech) / total
 
 
@@ -171,14 +168,14 @@ def load_multiplier(
 ) -> float:
     """α(θ): the horizontal load multiplier in equilibrium at rotation θ [-].
 
-    α(θ) = [Σ_bearing P_i (x_i cos θ − z_i sin θ) + Σ_k M_k(θ)] / Σ_all P_i (x_i sin θ + z_i cos θ)
-    (spec/ntc.md, "Capacity curve"; equilibrium in the rotated position, Circolare 617/2009
-    §C8A.4.2.3). The block alone: tan(α − θ). M_k: mechanics.spring_moment, as in the engine.
+    α(θ) = [G(θ) − s·T(θ) + Σ_k M_k(θ)] / H(θ), with G = Σ_bearing P_i (x_i cos θ − z_i sin θ),
+    H = Σ_moving P_i (z_i cos θ + x_i sin θ) and T the thrusts' moment
+    (:func:`rockcli.mechanics.point_moments`, the engine's own function; spec/ntc.md, "Capacity
+    curve"; equilibrium in the rotated position, Circolare 617/2009 §C8A.4.2.3). The block
+    alone: tan(α − θ). M_k: mechanics.spring_moment, as in the engine.
     """
-    c, s = math.cos(theta), math.sin(theta)
-    restoring = sum(p.weight * (p.x * c - p.z * s) for p in mech.weights if p.bears)
-    overturning = sum(p.weight * (p.x * s + p.z * c) for p in mech.weights)
-    return (restoring + _spring_moments(mech, theta, sure_only, intact)) / overturning
+    g, h, t, _, _ = point_moments(mech.points, mech.side, math.sin(theta), math.cos(theta))
+    return (g - mech.side * t + _spring_moments(mech, theta, sure_only, intact)) / h
 
 
 def _bisect(f, lo: float, hi: float) -> float:
@@ -228,8 +225,7 @@ def failure_rotations(mech: Mechanism) -> list[tuple[str, float, float]]:
 
 
 def _overturning(mech: Mechanism, theta: float) -> float:
-    c, s = math.cos(theta), math.sin(theta)
-    return sum(p.weight * (p.x * s + p.z * c) for p in mech.weights)
+    return point_moments(mech.points, mech.side, math.sin(theta), math.cos(theta))[1]
 
 
 @dataclass(frozen=True)

@@ -74,6 +74,8 @@ class KinematicResult:
         demand: per limit state, the demand's numbers and their source (TR, ag, F0, Tc*, SS,
             ST, S, TB, TC, TD; or a record's name and PGA).
         notes: interpretations and warnings to show with the result.
+        alpha0_by_side: α0 towards each side, keys "1" (θ > 0) and "-1" (θ < 0): loads off the
+            mid-plane and thrusts make them differ.
     """
 
     edition: str
@@ -89,6 +91,7 @@ class KinematicResult:
     curve: tuple[dict[str, float], ...]
     demand: dict[str, object]
     notes: tuple[str, ...] = field(default_factory=tuple)
+    alpha0_by_side: dict[str, float] = field(default_factory=dict)
 
     def verdict(self) -> dict[str, bool | None]:
         """DLS and ULS satisfied? (None: not evaluated).

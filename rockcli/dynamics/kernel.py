@@ -47,11 +47,17 @@ for _fn in (
     mechanics.spring_elongation_trig,
     mechanics.spring_moment_trig,
     mechanics.spring_elongation,
+    mechanics.point_moments,  # loaded blocks only; numba's IR inlining of its loop misfires
 ):
     register_jitable(_fn)
-for _array_fn in (rules.spring_on_side, rules.spring_trig_on_side, rules.ground_acceleration):
+for _array_fn in (
+    rules.spring_on_side,
+    rules.spring_trig_on_side,
+    rules.ground_acceleration,
+):
     register_jitable(inline="always")(_array_fn)
 _rhs = njit(cache=CACHE, inline="always")(rules.angular_acceleration)
+_loaded_rhs = njit(cache=CACHE, inline="always")(rules.loaded_angular_acceleration)
 _ground = njit(cache=CACHE, inline="always")(rules.ground_acceleration)
 _uplift_in_interval = njit(cache=CACHE, inline="always")(rules.uplift_in_interval)
 _after_impact = njit(cache=CACHE, inline="always")(rules.velocity_after_impact)
@@ -124,11 +130,22 @@ DENSE_P = np.array(
 
 
 @njit(cache=CACHE, inline=INLINE)
-def _stage(th, s, ag, par, springs, alive):
-    """θ̈ at rotation θ on side s under ground acceleration ag [g]."""
-    return _rhs(
+def _accel(a, s, om, ag, alpha, sin_alpha, cos_alpha, p2, lin, springs, alive, inv_i0, i0, points):
+    """θ̈ at rotation a = s·θ, velocity θ̇ = om, ground ag [g]: the free block's equation (paper
+    Eq. 2, unchanged bit for bit) or, with loads or thrusts (a non-empty point table), the
+    general one (rules.loaded_angular_acceleration)."""
+    if points.size > 0:
+        return _loaded_rhs(a, s, om, ag, points, i0, springs, alive)
+    return _rhs(a, s, ag, alpha, sin_alpha, cos_alpha, p2, lin, springs, alive, inv_i0)
+
+
+@njit(cache=CACHE, inline=INLINE)
+def _stage(th, om, s, ag, par, springs, alive, points):
+    """θ̈ at rotation θ, velocity θ̇ on side s under ground acceleration ag [g]."""
+    return _accel(
         s * th,
         s,
+        om,
         ag,
         par[L.P_ALPHA],
         par[L.P_SIN_ALPHA],
@@ -138,17 +155,19 @@ def _stage(th, s, ag, par, springs, alive):
         springs,
         alive,
         par[L.P_INV_I0],
+        par[L.P_I0],
+        points,
     )
 
 
 @njit(cache=CACHE, inline=INLINE)
-def _stage_at(t, th, s, i, times, accel, pol, par, springs, alive):
-    """θ̈ at (t, θ) on side s, t inside sample interval i."""
-    return _stage(th, s, _ground(t, i, times, accel, pol), par, springs, alive)
+def _stage_at(t, th, om, s, i, times, accel, pol, par, springs, alive, points):
+    """θ̈ at (t, θ, θ̇) on side s, t inside sample interval i."""
+    return _stage(th, om, s, _ground(t, i, times, accel, pol), par, springs, alive, points)
 
 
 @njit(cache=CACHE, inline=INLINE)
-def _dp5_step(th, om, f1, h, s, g0, gs, par, springs, alive, k_th, k_om):
+def _dp5_step(th, om, f1, h, s, g0, gs, par, springs, alive, points, k_th, k_om):
     """One Dormand–Prince step of size h; fills the stage slopes; returns (θ, θ̇, θ̈, error norm).
 
     The state is (θ, θ̇); slopes of θ are θ̇ at the stages, slopes of θ̇ are θ̈. The ground
@@ -161,41 +180,122 @@ def _dp5_step(th, om, f1, h, s, g0, gs, par, springs, alive, k_th, k_om):
     p2 = par[L.P_P2]
     lin = par[L.P_LINEAR] != 0.0
     inv_i0 = par[L.P_INV_I0]
+    i0 = par[L.P_I0]
     k_th[0] = om
     k_om[0] = f1
     w2, v2 = th + h * A21 * k_th[0], om + h * A21 * k_om[0]
     k_th[1] = v2
-    k_om[1] = _rhs(
-        s * w2, s, g0 + gs * (C2 * h), alpha, sin_alpha, cos_alpha, p2, lin, springs, alive, inv_i0
+    k_om[1] = _accel(
+        s * w2,
+        s,
+        v2,
+        g0 + gs * (C2 * h),
+        alpha,
+        sin_alpha,
+        cos_alpha,
+        p2,
+        lin,
+        springs,
+        alive,
+        inv_i0,
+        i0,
+        points,
     )
     w3 = th + h * (A31 * k_th[0] + A32 * k_th[1])
     v3 = om + h * (A31 * k_om[0] + A32 * k_om[1])
     k_th[2] = v3
-    k_om[2] = _rhs(
-        s * w3, s, g0 + gs * (C3 * h), alpha, sin_alpha, cos_alpha, p2, lin, springs, alive, inv_i0
+    k_om[2] = _accel(
+        s * w3,
+        s,
+        v3,
+        g0 + gs * (C3 * h),
+        alpha,
+        sin_alpha,
+        cos_alpha,
+        p2,
+        lin,
+        springs,
+        alive,
+        inv_i0,
+        i0,
+        points,
     )
     w4 = th + h * (A41 * k_th[0] + A42 * k_th[1] + A43 * k_th[2])
     v4 = om + h * (A41 * k_om[0] + A42 * k_om[1] + A43 * k_om[2])
     k_th[3] = v4
-    k_om[3] = _rhs(
-        s * w4, s, g0 + gs * (C4 * h), alpha, sin_alpha, cos_alpha, p2, lin, springs, alive, inv_i0
+    k_om[3] = _accel(
+        s * w4,
+        s,
+        v4,
+        g0 + gs * (C4 * h),
+        alpha,
+        sin_alpha,
+        cos_alpha,
+        p2,
+        lin,
+        springs,
+        alive,
+        inv_i0,
+        i0,
+        points,
     )
     w5 = th + h * (A51 * k_th[0] + A52 * k_th[1] + A53 * k_th[2] + A54 * k_th[3])
     v5 = om + h * (A51 * k_om[0] + A52 * k_om[1] + A53 * k_om[2] + A54 * k_om[3])
     k_th[4] = v5
-    k_om[4] = _rhs(
-        s * w5, s, g0 + gs * (C5 * h), alpha, sin_alpha, cos_alpha, p2, lin, springs, alive, inv_i0
+    k_om[4] = _accel(
+        s * w5,
+        s,
+        v5,
+        g0 + gs * (C5 * h),
+        alpha,
+        sin_alpha,
+        cos_alpha,
+        p2,
+        lin,
+        springs,
+        alive,
+        inv_i0,
+        i0,
+        points,
     )
     w6 = th + h * (A61 * k_th[0] + A62 * k_th[1] + A63 * k_th[2] + A64 * k_th[3] + A65 * k_th[4])
     v6 = om + h * (A61 * k_om[0] + A62 * k_om[1] + A63 * k_om[2] + A64 * k_om[3] + A65 * k_om[4])
     k_th[5] = v6
-    k_om[5] = _rhs(
-        s * w6, s, g0 + gs * h, alpha, sin_alpha, cos_alpha, p2, lin, springs, alive, inv_i0
+    k_om[5] = _accel(
+        s * w6,
+        s,
+        v6,
+        g0 + gs * h,
+        alpha,
+        sin_alpha,
+        cos_alpha,
+        p2,
+        lin,
+        springs,
+        alive,
+        inv_i0,
+        i0,
+        points,
     )
     th1 = th + h * (B1 * k_th[0] + B3 * k_th[2] + B4 * k_th[3] + B5 * k_th[4] + B6 * k_th[5])
     om1 = om + h * (B1 * k_om[0] + B3 * k_om[2] + B4 * k_om[3] + B5 * k_om[4] + B6 * k_om[5])
     k_th[6] = om1
-    f7 = _rhs(s * th1, s, g0 + gs * h, alpha, sin_alpha, cos_alpha, p2, lin, springs, alive, inv_i0)
+    f7 = _accel(
+        s * th1,
+        s,
+        om1,
+        g0 + gs * h,
+        alpha,
+        sin_alpha,
+        cos_alpha,
+        p2,
+        lin,
+        springs,
+        alive,
+        inv_i0,
+        i0,
+        points,
+    )
     k_om[6] = f7
     rtol = par[L.P_RTOL]
     atol = par[L.P_ATOL]
@@ -392,7 +492,7 @@ def _scan_sampled(
 
 
 @njit(cache=CACHE)
-def _next_uplift(t, i, times, accel, pol, par):
+def _next_uplift(t, i, times, accel, pol, par, loaded):
     """From rest at time t in interval i: (τ, side, interval) of the next uplift, side 0 if none.
 
     The acceleration is linear between samples, so it can first exceed the threshold inside
@@ -400,19 +500,21 @@ def _next_uplift(t, i, times, accel, pol, par):
     crossing is located exactly in the first interval whose end exceeds it.
     """
     thr = par[L.P_ALPHA] if par[L.P_LINEAR] != 0.0 else math.tan(par[L.P_ALPHA])
+    thr_pos = par[L.P_UPLIFT_POS] if loaded else thr
+    thr_neg = par[L.P_UPLIFT_NEG] if loaded else thr
     one_sided = int(par[L.P_ONE_SIDED])
     free_side = int(par[L.P_FREE_SIDE])
     n = times.size
-    tau, side = _uplift_in_interval(t, i, times, accel, pol, thr, one_sided, free_side)
+    tau, side = _uplift_in_interval(t, i, times, accel, pol, thr_pos, thr_neg, one_sided, free_side)
     if side != 0:
         return tau, side, i
     up = one_sided == 0 or free_side > 0
     down = one_sided == 0 or free_side < 0
     for k in range(i + 2, n):
         v = pol * accel[k]
-        if (up and v > thr) or (down and v < -thr):
+        if (up and v > thr_pos) or (down and v < -thr_neg):
             tau, side = _uplift_in_interval(
-                times[k - 1], k - 1, times, accel, pol, thr, one_sided, free_side
+                times[k - 1], k - 1, times, accel, pol, thr_pos, thr_neg, one_sided, free_side
             )
             return tau, side, k - 1
     return times[n - 1], 0, n - 1
@@ -484,13 +586,17 @@ def _nonfinite_peak_force(spring_out):
 
 
 @njit(cache=CACHE)
-def integrate(times, accel, pol, par, springs, alive, hist_th, hist_om, out_f, out_i, spring_out):
+def integrate(
+    times, accel, pol, par, springs, points, alive, hist_th, hist_om, out_f, out_i, spring_out
+):
     """Integrate one rocking run over the sample times, from rest at times[0].
 
     Args:
         times, accel: sample times [s] and ground acceleration [g] (tail included).
         pol: polarity, +1 or −1 (multiplies the acceleration).
         par: parameter vector (P_* layout). springs: packed restrainer table (rules.py).
+        points: flat point table of the block, its loads and thrusts (mechanics.point_table);
+            empty for a block without loads and thrusts (the free block's equation).
         alive: int array, 1 per intact restrainer (updated on failure).
         hist_th, hist_om: θ and θ̇ at every sample time (size 1 when not wanted).
         out_f, out_i, spring_out: outputs (O_*, I_*, S_* layouts).
@@ -527,7 +633,7 @@ def integrate(times, accel, pol, par, springs, alive, hist_th, hist_om, out_f, o
     if s != 0:
         out_f[L.O_T_UPLIFT] = t
         _update_peak(s * th, s, out_f, spring_out, springs, alive, par[L.P_LINEAR] != 0.0)
-        f = _stage_at(t, th, s, i, times, accel, pol, par, springs, alive)
+        f = _stage_at(t, th, om, s, i, times, accel, pol, par, springs, alive, points)
         if hist_th.size > 1:
             hist_th[0] = th
             hist_om[0] = om
@@ -536,7 +642,7 @@ def integrate(times, accel, pol, par, springs, alive, hist_th, hist_om, out_f, o
     lowest = _lowest_level(s, par, springs, alive)
     while i < n - 1:
         if s == 0:
-            tau, side, j = _next_uplift(t, i, times, accel, pol, par)
+            tau, side, j = _next_uplift(t, i, times, accel, pol, par, points.size > 0)
             _store_rest(hist_th, hist_om, i + 1, j)
             i = j
             if side == 0:
@@ -549,7 +655,7 @@ def integrate(times, accel, pol, par, springs, alive, hist_th, hist_om, out_f, o
             out_i[L.I_UPLIFTS] += 1
             if out_i[L.I_UPLIFTS] == 1:
                 out_f[L.O_T_UPLIFT] = tau
-            f = _stage_at(t, th, s, i, times, accel, pol, par, springs, alive)
+            f = _stage_at(t, th, om, s, i, times, accel, pol, par, springs, alive, points)
             lowest = _lowest_level(s, par, springs, alive)
             continue
         if not math.isfinite(f):  # θ̈ is NaN when θ is; a bad θ̇ shows in the error estimate
@@ -569,13 +675,15 @@ def integrate(times, accel, pol, par, springs, alive, hist_th, hist_om, out_f, o
             if hist_th.size > 1:
                 hist_th[i] = th
                 hist_om[i] = om
-            f = _stage_at(t, th, s, i, times, accel, pol, par, springs, alive)
+            f = _stage_at(t, th, om, s, i, times, accel, pol, par, springs, alive, points)
             continue
         h_try = min(h, gap)
         clipped = h_try < h
         gs = pol * slopes[i]
         g0 = pol * accel[i] + gs * (t - times[i])
-        th1, om1, f1, err = _dp5_step(th, om, f, h_try, s, g0, gs, par, springs, alive, k_th, k_om)
+        th1, om1, f1, err = _dp5_step(
+            th, om, f, h_try, s, g0, gs, par, springs, alive, points, k_th, k_om
+        )
         if not err <= 1.0:  # too large, or NaN
             out_i[L.I_REJECTED] += 1
             if err > 1.0:
@@ -652,7 +760,7 @@ def integrate(times, accel, pol, par, springs, alive, hist_th, hist_om, out_f, o
             spring_out[row, L.S_T_FAIL] = t_ev
             th = th_ev
             om = om_ev
-            f = _stage_at(t, th, s, i, times, accel, pol, par, springs, alive)
+            f = _stage_at(t, th, om, s, i, times, accel, pol, par, springs, alive, points)
             continue
         if kind == L.EV_UNRESOLVED:
             # An excursion shorter than UNRESOLVED_MIN_STEP: rest, and look for the next uplift
@@ -662,7 +770,8 @@ def integrate(times, accel, pol, par, springs, alive, hist_th, hist_om, out_f, o
             continue
         # impact at θ = 0
         out_i[L.I_IMPACTS] += 1
-        om, s = _after_impact(om_ev, s, par[L.P_E], int(par[L.P_ONE_SIDED]), par[L.P_REBOUND])
+        e = par[L.P_E] if s > 0 else par[L.P_E_NEG]
+        om, s = _after_impact(om_ev, s, e, int(par[L.P_ONE_SIDED]), par[L.P_REBOUND])
         th = 0.0
         if abs(om) < par[L.P_REST]:
             s = 0
@@ -671,7 +780,7 @@ def integrate(times, accel, pol, par, springs, alive, hist_th, hist_om, out_f, o
             status = L.STATUS_EVENT_LIMIT
             break
         else:
-            f = _stage_at(t, th, s, i, times, accel, pol, par, springs, alive)
+            f = _stage_at(t, th, om, s, i, times, accel, pol, par, springs, alive, points)
             lowest = _lowest_level(s, par, springs, alive)
     if s != 0 and status != L.STATUS_OVERTURNED:  # a NaN state updates no peak
         _update_peak(s * th, s, out_f, spring_out, springs, alive, lin)

@@ -5,7 +5,10 @@ P_ALPHA, P_P2, P_E, P_ONE_SIDED, P_FREE_SIDE, P_REBOUND, P_LINEAR = 0, 1, 2, 3, 
 P_OVERTURN, P_RTOL, P_ATOL, P_REST, P_INV_I0, P_MAX_EVENTS, P_MAX_STEPS = 7, 8, 9, 10, 11, 12, 13
 P_THETA0, P_OMEGA0 = 14, 15  # initial state (free-rocking tests); 0, 0 = at rest
 P_SIN_ALPHA, P_COS_ALPHA = 16, 17
-N_PARAMS = 18
+# With loads or thrusts: the block's own I0 [kg·m²], the uplift acceleration of each side [g]
+# and the coefficient of restitution of an impact from side −1 (P_E: from side +1).
+P_I0, P_UPLIFT_POS, P_UPLIFT_NEG, P_E_NEG = 18, 19, 20, 21
+N_PARAMS = 22
 
 # Float outputs.
 O_MAX_A, O_THETA_MAX, O_THETA_MIN, O_MAX_OMEGA, O_T_OVERTURN, O_T_UPLIFT, O_T_END = range(7)

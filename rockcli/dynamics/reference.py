@@ -39,9 +39,12 @@ class _OutOfBudget(Exception):
 class _Phase:
     """Mutable state of the reference run."""
 
-    def __init__(self, par: np.ndarray, springs: np.ndarray, alive: np.ndarray) -> None:
+    def __init__(
+        self, par: np.ndarray, springs: np.ndarray, points: np.ndarray, alive: np.ndarray
+    ) -> None:
         self.par = par
         self.springs = springs
+        self.points = points
         self.alive = alive
         self.lin = bool(par[L.P_LINEAR])
         self.s = 0
@@ -59,15 +62,28 @@ def _rhs(phase: _Phase, t0: float, g0: float, gs: float):
         phase.evals += 1
         if phase.evals > phase.max_evals:
             raise _OutOfBudget
-        return [y[1], _acceleration(phase, g0 + gs * (t - t0), y[0])]
+        return [y[1], _acceleration(phase, g0 + gs * (t - t0), y[0], y[1])]
 
     return f
 
 
-def _acceleration(phase: _Phase, ag: float, th: float) -> float:
-    """θ̈ at rotation θ under ground acceleration ag [g]; NaN where math refuses (sin ±inf)."""
+def _acceleration(phase: _Phase, ag: float, th: float, om: float) -> float:
+    """θ̈ at rotation θ, velocity θ̇ under ground acceleration ag [g]; NaN where math refuses."""
     par = phase.par
     try:
+        if phase.points.size:
+            return float(
+                rules.loaded_angular_acceleration(
+                    phase.s * th,
+                    phase.s,
+                    om,
+                    ag,
+                    phase.points,
+                    par[L.P_I0],
+                    phase.springs,
+                    phase.alive,
+                )
+            )
         return float(
             rules.angular_acceleration(
                 phase.s * th,
@@ -101,7 +117,7 @@ def _nonfinite_quantity(phase: _Phase, ag: float, th: float, om: float) -> int:
                 return L.NF_FORCE + j
     if not math.isfinite(ag):
         return L.NF_GROUND
-    if not math.isfinite(_acceleration(phase, ag, th)):
+    if not math.isfinite(_acceleration(phase, ag, th, om)):
         return L.NF_ACCEL
     return L.NF_ERROR
 
@@ -198,11 +214,22 @@ def _interval(phase, i, times, accel, pol, out_f, out_i, spring_out):
     t1 = times[i + 1]
     gs = pol * (accel[i + 1] - accel[i]) / (t1 - t)
     thr = par[L.P_ALPHA] if phase.lin else math.tan(par[L.P_ALPHA])
+    thr_pos, thr_neg = (
+        (par[L.P_UPLIFT_POS], par[L.P_UPLIFT_NEG]) if phase.points.size else (thr, thr)
+    )
     while t1 - t > GAP_FRACTION * (t1 - times[i]):
         phase.t = t
         if phase.s == 0:
             tau, side = rules.uplift_in_interval(
-                t, i, times, accel, pol, thr, int(par[L.P_ONE_SIDED]), int(par[L.P_FREE_SIDE])
+                t,
+                i,
+                times,
+                accel,
+                pol,
+                thr_pos,
+                thr_neg,
+                int(par[L.P_ONE_SIDED]),
+                int(par[L.P_FREE_SIDE]),
             )
             if side == 0:
                 return None
@@ -247,7 +274,7 @@ def _check_start(phase, t, g0, gs, out_f, out_i):
         and math.isfinite(om)
         and math.isfinite(g0)
         and math.isfinite(gs)
-        and math.isfinite(_acceleration(phase, g0, th))
+        and math.isfinite(_acceleration(phase, g0, th, om))
     ):
         return None
     out_f[L.O_T_END] = t
@@ -262,7 +289,7 @@ def _failed(phase, sol, g0, gs, out_f, out_i):
     th, om = float(sol.y[0, -1]), float(sol.y[1, -1])
     ag = g0 + gs * (t - float(sol.t[0]))
     finite = math.isfinite(th) and math.isfinite(om) and math.isfinite(ag)
-    if finite and math.isfinite(_acceleration(phase, ag, th)):
+    if finite and math.isfinite(_acceleration(phase, ag, th, om)):
         return L.STATUS_STEP_LIMIT  # the step size fell below the spacing of the times
     out_i[L.I_NONFINITE] = _nonfinite_quantity(phase, ag, th, om)
     return L.STATUS_NONFINITE
@@ -282,8 +309,9 @@ def _apply_event(phase, t, y, kind, row, out_f, out_i, spring_out):
         phase.th, phase.om, phase.restart = float(y[0]), float(y[1]), True
         return None
     out_i[L.I_IMPACTS] += 1
+    e = par[L.P_E] if phase.s > 0 else par[L.P_E_NEG]
     om, s = rules.velocity_after_impact(
-        float(y[1]), phase.s, par[L.P_E], int(par[L.P_ONE_SIDED]), par[L.P_REBOUND]
+        float(y[1]), phase.s, e, int(par[L.P_ONE_SIDED]), par[L.P_REBOUND]
     )
     phase.th, phase.om, phase.s, phase.restart = 0.0, om, s, True
     if abs(om) < par[L.P_REST]:
@@ -295,7 +323,7 @@ def _apply_event(phase, t, y, kind, row, out_f, out_i, spring_out):
 
 
 def integrate_reference(
-    times, accel, pol, par, springs, alive, hist_th, hist_om, out_f, out_i, spring_out
+    times, accel, pol, par, springs, points, alive, hist_th, hist_om, out_f, out_i, spring_out
 ):
     """Same contract as :func:`rockcli.dynamics.kernel.integrate` (arrays filled in place).
 
@@ -303,12 +331,25 @@ def integrate_reference(
     """
     with np.errstate(all="ignore"):
         _integrate(
-            times, accel, pol, par, springs, alive, hist_th, hist_om, out_f, out_i, spring_out
+            times,
+            accel,
+            pol,
+            par,
+            springs,
+            points,
+            alive,
+            hist_th,
+            hist_om,
+            out_f,
+            out_i,
+            spring_out,
         )
 
 
-def _integrate(times, accel, pol, par, springs, alive, hist_th, hist_om, out_f, out_i, spring_out):
-    phase = _Phase(par, springs, alive)
+def _integrate(
+    times, accel, pol, par, springs, points, alive, hist_th, hist_om, out_f, out_i, spring_out
+):
+    phase = _Phase(par, springs, points, alive)
     out_f[:] = 0.0
     out_f[L.O_T_OVERTURN] = math.nan
     out_f[L.O_T_UPLIFT] = math.nan

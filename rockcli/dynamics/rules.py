@@ -22,6 +22,7 @@ import math
 from rockcli.mechanics import (
     gravity_moment_ratio_trig,
     ground_moment_ratio_trig,
+    point_moments,
     spring_elongation,
     spring_moment_trig,
 )
@@ -102,6 +103,37 @@ def angular_acceleration(
     return acc
 
 
+def loaded_angular_acceleration(a, s, om, ag, points, i0, springs, alive):
+    """θ̈ of a block with loads or thrusts on pivot side s at rotation a = s·θ, velocity θ̇ = om.
+
+    Lagrange's equation for the one coordinate a (kinetic energy ½ [I0 + J(a)] ȧ², potential
+    of the bearing weights, generalised forces of the earthquake, the thrusts and the springs;
+    docs/physics.md, "Loads and thrusts"):
+
+        [I0 + J(a)]·ä + ½ J′(a)·ȧ² = −G(a) + s·T(a) + s·üg·H(a) − Σ_k M_k(a),   θ̈ = s·ä
+
+    with G, H, T, J, J′ from :func:`rockcli.mechanics.point_moments` (the very function of the
+    capacity curve) and M_k the springs' restoring moments (spec/rocking.md). Without loads
+    and thrusts it is paper Eq. (2): G = m g R sin(α − a), H = m g R cos(α − a), J = 0.
+
+    Args:
+        a: rotation about the active pivot [rad]. s: pivot side ±1. om: θ̇ [rad/s].
+        ag: ground acceleration, polarity applied [g]. points: flat point table.
+        i0: the block's own polar moment of inertia about a base corner [kg·m²].
+        springs, alive: as in :func:`angular_acceleration`.
+    """
+    sin_a = math.sin(a)
+    cos_a = math.cos(a)
+    g, h, t, j, dj = point_moments(points, s, sin_a, cos_a)
+    moment = -g + s * t + s * ag * h - 0.5 * dj * om * om
+    for k in range(springs.shape[0]):
+        if alive[k] != 0:
+            kk, r, sin_phi, cos_phi = spring_trig_on_side(springs, k, s)
+            if kk != 0.0:
+                moment -= spring_moment_trig(kk, r, sin_phi, cos_phi, a, sin_a, cos_a, False)
+    return s * moment / (i0 + j)
+
+
 def ground_acceleration(t, i, times, accel, polarity):
     """Ground acceleration at time t inside sample interval i, linear between samples [g].
 
@@ -113,11 +145,12 @@ def ground_acceleration(t, i, times, accel, polarity):
     return polarity * (accel[i] + (accel[i + 1] - accel[i]) * w)
 
 
-def uplift_in_interval(t, i, times, accel, polarity, threshold, one_sided, free_side):
+def uplift_in_interval(t, i, times, accel, polarity, thr_pos, thr_neg, one_sided, free_side):
     """Earliest time τ ≥ t in sample interval i at which the block at rest starts to rock.
 
-    The block leaves rest when the ground acceleration exceeds the threshold (tan α, in g)
-    towards a side it may rotate to (spec/rocking.md, "Uplift from rest"); the acceleration is
+    The block leaves rest when the ground acceleration exceeds the threshold of a side (tan α
+    for the free block; thr_pos towards θ > 0, thr_neg towards θ < 0, in g) towards a side it
+    may rotate to (spec/rocking.md, "Uplift from rest"); the acceleration is
     linear in the interval, so the crossing is exact. Tested on the interpolated value at t
     first (engine.md, trap 2), so a spike is never skipped.
 
@@ -125,9 +158,9 @@ def uplift_in_interval(t, i, times, accel, polarity, threshold, one_sided, free_
         (τ, side): side = ±1 the side it rotates to, or (inf, 0) when it stays at rest.
     """
     g_now = ground_acceleration(t, i, times, accel, polarity)
-    if g_now > threshold and (one_sided == 0 or free_side > 0):
+    if g_now > thr_pos and (one_sided == 0 or free_side > 0):
         return t, 1
-    if g_now < -threshold and (one_sided == 0 or free_side < 0):
+    if g_now < -thr_neg and (one_sided == 0 or free_side < 0):
         return t, -1
     t1 = times[i + 1]
     g_end = ground_acceleration(t1, i, times, accel, polarity)
@@ -136,6 +169,7 @@ def uplift_in_interval(t, i, times, accel, polarity, threshold, one_sided, free_
     for side in (1, -1):
         if one_sided != 0 and side != free_side:
             continue
+        threshold = thr_pos if side > 0 else thr_neg
         level = side * threshold
         if (side * g_end > threshold) and (side * g_now <= threshold):
             tau = t + (level - g_now) / (g_end - g_now) * (t1 - t)

@@ -26,7 +26,13 @@ from rockcli.dynamics.result import (
     RunStatus,
 )
 from rockcli.dynamics.settings import Engine, SolverSettings
-from rockcli.mechanics import Block, spring_failure_rotation
+from rockcli.mechanics import (
+    NEGATIVE,
+    Block,
+    point_table,
+    spring_failure_rotation,
+    uplift_accelerations,
+)
 
 #: Most samples of the free tail: up to this many, at the record's interval dt; past it, the
 #: tail (from one dt after the record to its end) is split into TAIL_SAMPLES equal intervals.
@@ -90,7 +96,23 @@ def pack_parameters(block: Block, settings: SolverSettings, rtol: float, atol: f
     par[L.P_INV_I0] = 1.0 / block.inertia if block.mass is not None else 0.0
     par[L.P_MAX_EVENTS] = float(settings.max_events)
     par[L.P_MAX_STEPS] = float(settings.max_steps)
+    par[L.P_I0] = block.inertia if block.mass is not None else 0.0
+    par[L.P_UPLIFT_POS], par[L.P_UPLIFT_NEG] = uplift_accelerations(block)
+    par[L.P_E_NEG] = block.restitution(NEGATIVE)
     return par
+
+
+def pack_points(block: Block) -> np.ndarray:
+    """The flat point table of the block, its loads and thrusts (mechanics.point_table).
+
+    Empty for a block without loads and thrusts: the kernel then integrates the free block's
+    equation (paper Eq. 2) exactly as before loads existed.
+    """
+    if not block.loaded:
+        return np.zeros(0)
+    if block.linearized:
+        raise ValueError("the linearized equation does not take loads or thrusts")
+    return np.ascontiguousarray(point_table(block), dtype=np.float64)
 
 
 def pack_springs(block: Block) -> np.ndarray:
@@ -162,6 +184,7 @@ def simulate(
     par[L.P_OMEGA0] = omega0
     par[L.P_MAX_STEPS] = float(step_budget(times.size, settings.max_steps))
     springs = pack_springs(block)
+    points = pack_points(block)
     alive = np.ones(len(block.restrainers), dtype=np.int64)
     n_hist = times.size if history else 1
     hist_th = np.full(n_hist, np.nan)
@@ -171,7 +194,18 @@ def simulate(
     spring_out = np.zeros((len(block.restrainers), L.N_SPRING_OUT))
     spring_out[:, L.S_T_FAIL] = np.nan
     run(
-        times, acc, float(polarity), par, springs, alive, hist_th, hist_om, out_f, out_i, spring_out
+        times,
+        acc,
+        float(polarity),
+        par,
+        springs,
+        points,
+        alive,
+        hist_th,
+        hist_om,
+        out_f,
+        out_i,
+        spring_out,
     )
     hist = _history(times, hist_th, hist_om, out_f[L.O_T_END], origin) if history else None
     if origin:

@@ -17,6 +17,7 @@ from rockcli.mechanics import (
     linear_global_stiffness,
     restrainer_coefficient,
     spring_elongation,
+    uplift_accelerations,
 )
 from rockcli.records.record import Record
 from rockcli.report.records import record_document, record_report
@@ -111,6 +112,33 @@ def model_document(name: str, kind: str, block: Block, e_rule: str) -> dict[str,
         "impact_rule": impact_rule(block),
         "linearized": block.linearized,
         "uplift_acceleration_g": block.uplift_acceleration,
+        "uplift_acceleration_by_side_g": dict(
+            zip(("1", "-1"), uplift_accelerations(block), strict=True)
+        ),
+        "e_by_side": {"1": block.restitution(1), "-1": block.restitution(-1)},
+        "loads": [
+            {
+                "name": ld.name,
+                "weight": ld.weight,
+                "x_pos": ld.x_pos,
+                "x_neg": ld.x_neg,
+                "z": ld.z,
+                "bears": ld.bears,
+                "moves": ld.moves,
+            }
+            for ld in block.loads
+        ],
+        "thrusts": [
+            {
+                "name": t.name,
+                "force": t.force,
+                "direction": t.direction,
+                "x_pos": t.x_pos,
+                "x_neg": t.x_neg,
+                "z": t.z,
+            }
+            for t in block.thrusts
+        ],
         "restrainers": [
             {
                 "name": r.name,
@@ -129,9 +157,12 @@ def model_document(name: str, kind: str, block: Block, e_rule: str) -> dict[str,
 
 def impact_rule(block: Block) -> str:
     """Which impact rule the run used (spec/rocking.md: say it in the output)."""
+    e = f"e = {block.e:.4g}"
+    if block.restitution(-1) != block.e:
+        e = f"e = {block.e:.4g} from θ > 0, {block.restitution(-1):.4g} from θ < 0"
     if block.one_sided:
-        return f"one-sided rebound: θ̇⁺ = −r_f·e·θ̇⁻ (r_f = {block.rebound:g}, e = {block.e:.4g})"
-    return f"two-sided: θ̇⁺ = e·θ̇⁻, pivot switches (e = {block.e:.4g})"
+        return f"one-sided rebound: θ̇⁺ = −r_f·e·θ̇⁻ (r_f = {block.rebound:g}, {e})"
+    return f"two-sided: θ̇⁺ = e·θ̇⁻, pivot switches ({e})"
 
 
 def assessment_document(

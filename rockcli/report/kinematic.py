@@ -45,6 +45,7 @@ def kinematic_document(
         "edition": result.edition,
         "side": result.side,
         "alpha0": result.alpha0,
+        "alpha0_by_side": result.alpha0_by_side,
         "e_star": result.e_star,
         "a0_star": result.a0_star,
         "FC": result.FC,

@@ -13,7 +13,7 @@ from typing import Any
 
 from rockcli.codecheck import rules2009, rules2019
 from rockcli.codecheck.demand import LimitStateDemand, Spectrum, record_demand
-from rockcli.codecheck.kinematic import Capacity, Mechanism, PointLoad, capacity, curve_points
+from rockcli.codecheck.kinematic import Capacity, Mechanism, alpha0, capacity, curve_points
 from rockcli.codecheck.position import position
 from rockcli.codecheck.result import KinematicResult
 from rockcli.errors import InputError
@@ -30,17 +30,10 @@ UNIT_MASS = 1.0
 
 
 def mechanism(block: Block, settings: NtcSettings, side: int) -> Mechanism:
-    """The mechanism on one side, with the block's loads placed on it.
-
-    The model requires a [mass] table with loads, so a block without a mass has none.
-    """
+    """The mechanism on one side: the block with its loads and thrusts (the model's own)."""
     if block.mass is None:
         block = replace(block, mass=UNIT_MASS)
-    loads = tuple(
-        PointLoad(ld.name, ld.weight, ld.x_pos if side > 0 else ld.x_neg, ld.z, ld.bears)
-        for ld in block.loads
-    )
-    return Mechanism(block=block, side=side, loads=loads, distributed=settings.distributed)
+    return Mechanism(block=block, side=side, distributed=settings.distributed)
 
 
 def governing_capacity(block: Block, settings: NtcSettings) -> Capacity:
@@ -221,6 +214,7 @@ def analyse(
         curve=tuple(curve_points(cap)),
         demand={ls: demand_numbers(d) for ls, d in dem.items()},
         notes=tuple(notes),
+        alpha0_by_side={str(s): alpha0(mechanism(block, settings, s)) for s in (1, -1)},
     )
 
 

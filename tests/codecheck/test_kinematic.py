@@ -8,12 +8,12 @@ leaves α0 unchanged), spec/README.md (a0*·e*·FC = g tan α = the engine's upl
 from __future__ import annotations
 
 import math
+from dataclasses import replace
 
 import pytest
 
 from rockcli.codecheck.kinematic import (
     Mechanism,
-    PointLoad,
     alpha0,
     capacity,
     control_displacement,
@@ -22,7 +22,7 @@ from rockcli.codecheck.kinematic import (
 )
 from rockcli.codecheck.position import building_period, gamma, height_amplification, psi
 from rockcli.codecheck.rules2009 import quantities
-from rockcli.mechanics import Block, Restrainer
+from rockcli.mechanics import Block, Load, Restrainer
 
 G = 9.81
 ALTAR = Block(R=1.499, alpha=0.163, mass=1000.0, g=G)
@@ -129,7 +129,8 @@ def test_roof_load_at_the_top() -> None:
     W = ALTAR.weight
     P = 0.5 * W
     b, h = ALTAR.b, ALTAR.h
-    mech = Mechanism(ALTAR, loads=(PointLoad("roof", P, b, 2 * h),))
+    roof = Load("roof", P, b, b, 2 * h)
+    mech = Mechanism(replace(ALTAR, loads=(roof,)))
     assert alpha0(mech) == pytest.approx((W + P) * b / (W * h + 2 * P * h), rel=1e-14)
     expected_e = (W * h + 2 * P * h) ** 2 / ((W * h**2 + 4 * P * h**2) * (W + P))
     assert e_star(mech) == pytest.approx(expected_e, rel=1e-14)
@@ -140,7 +141,8 @@ def test_pushing_load_only_in_the_denominator() -> None:
     # denominator of α0 only.
     W, b, h = ALTAR.weight, ALTAR.b, ALTAR.h
     Q = 0.3 * W
-    mech = Mechanism(ALTAR, loads=(PointLoad("floor", Q, b, 2 * h, bears=False),))
+    floor = Load("floor", Q, b, b, 2 * h, bears=False)
+    mech = Mechanism(replace(ALTAR, loads=(floor,)))
     assert alpha0(mech) == pytest.approx(W * b / (W * h + Q * 2 * h), rel=1e-14)
 
 

@@ -64,6 +64,7 @@ def test_the_kernel_itself_steps_through_epoch_times() -> None:
         1.0,
         par,
         springs,
+        np.zeros(0),
         np.ones(0, dtype=np.int64),
         np.full(1, np.nan),
         np.full(1, np.nan),
