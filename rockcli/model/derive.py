@@ -17,12 +17,17 @@ from rockcli.mechanics import (
     NEGATIVE,
     POSITIVE,
     Block,
+    Load,
     Restrainer,
+    Thrust,
     frequency_parameter_sq,
     housner_restitution,
     point_polar,
     tie_rod_stiffness,
 )
+from rockcli.model.physical import Direction
+from rockcli.model.physical import Load as LoadTable
+from rockcli.model.physical import Thrust as ThrustTable
 from rockcli.model.schema import (
     STEEL_MODULUS,
     Acts,
@@ -74,6 +79,7 @@ class Description:
         e: coefficient of restitution in force [-].
         e_rule: how e was obtained, e.g. "0.9 × Housner (1 − 1.5 sin²α)".
         p: frequency parameter √(3g/(4R)) [rad/s].
+        loads, thrusts: the block's loads and thrusts, one row each (SI, as in the block).
     """
 
     b: float
@@ -89,6 +95,8 @@ class Description:
     e: float
     e_rule: str
     p: float
+    loads: tuple[Load, ...] = ()
+    thrusts: tuple[Thrust, ...] = ()
 
 
 def to_block(model: Model) -> Block:
@@ -107,6 +115,8 @@ def to_block(model: Model) -> Block:
         rebound=motion.rebound if motion.rebound is not None else 1.0,
         linearized=model.analysis.linearized,
         restrainers=tuple(to_restrainer(model, i) for i in range(len(model.restrainers))),
+        loads=tuple(to_load(model, i) for i in range(len(model.loads))),
+        thrusts=tuple(to_thrust(model, i) for i in range(len(model.thrusts))),
     )
 
 
@@ -143,6 +153,8 @@ def describe(model: Model) -> Description:
         e=e,
         e_rule=rule,
         p=math.sqrt(frequency_parameter_sq(R, g)),
+        loads=tuple(to_load(model, i) for i in range(len(model.loads))),
+        thrusts=tuple(to_thrust(model, i) for i in range(len(model.thrusts))),
     )
 
 
@@ -241,3 +253,45 @@ def attachment(
     # The schema allows x up to the thickness plus a rounding slack; clamp the other side at 0.
     x_other = max(thickness - table.from_pivot, 0.0)
     return point_polar(table.from_pivot, table.height), point_polar(x_other, table.height)
+
+
+def point(model: Model, table: LoadTable | ThrustTable) -> tuple[float, float, float]:
+    """(x_pos, x_neg, z) [m] of a load's or a thrust's point.
+
+    x_pos from pivot O (θ > 0), default the mid-plane b; x_neg = 2b − x_pos from O′, clamped at
+    0 (the schema allows a rounding slack past the face); z the height, 2h for the top.
+    """
+    b, h = model.geometry.half_sizes
+    x_pos = b if table.from_pivot is None else table.from_pivot
+    z = 2.0 * h if table.position is Position.TOP else table.height
+    assert z is not None
+    return x_pos, max(2.0 * b - x_pos, 0.0), z
+
+
+def to_load(model: Model, index: int) -> Load:
+    """Load ``index`` of the model: weight in N, its point about each pivot, bears and moves."""
+    table = model.loads[index]
+    x_pos, x_neg, z = point(model, table)
+    return Load(
+        name=table.name or f"load {index + 1}",
+        weight=table.weight * NEWTONS_PER_KILONEWTON,
+        x_pos=x_pos,
+        x_neg=x_neg,
+        z=z,
+        bears=table.bears,
+        moves=table.moves,
+    )
+
+
+def to_thrust(model: Model, index: int) -> Thrust:
+    """Thrust ``index`` of the model: force in N, direction ±1, its point about each pivot."""
+    table = model.thrusts[index]
+    x_pos, x_neg, z = point(model, table)
+    return Thrust(
+        name=table.name or f"thrust {index + 1}",
+        force=table.force * NEWTONS_PER_KILONEWTON,
+        direction=POSITIVE if table.direction is Direction.POSITIVE else NEGATIVE,
+        x_pos=x_pos,
+        x_neg=x_neg,
+        z=z,
+    )

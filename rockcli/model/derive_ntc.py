@@ -1,4 +1,6 @@
-"""From the `[ntc]` table to the code check's plain settings (SI units, frozen dataclasses).
+"""From the `[ntc]` and `[building]` tables to the code check's plain settings.
+
+SI units, frozen dataclasses.
 
 Pure: no numpy, scipy or numba (model validation starts fast; spec/engine.md "Speed").
 """
@@ -10,19 +12,33 @@ from dataclasses import dataclass
 from rockcli.model.ntc import Ntc
 from rockcli.model.schema import Model
 
-#: kN → N.
-NEWTONS_PER_KILONEWTON = 1e3
-
 
 @dataclass(frozen=True)
-class LoadSettings:
-    """An extra weight: name, weight [N], x from the pivot [m], z above it [m], bears."""
+class BuildingSettings:
+    """Where the element stands in the building (the [building] table, defaults applied).
 
-    name: str
-    weight: float
-    x: float | None
-    z: float
-    bears: bool
+    Attributes:
+        Z: height of the base of the mechanism above the foundation [m] (0: on the ground).
+        H: building height [m]. N: storeys. T1: first period [s]. gamma, psi: first-mode
+        participation factor and shape at Z [-] (None: the code's default).
+        damping: first-mode damping of the building, fraction of critical [-].
+    """
+
+    Z: float
+    H: float | None
+    N: int | None
+    T1: float | None
+    gamma: float | None
+    psi: float | None
+    damping: float
+
+
+def building_settings(model: Model) -> BuildingSettings:
+    """The [building] table of a model (an absent table means on the ground)."""
+    b = model.building
+    return BuildingSettings(
+        Z=b.Z, H=b.H, N=b.N, T1=b.T1, gamma=b.gamma, psi=b.psi, damping=b.damping
+    )
 
 
 @dataclass(frozen=True)
@@ -31,11 +47,11 @@ class NtcSettings:
 
     Attributes:
         edition: "2009" or "2019". FC, q: as in the code. soil, topography: category names.
-        VN [years], CU [-]. Z, H [m], N, T1 [s], gamma, psi: position (None: default).
+        VN [years], CU [-]. building: the element's place in the building ([building]).
         distributed: mass spread over the height for M*, e*. limit: local ultimate
         displacement of the control point [m]. site: (lon, lat) or None. demand: per limit
-        state (ag [g], F0, Tc* [s]). loads: extra weights. defaults: which settings were not
-        given (shown with the result).
+        state (ag [g], F0, Tc* [s]). defaults: which settings were not given (shown with the
+        result).
     """
 
     edition: str
@@ -45,17 +61,11 @@ class NtcSettings:
     topography: str
     VN: float
     CU: float
-    Z: float
-    H: float | None
-    N: int | None
-    T1: float | None
-    gamma: float | None
-    psi: float | None
+    building: BuildingSettings
     distributed: bool
     limit: float | None
     site: tuple[float, float] | None
     demand: dict[str, tuple[float, float, float]]
-    loads: tuple[LoadSettings, ...]
     defaults: tuple[str, ...]
 
 
@@ -77,26 +87,11 @@ def ntc_settings(model: Model) -> NtcSettings:
         topography=ntc.topography.value,
         VN=ntc.VN,
         CU=ntc.CU,
-        Z=ntc.Z,
-        H=ntc.H,
-        N=ntc.N,
-        T1=ntc.T1,
-        gamma=ntc.gamma,
-        psi=ntc.psi,
+        building=building_settings(model),
         distributed=ntc.mass_distribution.value == "distributed",
         limit=ntc.ultimate_displacement,
         site=None if ntc.site is None else (ntc.site.lon, ntc.site.lat),
         demand=demand,
-        loads=tuple(
-            LoadSettings(
-                name=ld.name or f"load {i + 1}",
-                weight=ld.weight * NEWTONS_PER_KILONEWTON,
-                x=ld.from_pivot,
-                z=ld.height,
-                bears=ld.bears,
-            )
-            for i, ld in enumerate(ntc.loads)
-        ),
         defaults=tuple(
             f"{key} = {value}" for key, value in _defaults(ntc).items() if key not in given
         ),

@@ -6,6 +6,7 @@ its unit); :mod:`rockcli.model.derive` turns it into the code check's plain sett
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from enum import StrEnum
 from typing import Annotated, Any
 
@@ -15,22 +16,12 @@ from rockcli.codecheck.categories import Edition, Soil, Topography
 from rockcli.model.bounds import (
     MAX_BEHAVIOUR_FACTOR,
     MAX_LENGTH,
-    MAX_MODE_SHAPE,
     MAX_NOMINAL_LIFE,
-    MAX_PARTICIPATION,
-    MAX_PERIOD,
-    MAX_REACH,
-    MAX_STOREYS,
     MAX_USE_COEFFICIENT,
-    MAX_WEIGHT,
     MIN_AG,
     MIN_ELONGATION,
-    MIN_LENGTH,
-    MIN_MODAL,
-    MIN_PERIOD,
     MIN_TC_STAR,
     MIN_USE_COEFFICIENT,
-    MIN_WEIGHT,
 )
 from rockcli.model.rules import choose_group, number, rule_error
 from rockcli.model.schema_base import Table
@@ -42,6 +33,38 @@ KNOWLEDGE_LEVEL_FC = {"LC1": 1.35, "LC2": 1.20, "LC3": 1.00}
 FC_MIN, FC_MAX = 1.0, 1.35
 #: Behaviour factor of the linear kinematic check (Circolare 617/2009 §C8A.4.2.2; C8.7.1.2.1).
 DEFAULT_Q = 2.0
+
+
+#: Where the building's keys went: they describe the element, so both analyses read them.
+BUILDING_MOVED = "moved to [building] (the building is shared by both analyses)"
+#: Every key that left [ntc]: (problem, what is allowed instead).
+MOVED_KEYS = {
+    **{
+        key: (BUILDING_MOVED, f"[building] {key} = {example}")
+        for key, example in (
+            ("Z", "height of the base above the foundation [m]"),
+            ("H", "height of the building [m]"),
+            ("N", "number of storeys"),
+            ("T1", "first period of the building [s]"),
+            ("gamma", "modal participation factor [-]"),
+            ("psi", "first mode shape at Z [-]"),
+        )
+    },
+    "loads": (
+        "moved to [[loads]] (the loads are shared by both analyses)",
+        "[[loads]] with weight [kN], height [m] or position = 'top', from_pivot [m], bears, moves",
+    ),
+}
+
+
+def _new_place(key: str) -> str:
+    """The table a key of [ntc] moved to."""
+    return "[[loads]]" if key == "loads" else "[building]"
+
+
+def _scalar(value: Any) -> Any:
+    """The value to quote back: a number or text, not a whole table."""
+    return value if isinstance(value, int | float | str) else None
 
 
 #: Other names of the editions: the year of the code (NTC 2008, NTC 2018) for the year of
@@ -102,33 +125,6 @@ class Demand(Table):
     SLC: SpectrumParameters | None = Field(None, description="Collapse limit state")
 
 
-class Load(Table):
-    """An extra weight acting on the mechanism (floor, roof) for α0, M* and e*.
-
-    Circolare 617/2009 §C8A.4.1 (and C8.7.1.1): weights P_i applied at their points; a weight
-    that does not bear on the block but pushes it (Q_k, e.g. a floor resting on another wall
-    and tied to this one) adds a horizontal inertial force but no restoring moment.
-    """
-
-    name: str | None = Field(None, min_length=1, description="Label")
-    weight: float = number("Weight [kN]", ..., ge=MIN_WEIGHT, le=MAX_WEIGHT)
-    height: float = number(
-        "Height of its point of application above the pivot [m]", ..., ge=0, le=MAX_REACH
-    )
-    from_pivot: float | None = number(
-        "Horizontal distance of its point of application from the pivot, inside the block; "
-        "default: the mid-plane b [m]",
-        ge=0,
-        le=MAX_REACH,
-    )
-    bears: bool = Field(
-        True,
-        strict=True,
-        description="true: it bears on the block (restoring and overturning); false: it only "
-        "pushes it (Q_k, denominator of α0 only)",
-    )
-
-
 class Ntc(Table):
     """Settings of the NTC kinematic check (spec/ntc.md)."""
 
@@ -163,38 +159,6 @@ class Ntc(Table):
         ge=MIN_USE_COEFFICIENT,
         le=MAX_USE_COEFFICIENT,
     )
-    Z: float = number(
-        "Height of the base of the mechanism above the foundation; 0 on the ground [m]",
-        0.0,
-        ge=0,
-        le=MAX_LENGTH,
-    )
-    H: float | None = number(
-        "Height of the building above the foundation, with Z > 0 [m]",
-        ge=MIN_LENGTH,
-        le=MAX_LENGTH,
-    )
-    N: int | None = Field(
-        None,
-        strict=True,
-        ge=1,
-        le=MAX_STOREYS,
-        description="Number of storeys, with Z > 0 (for γ = 3N/(2N+1))",
-    )
-    T1: float | None = number(
-        "First period of the building, with Z > 0; default C1·H^0.75 with C1 = 0.05 "
-        "(NTC §7.3.3.2) [s]",
-        ge=MIN_PERIOD,
-        le=MAX_PERIOD,
-    )
-    gamma: float | None = number(
-        "Modal participation factor γ; default 3N/(2N+1) [-]",
-        ge=MIN_MODAL,
-        le=MAX_PARTICIPATION,
-    )
-    psi: float | None = number(
-        "First mode shape ψ(Z), 1 at the top; default Z/H [-]", ge=MIN_MODAL, le=MAX_MODE_SHAPE
-    )
     mass_distribution: MassDistribution = Field(
         MassDistribution.LUMPED,
         description="'lumped' (weight at the centroid, e* = 1; default) or 'distributed' "
@@ -209,43 +173,35 @@ class Ntc(Table):
     )
     site: Site | None = Field(None, description="Site coordinates, demand from the hazard grid")
     demand: Demand | None = Field(None, description="Spectrum parameters per limit state")
-    loads: tuple[Load, ...] = Field((), description="Extra weights on the mechanism")
+
+    @model_validator(mode="before")
+    @classmethod
+    def _moved_keys(cls, data: Any) -> Any:
+        """The keys that moved out of [ntc] (0.x: an error naming the new place, no alias).
+
+        One error for the first, naming the others too, so that an old file is fixed in one go.
+        """
+        if not isinstance(data, Mapping):
+            return data
+        moved = [key for key in MOVED_KEYS if key in data]
+        if moved:
+            first, others = moved[0], moved[1:]
+            problem, allowed = MOVED_KEYS[first]
+            also = "; also moved: " + ", ".join(f"ntc.{k} to {_new_place(k)}" for k in others)
+            also = also if others else ""
+            raise rule_error(first, problem + also, allowed, _scalar(data[first]))
+        return data
 
     @model_validator(mode="after")
     def _consistent(self) -> Ntc:
-        """FC or knowledge_level; the position in the building complete when Z > 0."""
+        """FC or knowledge_level; a site or spectrum parameters, not both."""
         allowed = "FC in [1, 1.35], or knowledge_level = 'LC1' | 'LC2' | 'LC3'"
         choose_group(self.__dict__, [("FC",), ("knowledge_level",)], allowed)
         if self.site is not None and self.demand is not None:
             raise rule_error(
                 "demand", "not allowed together with site", "[ntc.site] or [ntc.demand.*]"
             )
-        if self.Z > 0:
-            self._check_height()
         return self
-
-    def _check_height(self) -> None:
-        if self.Z < MIN_LENGTH:
-            raise rule_error(
-                "Z",
-                "too small to be a height above the foundation",
-                f"0 on the ground, or a height >= {MIN_LENGTH:g} and <= H [m]",
-                self.Z,
-            )
-        if self.H is None:
-            raise rule_error(
-                "H",
-                "required when Z > 0 (element at height)",
-                f"a number >= {MIN_LENGTH:g} and <= {MAX_LENGTH:g} [m]",
-            )
-        if self.Z > self.H:
-            raise rule_error(
-                "Z", f"above the building height H = {self.H:g} m", "0 <= Z <= H [m]", self.Z
-            )
-        if self.N is None and self.gamma is None:
-            raise rule_error(
-                "N", "required when Z > 0 (for γ = 3N/(2N+1)), or give gamma", "an integer >= 1"
-            )
 
     @property
     def confidence_factor(self) -> float:

@@ -14,7 +14,7 @@ one-sided motion), the brief of the model package (the decisions listed on each 
 from __future__ import annotations
 
 import math
-from collections.abc import Mapping
+from collections.abc import Mapping, Sequence
 from enum import StrEnum
 from typing import Any
 
@@ -35,6 +35,7 @@ from rockcli.model.bounds import (
     MIN_WEIGHT,
 )
 from rockcli.model.ntc import Ntc
+from rockcli.model.physical import Building, Load, Position, Thrust, check_mass, check_points
 from rockcli.model.rules import choose_group, forbid, number, rule_error
 from rockcli.model.schema_base import Table
 from rockcli.units import DEFAULT_GRAVITY
@@ -112,12 +113,6 @@ class Acts(StrEnum):
     BOTH = "both"
     POSITIVE = "positive"
     NEGATIVE = "negative"
-
-
-class Position(StrEnum):
-    """Named attachment points."""
-
-    TOP = "top"
 
 
 class Geometry(Table):
@@ -408,7 +403,8 @@ class Restrainer(Table):
 
 
 class Model(Table):
-    """One macro-element: identity, block, mass, restitution, motion, analysis, restrainers."""
+    """One macro-element: identity, block, mass, restitution, motion, analysis, restrainers,
+    loads, thrusts, the building it stands in and the code check's settings."""
 
     name: str = Field(..., min_length=1, description="Name shown in reports")
     kind: Kind = Field(..., description="'wall', 'altar' or 'facade'")
@@ -424,14 +420,31 @@ class Model(Table):
     motion: Motion = Field(Motion.model_validate({}), description="Two- or one-sided")
     analysis: Analysis = Field(Analysis.model_validate({}), description="Run settings")
     restrainers: tuple[Restrainer, ...] = Field((), description="Horizontal springs, any number")
+    loads: tuple[Load, ...] = Field(
+        (), description="Weights on the block (floors, roof); need a [mass] table"
+    )
+    thrusts: tuple[Thrust, ...] = Field(
+        (), description="Horizontal forces (roof, arch); need a [mass] table"
+    )
+    building: Building = Field(
+        Building.model_validate({}), description="Where the element stands in the building"
+    )
     ntc: Ntc | None = Field(None, description="Settings of the NTC kinematic check")
 
     @model_validator(mode="after")
     def _cross_table_rules(self) -> Model:
-        """Rules that span tables: width for unit_weight, mass for springs, x within 2b."""
+        """Rules that span tables: width for unit_weight, mass for springs and loads, points
+        within the block."""
         self._check_width()
         self._check_mass()
         self._check_points()
+        b, h = self.geometry.half_sizes
+        physical: dict[str, Sequence[Load | Thrust]] = {
+            "loads": self.loads,
+            "thrusts": self.thrusts,
+        }
+        check_mass(physical, self.mass is not None)
+        check_points(physical, 2.0 * b, 2.0 * h, CONTAINMENT_RTOL)
         return self
 
     def _check_width(self) -> None:

@@ -53,7 +53,6 @@ _NTC = {
     "topography": "T1",
     "VN": 50.0,
     "CU": 1.0,
-    "Z": 0.0,
     "mass_distribution": "lumped",
     "demand": {
         "SLD": {"ag": 0.06, "F0": 2.5, "Tc_star": 0.27},
@@ -61,6 +60,9 @@ _NTC = {
         "SLC": {"ag": 0.19, "F0": 2.5, "Tc_star": 0.30},
     },
 }
+
+#: The [building] table: an element on the ground (Z = 0 needs no other key).
+_BUILDING = {"Z": 0.0}
 
 TEMPLATES: dict[Kind, dict[str, Any]] = {
     Kind.WALL: {
@@ -73,7 +75,9 @@ TEMPLATES: dict[Kind, dict[str, Any]] = {
         "restitution": {"model": "housner", "factor": 0.9},
         "motion": {"sides": "two"},
         "analysis": _ANALYSIS,
+        "building": _BUILDING,
         "ntc": _NTC,
+        "loads": [{"name": "floor at the top", "weight": 30.0, "position": "top"}],
         "restrainers": [
             {
                 "name": "tie-rod near the top",
@@ -96,6 +100,7 @@ TEMPLATES: dict[Kind, dict[str, Any]] = {
         "restitution": {"model": "housner", "factor": 1.0},
         "motion": {"sides": "two"},
         "analysis": _ANALYSIS,
+        "building": _BUILDING,
         "ntc": _NTC,
     },
     Kind.FACADE: {
@@ -108,6 +113,7 @@ TEMPLATES: dict[Kind, dict[str, Any]] = {
         "restitution": {"model": "housner"},
         "motion": {"sides": "one", "stopped": "negative", "rebound": 1.0},
         "analysis": _ANALYSIS,
+        "building": _BUILDING,
         "ntc": _NTC,
         "restrainers": [
             {"name": "groin vault", "k": 4e6, "radius": 7.0, "angle": 0.072},
@@ -157,11 +163,20 @@ TABLE_NOTES: dict[str, tuple[str, ...]] = {
         '"top" (r = 2R, φ = α).',
         "Optional: fails_at = elongation [m] at which the spring is lost for good.",
     ),
+    "building": (
+        "Where the element stands in the building (a property of the element, not of a code).",
+        "Z = 0: on the ground. An element at height: Z > 0 with H, N (or gamma), T1 (default "
+        "0.05·H^0.75), psi (default Z/H).",
+    ),
     "ntc": (
         "Settings of the NTC kinematic check (rock kinematic). The demand below is an example:",
         "replace it with your site's parameters, or use [ntc.site] lon, lat with a hazard grid "
         "(--hazard-grid or ROCK_HAZARD_GRID), or --record FILE.",
-        "An element at height: Z > 0 with H, N (or gamma), T1 (default 0.05·H^0.75), psi.",
+    ),
+    "loads": (
+        "Weights on the block (floors, roof), one [[loads]] table each; need [mass].",
+        'Point: height (+ from_pivot, default the mid-plane) or position = "top". bears = false: '
+        "its weight rests elsewhere; moves = false: its mass does not push the block.",
     ),
 }
 
@@ -201,14 +216,18 @@ OTHER_KEYS: dict[str, dict[str, Any]] = {
         "position": "top",
         "fails_at": 0.05,
     },
-    "ntc": {
-        **{k: v for k, v in _NTC.items() if k != "demand"},
-        "knowledge_level": "LC1",
+    "building": {
+        "Z": 0.0,
         "H": 9.0,
         "N": 3,
         "T1": 0.26,
         "gamma": 1.29,
         "psi": 0.67,
+        "damping": 0.05,
+    },
+    "ntc": {
+        **{k: v for k, v in _NTC.items() if k != "demand"},
+        "knowledge_level": "LC1",
         "ultimate_displacement": 0.1,
     },
     "ntc.site": {"lon": 13.4, "lat": 42.35},
@@ -216,29 +235,44 @@ OTHER_KEYS: dict[str, dict[str, Any]] = {
     "ntc.demand.SLD": {"ag": 0.06, "F0": 2.5, "Tc_star": 0.27},
     "ntc.demand.SLV": {"ag": 0.15, "F0": 2.5, "Tc_star": 0.29},
     "ntc.demand.SLC": {"ag": 0.19, "F0": 2.5, "Tc_star": 0.30},
-    "ntc.loads": {
+    "loads": {
         "name": "floor",
         "weight": 50.0,
-        "height": 3.0,
+        "position": "top",
+        "height": 2.5,
         "from_pivot": 0.25,
         "bears": True,
+        "moves": True,
+    },
+    "thrusts": {
+        "name": "roof thrust",
+        "force": 10.0,
+        "position": "top",
+        "direction": "positive",
+        "height": 2.5,
+        "from_pivot": 0.0,
     },
 }
 
 #: Tables written as arrays of tables (``[[name]]``).
-ARRAYS = frozenset({"restrainers", "ntc.loads"})
+ARRAYS = frozenset({"restrainers", "loads", "thrusts"})
 
 #: For a table a template lacks: the keys that, uncommented together, make a valid table
 #: (the other keys of :data:`OTHER_KEYS` follow as alternatives).
 TABLE_CORE: dict[str, tuple[str, ...]] = {
     "restrainers": ("name", "k", "position", "fails_at"),
+    "loads": ("name", "weight", "position"),
+    "thrusts": ("name", "force", "position", "direction"),
 }
 
 #: Notes of the tables a template may show commented only.
 OPTIONAL_TABLE_NOTES: dict[str, tuple[str, ...]] = {
     "ntc.site": ("Instead of [ntc.demand.*]: the site, for the demand from a hazard grid.",),
     "ntc.demand.SLO": ("Spectrum parameters of the operational limit state, if needed.",),
-    "ntc.loads": ("Extra weights on the mechanism (floors, roof), one [[ntc.loads]] table each.",),
+    "thrusts": (
+        "Horizontal forces independent of the earthquake (roof, arch), one [[thrusts]] table "
+        'each; need [mass]. direction = "positive" | "negative": the rotation it pushes towards.',
+    ),
 }
 
 

@@ -171,7 +171,8 @@ def analyse(
 ) -> KinematicResult:
     """The kinematic analysis and the checks of the settings' edition."""
     cap = governing_capacity(block, settings)
-    pos = position(settings.Z, settings.H, settings.N, settings.T1, settings.gamma, settings.psi)
+    b = settings.building
+    pos = position(b.Z, b.H, b.N, b.T1, b.gamma, b.psi)
     notes = list(pos.notes)
     if settings.defaults:
         notes.append("defaults (not in the model's [ntc]): " + ", ".join(settings.defaults))

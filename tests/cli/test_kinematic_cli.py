@@ -137,9 +137,10 @@ def _model(tmp_path: Path, ntc: str) -> Path:
     [
         ("[ntc]\nFC = 0.9\n", "ntc.FC"),
         ('[ntc]\nsoil = "F"\n', "ntc.soil"),
-        ("[ntc]\nZ = -1.0\n", "ntc.Z"),
-        ("[ntc]\nZ = 12.0\nH = 10.0\nN = 3\n", "ntc.Z"),
-        ("[ntc]\nZ = 3.0\nN = 3\n", "ntc.H"),
+        ("[building]\nZ = -1.0\n", "building.Z"),
+        ("[building]\nZ = 12.0\nH = 10.0\nN = 3\n", "building.Z"),
+        ("[building]\nZ = 3.0\nN = 3\n", "building.H"),
+        ("[ntc]\nZ = 3.0\n", "ntc.Z: moved to [building]"),
         ('[ntc]\nFC = 1.2\nknowledge_level = "LC2"\n', "ntc"),
         ('[ntc]\nedition = "2023"\n', "ntc.edition"),
     ],

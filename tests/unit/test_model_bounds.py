@@ -36,11 +36,21 @@ VALID: dict[str, Any] = {
 NOT_HERE = {"analysis"}
 
 
+#: The keys that, with the one under test, make a valid [[loads]] or [[thrusts]] table.
+AT_THE_TOP: dict[str, dict[str, Any]] = {
+    "loads": {"position": "top"},
+    "thrusts": {"position": "top", "direction": "positive"},
+}
+
+
 def with_value(path: tuple[Any, ...], value: Any) -> dict[str, Any]:
     data = copy.deepcopy(VALID)
     target: Any = data
     for key in path[:-1]:
-        target = target.setdefault(key, {}) if isinstance(key, str) else target[key]
+        if key in AT_THE_TOP:  # an array of tables: one valid table but for the value
+            target = target.setdefault(key, [dict(AT_THE_TOP[key])])
+        else:
+            target = target.setdefault(key, {}) if isinstance(key, str) else target[key]
     target[path[-1]] = value
     return data
 
@@ -54,7 +64,9 @@ ABSURD = [
     (("restrainers", 0, "k"), 1.7e308),  # the 1.8e308 is inf: refused on main too
     (("ntc", "VN"), 1e300),
     (("ntc", "q"), 1e300),
-    (("ntc", "gamma"), 1e300),
+    (("building", "gamma"), 1e300),
+    (("loads", 0, "weight"), 1e300),
+    (("thrusts", 0, "force"), 1e300),
 ]
 
 
@@ -162,9 +174,9 @@ FUZZ_FOUND = [
         {"ntc": {"demand": {"SLV": {"ag": 0.15, "F0": 2.5, "Tc_star": 5e-324}}}},
         "ntc.demand.SLV.Tc_star",
     ),
-    ({"ntc": {"Z": 5e-324, "H": 9.0, "N": 3}}, "ntc.Z"),
-    ({"ntc": {"Z": 3.0, "H": 9.0, "N": 3, "psi": 5e-324}}, "ntc.psi"),
-    ({"ntc": {"Z": 3.0, "H": 9.0, "N": 3, "T1": 5e-324}}, "ntc.T1"),
+    ({"building": {"Z": 5e-324, "H": 9.0, "N": 3}}, "building.Z"),
+    ({"building": {"Z": 3.0, "H": 9.0, "N": 3, "psi": 5e-324}}, "building.psi"),
+    ({"building": {"Z": 3.0, "H": 9.0, "N": 3, "T1": 5e-324}}, "building.T1"),
 ]
 
 

@@ -88,7 +88,7 @@ def test_unknown_table_at_top_level_exact_line(tmp_path: Path) -> None:
     line = message_for(tmp_path, table("results", edition=2019))
     assert line == (
         f"{tmp_path / 'm.toml'}: unknown table [results] (allowed: one of: name, kind, notes, "
-        "geometry, mass, restitution, motion, analysis, restrainers, ntc)"
+        "geometry, mass, restitution, motion, analysis, restrainers, loads, thrusts, building, ntc)"
     )
 
 

@@ -12,6 +12,7 @@ import tomllib
 from pathlib import Path
 from typing import Any
 
+import pytest
 import tomli_w
 from hypothesis import given, settings
 from hypothesis import strategies as st
@@ -88,6 +89,45 @@ def placement(draw: st.DrawFn, thickness: float) -> dict[str, Any]:
 
 
 @st.composite
+def point(draw: st.DrawFn, thickness: float, height: float) -> dict[str, Any]:
+    """A load's or a thrust's point within the block: height (+ from_pivot) or the top."""
+    if draw(st.booleans()):
+        return {"position": "top"}
+    out = {"height": draw(floats(0.0, 1.0)) * height}
+    if draw(st.booleans()):
+        out["from_pivot"] = draw(floats(0.0, 1.0)) * thickness
+    return out
+
+
+@st.composite
+def load(draw: st.DrawFn, thickness: float, height: float) -> dict[str, Any]:
+    """A weight that bears on the block, moves with it, or both (never neither)."""
+    bears, moves = draw(st.sampled_from([(True, True), (True, False), (False, True)]))
+    return {"weight": draw(floats(1e-3, 1e4)), "bears": bears, "moves": moves} | draw(
+        point(thickness, height)
+    )
+
+
+@st.composite
+def thrust(draw: st.DrawFn, thickness: float, height: float) -> dict[str, Any]:
+    direction = draw(st.sampled_from(["positive", "negative"]))
+    return {"force": draw(floats(1e-3, 1e4)), "direction": direction} | draw(
+        point(thickness, height)
+    )
+
+
+@st.composite
+def building(draw: st.DrawFn) -> dict[str, Any]:
+    """On the ground (Z = 0, the rest optional), or at Z > 0 in a building H ≥ Z with N."""
+    if draw(st.booleans()):
+        return draw(optional({"Z": st.just(0.0), "damping": floats(0.0, 0.5)}))
+    H = draw(floats(1.0, 100.0))  # noqa: N806 (the code's symbol)
+    return {"Z": draw(floats(1e-3, 1.0)) * H, "H": H, "N": draw(st.integers(1, 50))} | draw(
+        optional({"T1": floats(0.01, 10.0), "psi": floats(1e-3, 1.0), "damping": floats(0.0, 0.5)})
+    )
+
+
+@st.composite
 def models(draw: st.DrawFn) -> dict[str, Any]:
     """A valid model file as a dict."""
     data: dict[str, Any] = {
@@ -98,7 +138,8 @@ def models(draw: st.DrawFn) -> dict[str, Any]:
     notes = draw(st.none() | st.text(max_size=60))
     if notes is not None:
         data["notes"] = notes
-    thickness = 2 * validate_model({**data}).geometry.half_sizes[0]
+    b, h = validate_model({**data}).geometry.half_sizes
+    thickness = 2 * b
     n = draw(st.integers(0, 3))
     restrainers = [
         {
@@ -112,8 +153,13 @@ def models(draw: st.DrawFn) -> dict[str, Any]:
     ]
     if restrainers:
         data["restrainers"] = restrainers
+    for name, one in (("loads", load), ("thrusts", thrust)):
+        items = draw(st.lists(one(thickness, 2 * h), max_size=2))
+        if items:
+            data[name] = items
     mass = draw(st.sampled_from(["none", "weight", "unit_weight"]))
-    if mass == "weight" or (mass == "none" and restrainers):
+    needs_mass = restrainers or "loads" in data or "thrusts" in data
+    if mass == "weight" or (mass == "none" and needs_mass):
         data["mass"] = {"weight": draw(positive)}
     elif mass == "unit_weight":
         data["mass"] = {"unit_weight": draw(floats(1.0, 30.0))}
@@ -122,6 +168,7 @@ def models(draw: st.DrawFn) -> dict[str, Any]:
         ("restitution", restitution),
         ("motion", motion),
         ("analysis", analysis),
+        ("building", building()),
     ):
         table = draw(st.none() | strategy)
         if table is not None:
@@ -147,6 +194,14 @@ def test_every_valid_model_derives_a_block(data: dict[str, Any]) -> None:
     for spring in block.restrainers:
         assert spring.k_pos >= 0 and spring.k_neg >= 0
         assert spring.r_pos > 0 and spring.r_neg > 0
+    # Loads and thrusts within the block: x from each pivot in [0, 2b], z in [0, 2h]
+    # (the strategy draws points inside; 1e-9 relative: the rounding of the products and of
+    # b = R sin α, which the block recomputes from the file's thickness).
+    for p in (*block.loads, *block.thrusts):
+        top = 2 * block.b * (1 + 1e-9)
+        assert 0.0 <= p.x_pos <= top and 0.0 <= p.x_neg <= top
+        assert 0.0 <= p.z <= 2 * block.h * (1 + 1e-9)
+        assert p.x_pos + p.x_neg == pytest.approx(2 * block.b, rel=1e-9)
 
 
 def test_round_trip_through_a_file(tmp_path: Path) -> None:

@@ -144,8 +144,8 @@ def test_schema_keys_cover_the_readme_block() -> None:
         ("mass", "weight"), ("restitution", "model"), ("restitution", "e"),
         ("motion", "sides"), ("motion", "stopped"), ("motion", "rebound"),
         ("analysis", "tail"), ("restrainers", "fails_at"), ("restrainers", "k_pos"),
-        ("ntc", "Z"), ("ntc", "H"), ("ntc", "N"), ("ntc", "gamma"), ("ntc", "T1"),
-        ("ntc", "psi"), ("ntc.site", "lon"), ("ntc.demand.SLV", "ag"),
+        ("building", "Z"), ("building", "H"), ("building", "N"), ("building", "gamma"),
+        ("building", "T1"), ("building", "psi"), ("ntc.site", "lon"), ("ntc.demand.SLV", "ag"),
     }  # fmt: skip
     assert named <= schema_keys()
 
@@ -166,7 +166,12 @@ def uncomment(text: str, header: str) -> str:
 
 @pytest.mark.parametrize(
     ("kind", "header"),
-    [("altar", "[[restrainers]]"), ("wall", "[[ntc.loads]]"), ("facade", "[ntc.demand.SLO]")],
+    [
+        ("altar", "[[restrainers]]"),
+        ("altar", "[[loads]]"),
+        ("facade", "[[thrusts]]"),
+        ("facade", "[ntc.demand.SLO]"),
+    ],
 )
 def test_a_commented_table_loads_when_uncommented(kind: str, header: str, tmp_path: Path) -> None:
     path = tmp_path / "m.toml"
