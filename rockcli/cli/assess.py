@@ -74,7 +74,9 @@ def assess(
         from rockcli.report.assess import history_csv
 
         write_text(
-            history_path, history_csv(out.result.worst, shaking, doc["model"]), where="--history"
+            history_path,
+            history_csv(out.result.worst, record, doc["model"], out.shaking),
+            where="--history",
         )
         announce_written(history_path)
     if plot_path:

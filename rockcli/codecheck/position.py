@@ -43,6 +43,8 @@ class Position:
         Z: height of the base of the mechanism above the foundation [m] (0: on the ground).
         H: building height [m]. T1: first period [s]. gamma, psi: as in the Circolare.
         notes: how defaults were taken (shown with the results).
+        damping: damping ratio of the building's first mode ξ_k, a fraction (default 5 %,
+            Circolare 7/2019 §C7.2.3); the 2019 floor spectrum and the floor motion use it.
     """
 
     Z: float = 0.0
@@ -51,6 +53,7 @@ class Position:
     gamma: float = 1.0
     psi: float = 0.0
     notes: tuple[str, ...] = ()
+    damping: float = 0.05
 
     @property
     def at_height(self) -> bool:
@@ -65,6 +68,7 @@ def position(
     T1: float | None,
     gamma_: float | None,
     psi_: float | None,
+    damping: float = 0.05,
 ) -> Position:
     """Position with the Circolare's defaults: ψ = Z/H, γ = 3N/(2N+1), T1 = 0.05·H^0.75."""
     if Z <= 0.0 or H is None:
@@ -75,4 +79,4 @@ def position(
         notes.append(f"T1 = 0.05·H^0.75 = {T1:.3f} s (NTC §7.3.3.2), not given")
     g = gamma_ if gamma_ is not None else gamma(N or 1)
     p = psi_ if psi_ is not None else psi(Z, H)
-    return Position(Z=Z, H=H, T1=T1, gamma=g, psi=p, notes=tuple(notes))
+    return Position(Z=Z, H=H, T1=T1, gamma=g, psi=p, notes=tuple(notes), damping=damping)

@@ -25,7 +25,8 @@ SLV_SHARE, SLC_SHARE = 0.4, 0.6
 SLV_PERIOD, SLC_PERIOD = 1.68 * math.pi, 1.56 * math.pi
 #: Damping of the mechanism in the demand spectrum [%] (§C8.7.1.2.1): 5 (SLD), 8 (SLV), 10 (SLC).
 DAMPING = {"SLD": 5.0, "SLV": 8.0, "SLC": 10.0}
-#: Damping of the building's mode in the floor spectrum [%] (§C7.2.3: ξ_k, 5 % unless given).
+#: Damping of the building's mode in the floor spectrum [%] (§C7.2.3: ξ_k, 5 % unless given;
+#: the model's `building.damping` when given, the one the floor motion uses too).
 BUILDING_DAMPING = 5.0
 #: Plateau limits of the floor spectrum, a·T_k ≤ T < b·T_k (§C7.2.3).
 PLATEAU_A, PLATEAU_B = 0.8, 1.1
@@ -41,25 +42,25 @@ FLOOR_READING = (
 def floor_acceleration(spec: Spectrum, pos: Position) -> float:
     """a_Z = Se(T1, ξ_k)·|γ ψ(Z)|·√(1 + 0.0004 ξ_k²) [g], ξ_k in percent (§C7.2.3)."""
     assert pos.T1 is not None
-    return (
-        spec.Se(pos.T1, BUILDING_DAMPING)
-        * abs(pos.gamma * pos.psi)
-        * math.sqrt(1.0 + 0.0004 * BUILDING_DAMPING**2)
-    )
+    xi_k = 100.0 * pos.damping
+    return spec.Se(pos.T1, xi_k) * abs(pos.gamma * pos.psi) * math.sqrt(1.0 + 0.0004 * xi_k**2)
 
 
-def floor_plateau(xi_mechanism: float) -> float:
-    """1.1·ξ_k^−0.5·η(ξ) [-], ξ_k as a fraction, η of the mechanism's damping ξ [%] (§C7.2.3)."""
-    return 1.1 * (BUILDING_DAMPING / 100.0) ** -0.5 * spectra.damping_correction(xi_mechanism)
+def floor_plateau(xi_mechanism: float, xi_building: float = BUILDING_DAMPING) -> float:
+    """1.1·ξ_k^−0.5·η(ξ) [-], ξ_k [%] read as a fraction, η of the mechanism's damping ξ [%]
+    (§C7.2.3)."""
+    return 1.1 * (xi_building / 100.0) ** -0.5 * spectra.damping_correction(xi_mechanism)
 
 
-def floor_spectrum(T: float, a_z: float, T1: float, xi_mechanism: float) -> float:
+def floor_spectrum(
+    T: float, a_z: float, T1: float, xi_mechanism: float, xi_building: float = BUILDING_DAMPING
+) -> float:
     """S_eZ(T) [g]: the floor spectrum at height for a mechanism of period T (§C7.2.3).
 
     a_z·A on the plateau a·T1 ≤ T < b·T1 (A = floor_plateau), a_z·A/{1 + (A − 1)(1 − T/(a T1))^1.6}
     below it, a_z·A/{1 + (A − 1)(T/(b T1) − 1)^1.2} above it.
     """
-    amp = floor_plateau(xi_mechanism)
+    amp = floor_plateau(xi_mechanism, xi_building)
     if T < PLATEAU_A * T1:
         return a_z * amp / (1.0 + (amp - 1.0) * (1.0 - T / (PLATEAU_A * T1)) ** 1.6)
     if T < PLATEAU_B * T1:
@@ -67,12 +68,19 @@ def floor_spectrum(T: float, a_z: float, T1: float, xi_mechanism: float) -> floa
     return a_z * amp / (1.0 + (amp - 1.0) * (T / (PLATEAU_B * T1) - 1.0) ** 1.2)
 
 
-def floor_displacement(T: float, a_z: float, T1: float, xi_mechanism: float, g: float) -> float:
+def floor_displacement(
+    T: float,
+    a_z: float,
+    T1: float,
+    xi_mechanism: float,
+    g: float,
+    xi_building: float = BUILDING_DAMPING,
+) -> float:
     """S_eZ(T)·T²/4π² [m], not less than S_eZ(T1)·(b T1)²/4π² for T > b·T1 (§C8.7.1.2.1)."""
-    d = floor_spectrum(T, a_z, T1, xi_mechanism) * g * T**2 / (4.0 * math.pi**2)
+    d = floor_spectrum(T, a_z, T1, xi_mechanism, xi_building) * g * T**2 / (4.0 * math.pi**2)
     if T > PLATEAU_B * T1:
         floor = (
-            floor_spectrum(T1, a_z, T1, xi_mechanism)
+            floor_spectrum(T1, a_z, T1, xi_mechanism, xi_building)
             * g
             * (PLATEAU_B * T1) ** 2
             / (4.0 * math.pi**2)
@@ -164,7 +172,9 @@ def displacement_check(
         T1 = pos.T1
 
         def measure(sp: Spectrum) -> float:
-            return floor_displacement(T, floor_acceleration(sp, pos), T1, xi, g)
+            return floor_displacement(
+                T, floor_acceleration(sp, pos), T1, xi, g, 100.0 * pos.damping
+            )
     else:
 
         def measure(sp: Spectrum) -> float:

@@ -11,7 +11,7 @@ validation starts fast; spec/engine.md, "Speed").
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 from rockcli.mechanics import (
     NEGATIVE,
@@ -22,6 +22,7 @@ from rockcli.mechanics import (
     Thrust,
     frequency_parameter_sq,
     housner_restitution,
+    impact_restitution,
     point_polar,
     tie_rod_stiffness,
 )
@@ -104,7 +105,7 @@ def to_block(model: Model) -> Block:
     R, alpha = model.geometry.polar
     motion = model.motion
     one_sided = motion.sides is Sides.ONE
-    return Block(
+    block = Block(
         R=R,
         alpha=alpha,
         mass=block_mass(model),
@@ -118,6 +119,22 @@ def to_block(model: Model) -> Block:
         loads=tuple(to_load(model, i) for i in range(len(model.loads))),
         thrusts=tuple(to_thrust(model, i) for i in range(len(model.thrusts))),
     )
+    return with_system_restitution(block, model)
+
+
+def with_system_restitution(block: Block, model: Model) -> Block:
+    """The block with Housner's e of the block and its loads, per side (loads only).
+
+    Source: mechanics.impact_restitution (Housner 1963, angular momentum about the new pivot,
+    written for the block with its loads; docs/physics.md, "Impacts"). The factor and the clip
+    at 0 apply as for the lone block; an explicit e stays as given on both sides.
+    """
+    table = model.restitution
+    if table.rule is RestitutionModel.EXPLICIT or not block.loads or block.mass is None:
+        return block
+    factor = 1.0 if table.factor is None else table.factor
+    e_pos, e_neg = (max(impact_restitution(block, s), 0.0) * factor for s in (1, -1))
+    return replace(block, e=e_pos, e_neg=e_neg)
 
 
 def solver_options(model: Model) -> AnalysisOptions:
@@ -189,6 +206,8 @@ def restitution(model: Model) -> tuple[float, str]:
     factor = 1.0 if table.factor is None else table.factor
     e = max(housner_restitution(model.geometry.polar[1]), 0.0) * factor
     rule = "Housner (1 − 1.5 sin²α)"
+    if model.loads:
+        rule = "Housner of the block with its loads"
     return e, rule if factor == 1.0 else f"{factor:g} × {rule}"
 
 

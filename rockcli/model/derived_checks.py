@@ -15,7 +15,7 @@ from __future__ import annotations
 import math
 
 from rockcli.errors import InputError
-from rockcli.mechanics import Block, restrainer_coefficient
+from rockcli.mechanics import Block, restrainer_coefficient, uplift_accelerations
 from rockcli.model.bounds import MAX_STIFFNESS
 
 #: What a derived quantity must be.
@@ -39,6 +39,8 @@ def check_block(block: Block) -> None:
     _positive("the mass m = W/g", block.mass, "mass, analysis.g")
     _positive("the weight W = m g", block.weight, "mass, analysis.g")
     _positive("the polar inertia I0 = 4/3 m R²", block.inertia, "mass, geometry")
+    if block.loaded:
+        _check_loaded(block)
     for i, restrainer in enumerate(block.restrainers):
         for side in (1, -1):
             k, r, _ = restrainer.side(side)
@@ -59,6 +61,28 @@ def check_block(block: Block) -> None:
                     value=coefficient,
                     allowed="a stiffness and a weight of the same order as a real element's",
                 )
+
+
+def _check_loaded(block: Block) -> None:
+    """A block with loads or thrusts: not linearized, and standing at rest without an
+    earthquake on every side it may turn to (α0 > 0; docs/physics.md, "Uplift, and α0")."""
+    if block.linearized:
+        raise InputError(
+            "the linearized equation is written for the lone block",
+            where="analysis.linearized",
+            value=True,
+            allowed="false with [[loads]] or [[thrusts]]",
+        )
+    sides = (block.free_side,) if block.one_sided else (1, -1)
+    for side, a0 in zip((1, -1), uplift_accelerations(block), strict=True):
+        if side in sides and not a0 > 0.0:
+            raise InputError(
+                f"the thrusts overturn the block towards θ {'>' if side > 0 else '<'} 0 "
+                f"with no earthquake (uplift acceleration {a0:.4g} g)",
+                where="thrusts",
+                allowed="thrusts whose moment about the pivot is less than that of the "
+                "weights (α0 > 0 on each side the block can turn to)",
+            )
 
 
 def _positive(what: str, value: float, where: str) -> None:

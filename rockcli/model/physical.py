@@ -180,9 +180,10 @@ class Building(Table):
         "First mode shape ψ(Z), 1 at the top; default Z/H [-]", ge=MIN_MODAL, le=MAX_MODE_SHAPE
     )
     damping: float = number(
-        "First-mode damping of the building, fraction of critical; default 0.05 [-]",
+        "First-mode damping of the building, fraction of critical, > 0 (the 2019 floor "
+        "spectrum divides by its root) and at most 0.5; default 0.05 [-]",
         DEFAULT_DAMPING,
-        ge=0,
+        gt=0,
         le=MAX_DAMPING,
     )
 

@@ -215,10 +215,11 @@ def input_document(out: AssessmentOutput) -> dict[str, Any]:
             else ""
         )
         return {"input": "ground", "input_note": note}
+    pga = out.shaking.pga if out.shaking is not None else math.nan
     return {
         "input": "floor",
-        "floor": out.floor.document(),
-        "input_note": out.floor.label,
+        "floor": {**out.floor.document(), "pga_g": pga},
+        "input_note": f"{out.floor.label}; its PGA {pga:.3g} g",
         "floor_notes": list(out.floor.notes),
     }
 
@@ -340,7 +341,7 @@ def _uplift_row(m: dict[str, Any]) -> tuple[str, Any, str, str]:
     """The uplift acceleration: one value, or one per side when loads or thrusts differ."""
     by_side = m.get("uplift_acceleration_by_side_g", {})
     if len(set(by_side.values())) > 1:
-        text = f"{by_side['1']:.4f} towards θ > 0, {by_side['-1']:.4f} towards θ < 0"
+        text = f"{by_side['1']:.4f} (θ > 0), {by_side['-1']:.4f} (θ < 0)"
         return ("uplift acceleration", text, "g", "")
     return ("uplift acceleration", m["uplift_acceleration_g"], "g", "{:.4f}")
 
@@ -386,23 +387,34 @@ def _verdict_line(doc: dict[str, Any]) -> str:
 HISTORY_HEADER = ("t_s", "ground_acc_g", "theta_rad", "omega_rad_s", "polarity", "status")
 
 
-def history_csv(run: RockingRun, record: Record, model: dict[str, Any]) -> str:
+def history_csv(
+    run: RockingRun, record: Record, model: dict[str, Any], floor: Record | None = None
+) -> str:
     """The --history CSV of one run: a plain header row, then one row per sample time.
 
     Columns: t [s], the ground acceleration the run saw [g] (the record times the polarity,
-    zero in the tail after it), θ [rad], θ̇ [rad/s], the polarity and the run's status, and
+    zero in the tail after it), for a block at height the floor acceleration that shook it [g]
+    (floor_acc_g, likewise), θ [rad], θ̇ [rad/s], the polarity and the run's status, and
     each restrainer's force K·u(θ) [N] (rockcli.mechanics.spring_elongation, zero once the
     restrainer failed).
 
     Args:
         run: the run, with its history.
-        record: the record the run integrated.
+        record: the ground record.
+        floor: the floor motion the run integrated (None: the record itself).
         model: the model section of the assessment document (restrainers, linearized).
     """
     hist = run.history
     if hist is None:
         raise ValueError("the run was made without its history (history=True)")
-    ground = run.polarity * np.interp(hist.time, record.time, record.accel, left=0.0, right=0.0)
+    inputs = [record] if floor is None else [record, floor]
+    accel = [
+        run.polarity * np.interp(hist.time, rec.time, rec.accel, left=0.0, right=0.0)
+        for rec in inputs
+    ]
+    header = list(HISTORY_HEADER)
+    if floor is not None:
+        header.insert(2, "floor_acc_g")
     t_fail = {p.name: p.t_fail for p in run.restrainers}
     springs = [_restrainer(r) for r in model["restrainers"]]
     forces = [
@@ -411,12 +423,12 @@ def history_csv(run: RockingRun, record: Record, model: dict[str, Any]) -> str:
     ]
     buffer = io.StringIO()
     writer = csv.writer(buffer, lineterminator="\n")
-    writer.writerow([*HISTORY_HEADER, *(f"force_N_{sp.name}" for sp in springs)])
+    writer.writerow([*header, *(f"force_N_{sp.name}" for sp in springs)])
     for i, t in enumerate(hist.time):
         writer.writerow(
             [
                 f"{t:.6f}",
-                f"{ground[i]:.10e}",
+                *(f"{a[i]:.10e}" for a in accel),
                 f"{hist.theta[i]:.10e}",
                 f"{hist.omega[i]:.10e}",
                 f"{run.polarity:+d}",

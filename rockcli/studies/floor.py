@@ -55,7 +55,7 @@ def model_floor(model: Model) -> Floor | None:
     b = model.building
     if b is None or b.Z <= 0.0:
         return None
-    pos = position(b.Z, b.H, b.N, b.T1, b.gamma, b.psi)
+    pos = position(b.Z, b.H, b.N, b.T1, b.gamma, b.psi, b.damping)
     assert pos.T1 is not None
     return Floor(Z=b.Z, T1=pos.T1, psi=pos.psi, gamma=pos.gamma, xi=b.damping, notes=pos.notes)
 

@@ -172,7 +172,7 @@ def analyse(
     """The kinematic analysis and the checks of the settings' edition."""
     cap = governing_capacity(block, settings)
     b = settings.building
-    pos = position(b.Z, b.H, b.N, b.T1, b.gamma, b.psi)
+    pos = position(b.Z, b.H, b.N, b.T1, b.gamma, b.psi, b.damping)
     notes = list(pos.notes)
     if settings.defaults:
         notes.append("defaults (not in the model's [ntc]): " + ", ".join(settings.defaults))

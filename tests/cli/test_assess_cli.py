@@ -79,9 +79,12 @@ def test_history_csv_of_the_worse_polarity(tmp_path: Path) -> None:
     out = tmp_path / "h.csv"
     doc = assess_json(ROOT / "examples" / "altar.toml", PULSES[0], "--history", str(out))
     rows = list(csv.DictReader(out.read_text().splitlines()))
+    # The altar stands at height (its [building]): the floor motion that shook it follows.
+    assert doc["record"]["input"] == "floor"
     assert list(rows[0]) == [
         "t_s",
         "ground_acc_g",
+        "floor_acc_g",
         "theta_rad",
         "omega_rad_s",
         "polarity",

@@ -27,7 +27,7 @@ position = "top"
 
 [[thrusts]]
 name = "roof"
-force = 5.0
+force = 0.5
 direction = "positive"
 position = "top"
 
@@ -50,7 +50,7 @@ values = [10.0, 40.0]
 [[axes]]
 path = "thrusts[0].force"
 name = "thrust"
-values = [2.0, 8.0]
+values = [0.2, 0.8]
 
 [[axes]]
 path = "building.Z"
@@ -70,7 +70,7 @@ def test_each_case_carries_its_load_thrust_and_height(write_study: WriteStudy) -
     for case in cases:
         model = build_model(plan, case)
         weight = (10.0, 40.0)[case.indices[0]]
-        force = (2.0, 8.0)[case.indices[1]]
+        force = (0.2, 0.8)[case.indices[1]]
         z = (0.0, 3.0)[case.indices[2]]
         assert (model.loads[0].weight, model.thrusts[0].force, model.building.Z) == (
             weight,

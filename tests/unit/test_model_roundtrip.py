@@ -14,9 +14,10 @@ from typing import Any
 
 import pytest
 import tomli_w
-from hypothesis import given, settings
+from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 
+from rockcli.errors import InputError
 from rockcli.model.derive import to_block
 from rockcli.model.load import load_model, to_toml, validate_model
 
@@ -120,10 +121,10 @@ def thrust(draw: st.DrawFn, thickness: float, height: float) -> dict[str, Any]:
 def building(draw: st.DrawFn) -> dict[str, Any]:
     """On the ground (Z = 0, the rest optional), or at Z > 0 in a building H ≥ Z with N."""
     if draw(st.booleans()):
-        return draw(optional({"Z": st.just(0.0), "damping": floats(0.0, 0.5)}))
+        return draw(optional({"Z": st.just(0.0), "damping": floats(1e-3, 0.5)}))
     H = draw(floats(1.0, 100.0))  # noqa: N806 (the code's symbol)
     return {"Z": draw(floats(1e-3, 1.0)) * H, "H": H, "N": draw(st.integers(1, 50))} | draw(
-        optional({"T1": floats(0.01, 10.0), "psi": floats(1e-3, 1.0), "damping": floats(0.0, 0.5)})
+        optional({"T1": floats(0.01, 10.0), "psi": floats(1e-3, 1.0), "damping": floats(1e-3, 0.5)})
     )
 
 
@@ -173,6 +174,13 @@ def models(draw: st.DrawFn) -> dict[str, Any]:
         table = draw(st.none() | strategy)
         if table is not None:
             data[name] = table
+    # A valid file can still describe a block its thrusts overturn with no earthquake, or ask
+    # for the linearized equation with loads: refused at load (tests/model), not drawn here.
+    try:
+        validate_model(data)
+    except InputError as exc:
+        assume(exc.where not in ("thrusts", "analysis.linearized"))
+        raise
     return data
 
 
