@@ -7,6 +7,7 @@ the ξ_k ambiguity; closed forms where the spectrum is linear in ag (soil A: S =
 from __future__ import annotations
 
 import math
+from dataclasses import replace
 
 import pytest
 
@@ -63,6 +64,16 @@ def test_floor_acceleration() -> None:
     spec = ElasticSpectrum(0.2, 2.5, 0.3, Soil.A, g=G)
     expected = spec.Se(0.4) * 1.2 * 0.5 * math.sqrt(1.01)
     assert floor_acceleration(spec, HIGH) == pytest.approx(expected, rel=1e-14)
+
+
+def test_floor_spectrum_uses_the_building_damping() -> None:
+    # §C7.2.3 with ξ_k = 10 % (building.damping = 0.10): a_Z = Se(T1, ξ_k)·|γψ|·√(1 + 0.0004·ξ_k²)
+    # and the plateau factor 1.1·ξ_k^−0.5 (ξ_k as a fraction; docs/interpretations.md).
+    spec = ElasticSpectrum(0.2, 2.5, 0.3, Soil.A, g=G)
+    damped = replace(HIGH, damping=0.10)
+    expected = spec.Se(0.4, 10.0) * 1.2 * 0.5 * math.sqrt(1.04)
+    assert floor_acceleration(spec, damped) == pytest.approx(expected, rel=1e-14)
+    assert floor_plateau(5.0, 10.0) == pytest.approx(1.1 / math.sqrt(0.10), rel=1e-14)
 
 
 def test_sld_capacity_on_the_ground_soil_a() -> None:

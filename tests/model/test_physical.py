@@ -163,6 +163,10 @@ BAD = [
     (("building", "psi"), 1.6, "building.psi", "out of range", "<= 1"),
     (("building", "psi"), -0.1, "building.psi", "out of range", ">= 0.001"),
     (("building", "damping"), 0.6, "building.damping", "out of range", "<= 0.5"),
+    (("building", "damping"), 0.0, "building.damping", "out of range", "> 0"),
+    # Derived: 200 kN pushing at 2.5 m against 81 kN of wall (W·b ≈ 20 kN·m): it falls at rest.
+    (("thrusts", 0, "force"), 200.0, "thrusts", "overturn the block towards θ < 0", "α0 > 0"),
+    (("analysis", "linearized"), True, "analysis.linearized", "lone block", "false with"),
     (("loads", 0, "bears"), "yes", "loads[0].bears", "not a boolean", "true or false"),
     (("loads", 0, "height"), 2.0, "loads[0].position", "not allowed together", "height"),
     (("loads", 0, "position"), None, "loads[0]", "missing the point", 'position = "top"'),

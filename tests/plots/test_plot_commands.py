@@ -89,6 +89,8 @@ def test_history_and_plot_together(tmp_path: Path) -> None:
         "--history", str(csv_path), "--plot", str(png),
     )  # fmt: skip
     assert code == 0, err
-    assert csv_path.read_text(encoding="utf-8").startswith("t_s,ground_acc_g,floor_acc_g,theta_rad,")
+    assert csv_path.read_text(encoding="utf-8").startswith(
+        "t_s,ground_acc_g,floor_acc_g,theta_rad,"
+    )
     assert err == f"wrote {csv_path}\nwrote {png}\n"
     assert_png(png)

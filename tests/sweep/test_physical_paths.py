@@ -8,6 +8,8 @@ No engine runs: only the case models are built.
 
 from __future__ import annotations
 
+from pathlib import Path
+
 import pytest
 
 from rockcli.errors import InputError
@@ -106,3 +108,42 @@ values = [2.0, 5.0]
         build_model(plan, expand(plan)[1])
     assert "floor_height = 5.0" in str(info.value)
     assert "loads[0].height" in str(info.value)
+
+
+def test_a_case_at_height_rocks_on_the_floor_motion(
+    write_study: WriteStudy, tmp_path: Path
+) -> None:
+    # building.Z swept from the ground to 3 m: the case at height runs on the floor motion,
+    # the same numbers `rock assess` gives for that model (studies.assess, floor input).
+    import csv
+
+    from rockcli.records.files import read_record
+    from rockcli.studies.assess import assess_model_output
+    from rockcli.studies.sweep.cases import case_table
+    from rockcli.studies.sweep.executor import local_executor
+    from rockcli.studies.sweep.run import run_sweep
+
+    study = """\
+base = "wall.toml"
+analyses = ["rocking"]
+
+[[records]]
+path = "records/ricker_Tp0.5s_0.5g.txt"
+
+[[axes]]
+path = "building.Z"
+name = "Z"
+values = [0.0, 3.0]
+"""
+    plan = load_study(str(write_study(study, PHYSICAL_BASE)))
+    with local_executor(1) as lanes:
+        run_sweep(plan, str(tmp_path / "out"), lanes)
+    with (tmp_path / "out" / "cases.csv").open(encoding="utf-8") as f:
+        rows = list(csv.DictReader(f))
+    assert [r["input"] for r in rows] == ["ground", "floor"]
+    record = read_record(plan.records[0].path)
+    for row, case in zip(rows, expand(plan), strict=True):
+        model = build_model(plan, case)
+        out = assess_model_output(model, record, "fast")
+        assert float(row["max_ratio"]) == pytest.approx(out.result.max_ratio, rel=1e-12)
+        assert case_table(plan, case)["building"]["Z"] == float(row["Z"])

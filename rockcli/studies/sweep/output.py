@@ -44,6 +44,7 @@ RESULT_COLUMNS: dict[str, type] = {
     "overturned": bool,
     "t_overturn": float,
     "rocking": str,
+    "input": str,
     "code_dls": str,
     "code_uls": str,
     "uls_ratio": float,

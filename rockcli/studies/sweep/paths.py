@@ -39,6 +39,7 @@ RESERVED = frozenset(
         "overturned",
         "t_overturn",
         "rocking",
+        "input",
         "code_dls",
         "code_uls",
         "uls_ratio",

@@ -210,7 +210,10 @@ def run_case(
     if "rocking" in plan.analyses and record is not None:
         from rockcli.studies.assess import assess_model
 
+        from rockcli.studies.floor import model_floor
+
         roc = assess_model(model, record, plan.engine)
+        row["input"] = "ground" if model_floor(model) is None else "floor"
         row.update(rocking_columns(roc))
     if "kinematic" in plan.analyses:
         from rockcli.studies.kinematic import kinematic_model
