@@ -156,7 +156,8 @@ def comparison_report(doc: dict[str, Any]) -> Report:
     notes = (
         f"code: {edition[kin['edition']]}, Ts/T_SLV as in `rock kinematic`; demand: "
         + "; ".join(demand_line(k, v) for k, v in kin["demand"].items()),
-        f"rocking: both polarities, engine {roc['engine']['name']}",
+        f"rocking: both polarities, engine {roc['engine']['name']}; input: "
+        + roc["record"].get("input_note", "the record itself, at the block's base"),
     )
     return Report(
         title="rock compare",
