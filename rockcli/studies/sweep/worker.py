@@ -209,7 +209,6 @@ def run_case(
     roc = kin = None
     if "rocking" in plan.analyses and record is not None:
         from rockcli.studies.assess import assess_model
-
         from rockcli.studies.floor import model_floor
 
         roc = assess_model(model, record, plan.engine)
