@@ -145,6 +145,11 @@ def kinematic_report(doc: dict[str, Any]) -> Report:
     notes = [
         *doc["notes"],
         *(
+            f"demand {demand_line(ls, numbers, spectral=True)} (5 % damping)"
+            for ls, numbers in doc["demand"].items()
+            if numbers.get("spectral_values")
+        ),
+        *(
             f"{c['limit_state']} {c['method']} {c['location']}: {c['note']}"
             for c in doc["checks"]
             if c["note"]
@@ -166,10 +171,15 @@ def demand_table(demand: dict[str, dict[str, Any]]) -> Table:
     return Table("Demand", RECORD_COLUMNS if is_record else SPECTRUM_COLUMNS, rows)
 
 
-def demand_line(ls: str, numbers: dict[str, Any]) -> str:
-    """One limit state's demand in a sentence: "SLV ag 0.15 g, F0 2.5, Tc* 0.3 s, S 1.2 …"."""
+def demand_line(ls: str, numbers: dict[str, Any], spectral: bool = False) -> str:
+    """One limit state's demand in a sentence: "SLV ag 0.15 g, F0 2.5, Tc* 0.3 s, S 1.2 …";
+    a record's name and PGA, and with ``spectral`` its spectrum where the checks read it."""
     if "record" in numbers:
-        return f"{ls} record {numbers['record']}, PGA {numbers['PGA']:.4g} g"
+        values = "".join(
+            f", Se({v['at']} = {v['T']:.3g} s) {v['Se']:.4g} g, SDe {v['SDe']:.4g} m"
+            for v in (numbers.get("spectral_values", ()) if spectral else ())
+        )
+        return f"{ls} record {numbers['record']}, PGA {numbers['PGA']:.4g} g{values}"
     tr = "" if numbers["TR"] is None else f"TR {numbers['TR']:.0f} years, "
     return (
         f"{ls} {tr}ag {numbers['ag']:.4g} g, F0 {numbers['F0']:.4g}, "

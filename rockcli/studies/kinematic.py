@@ -14,7 +14,7 @@ from typing import Any
 from rockcli.codecheck import rules2009, rules2019
 from rockcli.codecheck.demand import LimitStateDemand, Spectrum, record_demand
 from rockcli.codecheck.kinematic import Capacity, Mechanism, alpha0, capacity, curve_points
-from rockcli.codecheck.position import position
+from rockcli.codecheck.position import Position, position
 from rockcli.codecheck.result import KinematicResult
 from rockcli.errors import InputError
 from rockcli.mechanics import Block
@@ -95,6 +95,35 @@ def demand_numbers(demand: LimitStateDemand) -> dict[str, object]:
         "TD": float(spectrum.TD),
         "source": demand.source,
     }
+
+
+#: The periods each limit state's checks read a record's spectrum at, beyond T1 at height, by
+#: the name of the quantity: Ts of the 2009 non-linear (ULS = SLV) check, the secant periods
+#: of 2019's SLV and SLC checks; SLD's checks read accelerations only.
+CHECK_PERIODS = {"SLD": (), "SLV": ("Ts", "T_SLV"), "SLC": ("T_SLC",)}
+
+
+def with_spectral_values(
+    numbers: dict[str, object],
+    demand: LimitStateDemand,
+    pos: Position,
+    values: dict[str, float | None],
+    limit_state: str,
+) -> dict[str, object]:
+    """A record's demand with its spectrum's values where the limit state's checks read it
+    (5 % damping): Se [g] and SDe [m] at the building's T1 (at height) and at the mechanism's
+    periods (CHECK_PERIODS)."""
+    if demand.record is None:
+        return numbers
+    periods = [("T1", pos.T1)] if pos.at_height else []
+    periods += [(name, values.get(name)) for name in CHECK_PERIODS.get(limit_state, ())]
+    spectrum = demand.spectrum
+    numbers["spectral_values"] = [
+        {"at": name, "T": T, "Se": spectrum.Se(T), "SDe": spectrum.SDe(T)}
+        for name, T in periods
+        if T is not None and T > 0
+    ]
+    return numbers
 
 
 def site_demands(
@@ -212,7 +241,9 @@ def analyse(
         quantities=values,
         checks=tuple(checks),
         curve=tuple(curve_points(cap)),
-        demand={ls: demand_numbers(d) for ls, d in dem.items()},
+        demand={
+            ls: with_spectral_values(demand_numbers(d), d, pos, values, ls) for ls, d in dem.items()
+        },
         notes=tuple(notes),
         alpha0_by_side={str(s): alpha0(mechanism(block, settings, s)) for s in (1, -1)},
     )

@@ -19,7 +19,7 @@ ALTAR = ROOT / "examples" / "altar.toml"
 GRID = ROOT.parent / "shared" / "ntc" / "AllegatoB.txt"
 #: The keys of a code spectrum's demand (NTC 2018 §3.2.3.2.1) and of a record's.
 SPECTRUM_KEYS = {"TR", "ag", "F0", "Tc_star", "SS", "ST", "S", "TB", "TC", "TD", "source"}
-RECORD_KEYS = {"record", "PGA", "source"}
+RECORD_KEYS = {"record", "PGA", "source", "spectral_values"}
 #: Probability of exceedance in VR per limit state (NTC 2008 and 2018 Tab. 3.2.I).
 P_VR = {"SLD": 0.63, "SLV": 0.10, "SLC": 0.05}
 #: ELC180's PGA [g]: the value test_kinematic_cli's record test checks (0.3128806 g, the
@@ -93,6 +93,22 @@ def test_record_gives_its_name_and_pga(shared_records: Path) -> None:
         # 7 digits given: half a unit of the 7th.
         assert numbers["PGA"] == pytest.approx(ELC180_PGA, abs=5e-8)
         assert numbers["source"] == "its response spectrum, PGA in place of ag·S"
+
+
+def test_record_gives_the_spectral_values_its_checks_read(shared_records: Path) -> None:
+    # The altar (2009) at height: Se and SDe of the record at the building's T1 (1.09 s, the
+    # model) for both limit states, and at the mechanism's Ts for ULS = SLV (the result's own
+    # Ts); SDe = Se·g·T²/4π² (the pseudo-spectral relation, 5 % damping; g = 9.81 as the
+    # code check's; 1e-12: the same product in another order).
+    doc = kinematic_json(str(ALTAR), "--record", str(shared_records / "ELC180.AT2"))
+    sld = doc["demand"]["SLD"]["spectral_values"]
+    slv = doc["demand"]["SLV"]["spectral_values"]
+    assert [v["at"] for v in sld] == ["T1"] and [v["at"] for v in slv] == ["T1", "Ts"]
+    assert sld[0]["T"] == 1.09 and slv[1]["T"] == doc["Ts"]
+    for v in (*sld, *slv):
+        expected = v["Se"] * 9.81 * v["T"] ** 2 / (4 * math.pi**2)
+        assert v["SDe"] == pytest.approx(expected, rel=REL)
+    assert sld[0] == slv[0]  # one record, one spectrum
 
 
 def test_terminal_shows_the_demand_as_a_table() -> None:
