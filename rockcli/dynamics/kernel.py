@@ -57,7 +57,9 @@ for _array_fn in (
 ):
     register_jitable(inline="always")(_array_fn)
 _rhs = njit(cache=CACHE, inline="always")(rules.angular_acceleration)
-_loaded_rhs = njit(cache=CACHE, inline="always")(rules.loaded_angular_acceleration)
+_loaded_rhs = njit(cache=CACHE)(
+    rules.loaded_angular_acceleration
+)  # not inlined: keeps the free path lean
 _ground = njit(cache=CACHE, inline="always")(rules.ground_acceleration)
 _uplift_in_interval = njit(cache=CACHE, inline="always")(rules.uplift_in_interval)
 _after_impact = njit(cache=CACHE, inline="always")(rules.velocity_after_impact)
@@ -140,6 +142,22 @@ def _accel(a, s, om, ag, alpha, sin_alpha, cos_alpha, p2, lin, springs, alive, i
 
 
 @njit(cache=CACHE, inline=INLINE)
+def _free_accel(
+    a, s, om, ag, alpha, sin_alpha, cos_alpha, p2, lin, springs, alive, inv_i0, i0, points
+):
+    """θ̈ of the free block (paper Eq. 2): the step specialised without the loaded branch."""
+    return _rhs(a, s, ag, alpha, sin_alpha, cos_alpha, p2, lin, springs, alive, inv_i0)
+
+
+@njit(cache=CACHE, inline=INLINE)
+def _loaded_accel(
+    a, s, om, ag, alpha, sin_alpha, cos_alpha, p2, lin, springs, alive, inv_i0, i0, points
+):
+    """θ̈ with loads or thrusts (rules.loaded_angular_acceleration), same signature."""
+    return _loaded_rhs(a, s, om, ag, points, i0, springs, alive)
+
+
+@njit(cache=CACHE, inline=INLINE)
 def _stage(th, om, s, ag, par, springs, alive, points):
     """θ̈ at rotation θ, velocity θ̇ on side s under ground acceleration ag [g]."""
     return _accel(
@@ -167,7 +185,7 @@ def _stage_at(t, th, om, s, i, times, accel, pol, par, springs, alive, points):
 
 
 @njit(cache=CACHE, inline=INLINE)
-def _dp5_step(th, om, f1, h, s, g0, gs, par, springs, alive, points, k_th, k_om):
+def _dp5_step(th, om, f1, h, s, g0, gs, par, springs, alive, points, k_th, k_om, accel):
     """One Dormand–Prince step of size h; fills the stage slopes; returns (θ, θ̇, θ̈, error norm).
 
     The state is (θ, θ̇); slopes of θ are θ̇ at the stages, slopes of θ̇ are θ̈. The ground
@@ -185,7 +203,7 @@ def _dp5_step(th, om, f1, h, s, g0, gs, par, springs, alive, points, k_th, k_om)
     k_om[0] = f1
     w2, v2 = th + h * A21 * k_th[0], om + h * A21 * k_om[0]
     k_th[1] = v2
-    k_om[1] = _accel(
+    k_om[1] = accel(
         s * w2,
         s,
         v2,
@@ -204,7 +222,7 @@ def _dp5_step(th, om, f1, h, s, g0, gs, par, springs, alive, points, k_th, k_om)
     w3 = th + h * (A31 * k_th[0] + A32 * k_th[1])
     v3 = om + h * (A31 * k_om[0] + A32 * k_om[1])
     k_th[2] = v3
-    k_om[2] = _accel(
+    k_om[2] = accel(
         s * w3,
         s,
         v3,
@@ -223,7 +241,7 @@ def _dp5_step(th, om, f1, h, s, g0, gs, par, springs, alive, points, k_th, k_om)
     w4 = th + h * (A41 * k_th[0] + A42 * k_th[1] + A43 * k_th[2])
     v4 = om + h * (A41 * k_om[0] + A42 * k_om[1] + A43 * k_om[2])
     k_th[3] = v4
-    k_om[3] = _accel(
+    k_om[3] = accel(
         s * w4,
         s,
         v4,
@@ -242,7 +260,7 @@ def _dp5_step(th, om, f1, h, s, g0, gs, par, springs, alive, points, k_th, k_om)
     w5 = th + h * (A51 * k_th[0] + A52 * k_th[1] + A53 * k_th[2] + A54 * k_th[3])
     v5 = om + h * (A51 * k_om[0] + A52 * k_om[1] + A53 * k_om[2] + A54 * k_om[3])
     k_th[4] = v5
-    k_om[4] = _accel(
+    k_om[4] = accel(
         s * w5,
         s,
         v5,
@@ -261,7 +279,7 @@ def _dp5_step(th, om, f1, h, s, g0, gs, par, springs, alive, points, k_th, k_om)
     w6 = th + h * (A61 * k_th[0] + A62 * k_th[1] + A63 * k_th[2] + A64 * k_th[3] + A65 * k_th[4])
     v6 = om + h * (A61 * k_om[0] + A62 * k_om[1] + A63 * k_om[2] + A64 * k_om[3] + A65 * k_om[4])
     k_th[5] = v6
-    k_om[5] = _accel(
+    k_om[5] = accel(
         s * w6,
         s,
         v6,
@@ -280,7 +298,7 @@ def _dp5_step(th, om, f1, h, s, g0, gs, par, springs, alive, points, k_th, k_om)
     th1 = th + h * (B1 * k_th[0] + B3 * k_th[2] + B4 * k_th[3] + B5 * k_th[4] + B6 * k_th[5])
     om1 = om + h * (B1 * k_om[0] + B3 * k_om[2] + B4 * k_om[3] + B5 * k_om[4] + B6 * k_om[5])
     k_th[6] = om1
-    f7 = _accel(
+    f7 = accel(
         s * th1,
         s,
         om1,
@@ -620,6 +638,7 @@ def integrate(
     for r in range(L.N_INT_OUT):
         out_i[r] = 0
     lin = par[L.P_LINEAR] != 0.0
+    loaded = points.size > 0
     max_events = int(par[L.P_MAX_EVENTS])
     max_steps = int(par[L.P_MAX_STEPS])
     t = times[0]
@@ -681,9 +700,14 @@ def integrate(
         clipped = h_try < h
         gs = pol * slopes[i]
         g0 = pol * accel[i] + gs * (t - times[i])
-        th1, om1, f1, err = _dp5_step(
-            th, om, f, h_try, s, g0, gs, par, springs, alive, points, k_th, k_om
-        )
+        if loaded:  # one specialisation of the step each: the free one stays lean
+            th1, om1, f1, err = _dp5_step(
+                th, om, f, h_try, s, g0, gs, par, springs, alive, points, k_th, k_om, _loaded_accel
+            )
+        else:
+            th1, om1, f1, err = _dp5_step(
+                th, om, f, h_try, s, g0, gs, par, springs, alive, points, k_th, k_om, _free_accel
+            )
         if not err <= 1.0:  # too large, or NaN
             out_i[L.I_REJECTED] += 1
             if err > 1.0:
