@@ -357,8 +357,13 @@ def restoring_moment(
 
     M_r = m g R sin(α − a) + Σ_k K_k u_k r_k cos(φ_k − a), a = |θ| ≥ 0 on side s (paper Eq. 14,
     generalised to any attachment point as in spec/rocking.md). ``alive`` masks failed springs.
+    With loads and thrusts the weights' part is G − s·T of :func:`point_moments`.
     """
-    total = block.weight * block.R * gravity_moment_ratio(block.alpha, a, block.linearized)
+    if block.loaded:
+        g, _, t, _, _ = point_moments(point_table(block), s, math.sin(a), math.cos(a))
+        total = g - s * t
+    else:
+        total = block.weight * block.R * gravity_moment_ratio(block.alpha, a, block.linearized)
     for i, spring in enumerate(block.restrainers):
         if alive is not None and not alive[i]:
             continue
@@ -401,8 +406,12 @@ def linear_global_stiffness(
     Source: paper Eq. (16)–(18) for the top spring (positive iff 4KR/(mg) > 1/cos α); for any
     attachment point the same derivative of :func:`restoring_moment`:
     −m g R cos α + Σ K r² cos²φ (the spring's u is r cos φ·θ, its arm r cos φ, at θ = 0).
+    With loads and thrusts the weights' part is :func:`loaded_stiffness`.
     """
-    total = -block.weight * block.R * (1.0 if block.linearized else math.cos(block.alpha))
+    if block.loaded:
+        total = loaded_stiffness(point_table(block), s)
+    else:
+        total = -block.weight * block.R * (1.0 if block.linearized else math.cos(block.alpha))
     for i, spring in enumerate(block.restrainers):
         if alive is not None and not alive[i]:
             continue
@@ -552,3 +561,16 @@ def impact_restitution(block: Block, s: int) -> float:
             num -= mass * x * x_new
             den += mass * x_new * x_new
     return num / den
+
+
+def loaded_stiffness(points: tuple[float, ...], s: int) -> float:
+    """d(G − s·T)/da at a = 0 on side s [N·m/rad]: −Σ_bears P z − s·Σ d F x_s.
+
+    The derivative of point_moments' restoring terms (dX/da = −z, dY/da = x at a = 0); the
+    block alone gives −m g h = −m g R cos α (paper Eq. 16 without springs).
+    """
+    col = PT_X_POS if s > 0 else PT_X_NEG
+    total = 0.0
+    for k in range(0, len(points), N_POINT_COLS):
+        total -= points[k + PT_BEARS] * points[k + PT_Z] + s * points[k + PT_PUSH] * points[k + col]
+    return total

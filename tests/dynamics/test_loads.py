@@ -409,3 +409,21 @@ def test_the_linearized_frequency_of_a_block_with_a_top_load() -> None:
     assert t_impact == pytest.approx(expected, rel=1e-3)
     # The lone block's p (paper Eq. 2) would be off by far more than the tolerance.
     assert abs(math.sqrt(3 * G / (4 * radius)) / p_c - 1) > 0.05
+
+
+@pytest.mark.parametrize("name", list(CASES))
+def test_the_linear_global_stiffness_with_loads_is_the_slope_of_the_restoring_moment(
+    name: str,
+) -> None:
+    # dM_r/dθ at 0⁺ (paper Eq. 16, the sign of the global stiffness printed by `rock assess`),
+    # against a central difference of the restoring moment at h = 1e-6 rad (truncation
+    # O(h²)·M‴ and rounding 1e-16·M/h: 1e-6 relative).
+    from rockcli.mechanics import linear_global_stiffness, restoring_moment
+
+    blk = CASES[name]
+    step = 1e-6
+    for side in (1, -1):
+        slope = (restoring_moment(blk, side, step) - restoring_moment(blk, side, -step)) / (
+            2 * step
+        )
+        assert linear_global_stiffness(blk, side) == pytest.approx(slope, rel=1e-6)
