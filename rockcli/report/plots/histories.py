@@ -103,13 +103,14 @@ def draw_histories(
     ax.grid(alpha=0.3)
 
 
-def draw_record(ax: Axes, record: Record, t_end: float) -> None:
-    """The ground acceleration [g] as recorded (polarity +1), to the end of the runs."""
+def draw_record(ax: Axes, record: Record, t_end: float, floor: bool = False) -> None:
+    """The acceleration that shook the block [g] (polarity +1), to the end of the runs: the
+    record at the base, or its floor motion for a block at height (``floor``)."""
     ax.plot(record.time, record.accel, color="0.25", lw=0.8, label=f"{record.name} (polarity +1)")
     ax.axhline(0.0, color="0.6", lw=0.5)
     ax.set_xlim(float(record.time[0]), max(t_end, float(record.time[-1])))
     ax.set_xlabel("time t [s]")
-    ax.set_ylabel("ground acc. [g]")
+    ax.set_ylabel("floor acc. [g]" if floor else "ground acc. [g]")
     ax.legend(loc="upper right", fontsize="small", title=f"PGA {record.pga:.3g} g")
     ax.grid(alpha=0.3)
 
@@ -127,7 +128,8 @@ def draw_time_panels(
     bottom = fig.add_subplot(spec[1], sharex=top)
     draw_histories(top, doc["model"], runs, overturn_angle, doc["verdict"])
     top.tick_params(labelbottom=False)
-    draw_record(bottom, record, max(r.t_end for r in runs))
+    floor = doc.get("record", {}).get("input") == "floor"
+    draw_record(bottom, record, max(r.t_end for r in runs), floor)
 
 
 def plot_assessment(
