@@ -91,9 +91,9 @@ def assess_model_output(
     )
 
 
-def assess_model(model: Model, record: Record, engine: str) -> Assessment:
+def assess_model(model: Model, record: Record, engine: str, *, ground: bool = False) -> Assessment:
     """Both polarities of a validated model under a record (the runs only)."""
-    return assess_model_output(model, record, engine).result
+    return assess_model_output(model, record, engine, ground=ground).result
 
 
 def run_assessment_output(

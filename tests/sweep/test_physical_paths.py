@@ -147,3 +147,45 @@ values = [0.0, 3.0]
         out = assess_model_output(model, record, "fast")
         assert float(row["max_ratio"]) == pytest.approx(out.result.max_ratio, rel=1e-12)
         assert case_table(plan, case)["building"]["Z"] == float(row["Z"])
+
+
+def test_a_study_with_ground_rocks_every_case_on_the_record(
+    write_study: WriteStudy, tmp_path: Path
+) -> None:
+    # ground = true is --ground for a study: the case at height runs on the record itself,
+    # the case on the ground is unchanged (no error), and the column says "ground" for both.
+    import csv
+
+    from rockcli.records.files import read_record
+    from rockcli.studies.assess import assess_model_output
+    from rockcli.studies.sweep.executor import local_executor
+    from rockcli.studies.sweep.run import run_sweep
+
+    study = """\
+base = "wall.toml"
+analyses = ["rocking"]
+ground = true
+
+[[records]]
+path = "records/ricker_Tp0.5s_0.5g.txt"
+
+[[axes]]
+path = "building.Z"
+name = "Z"
+values = [0.0, 3.0]
+"""
+    plan = load_study(str(write_study(study, PHYSICAL_BASE)))
+    with local_executor(1) as lanes:
+        run_sweep(plan, str(tmp_path / "out"), lanes)
+    with (tmp_path / "out" / "cases.csv").open(encoding="utf-8") as f:
+        rows = list(csv.DictReader(f))
+    assert [r["input"] for r in rows] == ["ground", "ground"]
+    record = read_record(plan.records[0].path)
+    at_height = build_model(plan, expand(plan)[1])
+    ground = assess_model_output(at_height, record, "fast", ground=True).result
+    floor = assess_model_output(at_height, record, "fast").result
+    # Both overturn under this pulse: the time of overturning tells the two inputs apart.
+    assert float(rows[1]["t_overturn"]) == pytest.approx(
+        min(r.t_overturn for r in ground.runs if r.t_overturn is not None), rel=1e-12
+    )
+    assert [r.t_overturn for r in ground.runs] != [r.t_overturn for r in floor.runs]

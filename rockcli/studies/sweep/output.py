@@ -146,6 +146,7 @@ def fingerprint(plan: StudyPlan) -> str:
         "analyses": plan.analyses,
         "engine": plan.engine,
         "code_demand": plan.code_demand,
+        "ground": plan.ground,
         "axes": [(a.name, a.texts, a.values) for a in plan.axes],
         "base": plan.base,
         "records": records,

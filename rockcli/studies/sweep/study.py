@@ -143,6 +143,12 @@ class Study(Table):
         description='"record" (each record\'s spectrum is the code demand: one earthquake on '
         'both sides) or "model" (the base model\'s [ntc.demand] or [ntc.site])',
     )
+    ground: bool = Field(
+        False,
+        strict=True,
+        description="true: cases at height (building.Z > 0) rock on the record itself, not on "
+        "its floor motion (as --ground); default false",
+    )
     records_dir: str | None = Field(
         None, description="the folder the record paths are relative to (from the study file)"
     )
@@ -210,6 +216,7 @@ class StudyPlan:
     axes: tuple[Axis, ...]
     records: tuple[RecordSource, ...]
     skipped: tuple[SkippedRecord, ...]
+    ground: bool = False
 
 
 def parse_path(text: str) -> KeyPath | None:
@@ -374,6 +381,7 @@ def load_study(
         analyses=tuple(str(a) for a in study.analyses),
         engine=str(study.engine),
         code_demand=str(study.code_demand),
+        ground=study.ground,
         axes=axes,
         records=records,
         skipped=skipped,

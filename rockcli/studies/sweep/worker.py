@@ -211,8 +211,9 @@ def run_case(
         from rockcli.studies.assess import assess_model
         from rockcli.studies.floor import model_floor
 
-        roc = assess_model(model, record, plan.engine)
-        row["input"] = "ground" if model_floor(model) is None else "floor"
+        ground = plan.ground and model_floor(model) is not None
+        roc = assess_model(model, record, plan.engine, ground=ground)
+        row["input"] = "ground" if ground or model_floor(model) is None else "floor"
         row.update(rocking_columns(roc))
     if "kinematic" in plan.analyses:
         from rockcli.studies.kinematic import kinematic_model
