@@ -273,13 +273,6 @@ def _check_floor_parameters(t1: float, psi: float, gamma: float, xi: float) -> N
 
 def _floor_record(rec, t1: float, psi: float, gamma: float, xi: float):
     """The record's floor motion, as a Record whose notes say how it was made."""
-    from dataclasses import replace
+    from rockcli.studies.floor import Floor, floor_record
 
-    from rockcli.codecheck.floor import floor_motion
-
-    accel = floor_motion(rec.time, rec.accel, T1=t1, psi=psi, gamma=gamma, xi=xi)
-    note = (
-        f"floor motion ü_g + γ·ψ·ẍ₁ of {rec.name}: T1 = {t1:g} s, ψ = {psi:g}, "
-        f"γ = {gamma:g}, ξ = {xi:g}"
-    )
-    return replace(rec, name=f"{rec.name} floor", accel=accel, notes=(*rec.notes, note))
+    return floor_record(rec, Floor(Z=None, T1=t1, psi=psi, gamma=gamma, xi=xi))

@@ -24,28 +24,30 @@ class Floor:
     """The floor at the block's height: the building's first mode that filters the record.
 
     Attributes:
-        Z: height of the block's base above the foundation [m].
+        Z: height of the block's base above the foundation [m] (None: not said, as in
+            `rock record floor`).
         T1: first period of the building [s]. psi: its mode shape at Z [-]. gamma: its
         participation factor [-]. xi: its damping ratio [-].
         notes: how defaults were taken (T1 from H, ψ = Z/H, γ from N).
     """
 
-    Z: float
+    Z: float | None
     T1: float
     psi: float
     gamma: float
     xi: float
     notes: tuple[str, ...] = ()
 
-    def document(self) -> dict[str, float]:
+    def document(self) -> dict[str, float | None]:
         """The JSON object ``record.floor`` (contract: T1, psi, gamma, xi, Z)."""
         return {"T1": self.T1, "psi": self.psi, "gamma": self.gamma, "xi": self.xi, "Z": self.Z}
 
     @property
     def label(self) -> str:
         """One line for reports."""
+        where = "" if self.Z is None else f" at Z = {self.Z:g} m"
         return (
-            f"floor motion at Z = {self.Z:g} m: ü_g + γ·ψ·ẍ₁ with T1 = {self.T1:.3g} s, "
+            f"floor motion{where}: ü_g + γ·ψ·ẍ₁ with T1 = {self.T1:.3g} s, "
             f"ψ = {self.psi:.3g}, γ = {self.gamma:.3g}, ξ = {self.xi:g}"
         )
 
@@ -66,9 +68,8 @@ def floor_record(rec: Record, floor: Floor) -> Record:
         rec.time, rec.accel, T1=floor.T1, psi=floor.psi, gamma=floor.gamma, xi=floor.xi
     )
     note = f"{floor.label}, from the ground record {rec.name}"
-    return replace(
-        rec, name=f"{rec.name} at Z = {floor.Z:g} m", accel=accel, notes=(*rec.notes, note)
-    )
+    name = f"{rec.name} floor" if floor.Z is None else f"{rec.name} at Z = {floor.Z:g} m"
+    return replace(rec, name=name, accel=accel, notes=(*rec.notes, note))
 
 
 def block_input(

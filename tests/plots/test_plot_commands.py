@@ -94,3 +94,18 @@ def test_history_and_plot_together(tmp_path: Path) -> None:
     )
     assert err == f"wrote {csv_path}\nwrote {png}\n"
     assert_png(png)
+
+
+@needs_matplotlib
+def test_the_lower_panel_names_the_motion_that_shook_the_block() -> None:
+    # A block at height rocks on the floor motion (issue 8): the panel under θ/α says so.
+    from matplotlib.figure import Figure
+
+    from rockcli.records.files import read_record
+    from rockcli.report.plots.histories import draw_record
+
+    rec = read_record(str(PULSES[0]))
+    for floor, label in ((True, "floor acc. [g]"), (False, "ground acc. [g]")):
+        ax = Figure().add_subplot()
+        draw_record(ax, rec, 4.0, floor)
+        assert ax.get_ylabel() == label
