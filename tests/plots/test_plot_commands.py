@@ -96,9 +96,9 @@ def test_history_and_plot_together(tmp_path: Path) -> None:
     assert_png(png)
 
 
-@needs_matplotlib
 def test_the_lower_panel_names_the_motion_that_shook_the_block() -> None:
     # A block at height rocks on the floor motion (issue 8): the panel under θ/α says so.
+    needs_matplotlib()
     from matplotlib.figure import Figure
 
     from rockcli.records.files import read_record
