@@ -121,6 +121,7 @@ def kinematic_report(doc: dict[str, Any]) -> Report:
         ("edition", edition, "", ""),
         ("side of overturning", "θ > 0" if doc["side"] > 0 else "θ < 0", "", ""),
         ("load multiplier α0", doc["alpha0"], "", "{:.5f}"),
+        *_alpha0_by_side(doc),
         ("participating mass fraction e*", doc["e_star"], "", "{:.4f}"),
         ("confidence factor FC", doc["FC"], "", "{:.3g}"),
         ("activation acceleration a0*", doc["a0_star"], "m/s²", "{:.4f}"),
@@ -162,6 +163,15 @@ def kinematic_report(doc: dict[str, Any]) -> Report:
         warnings=tuple(doc.get("warnings", ())),
         verdict=verdict_line(doc["edition"], doc["verdict"]),
     )
+
+
+def _alpha0_by_side(doc: dict[str, Any]) -> list[tuple[str, Any, str, str]]:
+    """α0 towards each side, when loads or thrusts make them differ."""
+    by_side = doc.get("alpha0_by_side", {})
+    if len(set(by_side.values())) < 2:
+        return []
+    text = f"{by_side['1']:.5f} (θ > 0), {by_side['-1']:.5f} (θ < 0)"
+    return [("α0 of each side", text, "", "")]
 
 
 def demand_table(demand: dict[str, dict[str, Any]]) -> Table:
