@@ -38,6 +38,10 @@ class Restrainer:
         r_neg, phi_neg: radius [m] and angle [rad] of the point about pivot O′ (θ < 0).
         fails_at: spring elongation at which it is lost for the rest of the run [m]
             (``math.inf``: never).
+        strength: the force the member can carry [N] (``math.inf``: not given): its design
+            tension resistance and its anchorage's capacity. Checked against the force of the
+            time history; the spring itself stays elastic.
+        strength_rule: what sets the strength (for reports; "" when not given).
     """
 
     name: str
@@ -48,6 +52,8 @@ class Restrainer:
     r_neg: float
     phi_neg: float
     fails_at: float = math.inf
+    strength: float = math.inf
+    strength_rule: str = ""
 
     def side(self, s: int) -> tuple[float, float, float]:
         """(K [N/m], r [m], φ [rad]) for pivot side s = ±1."""

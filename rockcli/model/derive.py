@@ -13,6 +13,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, replace
 
+from rockcli.codecheck.steel import CLAUSE, GRADES, rod_area, tension_resistance
 from rockcli.mechanics import (
     NEGATIVE,
     POSITIVE,
@@ -26,6 +27,7 @@ from rockcli.mechanics import (
     point_polar,
     tie_rod_stiffness,
 )
+from rockcli.model.ntc import Ntc
 from rockcli.model.physical import Direction
 from rockcli.model.physical import Load as LoadTable
 from rockcli.model.physical import Thrust as ThrustTable
@@ -224,6 +226,7 @@ def to_restrainer(model: Model, index: int) -> Restrainer:
     table = model.restrainers[index]
     k_pos, k_neg = stiffness(table)
     (r_pos, phi_pos), (r_neg, phi_neg) = attachment(model, table)
+    strength, rule = member_strength(model, table)
     return Restrainer(
         name=table.name or f"restrainer {index + 1}",
         k_pos=k_pos,
@@ -233,18 +236,46 @@ def to_restrainer(model: Model, index: int) -> Restrainer:
         r_neg=r_neg,
         phi_neg=phi_neg,
         fails_at=math.inf if table.fails_at is None else table.fails_at,
+        strength=strength,
+        strength_rule=rule,
     )
 
 
+def member_strength(model: Model, table: RestrainerTable) -> tuple[float, str]:
+    """(strength [N], what sets it): a tie-rod's design tension resistance, capped by the
+    anchor's capacity; a restrainer given by its stiffness has the anchor's capacity only.
+
+    Source: NTC 2018 §4.2.4.1.2 (codecheck.steel.tension_resistance): a standard grade with its
+    nominal strengths; measured fy, fu of an existing bar divided by the confidence factor FC
+    of [ntc] (docs/interpretations.md). (inf, "") when neither a steel nor an anchor is given.
+    """
+    anchor = math.inf if table.anchor_capacity is None else table.anchor_capacity
+    if table.kind is not RestrainerKind.TIE_ROD or (table.grade is None and table.fy is None):
+        return (anchor, "anchor capacity") if math.isfinite(anchor) else (math.inf, "")
+    assert table.diameter is not None
+    area = rod_area(table.diameter, table.count or 1)
+    if table.grade is not None:
+        fy, fu = GRADES[table.grade.value]
+        factor, steel = 1.0, table.grade.value
+    else:
+        assert table.fy is not None and table.fu is not None
+        fy, fu = table.fy, table.fu
+        factor = (model.ntc or Ntc.model_validate({})).confidence_factor
+        steel = f"measured fy, fu ÷ FC = {factor:g}"
+    res = tension_resistance(area, fy, fu, factor, anchor)
+    what = {"plastic": "N_pl,Rd", "ultimate": "N_u,Rd", "anchor": "anchor capacity"}
+    return res.strength, f"{steel}: {what[res.governs]} governs ({CLAUSE})"
+
+
 def stiffness(table: RestrainerTable) -> tuple[float, float]:
-    """(k_pos, k_neg) [N/m]: as given, k on both sides, or a tie-rod's E·π·d²/4 / L.
+    """(k_pos, k_neg) [N/m]: as given, k on both sides, or a tie-rod's count·E·π·d²/4 / L.
 
     Source: spec/README.md (convenience form ``tie-rod``); paper Table 2.
     """
     if table.kind is RestrainerKind.TIE_ROD:
         assert table.diameter is not None and table.length is not None
         modulus = STEEL_MODULUS if table.E is None else table.E
-        k = tie_rod_stiffness(table.diameter, table.length, modulus)
+        k = tie_rod_stiffness(table.diameter, table.length, modulus) * (table.count or 1)
         acts = table.acts or Acts.BOTH
         return (k if acts is not Acts.NEGATIVE else 0.0, k if acts is not Acts.POSITIVE else 0.0)
     if table.k is not None:

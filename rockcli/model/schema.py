@@ -306,8 +306,24 @@ class Analysis(Table):
 PLACEMENTS = (("radius", "angle"), ("height", "from_pivot"), ("position",))
 PLACEMENT_ALLOWED = 'radius + angle, or height + from_pivot, or position = "top"'
 SPRING_ALLOWED = 'k or k_pos + k_neg [N/m]; or kind = "tie-rod" with diameter and length [m]'
-TIE_ROD_KEYS = ("diameter", "length", "E", "acts")
+TIE_ROD_KEYS = ("diameter", "length", "E", "acts", "grade", "fy", "fu", "count")
 TIE_ROD_ALLOWED = 'kind = "tie-rod" with diameter and length [m], optional E [Pa] and acts'
+STEEL_ALLOWED = 'grade = "S235" | "S275" | "S355", or fy and fu [Pa] with fu >= fy'
+#: Range of the measured strengths of an existing steel member [Pa] (wrought iron ~ 200 MPa
+#: to high-strength bars ~ 1000 MPa).
+MIN_STEEL_STRENGTH, MAX_STEEL_STRENGTH = 100e6, 2000e6
+#: Most bars of one tie-rod restrainer.
+MAX_BARS = 100
+#: Largest anchor capacity accepted [N] (100 MN: beyond any masonry anchorage).
+MAX_ANCHOR = 1e8
+
+
+class SteelGrade(StrEnum):
+    """Structural steel grades (NTC 2018 Tab. 11.3.IX)."""
+
+    S235 = "S235"
+    S275 = "S275"
+    S355 = "S355"
 
 
 class Restrainer(Table):
@@ -334,6 +350,34 @@ class Restrainer(Table):
     )
     acts: Acts | None = Field(
         None, description="Tie-rod: side(s) it works on, 'both' (default), 'positive', 'negative'"
+    )
+    grade: SteelGrade | None = Field(
+        None,
+        description="Tie-rod: steel grade 'S235', 'S275' or 'S355' (NTC 2018 Tab. 11.3.IX), "
+        "for its design strength; or fy and fu",
+    )
+    fy: float | None = number(
+        "Tie-rod: yield strength of an existing bar, with fu; divided by FC [Pa]",
+        ge=MIN_STEEL_STRENGTH,
+        le=MAX_STEEL_STRENGTH,
+    )
+    fu: float | None = number(
+        "Tie-rod: ultimate strength of an existing bar, with fy; divided by FC [Pa]",
+        ge=MIN_STEEL_STRENGTH,
+        le=MAX_STEEL_STRENGTH,
+    )
+    count: int | None = Field(
+        None,
+        strict=True,
+        ge=1,
+        le=MAX_BARS,
+        description="Tie-rod: number of equal bars side by side (stiffness and strength); "
+        "default 1",
+    )
+    anchor_capacity: float | None = number(
+        "Force at which the anchorage (plate, masonry) gives way; caps the strength [N]",
+        gt=0,
+        le=MAX_ANCHOR,
     )
     radius: float | None = number(
         "Distance of the attachment point from the pivot, same for both pivots (paper's form; "
@@ -393,6 +437,13 @@ class Restrainer(Table):
         missing = [k for k in ("diameter", "length") if values.get(k) is None]
         if missing:
             raise rule_error(missing[0], 'required with kind = "tie-rod"', TIE_ROD_ALLOWED)
+        if values.get("grade") is not None:
+            forbid(values, ["fy", "fu"], "not allowed together with grade", STEEL_ALLOWED)
+        elif (values.get("fy") is None) != (values.get("fu") is None):
+            key = "fu" if values.get("fu") is None else "fy"
+            raise rule_error(key, "required with the other measured strength", STEEL_ALLOWED)
+        elif values.get("fy") is not None and values["fu"] < values["fy"]:
+            raise rule_error("fu", "below fy", STEEL_ALLOWED, values["fu"])
 
     @property
     def is_stiff(self) -> bool:

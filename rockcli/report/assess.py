@@ -63,6 +63,45 @@ def effectiveness(block: Block) -> list[dict[str, Any]]:
     return rows
 
 
+def restrainer_checks(block: Block, result: Assessment) -> list[dict[str, Any]]:
+    """Each restrainer with a strength: the largest force of the time history (over both
+    polarities) against it, the utilisation and pass/fail (NTC 2018 §4.2.4.1.2 for a steel
+    member; its anchor's capacity otherwise).
+
+    The restrainer is elastic in the time history: a utilisation above 1 means the member
+    would have yielded or its anchorage given way, and the run beyond that is not valid.
+    """
+    rows = []
+    for j, sp in enumerate(block.restrainers):
+        if not math.isfinite(sp.strength):
+            continue
+        demand = max(run.restrainers[j].max_force for run in result.runs)
+        utilisation = demand / sp.strength
+        rows.append(
+            {
+                "name": sp.name,
+                "demand": demand,
+                "strength": sp.strength,
+                "utilisation": utilisation,
+                "passed": bool(utilisation <= 1.0),
+                "rule": sp.strength_rule,
+            }
+        )
+    return rows
+
+
+def strength_warnings(checks: list[dict[str, Any]]) -> list[str]:
+    """A warning per restrainer whose elastic force exceeds its strength."""
+    return [
+        f"restrainer {c['name']!r}: the time history's force {c['demand'] / 1e3:.4g} kN exceeds "
+        f"its strength {c['strength'] / 1e3:.4g} kN ({c['utilisation']:.3g} times): rock models "
+        "restrainers as elastic, so the member would have yielded or its anchorage given way, "
+        "and the result after that is not valid"
+        for c in checks
+        if not c["passed"]
+    ]
+
+
 def run_document(run: RockingRun) -> dict[str, Any]:
     """One polarity's results with full precision (JSON)."""
     return {
@@ -149,6 +188,8 @@ def model_document(name: str, kind: str, block: Block, e_rule: str) -> dict[str,
                 "r_neg": r.r_neg,
                 "phi_neg": r.phi_neg,
                 "fails_at": r.fails_at if math.isfinite(r.fails_at) else None,
+                "strength": r.strength if math.isfinite(r.strength) else None,
+                "strength_rule": r.strength_rule or None,
             }
             for r in block.restrainers
         ],
@@ -187,12 +228,17 @@ def assessment_document(
             "rest_velocity": first.rest_velocity,
         },
         "runs": [run_document(r) for r in result.runs],
+        "restrainer_checks": restrainer_checks(block, result),
         "effectiveness": effectiveness(block),
         "verdict": str(result.verdict),
         "max_ratio": result.max_ratio,
         # max_ratio of an overturned run is the overturn angle over α, not an amplitude
         "max_ratio_overturned": any(r.overturned for r in result.runs),
-        "warnings": [*warnings, *(w for r in result.runs for w in r.warnings)],
+        "warnings": [
+            *warnings,
+            *(w for r in result.runs for w in r.warnings),
+            *strength_warnings(restrainer_checks(block, result)),
+        ],
     }
 
 
@@ -272,6 +318,14 @@ SPRING_COLUMNS = (
     Column("max_force", "max force", "kN", "{:.2f}"),
     Column("t_fail", "failed at", "s", "{:.3f}"),
 )
+CHECK_COLUMNS = (
+    Column("name", "restrainer", ""),
+    Column("demand", "max force", "kN", "{:.2f}"),
+    Column("strength", "strength", "kN", "{:.2f}"),
+    Column("utilisation", "utilisation", "", "{:.3f}"),
+    Column("passed", "passed", ""),
+    Column("rule", "strength from", "", align="left"),
+)
 EFFECT_COLUMNS = (
     Column("name", "restrainer", ""),
     Column("side", "side", ""),
@@ -313,6 +367,12 @@ def assessment_report(doc: dict[str, Any]) -> Report:
     )
     if springs:
         tables.append(Table("Restrainer demands", SPRING_COLUMNS, springs))
+    if doc.get("restrainer_checks"):
+        rows = tuple(
+            {**c, "demand": c["demand"] / 1e3, "strength": c["strength"] / 1e3}
+            for c in doc["restrainer_checks"]
+        )
+        tables.append(Table("Restrainer strength", CHECK_COLUMNS, rows))
     if doc["effectiveness"]:
         tables.append(
             Table(
@@ -378,9 +438,13 @@ def _loads_tables(m: dict[str, Any]) -> list[Table]:
 
 
 def _verdict_line(doc: dict[str, Any]) -> str:
+    beyond = [c["name"] for c in doc.get("restrainer_checks", ()) if not c["passed"]]
+    caveat = (
+        f" — not valid: {', '.join(repr(n) for n in beyond)} beyond its strength" if beyond else ""
+    )
     if doc["verdict"] == "overturns":
-        return "overturns"
-    return f"{doc['verdict']} (max θ/α = {doc['max_ratio']:.4f} over both polarities)"
+        return "overturns" + caveat
+    return f"{doc['verdict']} (max θ/α = {doc['max_ratio']:.4f} over both polarities){caveat}"
 
 
 #: Header of the --history CSV before the restrainer columns.

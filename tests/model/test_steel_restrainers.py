@@ -1,0 +1,143 @@
+"""Tie-rods of a steel grade: their strength, and the time history's force checked against it.
+
+The time history keeps the restrainer elastic; the check says when its force passes the design
+tension resistance (NTC 2018 §4.2.4.1.2) or the anchor's capacity, and the verdict line says
+the result is then not valid. The paper's façade (examples/facade.toml): a Ø20 S275 rod,
+N_t,Rd = 82.28 kN (tests/codecheck/test_steel.py), against 747 kN in the elastic run under
+the Ricker pulse.
+"""
+
+from __future__ import annotations
+
+import copy
+import json
+import math
+from pathlib import Path
+from typing import Any
+
+import pytest
+import tomli_w
+from click.testing import CliRunner
+
+from rockcli.cli.main import cli
+from rockcli.codecheck.steel import GRADES, rod_area, tension_resistance
+from rockcli.errors import InputError
+from rockcli.model.derive import to_block
+from rockcli.model.load import load_model
+
+ROOT = Path(__file__).resolve().parents[2]
+PULSE = ROOT / "records" / "ricker_Tp0.5s_0.5g.txt"
+FACADE = ROOT / "examples" / "facade.toml"
+
+ROD: dict[str, Any] = {
+    "name": "rod",
+    "kind": "tie-rod",
+    "diameter": 0.020,
+    "length": 3.0,
+    "position": "top",
+    "grade": "S275",
+}
+WALL: dict[str, Any] = {
+    "name": "wall with a rod",
+    "kind": "wall",
+    "geometry": {"thickness": 0.5, "height": 3.0},
+    "mass": {"weight": 80.0},
+    "restrainers": [ROD],
+    "ntc": {"FC": 1.2},
+}
+
+
+def model_with(tmp_path: Path, **rod: Any) -> Path:
+    data = copy.deepcopy(WALL)
+    data["restrainers"][0].update(rod)
+    data["restrainers"][0] = {k: v for k, v in data["restrainers"][0].items() if v is not None}
+    path = tmp_path / "m.toml"
+    path.write_text(tomli_w.dumps(data), encoding="utf-8")
+    return path
+
+
+def test_a_graded_rod_carries_its_design_strength(tmp_path: Path) -> None:
+    (rod,) = to_block(load_model(model_with(tmp_path))).restrainers
+    fy, fu = GRADES["S275"]
+    assert rod.strength == tension_resistance(rod_area(0.020), fy, fu).strength
+    assert "S275" in rod.strength_rule and "N_pl,Rd" in rod.strength_rule
+
+
+def test_measured_strengths_use_the_models_confidence_factor(tmp_path: Path) -> None:
+    path = model_with(tmp_path, grade=None, fy=240e6, fu=380e6)
+    (rod,) = to_block(load_model(path)).restrainers
+    expected = tension_resistance(rod_area(0.020), 240e6, 380e6, factor=1.2).strength
+    assert rod.strength == pytest.approx(expected, rel=1e-15)
+    assert "FC = 1.2" in rod.strength_rule
+
+
+def test_two_bars_double_the_stiffness_and_the_strength(tmp_path: Path) -> None:
+    (one,) = to_block(load_model(model_with(tmp_path))).restrainers
+    (two,) = to_block(load_model(model_with(tmp_path, count=2))).restrainers
+    assert two.k_pos == pytest.approx(2 * one.k_pos, rel=1e-15)
+    assert two.strength == pytest.approx(2 * one.strength, rel=1e-15)
+
+
+def test_the_anchor_caps_a_rod_and_is_a_springs_strength(tmp_path: Path) -> None:
+    (rod,) = to_block(load_model(model_with(tmp_path, anchor_capacity=40e3))).restrainers
+    assert rod.strength == 40e3 and "anchor" in rod.strength_rule
+    spring = {"name": "vault", "k": 4e6, "position": "top", "anchor_capacity": 25e3}
+    data = {**copy.deepcopy(WALL), "restrainers": [spring]}
+    path = tmp_path / "s.toml"
+    path.write_text(tomli_w.dumps(data), encoding="utf-8")
+    (vault,) = to_block(load_model(path)).restrainers
+    assert vault.strength == 25e3
+
+
+def test_a_rod_without_steel_has_no_strength(tmp_path: Path) -> None:
+    (rod,) = to_block(load_model(model_with(tmp_path, grade=None))).restrainers
+    assert math.isinf(rod.strength) and rod.strength_rule == ""
+
+
+BAD = [
+    ({"grade": "S460"}, "restrainers[0].grade", "S235"),
+    ({"fy": 240e6}, "restrainers[0].fy", "grade"),
+    ({"grade": None, "fy": 240e6}, "restrainers[0].fu", "fu >= fy"),
+    ({"grade": None, "fy": 400e6, "fu": 300e6}, "restrainers[0].fu", "fu >= fy"),
+    ({"grade": None, "fy": 5e6, "fu": 300e6}, "restrainers[0].fy", "[Pa]"),
+    ({"anchor_capacity": 0.0}, "restrainers[0].anchor_capacity", "[N]"),
+    ({"anchor_capacity": -5.0}, "restrainers[0].anchor_capacity", "[N]"),
+    ({"count": 0}, "restrainers[0].count", ">= 1"),
+]
+
+
+@pytest.mark.parametrize(("rod", "where", "allowed"), BAD, ids=[w for _, w, _ in BAD])
+def test_bad_steel_is_one_line(tmp_path: Path, rod: dict, where: str, allowed: str) -> None:
+    with pytest.raises(InputError) as info:
+        load_model(model_with(tmp_path, **rod))
+    assert info.value.where == where
+    assert info.value.allowed is not None and allowed in info.value.allowed
+
+
+def test_steel_keys_belong_to_tie_rods(tmp_path: Path) -> None:
+    spring = {"name": "vault", "k": 4e6, "position": "top", "grade": "S275"}
+    data = {**copy.deepcopy(WALL), "restrainers": [spring]}
+    path = tmp_path / "s.toml"
+    path.write_text(tomli_w.dumps(data), encoding="utf-8")
+    result = CliRunner().invoke(cli, ["assess", str(path), "--record", str(PULSE)])
+    assert result.exit_code == 2 and result.stdout == ""
+    assert "restrainers[0].grade" in result.stderr and result.stderr.count("\n") == 1
+
+
+def test_the_facade_rod_is_checked_against_its_strength() -> None:
+    result = CliRunner().invoke(
+        cli, ["assess", str(FACADE), "--record", str(PULSE), "--format", "json"]
+    )
+    assert result.exit_code == 0, result.stderr
+    doc = json.loads(result.stdout)
+    (check,) = doc["restrainer_checks"]
+    rod = next(r for r in doc["model"]["restrainers"] if r["name"] == "tie-rod")
+    assert check["strength"] == rod["strength"]
+    assert check["strength"] == pytest.approx(82_280.0, abs=1.0)  # S275 Ø20, by hand
+    j = [r["name"] for r in doc["model"]["restrainers"]].index("tie-rod")
+    assert check["demand"] == max(run["restrainers"][j]["max_force"] for run in doc["runs"])
+    assert check["utilisation"] == pytest.approx(check["demand"] / check["strength"], rel=1e-15)
+    assert check["passed"] is False and check["utilisation"] > 1
+    assert any("exceeds its strength" in w for w in doc["warnings"])
+    text = CliRunner().invoke(cli, ["assess", str(FACADE), "--record", str(PULSE)]).stdout
+    assert "not valid: 'tie-rod' beyond its strength" in text.splitlines()[-1]
