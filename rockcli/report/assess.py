@@ -22,6 +22,7 @@ from rockcli.mechanics import (
 from rockcli.records.record import Record
 from rockcli.report.records import record_document, record_report
 from rockcli.report.table import Column, Report, Table, format_value, key_value
+from rockcli.studies.strength import restrainer_checks
 
 if TYPE_CHECKING:
     from rockcli.studies.assess import AssessmentOutput
@@ -60,33 +61,6 @@ def effectiveness(block: Block) -> list[dict[str, Any]]:
                     "global_stiffness": "positive" if stiff > 0 else "negative",
                 }
             )
-    return rows
-
-
-def restrainer_checks(block: Block, result: Assessment) -> list[dict[str, Any]]:
-    """Each restrainer with a strength: the largest force of the time history (over both
-    polarities) against it, the utilisation and pass/fail (NTC 2018 §4.2.4.1.2 for a steel
-    member; its anchor's capacity otherwise).
-
-    The restrainer is elastic in the time history: a utilisation above 1 means the member
-    would have yielded or its anchorage given way, and the run beyond that is not valid.
-    """
-    rows = []
-    for j, sp in enumerate(block.restrainers):
-        if not math.isfinite(sp.strength):
-            continue
-        demand = max(run.restrainers[j].max_force for run in result.runs)
-        utilisation = demand / sp.strength
-        rows.append(
-            {
-                "name": sp.name,
-                "demand": demand,
-                "strength": sp.strength,
-                "utilisation": utilisation,
-                "passed": bool(utilisation <= 1.0),
-                "rule": sp.strength_rule,
-            }
-        )
     return rows
 
 

@@ -171,10 +171,16 @@ def comparison_report(doc: dict[str, Any]) -> Report:
 
 
 def comparison_verdict(doc: dict[str, Any]) -> str:
-    """The verdict line: the classification, and whether the two sides saw one earthquake."""
+    """The verdict line: the classification, whether the two sides saw one earthquake, and
+    whether a restrainer of the time history went beyond its strength (then not valid)."""
+    line = str(doc["classification"])
     if doc.get("code_demand") == "model":
-        return f"{doc['classification']} — {DIFFERENT_EARTHQUAKES}"
-    return str(doc["classification"])
+        line += f" — {DIFFERENT_EARTHQUAKES}"
+    beyond = [c["name"] for c in doc["rocking"].get("restrainer_checks", ()) if not c["passed"]]
+    if beyond:
+        names = ", ".join(repr(n) for n in beyond)
+        line += f" — the time history is not valid: {names} beyond its strength"
+    return line
 
 
 def comparison_warnings(doc: dict[str, Any]) -> list[str]:

@@ -141,3 +141,10 @@ def test_the_facade_rod_is_checked_against_its_strength() -> None:
     assert any("exceeds its strength" in w for w in doc["warnings"])
     text = CliRunner().invoke(cli, ["assess", str(FACADE), "--record", str(PULSE)]).stdout
     assert "not valid: 'tie-rod' beyond its strength" in text.splitlines()[-1]
+
+
+def test_compare_says_the_time_history_is_not_valid() -> None:
+    result = CliRunner().invoke(cli, ["compare", str(FACADE), "--record", str(PULSE)])
+    assert result.exit_code == 0, result.stderr
+    last = result.stdout.splitlines()[-1]
+    assert last.startswith("verdict: ") and "not valid: 'tie-rod' beyond its strength" in last

@@ -45,6 +45,7 @@ RESULT_COLUMNS: dict[str, type] = {
     "t_overturn": float,
     "rocking": str,
     "input": str,
+    "utilisation": float,
     "code_dls": str,
     "code_uls": str,
     "uls_ratio": float,

@@ -40,6 +40,7 @@ RESERVED = frozenset(
         "t_overturn",
         "rocking",
         "input",
+        "utilisation",
         "code_dls",
         "code_uls",
         "uls_ratio",

@@ -215,6 +215,7 @@ def run_case(
         roc = assess_model(model, record, plan.engine, ground=ground)
         row["input"] = "ground" if ground or model_floor(model) is None else "floor"
         row.update(rocking_columns(roc))
+        row["utilisation"] = max_utilisation(model, roc)
     if "kinematic" in plan.analyses:
         from rockcli.studies.kinematic import kinematic_model
 
@@ -226,6 +227,15 @@ def run_case(
     if roc is not None and kin is not None:
         row["classification"] = str(classify(code_collapse(kin), rocking_collapse(roc)))
     return row
+
+
+def max_utilisation(model: Model, result: Assessment) -> float | None:
+    """The largest force/strength of the restrainers that have a strength (None: none has)."""
+    from rockcli.model.derive import to_block
+    from rockcli.studies.strength import restrainer_checks
+
+    checks = restrainer_checks(to_block(model), result)
+    return _number(max(c["utilisation"] for c in checks)) if checks else None
 
 
 def rocking_columns(result: Assessment) -> dict[str, Any]:
