@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from functools import cached_property
 
 from rockcli.mechanics import (
     Block,
@@ -51,7 +52,7 @@ class Mechanism:
     side: int = 1
     distributed: bool = False
 
-    @property
+    @cached_property
     def points(self) -> tuple[float, ...]:
         """The block, its loads and thrusts as the point table (mechanics.point_table)."""
         return point_table(self.block)

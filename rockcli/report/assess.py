@@ -190,6 +190,7 @@ def assessment_document(
     """The whole `rock assess --format json` document (schema 1); ``warnings``: the inputs'
     (model and record magnitudes that look like unit slips), before the runs' own."""
     first = result.runs[0]
+    checks = restrainer_checks(block, result)
     return {
         "schema": SCHEMA,
         "rock_version": __version__,
@@ -202,7 +203,7 @@ def assessment_document(
             "rest_velocity": first.rest_velocity,
         },
         "runs": [run_document(r) for r in result.runs],
-        "restrainer_checks": restrainer_checks(block, result),
+        "restrainer_checks": checks,
         "effectiveness": effectiveness(block),
         "verdict": str(result.verdict),
         "max_ratio": result.max_ratio,
@@ -211,7 +212,7 @@ def assessment_document(
         "warnings": [
             *warnings,
             *(w for r in result.runs for w in r.warnings),
-            *strength_warnings(restrainer_checks(block, result)),
+            *strength_warnings(checks),
         ],
     }
 

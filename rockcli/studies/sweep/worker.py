@@ -28,6 +28,7 @@ if TYPE_CHECKING:
     from rockcli.codecheck.response import RecordSpectrum
     from rockcli.codecheck.result import Check, KinematicResult
     from rockcli.dynamics.result import Assessment
+    from rockcli.mechanics import Block
     from rockcli.model.schema import Model
     from rockcli.records.record import Record
 
@@ -208,14 +209,15 @@ def run_case(
     row: dict[str, Any] = {"block_R": R, "block_alpha": alpha}
     roc = kin = None
     if "rocking" in plan.analyses and record is not None:
-        from rockcli.studies.assess import assess_model
+        from rockcli.studies.assess import assess_model_output
         from rockcli.studies.floor import model_floor
 
         ground = plan.ground and model_floor(model) is not None
-        roc = assess_model(model, record, plan.engine, ground=ground)
-        row["input"] = "ground" if ground or model_floor(model) is None else "floor"
+        out = assess_model_output(model, record, plan.engine, ground=ground)
+        roc = out.result
+        row["input"] = "ground" if out.floor is None else "floor"
         row.update(rocking_columns(roc))
-        row["utilisation"] = max_utilisation(model, roc)
+        row["utilisation"] = max_utilisation(out.block, roc)
     if "kinematic" in plan.analyses:
         from rockcli.studies.kinematic import kinematic_model
 
@@ -229,12 +231,11 @@ def run_case(
     return row
 
 
-def max_utilisation(model: Model, result: Assessment) -> float | None:
+def max_utilisation(block: Block, result: Assessment) -> float | None:
     """The largest force/strength of the restrainers that have a strength (None: none has)."""
-    from rockcli.model.derive import to_block
     from rockcli.studies.strength import restrainer_checks
 
-    checks = restrainer_checks(to_block(model), result)
+    checks = restrainer_checks(block, result)
     return _number(max(c["utilisation"] for c in checks)) if checks else None
 
 
