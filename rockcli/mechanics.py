@@ -40,8 +40,17 @@ class Restrainer:
             (``math.inf``: never).
         strength: the force the member can carry [N] (``math.inf``: not given): its design
             tension resistance and its anchorage's capacity. Checked against the force of the
-            time history; the spring itself stays elastic.
+            time history.
         strength_rule: what sets the strength (for reports; "" when not given).
+        law: "elastic" or "elastic-plastic".
+        yield_pos, yield_neg: yield force of the elastic-plastic law on each side [N] (inf:
+            elastic).
+        pretension: force in the member at rest [N].
+        rupture_force: force at which the anchorage gives way and the member is lost [N]
+            (inf: never).
+        code_action: "force" (the kinematic check takes ``code_force`` as a stabilising force
+            in α0) or "spring" (its stiffness, no force at rest).
+        code_force: the force the kinematic check relies on with code_action "force" [N].
     """
 
     name: str
@@ -54,6 +63,13 @@ class Restrainer:
     fails_at: float = math.inf
     strength: float = math.inf
     strength_rule: str = ""
+    law: str = "elastic"
+    yield_pos: float = math.inf
+    yield_neg: float = math.inf
+    pretension: float = 0.0
+    rupture_force: float = math.inf
+    code_action: str = "spring"
+    code_force: float = 0.0
 
     def side(self, s: int) -> tuple[float, float, float]:
         """(K [N/m], r [m], φ [rad]) for pivot side s = ±1."""
@@ -65,6 +81,20 @@ class Restrainer:
     def can_fail(self) -> bool:
         """True when the restrainer has a finite failure elongation."""
         return math.isfinite(self.fails_at)
+
+    def yield_force(self, s: int) -> float:
+        """Yield force of the side s = ±1 [N] (inf: elastic)."""
+        return self.yield_pos if s > 0 else self.yield_neg
+
+    @property
+    def has_memory(self) -> bool:
+        """True when its force depends on its history: it yields, is pretensioned or breaks."""
+        return (
+            math.isfinite(self.yield_pos)
+            or math.isfinite(self.yield_neg)
+            or self.pretension > 0.0
+            or math.isfinite(self.rupture_force)
+        )
 
 
 @dataclass(frozen=True)

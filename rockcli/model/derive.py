@@ -34,6 +34,7 @@ from rockcli.model.physical import Thrust as ThrustTable
 from rockcli.model.schema import (
     STEEL_MODULUS,
     Acts,
+    CodeAction,
     Model,
     Position,
     RestitutionModel,
@@ -227,6 +228,8 @@ def to_restrainer(model: Model, index: int) -> Restrainer:
     k_pos, k_neg = stiffness(table)
     (r_pos, phi_pos), (r_neg, phi_neg) = attachment(model, table)
     strength, rule = member_strength(model, table)
+    yield_pos, yield_neg = table.yield_forces(confidence_factor(model) if table.fy else 1.0)
+    code_force = code_force_of(table, strength, (yield_pos, yield_neg))
     return Restrainer(
         name=table.name or f"restrainer {index + 1}",
         k_pos=k_pos,
@@ -235,10 +238,50 @@ def to_restrainer(model: Model, index: int) -> Restrainer:
         phi_pos=phi_pos,
         r_neg=r_neg,
         phi_neg=phi_neg,
-        fails_at=math.inf if table.fails_at is None else table.fails_at,
+        fails_at=rupture_elongation(table, max(k_pos, k_neg)),
         strength=strength,
         strength_rule=rule,
+        law=table.effective_law.value,
+        yield_pos=yield_pos,
+        yield_neg=yield_neg,
+        pretension=table.pretension or 0.0,
+        rupture_force=math.inf if table.anchor_capacity is None else table.anchor_capacity,
+        code_action=table.effective_code_action.value,
+        code_force=code_force,
     )
+
+
+def confidence_factor(model: Model) -> float:
+    """FC of [ntc] (its default when the table is absent)."""
+    return (model.ntc or Ntc.model_validate({})).confidence_factor
+
+
+def rupture_elongation(table: RestrainerTable, k: float) -> float:
+    """Elongation u of the spring, from rest, at which the member is lost [m] (inf: never).
+
+    ``fails_at`` as given; for a tie-rod with an elongation at break ε_u, the bar breaks when
+    its whole elongation, the pretension's P0/K included, reaches ε_u·L:
+    u = ε_u·L − P0/K (docs/interpretations.md).
+    """
+    if table.fails_at is not None:
+        return table.fails_at
+    if table.elongation_at_break is None:
+        return math.inf
+    assert table.length is not None
+    return table.elongation_at_break * table.length - (table.pretension or 0.0) / k
+
+
+def code_force_of(table: RestrainerTable, strength: float, yields: tuple[float, float]) -> float:
+    """The force the kinematic check relies on with code_action "force" [N], 0 with "spring".
+
+    A tie-rod of known steel: its design strength N_t,Rd capped by the anchor (NTC 2018
+    §4.2.4.1.2); another member: the lowest of its yield forces and its anchor capacity.
+    """
+    if table.effective_code_action is CodeAction.SPRING:
+        return 0.0
+    if table.has_steel:
+        return strength
+    return min(*yields, strength)
 
 
 def member_strength(model: Model, table: RestrainerTable) -> tuple[float, str]:
@@ -260,7 +303,7 @@ def member_strength(model: Model, table: RestrainerTable) -> tuple[float, str]:
     else:
         assert table.fy is not None and table.fu is not None
         fy, fu = table.fy, table.fu
-        factor = (model.ntc or Ntc.model_validate({})).confidence_factor
+        factor = confidence_factor(model)
         steel = f"measured fy, fu ÷ FC = {factor:g}"
     res = tension_resistance(area, fy, fu, factor, anchor)
     what = {"plastic": "N_pl,Rd", "ultimate": "N_u,Rd", "anchor": "anchor capacity"}

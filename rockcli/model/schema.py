@@ -20,6 +20,7 @@ from typing import Any
 
 from pydantic import Field, model_validator
 
+from rockcli.codecheck.steel import GRADES, rod_area
 from rockcli.model.bounds import (
     MAX_LENGTH,
     MAX_MODULUS,
@@ -105,6 +106,20 @@ class RestrainerKind(StrEnum):
 
     SPRING = "spring"
     TIE_ROD = "tie-rod"
+
+
+class Law(StrEnum):
+    """The force–elongation law of a restrainer."""
+
+    ELASTIC = "elastic"
+    ELASTIC_PLASTIC = "elastic-plastic"
+
+
+class CodeAction(StrEnum):
+    """How a restrainer enters the kinematic check."""
+
+    FORCE = "force"
+    SPRING = "spring"
 
 
 class Acts(StrEnum):
@@ -306,7 +321,28 @@ class Analysis(Table):
 PLACEMENTS = (("radius", "angle"), ("height", "from_pivot"), ("position",))
 PLACEMENT_ALLOWED = 'radius + angle, or height + from_pivot, or position = "top"'
 SPRING_ALLOWED = 'k or k_pos + k_neg [N/m]; or kind = "tie-rod" with diameter and length [m]'
-TIE_ROD_KEYS = ("diameter", "length", "E", "acts", "grade", "fy", "fu", "count")
+TIE_ROD_KEYS = (
+    "diameter",
+    "length",
+    "E",
+    "acts",
+    "grade",
+    "fy",
+    "fu",
+    "count",
+    "elongation_at_break",
+)
+LAW_ALLOWED = (
+    'law = "elastic" (no yield), or "elastic-plastic" with yield_pos and yield_neg [N] '
+    "(a tie-rod: its grade or fy, fu)"
+)
+PRETENSION_ALLOWED = "0 <= pretension < the yield force and the anchor capacity [N]"
+CODE_ACTION_ALLOWED = (
+    'code_action = "spring", or "force" for a member with a strength (a tie-rod\'s grade or '
+    "fy, fu; a yield force; an anchor capacity)"
+)
+#: Largest elongation at break of a bar [-]: 100 % (structural steels break near 20–30 %).
+MAX_ELONGATION_AT_BREAK = 1.0
 TIE_ROD_ALLOWED = 'kind = "tie-rod" with diameter and length [m], optional E [Pa] and acts'
 STEEL_ALLOWED = 'grade = "S235" | "S275" | "S355", or fy and fu [Pa] with fu >= fy'
 #: Range of the measured strengths of an existing steel member [Pa] (wrought iron ~ 200 MPa
@@ -410,6 +446,32 @@ class Restrainer(Table):
         ge=MIN_ELONGATION,
         le=MAX_LENGTH,
     )
+    law: Law | None = Field(
+        None,
+        description="'elastic' or 'elastic-plastic' (yields, goes slack, cannot push); default "
+        "elastic-plastic for a tie-rod with a grade or fy, fu, for a spring with yield forces",
+    )
+    yield_pos: float | None = number(
+        "Spring: yield force while θ > 0 (elastic-plastic law) [N]", gt=0, le=MAX_ANCHOR
+    )
+    yield_neg: float | None = number(
+        "Spring: yield force while θ < 0 (elastic-plastic law) [N]", gt=0, le=MAX_ANCHOR
+    )
+    pretension: float | None = number(
+        "Force in the member at rest, below its yield force; default 0 [N]", ge=0, le=MAX_ANCHOR
+    )
+    elongation_at_break: float | None = number(
+        "Tie-rod: elongation at break of the steel, a fraction of the length (0.2 = 20 %); "
+        "the bar ruptures there; default never [-]",
+        gt=0,
+        le=MAX_ELONGATION_AT_BREAK,
+    )
+    code_action: CodeAction | None = Field(
+        None,
+        description="How the kinematic check takes it: 'force' (its strength, a stabilising "
+        "force in α0; default for a tie-rod with a grade or fy, fu) or 'spring' (its stiffness, "
+        "no force at rest; default otherwise)",
+    )
 
     @model_validator(mode="after")
     def _one_stiffness_one_place(self) -> Restrainer:
@@ -421,7 +483,101 @@ class Restrainer(Table):
             self._check_spring(values)
         if choose_group(values, PLACEMENTS, PLACEMENT_ALLOWED) is None:
             raise rule_error(None, "missing the attachment point", PLACEMENT_ALLOWED)
+        self._check_law()
+        self._check_pretension()
+        if self.code_action is CodeAction.FORCE and not self.has_strength:
+            raise rule_error(
+                "code_action", "needs a member with a strength", CODE_ACTION_ALLOWED, "force"
+            )
         return self
+
+    @property
+    def has_steel(self) -> bool:
+        """True for a tie-rod whose steel is given (a grade, or measured fy and fu)."""
+        return self.kind is RestrainerKind.TIE_ROD and (
+            self.grade is not None or self.fy is not None
+        )
+
+    @property
+    def has_strength(self) -> bool:
+        """True when the member's strength is known: its steel, a yield force or an anchor."""
+        return (
+            self.has_steel
+            or self.yield_pos is not None
+            or self.yield_neg is not None
+            or self.anchor_capacity is not None
+        )
+
+    @property
+    def effective_law(self) -> Law:
+        """The law as given, else elastic-plastic for a member with a yield, else elastic."""
+        if self.law is not None:
+            return self.law
+        if self.has_steel or self.yield_pos is not None or self.yield_neg is not None:
+            return Law.ELASTIC_PLASTIC
+        return Law.ELASTIC
+
+    @property
+    def effective_code_action(self) -> CodeAction:
+        """The code action as given, else "force" for a tie-rod of known steel, else "spring"."""
+        if self.code_action is not None:
+            return self.code_action
+        return CodeAction.FORCE if self.has_steel else CodeAction.SPRING
+
+    def yield_forces(self, factor: float = 1.0) -> tuple[float, float]:
+        """(yield while θ > 0, yield while θ < 0) [N] of the elastic-plastic law (inf: none).
+
+        A tie-rod yields at count·π·d²/4·f_y: the grade's nominal f_yk, or a measured f_y
+        divided by the confidence factor ``factor`` (docs/interpretations.md); both sides alike.
+        """
+        if self.effective_law is Law.ELASTIC:
+            return math.inf, math.inf
+        if self.kind is RestrainerKind.TIE_ROD:
+            assert self.diameter is not None
+            fy = GRADES[self.grade.value][0] if self.grade is not None else self.fy
+            assert fy is not None
+            force = rod_area(self.diameter, self.count or 1) * fy / factor
+            return force, force
+        pos = math.inf if self.yield_pos is None else self.yield_pos
+        neg = math.inf if self.yield_neg is None else self.yield_neg
+        return pos, neg
+
+    def _check_law(self) -> None:
+        """An elastic-plastic law needs yield forces (a spring) or steel (a tie-rod)."""
+        values = self.__dict__
+        if self.kind is RestrainerKind.TIE_ROD:
+            forbid(
+                values,
+                ["yield_pos", "yield_neg"],
+                'not allowed with kind = "tie-rod": its yield force comes from its steel',
+                STEEL_ALLOWED,
+            )
+            if self.law is Law.ELASTIC_PLASTIC and not self.has_steel:
+                raise rule_error("law", "needs the tie-rod's steel", STEEL_ALLOWED, self.law.value)
+            if self.elongation_at_break is not None:
+                forbid(values, ["fails_at"], "not allowed with elongation_at_break", "one of them")
+            return
+        if self.law is Law.ELASTIC:
+            forbid(
+                values, ["yield_pos", "yield_neg"], 'not allowed with law = "elastic"', LAW_ALLOWED
+            )
+        k_pos = self.k if self.k is not None else self.k_pos
+        k_neg = self.k if self.k is not None else self.k_neg
+        if self.effective_law is Law.ELASTIC_PLASTIC:
+            for key, k in (("yield_pos", k_pos), ("yield_neg", k_neg)):
+                if k and values.get(key) is None:
+                    raise rule_error(key, 'required with law = "elastic-plastic"', LAW_ALLOWED)
+
+    def _check_pretension(self) -> None:
+        """A pretension below every yield force and the anchor's capacity."""
+        p0 = self.pretension
+        if not p0:
+            return
+        limits = [f for f in self.yield_forces() if math.isfinite(f)]
+        if self.anchor_capacity is not None:
+            limits.append(self.anchor_capacity)
+        if limits and p0 >= min(limits):
+            raise rule_error("pretension", f"not below {min(limits):g} N", PRETENSION_ALLOWED, p0)
 
     @staticmethod
     def _check_spring(values: Mapping[str, Any]) -> None:

@@ -164,6 +164,10 @@ TABLE_NOTES: dict[str, tuple[str, ...]] = {
         "Point: radius + angle (same for both pivots), or height + from_pivot, or position = "
         '"top" (r = 2R, φ = α).',
         "Optional: fails_at = elongation [m] at which the spring is lost for good.",
+        'Law: "elastic", or "elastic-plastic" (yields, goes slack, cannot push) with yield_pos, '
+        "yield_neg [N]; a tie-rod with a grade or fy, fu is elastic-plastic, yields at A·fy and",
+        "breaks at elongation_at_break·length. pretension [N] acts until it goes slack. "
+        'code_action = "force" (its strength in α0) or "spring".',
     ),
     "building": (
         "Where the element stands in the building (a property of the element, not of a code).",
@@ -222,6 +226,12 @@ OTHER_KEYS: dict[str, dict[str, Any]] = {
         "from_pivot": 0.25,
         "position": "top",
         "fails_at": 0.05,
+        "law": "elastic-plastic",
+        "yield_pos": 60e3,
+        "yield_neg": 60e3,
+        "pretension": 5e3,
+        "elongation_at_break": 0.2,
+        "code_action": "force",
     },
     "building": {
         "Z": 0.0,

@@ -162,12 +162,24 @@ def model_document(name: str, kind: str, block: Block, e_rule: str) -> dict[str,
                 "r_neg": r.r_neg,
                 "phi_neg": r.phi_neg,
                 "fails_at": r.fails_at if math.isfinite(r.fails_at) else None,
-                "strength": r.strength if math.isfinite(r.strength) else None,
+                "strength": finite_or_none(r.strength),
                 "strength_rule": r.strength_rule or None,
+                "law": r.law,
+                "yield_pos": finite_or_none(r.yield_pos),
+                "yield_neg": finite_or_none(r.yield_neg),
+                "pretension": r.pretension,
+                "anchor_capacity": finite_or_none(r.rupture_force),
+                "code_action": r.code_action,
+                "code_force": r.code_force,
             }
             for r in block.restrainers
         ],
     }
+
+
+def finite_or_none(x: float) -> float | None:
+    """x, or None (JSON null) when it is infinite: "not given", "never"."""
+    return x if math.isfinite(x) else None
 
 
 def impact_rule(block: Block) -> str:
