@@ -47,6 +47,7 @@ for _fn in (
     mechanics.spring_elongation_trig,
     mechanics.spring_moment_trig,
     mechanics.spring_elongation,
+    mechanics.spring_failure_rotation,
     mechanics.point_moments,  # loaded blocks only; numba's IR inlining of its loop misfires
 ):
     register_jitable(_fn)
@@ -54,8 +55,22 @@ for _array_fn in (
     rules.spring_on_side,
     rules.spring_trig_on_side,
     rules.ground_acceleration,
+    rules.member_force,
+    rules.member_moment,
 ):
     register_jitable(inline="always")(_array_fn)
+register_jitable(rules.side_index)
+# The member laws' state changes: called at events only.
+for _law_fn in (rules.rotation_at_elongation, rules.set_levels, rules.plateau_work):
+    register_jitable(_law_fn)
+_reset_laws = njit(cache=CACHE)(rules.reset_laws)
+_cross_up = njit(cache=CACHE)(rules.cross_up)
+_cross_down = njit(cache=CACHE)(rules.cross_down)
+_unload = njit(cache=CACHE)(rules.unload)
+_released_energy = njit(cache=CACHE)(rules.released_energy)
+_any_plastic = njit(cache=CACHE)(rules.any_plastic)
+_rest_moment = njit(cache=CACHE)(rules.rest_moment)
+_member_force = njit(cache=CACHE, inline="always")(rules.member_force)
 _rhs = njit(cache=CACHE, inline="always")(rules.angular_acceleration)
 _loaded_rhs = njit(cache=CACHE)(
     rules.loaded_angular_acceleration
@@ -405,25 +420,48 @@ def _update_peak(a, s, peaks, spring_out, springs, alive, linearized):
                 u = _elongation_on_side(springs, j, s, a, linearized)
                 if u > spring_out[j, L.S_MAX_U]:
                     spring_out[j, L.S_MAX_U] = u
-                if k * u > spring_out[j, L.S_MAX_FORCE]:
-                    spring_out[j, L.S_MAX_FORCE] = k * u
+                force = _member_force(springs, j, s, k, u)
+                if force > spring_out[j, L.S_MAX_FORCE]:
+                    spring_out[j, L.S_MAX_FORCE] = force
 
 
 @njit(cache=CACHE)
 def _event_levels(s, par, springs, alive, levels, kinds):
-    """Fill the upward levels of a that end the phase: overturning and each live failure."""
+    """Fill the levels of a that end the phase; return (number upward, number downward).
+
+    Upward, from index 0: overturning (kind −1), each live failure at fails_at (kind j) and
+    each live member law's upward level (kind n + j: yield, re-engage or anchor rupture).
+    Downward, from index DOWN_BASE = 2n + 1: each live member's slack point (kind j). The
+    impact at a = 0 is found apart. (One pair of arrays: each array argument of a call costs
+    reference counting on the scan's path.)
+    """
+    n_rows = springs.shape[0]
+    base = 2 * n_rows + 1
     n = 0
     levels[n] = par[L.P_OVERTURN]
     kinds[n] = -1
     n += 1
-    for j in range(springs.shape[0]):
+    n_down = 0
+    col = rules.side_index(s)
+    for j in range(n_rows):
         if alive[j] != 0:
             k, _, _, a_fail = _spring_on_side(springs, j, s)
             if k != 0.0 and a_fail < 1e300:
                 levels[n] = a_fail
                 kinds[n] = j
                 n += 1
-    return n
+            if k != 0.0 and springs[j, rules.COL_MEMORY] != 0.0:
+                up = springs[j, rules.COL_UP + col]
+                if up < 1e300:
+                    levels[n] = up
+                    kinds[n] = n_rows + j
+                    n += 1
+                down = springs[j, rules.COL_DOWN + col]
+                if down >= 0.0:
+                    levels[base + n_down] = down
+                    kinds[base + n_down] = j
+                    n_down += 1
+    return n, n_down
 
 
 @njit(cache=CACHE, inline=INLINE)
@@ -447,33 +485,63 @@ def _stage_trend(k_th, s):
 
 
 @njit(cache=CACHE)
-def _lowest_level(s, par, springs, alive):
-    """The lowest upward event level of a on side s: overturning or a live failure [rad]."""
+def _level_bounds(s, par, springs, alive):
+    """(lowest upward, highest downward) event level of a on side s [rad].
+
+    Upward: overturning, a live failure or a member law's level; downward: the impact at 0 or
+    a live member's slack point, +inf while a member is on its yield plateau (its turning point
+    is an event, so a step going down must be scanned).
+    """
     lowest = par[L.P_OVERTURN]
+    highest = 0.0
+    col = rules.side_index(s)
     for j in range(springs.shape[0]):
         if alive[j] != 0:
             k, _, _, a_fail = _spring_on_side(springs, j, s)
             if k != 0.0 and a_fail < lowest:
                 lowest = a_fail
-    return lowest
+            if k != 0.0 and springs[j, rules.COL_MEMORY] != 0.0:
+                lowest = min(lowest, springs[j, rules.COL_UP + col])
+                highest = max(highest, springs[j, rules.COL_DOWN + col])
+                if springs[j, rules.COL_MODE + col] == rules.MODE_PLASTIC:
+                    highest = math.inf
+    return lowest, highest
 
 
 @njit(cache=CACHE)
 def _scan_sampled(
-    th0, om0, th1, h, q_th, q_om, s, par, springs, alive, peaks, spring_out, levels, kinds
+    th0,
+    om0,
+    th1,
+    h,
+    q_th,
+    q_om,
+    s,
+    par,
+    springs,
+    alive,
+    peaks,
+    spring_out,
+    levels,
+    kinds,
 ):
     """Scan a step that may hold an event or a turning point; record the peaks before it.
 
     The step is sampled at SCAN_POINTS points of the dense output; a crossing of 0 (impact) or
-    of an upward level (overturning, failure) is located by _root between the samples that
-    bracket it, and turning points (roots of θ̇) give the peaks. A step that starts at θ = 0
-    brackets the impact from its turning point (engine.md, trap 1).
+    of an upward level (overturning, failure, a member's yield, re-engage or rupture) or of a
+    downward one (a member's slack point) is located by _root between the samples that
+    bracket it, and turning points (roots of θ̇) give the peaks; with a member on its yield
+    plateau the turning point is itself an event (the member unloads). A step that starts at
+    θ = 0 brackets the impact from its turning point (engine.md, trap 1).
 
     Returns (x_event, kind, spring_row): x_event in [0, 1] (2.0 when nothing happens),
-    kind EV_*, spring_row the failing restrainer (−1 otherwise).
+    kind EV_*, spring_row the restrainer of the event (−1 otherwise).
     """
     lin = par[L.P_LINEAR] != 0.0
-    n_levels = _event_levels(s, par, springs, alive, levels, kinds)
+    n_rows = springs.shape[0]
+    n_levels, n_down = _event_levels(s, par, springs, alive, levels, kinds)
+    base = 2 * n_rows + 1
+    plastic = n_rows > 0 and _any_plastic(springs, alive, s)
     x_prev = 0.0
     a_prev = s * th0
     for step in range(1, SCAN_POINTS + 1):
@@ -490,17 +558,30 @@ def _scan_sampled(
                     return x_prev, L.EV_UNRESOLVED, -1  # excursion shorter than a sample
             x_best = _root(th0, h, q_th, 0.0, s, x_left, x)
             kind = L.EV_IMPACT
+        for m in range(base, base + n_down):
+            if a < levels[m] and a_prev >= levels[m]:
+                xe = _root(th0, h, q_th, levels[m], s, x_prev, x)
+                if xe < x_best:
+                    x_best = xe
+                    kind = L.EV_SLACK
+                    row = kinds[m]
         for m in range(n_levels):
             if a >= levels[m] and a_prev < levels[m]:
                 xe = _root(th0, h, q_th, levels[m], s, x_prev, x)
                 if xe < x_best:
                     x_best = xe
-                    kind = L.EV_OVERTURN if kinds[m] < 0 else L.EV_FAIL
-                    row = kinds[m]
+                    if kinds[m] < 0:
+                        kind, row = L.EV_OVERTURN, -1
+                    elif kinds[m] < n_rows:
+                        kind, row = L.EV_FAIL, kinds[m]
+                    else:
+                        kind, row = L.EV_LAW_UP, kinds[m] - n_rows
         x_end = x if kind == L.EV_NONE else x_best
         xp = _turning_point(om0, h, q_om, s, x_prev, x_end)
         if xp >= 0.0:
             _update_peak(s * _dense(xp, th0, h, q_th), s, peaks, spring_out, springs, alive, lin)
+            if plastic:
+                return xp, L.EV_UNLOAD, -1
         if kind != L.EV_NONE:
             return x_best, kind, row
         _update_peak(a, s, peaks, spring_out, springs, alive, lin)
@@ -510,16 +591,29 @@ def _scan_sampled(
 
 
 @njit(cache=CACHE)
-def _next_uplift(t, i, times, accel, pol, par, loaded):
+def _uplift_thresholds(par, springs, alive, loaded, memory):
+    """Ground acceleration [g] at which the block at rest starts to rock towards each side.
+
+    tan α (α linearized) for the free block, (G − s·T)/H for a loaded one (P_UPLIFT_*), plus a
+    pretensioned member's moment at rest times P_PRE_SCALE_* (statics at a = 0).
+    """
+    thr = par[L.P_ALPHA] if par[L.P_LINEAR] != 0.0 else math.tan(par[L.P_ALPHA])
+    thr_pos = par[L.P_UPLIFT_POS] if loaded else thr
+    thr_neg = par[L.P_UPLIFT_NEG] if loaded else thr
+    if memory:
+        thr_pos += _rest_moment(springs, alive, 1) * par[L.P_PRE_SCALE_POS]
+        thr_neg += _rest_moment(springs, alive, -1) * par[L.P_PRE_SCALE_NEG]
+    return thr_pos, thr_neg
+
+
+@njit(cache=CACHE)
+def _next_uplift(t, i, times, accel, pol, par, thr_pos, thr_neg):
     """From rest at time t in interval i: (τ, side, interval) of the next uplift, side 0 if none.
 
     The acceleration is linear between samples, so it can first exceed the threshold inside
     an interval only if it does at the interval's end sample: the samples are scanned, and the
     crossing is located exactly in the first interval whose end exceeds it.
     """
-    thr = par[L.P_ALPHA] if par[L.P_LINEAR] != 0.0 else math.tan(par[L.P_ALPHA])
-    thr_pos = par[L.P_UPLIFT_POS] if loaded else thr
-    thr_neg = par[L.P_UPLIFT_NEG] if loaded else thr
     one_sided = int(par[L.P_ONE_SIDED])
     free_side = int(par[L.P_FREE_SIDE])
     n = times.size
@@ -539,12 +633,78 @@ def _next_uplift(t, i, times, accel, pol, par, loaded):
 
 
 @njit(cache=CACHE)
-def _store_rest(hist_th, hist_om, i_from, i_to):
-    """History at rest: θ = θ̇ = 0 at samples i_from..i_to (inclusive)."""
+def _store_rest(hist_th, hist_om, hist_f, i_from, i_to, springs, alive):
+    """History at rest: θ = θ̇ = 0 at samples i_from..i_to (inclusive), the members' forces."""
     if hist_th.size > 1:
         for k in range(i_from, i_to + 1):
             hist_th[k] = 0.0
             hist_om[k] = 0.0
+            _store_forces(hist_f, k, 0, 0.0, springs, alive, False)
+
+
+@njit(cache=CACHE)
+def _store_forces(hist_f, k, s, a, springs, alive, lin):
+    """Each restrainer's force at sample k [N]: its member's on the pivot side s at rotation a;
+    at rest (s = 0) the larger of its two members' forces at a = 0 (a pretension)."""
+    for j in range(hist_f.shape[1]):
+        force = 0.0
+        if alive[j] != 0:
+            for side in (1, -1):
+                if s == 0 or side == s:
+                    kk, _, _, _ = _spring_on_side(springs, j, side)
+                    if kk != 0.0:
+                        u = _elongation_on_side(springs, j, side, a, lin)
+                        force = max(force, _member_force(springs, j, side, kk, u))
+        hist_f[k, j] = force
+
+
+@njit(cache=CACHE)
+def _store_sample(hist_th, hist_om, hist_f, k, th, om, s, springs, alive, lin):
+    """History at sample k: θ, θ̇ and the restrainers' forces."""
+    hist_th[k] = th
+    hist_om[k] = om
+    _store_forces(hist_f, k, s, s * th, springs, alive, lin)
+
+
+@njit(cache=CACHE)
+def _apply_law_event(kind, row, s, a, t, springs, alive, spring_out, lin):
+    """A member law's event at rotation a about pivot s, time t.
+
+    EV_UNLOAD: the members on their yield plateau unload (plastic work added to their energy).
+    EV_SLACK: member ``row`` goes slack. EV_LAW_UP: it yields (first yield time kept), re-engages
+    or, at its anchor's rupture force, is lost (time and released energy kept).
+    Returns True when the member was lost.
+    """
+    if kind == L.EV_UNLOAD:
+        _unload(springs, alive, s, a, lin, spring_out, L.S_ENERGY)
+        return False
+    if kind == L.EV_SLACK:
+        _cross_down(springs, row, s, lin)
+        return False
+    if springs[row, rules.COL_UP_KIND + rules.side_index(s)] == rules.UP_BREAK:
+        spring_out[row, L.S_ENERGY] += _released_energy(springs, row, s, a, lin)
+        alive[row] = 0
+        spring_out[row, L.S_T_FAIL] = t
+        return True
+    if _cross_up(springs, row, s, lin) == rules.UP_YIELD and math.isnan(
+        spring_out[row, L.S_T_YIELD]
+    ):
+        spring_out[row, L.S_T_YIELD] = t
+    return False
+
+
+@njit(cache=CACHE)
+def _close_plateaus(s, a, springs, alive, spring_out, lin):
+    """At the end of a run on pivot s at rotation a: plateaus in progress unload there."""
+    _apply_law_event(L.EV_UNLOAD, -1, s, a, 0.0, springs, alive, spring_out, lin)
+
+
+@njit(cache=CACHE, inline=INLINE)
+def _inertia(par, s):
+    """Polar moment of inertia about pivot s at rest [kg·m²] (0 at rest, s = 0)."""
+    if s == 0:
+        return 0.0
+    return par[L.P_INERTIA_POS] if s > 0 else par[L.P_INERTIA_NEG]
 
 
 @njit(cache=CACHE)
@@ -605,7 +765,19 @@ def _nonfinite_peak_force(spring_out):
 
 @njit(cache=CACHE)
 def integrate(
-    times, accel, pol, par, springs, points, alive, hist_th, hist_om, out_f, out_i, spring_out
+    times,
+    accel,
+    pol,
+    par,
+    springs,
+    points,
+    alive,
+    hist_th,
+    hist_om,
+    hist_f,
+    out_f,
+    out_i,
+    spring_out,
 ):
     """Integrate one rocking run over the sample times, from rest at times[0].
 
@@ -617,6 +789,7 @@ def integrate(
             empty for a block without loads and thrusts (the free block's equation).
         alive: int array, 1 per intact restrainer (updated on failure).
         hist_th, hist_om: θ and θ̇ at every sample time (size 1 when not wanted).
+        hist_f: each restrainer's force at every sample time (shape (n, rows) when wanted).
         out_f, out_i, spring_out: outputs (O_*, I_*, S_* layouts).
     """
     n = times.size
@@ -627,14 +800,22 @@ def integrate(
     k_om = np.empty(7)
     q_th = np.empty(4)
     q_om = np.empty(4)
-    levels = np.empty(springs.shape[0] + 1)
-    kinds = np.empty(springs.shape[0] + 1, dtype=np.int64)
+    n_rows = springs.shape[0]
+    levels = np.empty(3 * n_rows + 1)
+    kinds = np.empty(3 * n_rows + 1, dtype=np.int64)
+    memory = False
+    for r in range(n_rows):
+        if springs[r, rules.COL_MEMORY] != 0.0:
+            memory = True
+    if memory:
+        _reset_laws(springs, par[L.P_LINEAR] != 0.0)
     out_f[L.O_MAX_A] = 0.0
     out_f[L.O_THETA_MAX] = 0.0
     out_f[L.O_THETA_MIN] = 0.0
     out_f[L.O_MAX_OMEGA] = 0.0
     out_f[L.O_T_OVERTURN] = np.nan
     out_f[L.O_T_UPLIFT] = np.nan
+    out_f[L.O_IMPACT_LOSS] = 0.0
     for r in range(L.N_INT_OUT):
         out_i[r] = 0
     lin = par[L.P_LINEAR] != 0.0
@@ -648,21 +829,21 @@ def integrate(
     s = _initial_side(th, om)
     f = 0.0
     h = times[1] - times[0]
-    _store_rest(hist_th, hist_om, 0, 0)
+    _store_rest(hist_th, hist_om, hist_f, 0, 0, springs, alive)
     if s != 0:
         out_f[L.O_T_UPLIFT] = t
         _update_peak(s * th, s, out_f, spring_out, springs, alive, par[L.P_LINEAR] != 0.0)
         f = _stage_at(t, th, om, s, i, times, accel, pol, par, springs, alive, points)
         if hist_th.size > 1:
-            hist_th[0] = th
-            hist_om[0] = om
+            _store_sample(hist_th, hist_om, hist_f, 0, th, om, s, springs, alive, lin)
     status = L.STATUS_COMPLETED
     nan_rejects = 0
-    lowest = _lowest_level(s, par, springs, alive)
+    lowest, highest = _level_bounds(s, par, springs, alive)
     while i < n - 1:
         if s == 0:
-            tau, side, j = _next_uplift(t, i, times, accel, pol, par, points.size > 0)
-            _store_rest(hist_th, hist_om, i + 1, j)
+            thr_pos, thr_neg = _uplift_thresholds(par, springs, alive, loaded, memory)
+            tau, side, j = _next_uplift(t, i, times, accel, pol, par, thr_pos, thr_neg)
+            _store_rest(hist_th, hist_om, hist_f, i + 1, j, springs, alive)
             i = j
             if side == 0:
                 t = times[n - 1]
@@ -675,7 +856,7 @@ def integrate(
             if out_i[L.I_UPLIFTS] == 1:
                 out_f[L.O_T_UPLIFT] = tau
             f = _stage_at(t, th, om, s, i, times, accel, pol, par, springs, alive, points)
-            lowest = _lowest_level(s, par, springs, alive)
+            lowest, highest = _level_bounds(s, par, springs, alive)
             continue
         if not math.isfinite(f):  # θ̈ is NaN when θ is; a bad θ̇ shows in the error estimate
             status = L.STATUS_NONFINITE
@@ -692,8 +873,7 @@ def integrate(
             t = t_next
             i += 1
             if hist_th.size > 1:
-                hist_th[i] = th
-                hist_om[i] = om
+                _store_sample(hist_th, hist_om, hist_f, i, th, om, s, springs, alive, lin)
             f = _stage_at(t, th, om, s, i, times, accel, pol, par, springs, alive, points)
             continue
         h_try = min(h, gap)
@@ -725,7 +905,7 @@ def integrate(
         nan_rejects = 0
         trend = _stage_trend(k_th, s)
         a1 = s * th1
-        if (trend > 0 and a1 < lowest) or (trend < 0 and a1 > 0.0):
+        if (trend > 0 and a1 < lowest) or (trend < 0 and a1 > highest):
             x_ev, kind, row = 2.0, L.EV_NONE, -1
         else:
             _dense_coefficients(k_th, q_th)
@@ -762,8 +942,7 @@ def integrate(
             if t == t_next:
                 i += 1
                 if hist_th.size > 1:
-                    hist_th[i] = th
-                    hist_om[i] = om
+                    _store_sample(hist_th, hist_om, hist_f, i, th, om, s, springs, alive, lin)
             continue
         t_ev = t + x_ev * h_try
         om_ev = _dense(x_ev, om, h_try, q_om)
@@ -779,9 +958,21 @@ def integrate(
             break
         if kind == L.EV_FAIL:
             _update_peak(s * th_ev, s, out_f, spring_out, springs, alive, lin)
+            spring_out[row, L.S_ENERGY] += _released_energy(springs, row, s, s * th_ev, lin)
             alive[row] = 0
-            lowest = _lowest_level(s, par, springs, alive)
+            lowest, highest = _level_bounds(s, par, springs, alive)
             spring_out[row, L.S_T_FAIL] = t_ev
+            th = th_ev
+            om = om_ev
+            f = _stage_at(t, th, om, s, i, times, accel, pol, par, springs, alive, points)
+            continue
+        if kind >= L.EV_LAW_UP:
+            a_ev = s * th_ev
+            if kind == L.EV_UNLOAD:
+                a_ev = max(a_ev, 0.0)
+            _update_peak(a_ev, s, out_f, spring_out, springs, alive, lin)
+            _apply_law_event(kind, row, s, a_ev, t_ev, springs, alive, spring_out, lin)
+            lowest, highest = _level_bounds(s, par, springs, alive)
             th = th_ev
             om = om_ev
             f = _stage_at(t, th, om, s, i, times, accel, pol, par, springs, alive, points)
@@ -789,25 +980,30 @@ def integrate(
         if kind == L.EV_UNRESOLVED:
             # An excursion shorter than UNRESOLVED_MIN_STEP: rest, and look for the next uplift
             # after it, so that the run always moves on.
+            out_f[L.O_IMPACT_LOSS] += 0.5 * _inertia(par, s) * om * om
             th, om, s = 0.0, 0.0, 0
             t = min(t + UNRESOLVED_MIN_STEP, t_next)
             continue
         # impact at θ = 0
         out_i[L.I_IMPACTS] += 1
         e = par[L.P_E] if s > 0 else par[L.P_E_NEG]
+        before = 0.5 * _inertia(par, s) * om_ev * om_ev
         om, s = _after_impact(om_ev, s, e, int(par[L.P_ONE_SIDED]), par[L.P_REBOUND])
         th = 0.0
         if abs(om) < par[L.P_REST]:
             s = 0
             om = 0.0
-        elif out_i[L.I_IMPACTS] >= max_events:
+        out_f[L.O_IMPACT_LOSS] += before - 0.5 * _inertia(par, s) * om * om
+        if s != 0 and out_i[L.I_IMPACTS] >= max_events:
             status = L.STATUS_EVENT_LIMIT
             break
-        else:
+        if s != 0:
             f = _stage_at(t, th, om, s, i, times, accel, pol, par, springs, alive, points)
-            lowest = _lowest_level(s, par, springs, alive)
+            lowest, highest = _level_bounds(s, par, springs, alive)
     if s != 0 and status != L.STATUS_OVERTURNED:  # a NaN state updates no peak
         _update_peak(s * th, s, out_f, spring_out, springs, alive, lin)
+    if memory and s != 0 and status != L.STATUS_NONFINITE:
+        _close_plateaus(s, s * th, springs, alive, spring_out, lin)
     if status != L.STATUS_NONFINITE:
         row = _nonfinite_peak_force(spring_out)
         if row >= 0:

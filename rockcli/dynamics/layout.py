@@ -8,11 +8,17 @@ P_SIN_ALPHA, P_COS_ALPHA = 16, 17
 # With loads or thrusts: the block's own I0 [kg·m²], the uplift acceleration of each side [g]
 # and the coefficient of restitution of an impact from side −1 (P_E: from side +1).
 P_I0, P_UPLIFT_POS, P_UPLIFT_NEG, P_E_NEG = 18, 19, 20, 21
-N_PARAMS = 22
+# The ground acceleration [g] per N·m of restoring moment at rest, about each pivot (a
+# pretensioned member raises the uplift acceleration by its moment times this), and the polar
+# moment of inertia of the block and its loads about each pivot at rest [kg·m²] (impact losses).
+P_PRE_SCALE_POS, P_PRE_SCALE_NEG, P_INERTIA_POS, P_INERTIA_NEG = 22, 23, 24, 25
+N_PARAMS = 26
 
 # Float outputs.
 O_MAX_A, O_THETA_MAX, O_THETA_MIN, O_MAX_OMEGA, O_T_OVERTURN, O_T_UPLIFT, O_T_END = range(7)
-N_FLOAT_OUT = 7
+# Kinetic energy lost in impacts and at rest [J] (P_INERTIA_*; 0 for a block without a mass).
+O_IMPACT_LOSS = 7
+N_FLOAT_OUT = 8
 # Integer outputs (I_NONFINITE: which quantity stopped a "non-finite" run, NF_* codes).
 I_STATUS, I_IMPACTS, I_STEPS, I_REJECTED, I_UPLIFTS, I_NONFINITE = range(6)
 N_INT_OUT = 6
@@ -21,12 +27,16 @@ STATUS_COMPLETED, STATUS_OVERTURNED, STATUS_EVENT_LIMIT, STATUS_STEP_LIMIT = 0, 
 STATUS_NONFINITE = 4
 # Quantities that can turn non-finite (NaN or ±inf); NF_FORCE + j is restrainer row j's force.
 NF_NONE, NF_THETA, NF_OMEGA, NF_ACCEL, NF_ERROR, NF_GROUND, NF_FORCE = 0, 1, 2, 3, 4, 5, 6
-# Per-restrainer outputs: peak elongation [m], peak force [N], failure time [s] (nan: intact).
-S_MAX_U, S_MAX_FORCE, S_T_FAIL = 0, 1, 2
-N_SPRING_OUT = 3
+# Per-restrainer outputs: peak elongation [m], peak force [N], failure time [s] (nan: intact),
+# first yield time [s] (nan: never), energy dissipated [J] (plastic work and the energy
+# released when the member is lost).
+S_MAX_U, S_MAX_FORCE, S_T_FAIL, S_T_YIELD, S_ENERGY = 0, 1, 2, 3, 4
+N_SPRING_OUT = 5
 
-# Event kinds.
+# Event kinds: the block's, then a member law's (a yield, re-engage or anchor-rupture level
+# reached going up; a slack point going down; the turning point of a yield plateau).
 EV_NONE, EV_IMPACT, EV_OVERTURN, EV_FAIL, EV_UNRESOLVED = 0, 1, 2, 3, 4
+EV_LAW_UP, EV_SLACK, EV_UNLOAD = 5, 6, 7
 
 
 STATUS_NAMES = {

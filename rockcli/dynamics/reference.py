@@ -54,6 +54,9 @@ class _Phase:
         self.t = 0.0
         self.evals = 0
         self.max_evals = int(par[L.P_MAX_STEPS]) * EVALS_PER_STEP
+        self.memory = bool(np.any(springs[:, rules.COL_MEMORY] != 0.0)) if springs.size else False
+        if self.memory:
+            rules.reset_laws(springs, self.lin)
 
 
 def _rhs(phase: _Phase, t0: float, g0: float, gs: float):
@@ -122,8 +125,13 @@ def _nonfinite_quantity(phase: _Phase, ag: float, th: float, om: float) -> int:
     return L.NF_ERROR
 
 
+#: Kinds of the reference's events: the block's, then the restrainers'.
+K_IMPACT, K_OVERTURN, K_PEAK, K_FAIL, K_LAW_UP, K_SLACK = range(6)
+
+
 def _events(phase: _Phase):
-    """Impact, overturning, failures (terminal) and the turning point (peak, not terminal)."""
+    """Impact, overturning, failures, the members' law levels (terminal) and the turning point
+    (a peak; terminal while a member is on its yield plateau, where it unloads)."""
     s = phase.s
 
     def impact(t: float, y: np.ndarray) -> float:
@@ -141,25 +149,40 @@ def _events(phase: _Phase):
     def peak(t: float, y: np.ndarray) -> float:
         return s * y[1]
 
-    peak.terminal = False  # type: ignore[attr-defined]
+    unloads = phase.memory and rules.any_plastic(phase.springs, phase.alive, s)
+    peak.terminal = unloads  # type: ignore[attr-defined]
     peak.direction = -1  # type: ignore[attr-defined]
     events = [impact, overturn, peak]
-    rows = [-1, -1, -1]
+    rows = [(K_IMPACT, -1), (K_OVERTURN, -1), (K_PEAK if unloads else -1, -1)]
+    col = rules.side_index(s)
     for j in range(phase.springs.shape[0]):
         k, _, _, a_fail = rules.spring_on_side(phase.springs, j, s)
-        if phase.alive[j] and k != 0.0 and math.isfinite(a_fail):
-            events.append(_failure_event(s, a_fail))
-            rows.append(j)
+        if not phase.alive[j] or k == 0.0:
+            continue
+        if math.isfinite(a_fail):
+            events.append(_level_event(s, a_fail, 1))
+            rows.append((K_FAIL, j))
+        if phase.springs[j, rules.COL_MEMORY] != 0.0:
+            up = phase.springs[j, rules.COL_UP + col]
+            down = phase.springs[j, rules.COL_DOWN + col]
+            if math.isfinite(up):
+                events.append(_level_event(s, up, 1))
+                rows.append((K_LAW_UP, j))
+            if down >= 0.0:
+                events.append(_level_event(s, down, -1))
+                rows.append((K_SLACK, j))
     return events, rows
 
 
-def _failure_event(s: int, a_fail: float):
-    def fail(t: float, y: np.ndarray) -> float:
-        return s * y[0] - a_fail
+def _level_event(s: int, level: float, direction: int):
+    """A terminal event where a = s·θ crosses ``level`` upwards (+1) or downwards (−1)."""
 
-    fail.terminal = True  # type: ignore[attr-defined]
-    fail.direction = 1  # type: ignore[attr-defined]
-    return fail
+    def cross(t: float, y: np.ndarray) -> float:
+        return s * y[0] - level
+
+    cross.terminal = True  # type: ignore[attr-defined]
+    cross.direction = direction  # type: ignore[attr-defined]
+    return cross
 
 
 def _peak(phase: _Phase, a: float, out_f: np.ndarray, spring_out: np.ndarray) -> None:
@@ -174,7 +197,8 @@ def _peak(phase: _Phase, a: float, out_f: np.ndarray, spring_out: np.ndarray) ->
         if phase.alive[j] and k != 0.0:
             u = rules.elongation_on_side(phase.springs, j, s, a, phase.lin)
             spring_out[j, L.S_MAX_U] = max(spring_out[j, L.S_MAX_U], u)
-            spring_out[j, L.S_MAX_FORCE] = max(spring_out[j, L.S_MAX_FORCE], k * u)
+            force = rules.member_force(phase.springs, j, s, k, u)
+            spring_out[j, L.S_MAX_FORCE] = max(spring_out[j, L.S_MAX_FORCE], force)
 
 
 def _solve(phase: _Phase, t: float, t1: float, g0: float, gs: float):
@@ -200,7 +224,7 @@ def _first_terminal(sol, rows):
         return None
     best = None
     for k, (times, states) in enumerate(zip(sol.t_events, sol.y_events, strict=True)):
-        if k == 2 or times.size == 0:
+        if times.size == 0 or rows[k][0] < 0:
             continue
         if best is None or times[0] < best[0]:
             best = (times[0], states[0], k, rows[k])
@@ -213,13 +237,10 @@ def _interval(phase, i, times, accel, pol, out_f, out_i, spring_out):
     t = times[i]
     t1 = times[i + 1]
     gs = pol * (accel[i + 1] - accel[i]) / (t1 - t)
-    thr = par[L.P_ALPHA] if phase.lin else math.tan(par[L.P_ALPHA])
-    thr_pos, thr_neg = (
-        (par[L.P_UPLIFT_POS], par[L.P_UPLIFT_NEG]) if phase.points.size else (thr, thr)
-    )
     while t1 - t > GAP_FRACTION * (t1 - times[i]):
         phase.t = t
         if phase.s == 0:
+            thr_pos, thr_neg = _uplift_thresholds(phase)
             tau, side = rules.uplift_in_interval(
                 t,
                 i,
@@ -247,7 +268,7 @@ def _interval(phase, i, times, accel, pol, out_f, out_i, spring_out):
         out_i[L.I_STEPS] += sol.nfev // EVALS_PER_STEP
         if sol.status == -1 or not np.all(np.isfinite(sol.y[:, -1])):
             return _failed(phase, sol, g0, gs, out_f, out_i)
-        for y in sol.y_events[2]:
+        for y in sol.y_events[K_PEAK]:
             _peak(phase, phase.s * y[0], out_f, spring_out)
         out_f[L.O_MAX_OMEGA] = max(out_f[L.O_MAX_OMEGA], float(np.max(np.abs(sol.y[1]))))
         hit = _first_terminal(sol, rows)
@@ -260,6 +281,25 @@ def _interval(phase, i, times, accel, pol, out_f, out_i, spring_out):
         if status is not None:
             return status
     return None
+
+
+def _uplift_thresholds(phase: _Phase) -> tuple[float, float]:
+    """The ground accelerations [g] that start the block rocking from rest (kernel.py's rule)."""
+    par = phase.par
+    thr = par[L.P_ALPHA] if phase.lin else math.tan(par[L.P_ALPHA])
+    thr_pos, thr_neg = (
+        (par[L.P_UPLIFT_POS], par[L.P_UPLIFT_NEG]) if phase.points.size else (thr, thr)
+    )
+    if phase.memory:
+        thr_pos += rules.rest_moment(phase.springs, phase.alive, 1) * par[L.P_PRE_SCALE_POS]
+        thr_neg += rules.rest_moment(phase.springs, phase.alive, -1) * par[L.P_PRE_SCALE_NEG]
+    return thr_pos, thr_neg
+
+
+def _inertia(par: np.ndarray, s: int) -> float:
+    if s == 0:
+        return 0.0
+    return float(par[L.P_INERTIA_POS] if s > 0 else par[L.P_INERTIA_NEG])
 
 
 def _check_start(phase, t, g0, gs, out_f, out_i):
@@ -297,33 +337,66 @@ def _failed(phase, sol, g0, gs, out_f, out_i):
 
 def _apply_event(phase, t, y, kind, row, out_f, out_i, spring_out):
     par = phase.par
-    if kind == 1:  # overturning
+    kind, row = row
+    if kind == K_OVERTURN:
         _peak(phase, par[L.P_OVERTURN], out_f, spring_out)
         out_f[L.O_T_OVERTURN] = t
         out_f[L.O_T_END] = t
         return L.STATUS_OVERTURNED
-    if kind >= 3:  # restrainer failure
-        _peak(phase, phase.s * y[0], out_f, spring_out)
-        phase.alive[row] = 0
-        spring_out[row, L.S_T_FAIL] = t
+    if kind != K_IMPACT:
+        _apply_restrainer_event(phase, t, y, kind, row, out_f, spring_out)
         phase.th, phase.om, phase.restart = float(y[0]), float(y[1]), True
         return None
     out_i[L.I_IMPACTS] += 1
     e = par[L.P_E] if phase.s > 0 else par[L.P_E_NEG]
+    before = 0.5 * _inertia(par, phase.s) * float(y[1]) ** 2
     om, s = rules.velocity_after_impact(
         float(y[1]), phase.s, e, int(par[L.P_ONE_SIDED]), par[L.P_REBOUND]
     )
     phase.th, phase.om, phase.s, phase.restart = 0.0, om, s, True
     if abs(om) < par[L.P_REST]:
         phase.s, phase.om = 0, 0.0
-    elif out_i[L.I_IMPACTS] >= int(par[L.P_MAX_EVENTS]):
+    out_f[L.O_IMPACT_LOSS] += before - 0.5 * _inertia(par, phase.s) * phase.om**2
+    if phase.s != 0 and out_i[L.I_IMPACTS] >= int(par[L.P_MAX_EVENTS]):
         out_f[L.O_T_END] = t
         return L.STATUS_EVENT_LIMIT
     return None
 
 
+def _apply_restrainer_event(phase, t, y, kind, row, out_f, spring_out):
+    """A failure at fails_at, a member law's level (yield, re-engage, anchor rupture), a slack
+    point, or the turning point of a yield plateau (kernel.py's rules, rules.py's law)."""
+    s, lin, springs = phase.s, phase.lin, phase.springs
+    a = max(s * float(y[0]), 0.0)
+    _peak(phase, a, out_f, spring_out)
+    if kind == K_PEAK:
+        rules.unload(springs, phase.alive, s, a, lin, spring_out, L.S_ENERGY)
+    elif kind == K_SLACK:
+        rules.cross_down(springs, row, s, lin)
+    elif kind == K_FAIL or springs[row, rules.COL_UP_KIND + rules.side_index(s)] == rules.UP_BREAK:
+        spring_out[row, L.S_ENERGY] += rules.released_energy(springs, row, s, a, lin)
+        phase.alive[row] = 0
+        spring_out[row, L.S_T_FAIL] = t
+    elif rules.cross_up(springs, row, s, lin) == rules.UP_YIELD and math.isnan(
+        spring_out[row, L.S_T_YIELD]
+    ):
+        spring_out[row, L.S_T_YIELD] = t
+
+
 def integrate_reference(
-    times, accel, pol, par, springs, points, alive, hist_th, hist_om, out_f, out_i, spring_out
+    times,
+    accel,
+    pol,
+    par,
+    springs,
+    points,
+    alive,
+    hist_th,
+    hist_om,
+    hist_f,
+    out_f,
+    out_i,
+    spring_out,
 ):
     """Same contract as :func:`rockcli.dynamics.kernel.integrate` (arrays filled in place).
 
@@ -340,6 +413,7 @@ def integrate_reference(
             alive,
             hist_th,
             hist_om,
+            hist_f,
             out_f,
             out_i,
             spring_out,
@@ -347,7 +421,19 @@ def integrate_reference(
 
 
 def _integrate(
-    times, accel, pol, par, springs, points, alive, hist_th, hist_om, out_f, out_i, spring_out
+    times,
+    accel,
+    pol,
+    par,
+    springs,
+    points,
+    alive,
+    hist_th,
+    hist_om,
+    hist_f,
+    out_f,
+    out_i,
+    spring_out,
 ):
     phase = _Phase(par, springs, points, alive)
     out_f[:] = 0.0
@@ -360,7 +446,7 @@ def _integrate(
         phase.th, phase.om = th0, om0
         out_f[L.O_T_UPLIFT] = times[0]
         _peak(phase, phase.s * th0, out_f, spring_out)
-    _store(hist_th, hist_om, 0, phase)
+    _store(hist_th, hist_om, hist_f, 0, phase)
     out_i[L.I_STATUS] = L.STATUS_COMPLETED
     out_f[L.O_T_END] = times[-1]
     for i in range(times.size - 1):
@@ -372,8 +458,10 @@ def _integrate(
             out_i[L.I_STEPS] = int(par[L.P_MAX_STEPS])
         if status is not None:
             out_i[L.I_STATUS] = status
+            _close_plateaus(phase, status, spring_out)
             return
-        _store(hist_th, hist_om, i + 1, phase)
+        _store(hist_th, hist_om, hist_f, i + 1, phase)
+    _close_plateaus(phase, L.STATUS_COMPLETED, spring_out)
     out_i[L.I_REJECTED] = 0
     forces = spring_out[:, L.S_MAX_FORCE]
     row = int(np.argmin(np.isfinite(forces))) if forces.size else -1
@@ -382,7 +470,33 @@ def _integrate(
         out_i[L.I_NONFINITE] = L.NF_FORCE + row
 
 
-def _store(hist_th: np.ndarray, hist_om: np.ndarray, i: int, phase: _Phase) -> None:
+def _close_plateaus(phase: _Phase, status: int, spring_out: np.ndarray) -> None:
+    """A run that ends on a yield plateau: the member unloads where the run ended."""
+    if phase.memory and phase.s != 0 and status != L.STATUS_NONFINITE:
+        a = phase.par[L.P_OVERTURN] if status == L.STATUS_OVERTURNED else phase.s * phase.th
+        rules.unload(phase.springs, phase.alive, phase.s, a, phase.lin, spring_out, L.S_ENERGY)
+
+
+def _store(
+    hist_th: np.ndarray, hist_om: np.ndarray, hist_f: np.ndarray, i: int, phase: _Phase
+) -> None:
     if hist_th.size > 1:
         hist_th[i] = phase.th
         hist_om[i] = phase.om
+        for j in range(hist_f.shape[1]):
+            hist_f[i, j] = _member_force_now(phase, j)
+
+
+def _member_force_now(phase: _Phase, j: int) -> float:
+    """Restrainer j's force in the current state (kernel.py's _store_forces)."""
+    if not phase.alive[j]:
+        return 0.0
+    force = 0.0
+    for side in (1, -1):
+        if phase.s == 0 or side == phase.s:
+            k, _, _, _ = rules.spring_on_side(phase.springs, j, side)
+            if k != 0.0:
+                a = phase.s * phase.th if phase.s else 0.0
+                u = rules.elongation_on_side(phase.springs, j, side, a, phase.lin)
+                force = max(force, rules.member_force(phase.springs, j, side, k, u))
+    return force

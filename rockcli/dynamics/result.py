@@ -38,23 +38,42 @@ class RestrainerPeak:
     Attributes:
         name: restrainer label.
         max_displacement: peak spring elongation [m].
-        max_force: peak spring force K·u [N].
-        t_fail: time the restrainer failed [s], None if it held.
+        max_force: peak force of its law [N] (K·u for an elastic spring).
+        t_fail: time the restrainer was lost (ruptured, or its anchor gave way) [s], None if it
+            held.
+        t_yield: time it first yielded [s], None if it never did.
+        plastic_elongation: its permanent elongation at the end of the run [m].
+        energy_dissipated: plastic work, plus the energy released when it was lost [J].
     """
 
     name: str
     max_displacement: float
     max_force: float
     t_fail: float | None = None
+    t_yield: float | None = None
+    plastic_elongation: float = 0.0
+    energy_dissipated: float = 0.0
+
+    @property
+    def yielded(self) -> bool:
+        """True when the member reached its yield force."""
+        return self.t_yield is not None
+
+    @property
+    def ruptured(self) -> bool:
+        """True when the member was lost during the run."""
+        return self.t_fail is not None
 
 
 @dataclass(frozen=True, eq=False)
 class History:
-    """θ(t) and θ̇(t) at the sample times (tail included) up to the end of the run."""
+    """θ(t), θ̇(t) and each restrainer's force at the sample times (tail included) up to the
+    end of the run (forces: shape (restrainers, samples) [N])."""
 
     time: np.ndarray
     theta: np.ndarray
     omega: np.ndarray
+    forces: np.ndarray = field(default_factory=lambda: np.zeros((0, 0)))
 
 
 @dataclass(frozen=True)
@@ -75,6 +94,7 @@ class RockingRun:
         restrainers: demand on each restrainer.
         warnings: remarks for the reader (chattering, event limit, …).
         history: θ(t), θ̇(t) when asked for.
+        impact_loss: kinetic energy lost in impacts and at rest [J] (0 without a mass).
     """
 
     polarity: int
@@ -98,6 +118,7 @@ class RockingRun:
     restrainers: tuple[RestrainerPeak, ...] = ()
     warnings: tuple[str, ...] = ()
     history: History | None = field(default=None, compare=False, repr=False)
+    impact_loss: float = 0.0
 
     @property
     def overturned(self) -> bool:

@@ -12,7 +12,16 @@ a positive rotation; s = ±1 is the active pivot side, a = s·θ ≥ 0 the rotat
 Packed restrainer table (one row per restrainer), columns:
 ``K+ [N/m], K− [N/m], r+ [m], φ+ [rad], r− [m], φ− [rad], a_fail+ [rad], a_fail− [rad],
 fails_at [m], sin φ+, cos φ+, sin φ−, cos φ−`` (a_fail: rotation about the pivot at which the
-elongation reaches fails_at; the sines and cosines are precomputed for the right-hand side).
+elongation reaches fails_at; the sines and cosines are precomputed for the right-hand side),
+then the member law (docs/physics.md, "Restrainers with strength"): yield force per side [N],
+the anchor's rupture force [N], and the law's state per side, updated by the engines during a
+run: the slack point c [m] (the elongation at which the member's force is zero: −P0/K with a
+pretension P0, grown by yielding), the mode (elastic, plastic, slack), the next rotation levels
+at which the law changes (upward: yield, re-engage or rupture at the anchor; downward: slack)
+and the initial c. A row with COL_MEMORY = 0 is the elastic spring of unlimited strength: its
+mode stays elastic and c = 0, so its force K·(u − 0) is K·u to the last bit.
+
+Columns come in pairs (side +1, side −1): ``COL_X + side_index(s)``.
 """
 
 from __future__ import annotations
@@ -20,18 +29,29 @@ from __future__ import annotations
 import math
 
 from rockcli.mechanics import (
+    cos_minus,
     gravity_moment_ratio_trig,
     ground_moment_ratio_trig,
     point_moments,
     spring_elongation,
-    spring_moment_trig,
+    spring_elongation_trig,
+    spring_failure_rotation,
 )
 
 #: Columns of the packed restrainer table.
 COL_K_POS, COL_K_NEG, COL_R_POS, COL_PHI_POS, COL_R_NEG, COL_PHI_NEG = 0, 1, 2, 3, 4, 5
 COL_A_FAIL_POS, COL_A_FAIL_NEG, COL_FAILS_AT = 6, 7, 8
 COL_SIN_POS, COL_COS_POS, COL_SIN_NEG, COL_COS_NEG = 9, 10, 11, 12
-N_SPRING_COLS = 13
+COL_YIELD, COL_RUPTURE, COL_C, COL_MODE = 13, 15, 16, 18
+COL_UP, COL_UP_KIND, COL_DOWN, COL_MEMORY, COL_C0 = 20, 22, 24, 26, 27
+N_SPRING_COLS = 29
+
+#: Modes of a member side (COL_MODE): F = K·(u − c); F = F_y (on the yield plateau); F = 0.
+MODE_ELASTIC, MODE_PLASTIC, MODE_SLACK = 0.0, 1.0, 2.0
+#: What happens at a member's upward level (COL_UP_KIND).
+UP_NONE, UP_YIELD, UP_ENGAGE, UP_BREAK = 0.0, 1.0, 2.0, 3.0
+#: No downward level (a ≥ 0 never falls below it).
+NO_LEVEL_DOWN = -1.0
 
 
 def spring_on_side(springs, j, s):
@@ -68,13 +88,186 @@ def spring_trig_on_side(springs, j, s):
     )
 
 
+def side_index(s):
+    """0 for pivot side +1, 1 for side −1: the offset of a side's column in a pair."""
+    return 0 if s > 0 else 1
+
+
+def member_force(springs, j, s, k, u):
+    """Force of restrainer row j's member on side s at elongation u [N] (its law and state).
+
+    Elastic–perfectly plastic in tension only, with memory (docs/physics.md, "Restrainers with
+    strength"): elastic F = K·(u − c) above the slack point c; on the yield plateau F = F_y;
+    slack F = 0. An elastic spring of unlimited strength has c = 0: F = K·u.
+    """
+    col = side_index(s)
+    mode = springs[j, COL_MODE + col]
+    if mode == MODE_ELASTIC:
+        return k * (u - springs[j, COL_C + col])
+    if mode == MODE_PLASTIC:
+        return springs[j, COL_YIELD + col]
+    return 0.0
+
+
+def member_moment(springs, j, s, k, r, sin_phi, cos_phi, a, sin_a, cos_a, linearized):
+    """F·r·cos(φ − a): the restoring moment of row j's member on side s [N·m].
+
+    Source: spec/rocking.md, M_k = K·u·r·cos(φ − |θ|) (paper Eq. 4), with the member's force F
+    of :func:`member_force` in place of K·u (the same products, so an elastic spring gives the
+    same bits as mechanics.spring_moment_trig).
+    """
+    u = spring_elongation_trig(r, sin_phi, cos_phi, a, sin_a, cos_a, linearized)
+    arm = r * cos_phi if linearized else r * cos_minus(sin_phi, cos_phi, sin_a, cos_a)
+    return member_force(springs, j, s, k, u) * arm
+
+
+def rotation_at_elongation(springs, j, s, u, linearized):
+    """Rotation a ≥ 0 about pivot s at which row j's elongation is u [rad] (inf: never)."""
+    if u <= 0.0:
+        return 0.0
+    _, r, phi, _ = spring_on_side(springs, j, s)
+    return spring_failure_rotation(r, phi, u, linearized)
+
+
+def set_levels(springs, j, s, linearized):
+    """Recompute the levels of a at which the law of row j's member on side s changes.
+
+    Elastic: up at u = c + F/K with F the lower of the yield force (yield) and the anchor's
+    rupture force (break); down at u = c (slack) when c > 0. Plastic: none (the turning point
+    ends the plateau). Slack: up at u = c (re-engage).
+    """
+    col = side_index(s)
+    k, _, _, _ = spring_on_side(springs, j, s)
+    c = springs[j, COL_C + col]
+    mode = springs[j, COL_MODE + col]
+    up = math.inf
+    kind = UP_NONE
+    down = NO_LEVEL_DOWN
+    if mode == MODE_ELASTIC:
+        f_yield = springs[j, COL_YIELD + col]
+        f_break = springs[j, COL_RUPTURE]
+        if f_break <= f_yield and f_break < math.inf:
+            up = rotation_at_elongation(springs, j, s, c + f_break / k, linearized)
+            kind = UP_BREAK
+        elif f_yield < math.inf:
+            up = rotation_at_elongation(springs, j, s, c + f_yield / k, linearized)
+            kind = UP_YIELD
+        if c > 0.0:
+            down = rotation_at_elongation(springs, j, s, c, linearized)
+    elif mode == MODE_SLACK:
+        up = rotation_at_elongation(springs, j, s, c, linearized)
+        kind = UP_ENGAGE
+    springs[j, COL_UP + col] = up
+    springs[j, COL_UP_KIND + col] = kind
+    springs[j, COL_DOWN + col] = down
+
+
+def reset_laws(springs, linearized):
+    """Every member back to its state at rest: elastic, c = c0, its levels."""
+    for j in range(springs.shape[0]):
+        if springs[j, COL_MEMORY] != 0.0:
+            for s in (1, -1):
+                col = side_index(s)
+                springs[j, COL_MODE + col] = MODE_ELASTIC
+                springs[j, COL_C + col] = springs[j, COL_C0 + col]
+                k, _, _, _ = spring_on_side(springs, j, s)
+                if k != 0.0:
+                    set_levels(springs, j, s, linearized)
+                else:
+                    springs[j, COL_UP + col] = math.inf
+                    springs[j, COL_DOWN + col] = NO_LEVEL_DOWN
+
+
+def cross_up(springs, j, s, linearized):
+    """Row j's member on side s reached its upward level: yield (→ plastic) or re-engage
+    (→ elastic). Returns UP_YIELD or UP_ENGAGE (an UP_BREAK is handled as a failure)."""
+    col = side_index(s)
+    kind = springs[j, COL_UP_KIND + col]
+    springs[j, COL_MODE + col] = MODE_PLASTIC if kind == UP_YIELD else MODE_ELASTIC
+    set_levels(springs, j, s, linearized)
+    return kind
+
+
+def cross_down(springs, j, s, linearized):
+    """Row j's member on side s reached its slack point going down: → slack (F = 0)."""
+    springs[j, COL_MODE + side_index(s)] = MODE_SLACK
+    set_levels(springs, j, s, linearized)
+
+
+def unload(springs, alive, s, a, linearized, energy, energy_col):
+    """At a turning point a: every member on the yield plateau of side s unloads elastically.
+
+    Its slack point becomes c = u(a) − F_y/K (so that F = F_y there, continuous); the plastic
+    work of the plateau, F_y·(c_new − c_old) [J], is added to ``energy[j, energy_col]``.
+    """
+    col = side_index(s)
+    for j in range(springs.shape[0]):
+        if alive[j] != 0 and springs[j, COL_MODE + col] == MODE_PLASTIC:
+            k, r, phi, _ = spring_on_side(springs, j, s)
+            f_yield = springs[j, COL_YIELD + col]
+            c_new = spring_elongation(r, phi, a, linearized) - f_yield / k
+            energy[j, energy_col] += f_yield * (c_new - springs[j, COL_C + col])
+            springs[j, COL_C + col] = c_new
+            springs[j, COL_MODE + col] = MODE_ELASTIC
+            set_levels(springs, j, s, linearized)
+
+
+def plateau_work(springs, j, s, a, linearized):
+    """Plastic work done so far on row j's yield plateau of side s, up to rotation a [J]."""
+    col = side_index(s)
+    if springs[j, COL_MODE + col] != MODE_PLASTIC:
+        return 0.0
+    k, r, phi, _ = spring_on_side(springs, j, s)
+    f_yield = springs[j, COL_YIELD + col]
+    c_now = spring_elongation(r, phi, a, linearized) - f_yield / k
+    return f_yield * (c_now - springs[j, COL_C + col])
+
+
+def released_energy(springs, j, s, a, linearized):
+    """Energy lost when row j's member on side s is lost at rotation a [J]: the plastic work of
+    a plateau in progress and the elastic energy stored in it, ½·F²/K."""
+    k, r, phi, _ = spring_on_side(springs, j, s)
+    if k == 0.0:
+        return 0.0
+    force = member_force(springs, j, s, k, spring_elongation(r, phi, a, linearized))
+    return plateau_work(springs, j, s, a, linearized) + 0.5 * force * force / k
+
+
+def any_plastic(springs, alive, s):
+    """True when a live member of side s is on its yield plateau."""
+    col = side_index(s)
+    for j in range(springs.shape[0]):
+        if alive[j] != 0 and springs[j, COL_MODE + col] == MODE_PLASTIC:
+            return True
+    return False
+
+
+def rest_moment(springs, alive, s):
+    """Σ F·r·cos φ of the members of side s at rest (a = 0): their pretension's moment [N·m].
+
+    Only an elastic member with c < 0 pulls at a = 0 (F = −K·c); it raises the ground
+    acceleration the block needs to start rocking about pivot s (statics at a = 0).
+    """
+    total = 0.0
+    col = side_index(s)
+    for j in range(springs.shape[0]):
+        if alive[j] != 0 and springs[j, COL_MEMORY] != 0.0:
+            c = springs[j, COL_C + col]
+            if c < 0.0 and springs[j, COL_MODE + col] == MODE_ELASTIC:
+                k, r, _, _ = spring_on_side(springs, j, s)
+                cos_phi = springs[j, COL_COS_POS] if s > 0 else springs[j, COL_COS_NEG]
+                total += -k * c * r * cos_phi
+    return total
+
+
 def angular_acceleration(
     a, s, ag, alpha, sin_alpha, cos_alpha, p2, linearized, springs, alive, inv_i0
 ):
     """θ̈ of the block on pivot side s at rotation a = s·θ under ground acceleration ag [g].
 
     Source: spec/rocking.md, θ̈ = −s p² sin(α − sθ) − Σ_k M_k(θ)/I0 + p² üg cos(α − sθ), with
-    M_k = s·K·u·r·cos(φ − |θ|) (paper Eq. 2 and 4; linearized: sin x ≈ x, cos x ≈ 1).
+    M_k = s·F·r·cos(φ − |θ|) (paper Eq. 2 and 4, F = K·u for an elastic spring; the member's
+    law otherwise, :func:`member_force`; linearized: sin x ≈ x, cos x ≈ 1).
     sin a and cos a are evaluated once; gravity and every spring reuse them.
 
     Args:
@@ -97,7 +290,9 @@ def angular_acceleration(
             if k != 0.0:
                 acc -= (
                     s
-                    * spring_moment_trig(k, r, sin_phi, cos_phi, a, sin_a, cos_a, linearized)
+                    * member_moment(
+                        springs, j, s, k, r, sin_phi, cos_phi, a, sin_a, cos_a, linearized
+                    )
                     * inv_i0
                 )
     return acc
@@ -130,7 +325,9 @@ def loaded_angular_acceleration(a, s, om, ag, points, i0, springs, alive):
         if alive[k] != 0:
             kk, r, sin_phi, cos_phi = spring_trig_on_side(springs, k, s)
             if kk != 0.0:
-                moment -= spring_moment_trig(kk, r, sin_phi, cos_phi, a, sin_a, cos_a, False)
+                moment -= member_moment(
+                    springs, k, s, kk, r, sin_phi, cos_phi, a, sin_a, cos_a, False
+                )
     return s * moment / (i0 + j)
 
 

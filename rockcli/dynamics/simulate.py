@@ -29,6 +29,8 @@ from rockcli.dynamics.settings import Engine, SolverSettings
 from rockcli.mechanics import (
     NEGATIVE,
     Block,
+    Restrainer,
+    point_moments,
     point_table,
     spring_failure_rotation,
     uplift_accelerations,
@@ -99,7 +101,29 @@ def pack_parameters(block: Block, settings: SolverSettings, rtol: float, atol: f
     par[L.P_I0] = block.inertia if block.mass is not None else 0.0
     par[L.P_UPLIFT_POS], par[L.P_UPLIFT_NEG] = uplift_accelerations(block)
     par[L.P_E_NEG] = block.restitution(NEGATIVE)
+    for s, scale, inertia in (
+        (1, L.P_PRE_SCALE_POS, L.P_INERTIA_POS),
+        (-1, L.P_PRE_SCALE_NEG, L.P_INERTIA_NEG),
+    ):
+        par[scale], par[inertia] = rest_terms(block, s)
     return par
+
+
+def rest_terms(block: Block, s: int) -> tuple[float, float]:
+    """(ground acceleration [g] per N·m of restoring moment, polar moment of inertia [kg·m²])
+    about pivot s at rest; (0, 0) for a block without a mass.
+
+    The uplift condition at a = 0 is üg·H(0) > G(0) − s·T(0) + M (loaded_angular_acceleration;
+    for the free block H(0) = m·g·R·cos α, linearized m·g·R), so a restoring moment M at rest
+    raises the uplift acceleration by M/H(0). The inertia is I0 + J(0) (docs/physics.md).
+    """
+    if block.mass is None:
+        return 0.0, 0.0
+    if block.loaded:
+        _, h, _, j, _ = point_moments(point_table(block), s, 0.0, 1.0)
+        return 1.0 / h, block.inertia + j
+    h = block.mass * block.g * block.R * (1.0 if block.linearized else math.cos(block.alpha))
+    return 1.0 / h, block.inertia
 
 
 def pack_points(block: Block) -> np.ndarray:
@@ -138,7 +162,27 @@ def pack_springs(block: Block) -> np.ndarray:
         table[j, rules.COL_COS_POS] = math.cos(sp.phi_pos)
         table[j, rules.COL_SIN_NEG] = math.sin(sp.phi_neg)
         table[j, rules.COL_COS_NEG] = math.cos(sp.phi_neg)
+        pack_law(table[j], sp)
     return table
+
+
+def pack_law(row: np.ndarray, sp: Restrainer) -> None:
+    """The member law's columns of one packed row (rules.py): yields, rupture force, c0.
+
+    The state columns (c, mode, levels) are set by the engines from these at the start of a run
+    (rules.reset_laws). A member without memory (elastic, no pretension, no anchor) keeps
+    COL_MEMORY = 0 and runs the elastic spring's arithmetic.
+    """
+    row[rules.COL_YIELD] = sp.yield_pos
+    row[rules.COL_YIELD + 1] = sp.yield_neg
+    row[rules.COL_RUPTURE] = sp.rupture_force
+    row[rules.COL_MEMORY] = 1.0 if sp.has_memory else 0.0
+    for col, k in ((0, sp.k_pos), (1, sp.k_neg)):
+        c0 = -sp.pretension / k if k > 0.0 else 0.0
+        row[rules.COL_C0 + col] = c0
+        row[rules.COL_C + col] = c0
+        row[rules.COL_UP + col] = math.inf
+        row[rules.COL_DOWN + col] = rules.NO_LEVEL_DOWN
 
 
 def simulate(
@@ -189,10 +233,12 @@ def simulate(
     n_hist = times.size if history else 1
     hist_th = np.full(n_hist, np.nan)
     hist_om = np.full(n_hist, np.nan)
+    hist_f = np.zeros((n_hist, len(block.restrainers)))
     out_f = np.zeros(L.N_FLOAT_OUT)
     out_i = np.zeros(L.N_INT_OUT, dtype=np.int64)
     spring_out = np.zeros((len(block.restrainers), L.N_SPRING_OUT))
     spring_out[:, L.S_T_FAIL] = np.nan
+    spring_out[:, L.S_T_YIELD] = np.nan
     run(
         times,
         acc,
@@ -203,15 +249,18 @@ def simulate(
         alive,
         hist_th,
         hist_om,
+        hist_f,
         out_f,
         out_i,
         spring_out,
     )
-    hist = _history(times, hist_th, hist_om, out_f[L.O_T_END], origin) if history else None
+    hist = _history(times, hist_th, hist_om, hist_f, out_f[L.O_T_END], origin) if history else None
     if origin:
         out_f[[L.O_T_END, L.O_T_OVERTURN, L.O_T_UPLIFT]] += origin
-        spring_out[:, L.S_T_FAIL] += origin
-    return _unpack(block, par, engine, rtol, atol, polarity, out_f, out_i, spring_out, hist)
+        spring_out[:, [L.S_T_FAIL, L.S_T_YIELD]] += origin
+    return _unpack(
+        block, par, engine, rtol, atol, polarity, out_f, out_i, spring_out, springs, hist
+    )
 
 
 def _reference_tolerances() -> tuple[float, float]:
@@ -221,17 +270,34 @@ def _reference_tolerances() -> tuple[float, float]:
 
 
 def _history(
-    times: np.ndarray, th: np.ndarray, om: np.ndarray, t_end: float, origin: float
+    times: np.ndarray,
+    th: np.ndarray,
+    om: np.ndarray,
+    forces: np.ndarray,
+    t_end: float,
+    origin: float,
 ) -> History:
     keep = (times <= t_end) & np.isfinite(th)
-    return History(time=times[keep] + origin, theta=th[keep], omega=om[keep])
+    return History(
+        time=times[keep] + origin, theta=th[keep], omega=om[keep], forces=forces[keep].T.copy()
+    )
 
 
 def _optional(x: float) -> float | None:
     return None if math.isnan(x) else float(x)
 
 
-def _unpack(block, par, engine, rtol, atol, polarity, out_f, out_i, spring_out, hist) -> RockingRun:
+def plastic_elongation(springs: np.ndarray, j: int) -> float:
+    """Row j's plastic elongation after a run [m]: the larger over its two members of c − c0."""
+    return max(
+        0.0,
+        *(float(springs[j, rules.COL_C + col] - springs[j, rules.COL_C0 + col]) for col in (0, 1)),
+    )
+
+
+def _unpack(
+    block, par, engine, rtol, atol, polarity, out_f, out_i, spring_out, springs, hist
+) -> RockingRun:
     status = RunStatus(L.STATUS_NAMES[int(out_i[L.I_STATUS])])
     peaks = tuple(
         RestrainerPeak(
@@ -239,6 +305,9 @@ def _unpack(block, par, engine, rtol, atol, polarity, out_f, out_i, spring_out, 
             max_displacement=float(spring_out[j, L.S_MAX_U]),
             max_force=float(spring_out[j, L.S_MAX_FORCE]),
             t_fail=_optional(spring_out[j, L.S_T_FAIL]),
+            t_yield=_optional(spring_out[j, L.S_T_YIELD]),
+            plastic_elongation=plastic_elongation(springs, j),
+            energy_dissipated=float(spring_out[j, L.S_ENERGY]),
         )
         for j, sp in enumerate(block.restrainers)
     )
@@ -263,6 +332,7 @@ def _unpack(block, par, engine, rtol, atol, polarity, out_f, out_i, spring_out, 
         rest_velocity=float(par[L.P_REST]),
         restrainers=peaks,
         history=hist,
+        impact_loss=float(out_f[L.O_IMPACT_LOSS]),
     )
     return _with_warnings(run)
 

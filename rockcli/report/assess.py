@@ -13,10 +13,8 @@ from rockcli import __version__
 from rockcli.dynamics.result import Assessment, RockingRun
 from rockcli.mechanics import (
     Block,
-    Restrainer,
     linear_global_stiffness,
     restrainer_coefficient,
-    spring_elongation,
     uplift_accelerations,
 )
 from rockcli.records.record import Record
@@ -65,15 +63,30 @@ def effectiveness(block: Block) -> list[dict[str, Any]]:
 
 
 def strength_warnings(checks: list[dict[str, Any]]) -> list[str]:
-    """A warning per restrainer whose elastic force exceeds its strength."""
-    return [
-        f"restrainer {c['name']!r}: the time history's force {c['demand'] / 1e3:.4g} kN exceeds "
-        f"its strength {c['strength'] / 1e3:.4g} kN ({c['utilisation']:.3g} times): rock models "
-        "restrainers as elastic, so the member would have yielded or its anchorage given way, "
-        "and the result after that is not valid"
-        for c in checks
-        if not c["passed"]
-    ]
+    """A warning per restrainer that fails its strength check: an elastic one beyond its
+    strength (the run is not valid after that), an elastic-plastic one that yielded or broke."""
+    return [strength_warning(c) for c in checks if not c["passed"]]
+
+
+def strength_warning(c: dict[str, Any]) -> str:
+    """The warning of one failed strength check (studies.strength.restrainer_checks row)."""
+    head = f"restrainer {c['name']!r}: "
+    force = (
+        f"the time history's force {c['demand'] / 1e3:.4g} kN against its design strength "
+        f"{c['strength'] / 1e3:.4g} kN (utilisation {c['utilisation']:.3g})"
+    )
+    if not c["time_history_valid"]:
+        return (
+            f'{head}{force}: it is elastic in this model (law = "elastic"), so the member '
+            "would have yielded or its anchorage given way, and the result after that is not "
+            'valid; give it its steel or law = "elastic-plastic" with a yield force'
+        )
+    events = []
+    if c["yielded"]:
+        events.append(f"it yielded (first at t = {c['t_yield']:.3f} s)")
+    if c["ruptured"]:
+        events.append(f"it was lost at t = {c['t_rupture']:.3f} s")
+    return f"{head}{force}: {' and '.join(events) or 'it is beyond its strength'}"
 
 
 def run_document(run: RockingRun) -> dict[str, Any]:
@@ -99,9 +112,16 @@ def run_document(run: RockingRun) -> dict[str, Any]:
                 "max_displacement": p.max_displacement,
                 "max_force": p.max_force,
                 "t_fail": p.t_fail,
+                "yielded": p.yielded,
+                "t_yield": p.t_yield,
+                "plastic_elongation": p.plastic_elongation,
+                "ruptured": p.ruptured,
+                "t_rupture": p.t_fail,
+                "energy_dissipated": p.energy_dissipated,
             }
             for p in run.restrainers
         ],
+        "impact_energy_loss": run.impact_loss,
     }
 
 
@@ -303,7 +323,9 @@ SPRING_COLUMNS = (
     Column("name", "restrainer", ""),
     Column("max_displacement", "max displacement", "mm", "{:.2f}"),
     Column("max_force", "max force", "kN", "{:.2f}"),
-    Column("t_fail", "failed at", "s", "{:.3f}"),
+    Column("t_yield", "yielded at", "s", "{:.3f}"),
+    Column("plastic_elongation", "plastic elong.", "mm", "{:.2f}"),
+    Column("t_fail", "lost at", "s", "{:.3f}"),
 )
 CHECK_COLUMNS = (
     Column("name", "restrainer", ""),
@@ -348,6 +370,7 @@ def assessment_report(doc: dict[str, Any]) -> Report:
             "polarity": r["polarity"],
             "max_displacement": p["max_displacement"] * 1e3,
             "max_force": p["max_force"] / 1e3,
+            "plastic_elongation": p["plastic_elongation"] * 1e3,
         }
         for r in doc["runs"]
         for p in r["restrainers"]
@@ -425,13 +448,23 @@ def _loads_tables(m: dict[str, Any]) -> list[Table]:
 
 
 def _verdict_line(doc: dict[str, Any]) -> str:
-    beyond = [c["name"] for c in doc.get("restrainer_checks", ()) if not c["passed"]]
-    caveat = (
-        f" — not valid: {', '.join(repr(n) for n in beyond)} beyond its strength" if beyond else ""
-    )
+    caveat = strength_caveat(doc.get("restrainer_checks", ()))
     if doc["verdict"] == "overturns":
         return "overturns" + caveat
     return f"{doc['verdict']} (max θ/α = {doc['max_ratio']:.4f} over both polarities){caveat}"
+
+
+def strength_caveat(checks: Any) -> str:
+    """What the verdict line adds for restrainers that fail their strength check: "not valid"
+    for an elastic one beyond its strength, the failed check for an elastic-plastic one."""
+    invalid = [repr(c["name"]) for c in checks if not c["time_history_valid"]]
+    failed = [repr(c["name"]) for c in checks if c["time_history_valid"] and not c["passed"]]
+    parts = []
+    if invalid:
+        parts.append(f"not valid: {', '.join(invalid)} beyond its strength as an elastic member")
+    if failed:
+        parts.append(f"restrainer check failed: {', '.join(failed)} (NTC 2018 §4.2.4.1.2)")
+    return "".join(f" — {p}" for p in parts)
 
 
 #: Header of the --history CSV before the restrainer columns.
@@ -446,8 +479,9 @@ def history_csv(
     Columns: t [s], the ground acceleration the run saw [g] (the record times the polarity,
     zero in the tail after it), for a block at height the floor acceleration that shook it [g]
     (floor_acc_g, likewise), θ [rad], θ̇ [rad/s], the polarity and the run's status, and
-    each restrainer's force K·u(θ) [N] (rockcli.mechanics.spring_elongation, zero once the
-    restrainer failed).
+    each restrainer's force [N] as the engine's law gave it at that sample (K·u for an elastic
+    spring; yield plateau, slack and pretension for an elastic-plastic member; zero once it
+    was lost).
 
     Args:
         run: the run, with its history.
@@ -466,15 +500,11 @@ def history_csv(
     header = list(HISTORY_HEADER)
     if floor is not None:
         header.insert(2, "floor_acc_g")
-    t_fail = {p.name: p.t_fail for p in run.restrainers}
-    springs = [_restrainer(r) for r in model["restrainers"]]
-    forces = [
-        restrainer_forces(sp, hist.time, hist.theta, t_fail.get(sp.name), model["linearized"])
-        for sp in springs
-    ]
+    names = [r["name"] for r in model["restrainers"]]
+    forces = hist.forces
     buffer = io.StringIO()
     writer = csv.writer(buffer, lineterminator="\n")
-    writer.writerow([*header, *(f"force_N_{sp.name}" for sp in springs)])
+    writer.writerow([*header, *(f"force_N_{name}" for name in names)])
     for i, t in enumerate(hist.time):
         writer.writerow(
             [
@@ -488,39 +518,3 @@ def history_csv(
             ]
         )
     return buffer.getvalue()
-
-
-def _restrainer(doc: dict[str, Any]) -> Restrainer:
-    fails_at = doc["fails_at"]
-    return Restrainer(
-        name=doc["name"],
-        k_pos=doc["k_pos"],
-        k_neg=doc["k_neg"],
-        r_pos=doc["r_pos"],
-        phi_pos=doc["phi_pos"],
-        r_neg=doc["r_neg"],
-        phi_neg=doc["phi_neg"],
-        fails_at=math.inf if fails_at is None else fails_at,
-    )
-
-
-def restrainer_forces(
-    spring: Restrainer,
-    time: np.ndarray,
-    theta: np.ndarray,
-    t_fail: float | None,
-    linearized: bool,
-) -> list[float]:
-    """K·u(|θ|) on the active side at each time [N]; zero at rest and from t_fail on.
-
-    Source: the engine's spring law (rockcli.mechanics.spring_elongation, spec/rocking.md
-    u(θ) = r[sin φ − sin(φ − |θ|)]), with K and r, φ of the side θ is on.
-    """
-    out = []
-    for t, a in zip(time, theta, strict=True):
-        if a == 0.0 or (t_fail is not None and t >= t_fail):
-            out.append(0.0)
-            continue
-        k, r, phi = spring.side(1 if a > 0 else -1)
-        out.append(k * spring_elongation(r, phi, abs(float(a)), linearized))
-    return out

@@ -6,6 +6,7 @@ from typing import TYPE_CHECKING, Any
 
 from rockcli import __version__
 from rockcli.records.record import Record
+from rockcli.report.assess import strength_caveat
 from rockcli.report.kinematic import ULTIMATE_FIX, demand_line
 from rockcli.report.table import Column, Report, Table, format_value
 
@@ -176,11 +177,7 @@ def comparison_verdict(doc: dict[str, Any]) -> str:
     line = str(doc["classification"])
     if doc.get("code_demand") == "model":
         line += f" — {DIFFERENT_EARTHQUAKES}"
-    beyond = [c["name"] for c in doc["rocking"].get("restrainer_checks", ()) if not c["passed"]]
-    if beyond:
-        names = ", ".join(repr(n) for n in beyond)
-        line += f" — the time history is not valid: {names} beyond its strength"
-    return line
+    return line + strength_caveat(doc["rocking"].get("restrainer_checks", ()))
 
 
 def comparison_warnings(doc: dict[str, Any]) -> list[str]:

@@ -331,6 +331,7 @@ def run_kernel(blk: Block, points: np.ndarray, accel: np.ndarray, dt: float) -> 
         np.ones(0, dtype=np.int64),
         np.full(1, np.nan),
         np.full(1, np.nan),
+        np.zeros((1, 0)),
         out_f,
         out_i,
         np.zeros((0, L.N_SPRING_OUT)),

@@ -68,6 +68,7 @@ def test_the_kernel_itself_steps_through_epoch_times() -> None:
         np.ones(0, dtype=np.int64),
         np.full(1, np.nan),
         np.full(1, np.nan),
+        np.zeros((1, 0)),
         out_f,
         out_i,
         np.zeros((0, L.N_SPRING_OUT)),

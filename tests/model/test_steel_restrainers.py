@@ -124,7 +124,11 @@ def test_steel_keys_belong_to_tie_rods(tmp_path: Path) -> None:
     assert "restrainers[0].grade" in result.stderr and result.stderr.count("\n") == 1
 
 
-def test_the_facade_rod_is_checked_against_its_strength() -> None:
+def test_the_facade_rod_yields_and_fails_its_check() -> None:
+    """The façade's S275 Ø20 tie-rod is elastic-plastic: the Ricker pulse stretches it to its
+    yield force A·f_yk = π·0.01²·275e6 = 86.39 kN (by hand; never more), which is 1.05 = γ_M0
+    times its design strength N_pl,Rd = 82.28 kN: it yielded, the check fails, the run is
+    valid (the law models the yielding)."""
     result = CliRunner().invoke(
         cli, ["assess", str(FACADE), "--record", str(PULSE), "--format", "json"]
     )
@@ -134,17 +138,47 @@ def test_the_facade_rod_is_checked_against_its_strength() -> None:
     rod = next(r for r in doc["model"]["restrainers"] if r["name"] == "tie-rod")
     assert check["strength"] == rod["strength"]
     assert check["strength"] == pytest.approx(82_280.0, abs=1.0)  # S275 Ø20, by hand
+    assert rod["law"] == "elastic-plastic"
+    assert rod["yield_pos"] == pytest.approx(math.pi * 0.01**2 * 275e6, rel=1e-12)
     j = [r["name"] for r in doc["model"]["restrainers"]].index("tie-rod")
     assert check["demand"] == max(run["restrainers"][j]["max_force"] for run in doc["runs"])
-    assert check["utilisation"] == pytest.approx(check["demand"] / check["strength"], rel=1e-15)
-    assert check["passed"] is False and check["utilisation"] > 1
-    assert any("exceeds its strength" in w for w in doc["warnings"])
+    assert check["demand"] <= rod["yield_pos"] * (1 + 1e-12)
+    assert check["utilisation"] == pytest.approx(1.05, rel=1e-12)  # F_y / N_pl,Rd = γ_M0
+    assert check["passed"] is False and check["yielded"] is True
+    assert check["time_history_valid"] is True and check["clause"] == "NTC 2018 §4.2.4.1.2"
+    assert any("it yielded" in w for w in doc["warnings"])
     text = CliRunner().invoke(cli, ["assess", str(FACADE), "--record", str(PULSE)]).stdout
-    assert "not valid: 'tie-rod' beyond its strength" in text.splitlines()[-1]
+    last = text.splitlines()[-1]
+    assert "restrainer check failed: 'tie-rod'" in last and "not valid" not in last
 
 
-def test_compare_says_the_time_history_is_not_valid() -> None:
-    result = CliRunner().invoke(cli, ["compare", str(FACADE), "--record", str(PULSE)])
-    assert result.exit_code == 0, result.stderr
-    last = result.stdout.splitlines()[-1]
-    assert last.startswith("verdict: ") and "not valid: 'tie-rod' beyond its strength" in last
+def elastic_facade(tmp_path: Path) -> Path:
+    """The façade with its tie-rod forced elastic (law = "elastic"): the first versions' spring."""
+    import tomllib
+
+    data = tomllib.loads(FACADE.read_text(encoding="utf-8"))
+    for r in data["restrainers"]:
+        if r.get("kind") == "tie-rod":
+            r["law"] = "elastic"
+    path = tmp_path / "elastic.toml"
+    path.write_text(tomli_w.dumps(data), encoding="utf-8")
+    return path
+
+
+def test_an_elastic_rod_beyond_its_strength_makes_the_run_not_valid(tmp_path: Path) -> None:
+    """law = "elastic": the Ricker pulse drives 747 kN into the rod (9 times its strength); the
+    time history is not valid beyond that, and both assess and compare say so."""
+    path = elastic_facade(tmp_path)
+    doc = json.loads(
+        CliRunner()
+        .invoke(cli, ["assess", str(path), "--record", str(PULSE), "--format", "json"])
+        .stdout
+    )
+    (check,) = doc["restrainer_checks"]
+    assert check["utilisation"] > 9 and check["time_history_valid"] is False
+    assert any("it is elastic in this model" in w for w in doc["warnings"])
+    for command in ("assess", "compare"):
+        result = CliRunner().invoke(cli, [command, str(path), "--record", str(PULSE)])
+        assert result.exit_code == 0, result.stderr
+        last = result.stdout.splitlines()[-1]
+        assert last.startswith("verdict: ") and "not valid: 'tie-rod' beyond its strength" in last
