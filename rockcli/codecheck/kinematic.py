@@ -333,6 +333,17 @@ class Capacity:
         return control_displacement(self.mech, theta) * self.factor
 
 
+def constant_forces_only(mech: Mechanism) -> bool:
+    """True when the code's straight line holds: no restrainer on the sure curve and none
+    giving a force at rest (a force or a pretension that can be lost would start the line at
+    an a0* the sure curve does not have)."""
+    s = mech.side
+    return not any(
+        sp.side(s)[0] and (not can_be_lost(sp, s) or force_at(sp, s, 0.0) > 0.0)
+        for sp in mech.block.restrainers
+    )
+
+
 def capacity(mech: Mechanism, FC: float) -> Capacity:
     """α0, e*, a0*, d*/d_k and d0* of a mechanism, and which curve the code uses.
 
@@ -345,9 +356,7 @@ def capacity(mech: Mechanism, FC: float) -> Capacity:
     theta0 = zero_rotation(mech)
     factor = displacement_factor(mech)
     d0 = None if theta0 is None else control_displacement(mech, theta0) * factor
-    linear = not any(
-        sp.side(mech.side)[0] and not can_be_lost(sp, mech.side) for sp in mech.block.restrainers
-    )
+    linear = constant_forces_only(mech)
     return Capacity(
         mech=mech,
         alpha0=a_0,
