@@ -12,7 +12,10 @@ import math
 
 import pytest
 
+from rockcli.codecheck import rules2019
+from rockcli.codecheck.demand import LimitStateDemand
 from rockcli.codecheck.kinematic import Mechanism, capacity, rotation_at
+from rockcli.codecheck.position import Position
 from rockcli.codecheck.restrainer_check import (
     CONSTANT,
     NOT_ACTING,
@@ -21,6 +24,7 @@ from rockcli.codecheck.restrainer_check import (
     restrainer_actions,
 )
 from rockcli.codecheck.result import Check, Location, Method
+from rockcli.codecheck.spectra import ElasticSpectrum, Soil, Topography
 from rockcli.mechanics import Block, Restrainer, point_polar, spring_elongation
 from rockcli.studies.kinematic import governing_demand
 
@@ -114,9 +118,31 @@ def test_governing_demand_falls_back_on_du_then_the_curve_end() -> None:
     # No non-linear demand: du* (2009); no du* either: the end of the capacity curve.
     cap = cap_of(member("spring"))
     values: dict[str, float | None] = {"du_star": 0.04}
-    assert governing_demand(cap, "2009", values, [], {}, None) == (0.04, "du* = 0.04 m")  # type: ignore[arg-type]
-    d, at = governing_demand(cap, "2009", {"du_star": None}, [], {}, None)  # type: ignore[arg-type]
+    assert governing_demand(cap, "2009", values, [], {}, Position()) == (0.04, "du* = 0.04 m")
+    d, at = governing_demand(cap, "2009", {"du_star": None}, [], {}, Position())
     assert d == pytest.approx(cap.d_star_at(math.pi / 4), rel=REL)
     assert at.startswith("end of the capacity curve")
-    d, at = governing_demand(cap, "2009", values, [_check(0.02)], {}, None)  # type: ignore[arg-type]
+    d, at = governing_demand(cap, "2009", values, [_check(0.02)], {}, Position())
     assert (d, at) == (0.02, "SLV displacement demand d* = 0.02 m")
+
+
+def test_slv_displacement_demand_2019_at_the_ground() -> None:
+    # Circolare 7/2019 §C8.7.1.2.1: at the ground the SLV displacement demand is SDe(T_SLV)
+    # with the mechanism's 8 % damping, of the limit state's own spectrum (NTC 2018
+    # §3.2.3.2.2); the same spectrum object read twice (exact).
+    spectrum = ElasticSpectrum(
+        ag=0.15, F0=2.5, Tc_star=0.3, soil=Soil("A"), topography=Topography("T1"), g=G
+    )
+    slv = LimitStateDemand("SLV", 0.15, lambda a: spectrum, "test")
+    d = rules2019.slv_displacement_demand({"T_SLV": 1.7}, slv, Position(), G)
+    assert d == spectrum.SDe(1.7, 8.0)
+    assert rules2019.slv_displacement_demand({"T_SLV": None}, slv, Position(), G) is None
+
+
+def test_lost_force_makes_the_curve_not_the_straight_line() -> None:
+    # A force that can be lost starts α0 above the sure curve: the checks must read α(θ) of
+    # the sure curve, not a0*(1 − d*/d0*) from an a0* it does not have.
+    lost = cap_of(member("force", 5e4, fails_at=0.01))
+    assert not lost.linear
+    assert lost.a_star(0.0) == pytest.approx(G * B / H, rel=REL)  # gravity alone, e* = FC = 1
+    assert cap_of(member("spring", 5e4, fails_at=0.01)).linear  # no force at rest
