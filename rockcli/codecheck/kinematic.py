@@ -155,9 +155,9 @@ def rotation_at(mech: Mechanism, d_k: float) -> float:
     return b.alpha - math.asin(max(-1.0, min(1.0, math.sin(b.alpha) - d_k / b.R)))
 
 
-#: How a restrainer enters the check (mechanics.Restrainer.code_action).
+#: The code_action of a restrainer taken as a constant force (mechanics.Restrainer; the
+#: other, "spring", is its stiffness).
 FORCE = "force"
-SPRING = "spring"
 
 
 def force_at(sp: Restrainer, s: int, theta: float) -> float:
