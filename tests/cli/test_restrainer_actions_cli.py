@@ -149,3 +149,13 @@ def test_compare_shows_the_restrainers_of_the_check(tmp_path: Path) -> None:
     assert code == 0, err
     assert "Restrainers in the check" in out
     assert any("tie" in line and "force" in line for line in out.splitlines())
+
+
+def test_tie_rod_that_breaks_before_the_demand_fails(tmp_path: Path) -> None:
+    # ε_u = 1e-4 of 3 m: the bar breaks at 0.3 mm of elongation, long before the SLV
+    # displacement demand; it is left out of the sure curve (d0* of the wall alone) and its
+    # verification fails (lost).
+    doc = kinematic_json(wall(tmp_path, TIE + "\nelongation_at_break = 1e-4"))
+    [a] = doc["restrainer_actions"]
+    assert a["code_action"] == "force" and a["lost"] is True and a["passed"] is False
+    assert doc["d0_star"] == pytest.approx(B, rel=1e-9)  # d_k,0 = b, e* = 1 (bisection)
