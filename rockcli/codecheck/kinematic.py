@@ -6,7 +6,9 @@ at points (x_i, z_i) from the pivot (x into the block, z up) have virtual displa
 δx_i = z_i·δθ (horizontal) and δy_i = x_i·δθ (up). The moments of the weights, loads and
 thrusts (:func:`rockcli.mechanics.point_moments`) and of the restrainers are the very functions
 the rocking engine integrates, so α0 of each side equals the engine's uplift acceleration of
-that side by construction.
+that side by construction when no restrainer enters as a force. A restrainer enters as its
+``code_action`` says: a constant stabilising force (a tie-rod's design strength) or a spring
+with its pretension, capped at its strength; either until it is lost.
 
 Pure and silent: only :mod:`math` and :mod:`rockcli.mechanics`.
 """
@@ -19,10 +21,11 @@ from functools import cached_property
 
 from rockcli.mechanics import (
     Block,
+    Restrainer,
     point_moments,
     point_table,
+    spring_elongation,
     spring_failure_rotation,
-    spring_moment,
 )
 
 #: Rotation searched for the zero of the capacity curve [rad]: beyond π/2 the block is flat.
@@ -34,6 +37,8 @@ BISECTION_STEPS = 60
 #: Share of the capacity a restrainer failure must remove to end the mechanism in the 2019
 #: rules (Circolare 7/2019 §C8.7.1.2.1: "riduzione della capacità superiore al 50%").
 FAILURE_DROP = 0.5
+#: Rotation at which the capacity curve is cut when α never vanishes [rad].
+CURVE_END = math.pi / 4
 
 
 @dataclass(frozen=True)
@@ -73,8 +78,11 @@ def alpha0(mech: Mechanism) -> float:
     δx = z δθ, δy = x δθ; internal work zero); Circolare 7/2019 §C8.7.1.1 (weights that do not
     bear on the block only in the denominator). A thrust pushing towards the side checked does
     positive work (it lowers α0), one pushing back restores. The block alone: tan α.
-    Restrainers without initial force do no virtual work at θ = 0 (spec/ntc.md). It is
-    :func:`load_multiplier` at θ = 0, the uplift acceleration of the rocking engine.
+    A restrainer taken as a force (code_action "force": a tie-rod's design strength T at
+    height h_T) or a pretensioned spring (P0) does the work T·h_T = T·r·cos φ: the lone block
+    gives α0 = (W b + T h_T)/(W h_G) (Circolare 617/2009 §C8A.4.1; Circolare 7/2019
+    §C8.7.1.2); a spring without pretension does no work at θ = 0 (spec/ntc.md). It is
+    :func:`load_multiplier` at θ = 0; without forces, the rocking engine's uplift acceleration.
     """
     return load_multiplier(mech, 0.0)
 
@@ -147,20 +155,83 @@ def rotation_at(mech: Mechanism, d_k: float) -> float:
     return b.alpha - math.asin(max(-1.0, min(1.0, math.sin(b.alpha) - d_k / b.R)))
 
 
+#: The code_action of a restrainer taken as a constant force (mechanics.Restrainer; the
+#: other, "spring", is its stiffness).
+FORCE = "force"
+
+
+def force_at(sp: Restrainer, s: int, theta: float) -> float:
+    """Horizontal force of restrainer ``sp`` in the check at rotation θ on side s, intact [N].
+
+    code_action "force": its code_force F, constant from θ = 0 (Circolare 617/2009 §C8A.4.1 and
+    Circolare 7/2019 §C8.7.1.1: a tie-rod is an external force in the virtual work of α0).
+    "spring": P0 + K·u(θ) (pretension plus the spring, mechanics.spring_elongation), capped at
+    :func:`force_cap`. 0 on a side where the member does not work (K = 0).
+    """
+    k, r, phi = sp.side(s)
+    if k == 0.0:
+        return 0.0
+    if sp.code_action == FORCE:
+        return sp.code_force
+    return min(sp.pretension + k * spring_elongation(r, phi, theta), force_cap(sp, s))
+
+
+def force_cap(sp: Restrainer, s: int) -> float:
+    """The most a spring can give the check on side s: min(strength, yield force) [N] (inf: none).
+
+    NTC 2018 §4.2.4.1.2: the check relies on the member's design tension resistance, not on
+    the elastic force of an ever-growing elongation (docs/interpretations.md).
+    """
+    return min(sp.strength, sp.yield_force(s))
+
+
+def loss_elongation(sp: Restrainer, s: int) -> float:
+    """Elongation from rest at which the member is lost in the check on side s [m] (inf: never).
+
+    Its ``fails_at``; for a spring also the elongation at which its elastic force P0 + K·u
+    reaches the anchor's ``rupture_force`` before it yields (the anchor gives way). A force
+    is constant, at most the anchor's capacity: only ``fails_at`` ends it.
+    """
+    k = sp.side(s)[0]
+    if sp.code_action == FORCE or k == 0.0 or sp.rupture_force > sp.yield_force(s):
+        return sp.fails_at
+    return min(sp.fails_at, max(0.0, (sp.rupture_force - sp.pretension) / k))
+
+
+def loss_rotation(sp: Restrainer, s: int) -> float:
+    """Rotation at which the member is lost on side s [rad] (inf: never)."""
+    _, r, phi = sp.side(s)
+    return spring_failure_rotation(r, phi, loss_elongation(sp, s))
+
+
+def can_be_lost(sp: Restrainer, s: int) -> bool:
+    """True when the member can be lost on side s (it is left out of the sure curve)."""
+    return math.isfinite(loss_elongation(sp, s))
+
+
+def restrainer_moment(sp: Restrainer, s: int, theta: float) -> float:
+    """Restoring moment F·r·cos(φ − θ) of the member's force about the pivot of side s [N·m].
+
+    The arm of mechanics.spring_moment (a horizontal force at the attachment point).
+    """
+    _, r, phi = sp.side(s)
+    return force_at(sp, s, theta) * r * math.cos(phi - theta)
+
+
 def _spring_moments(mech: Mechanism, theta: float, sure_only: bool, intact: bool) -> float:
     """Σ restrainer moments at rotation θ on the mechanism's side [N·m].
 
-    sure_only: leave out every restrainer that can fail (spec/ntc.md: d0* on actions sure to
-    last until collapse). intact: ignore failure (the curve just before it).
+    sure_only: leave out every restrainer that can be lost (spec/ntc.md: d0* on actions sure
+    to last until collapse). intact: ignore losses (the curve just before one).
     """
     total = 0.0
     for sp in mech.block.restrainers:
-        k, r, phi = sp.side(mech.side)
-        if k == 0.0 or (sure_only and sp.can_fail):
+        lost = can_be_lost(sp, mech.side)
+        if sure_only and lost:
             continue
-        if not intact and theta > spring_failure_rotation(r, phi, sp.fails_at):
+        if lost and not intact and theta > loss_rotation(sp, mech.side):
             continue
-        total += spring_moment(k, r, phi, theta)
+        total += restrainer_moment(sp, mech.side, theta)
     return total
 
 
@@ -173,7 +244,8 @@ def load_multiplier(
     H = Σ_moving P_i (z_i cos θ + x_i sin θ) and T the thrusts' moment
     (:func:`rockcli.mechanics.point_moments`, the engine's own function; spec/ntc.md, "Capacity
     curve"; equilibrium in the rotated position, Circolare 617/2009 §C8A.4.2.3). The block
-    alone: tan(α − θ). M_k: mechanics.spring_moment, as in the engine.
+    alone: tan(α − θ). M_k: :func:`restrainer_moment`, a force (code_action "force") or a
+    capped spring (mechanics.spring_moment's elongation and arm, as in the engine).
     """
     g, h, t, _, _ = point_moments(mech.points, mech.side, math.sin(theta), math.cos(theta))
     return (g - mech.side * t + _spring_moments(mech, theta, sure_only, intact)) / h
@@ -209,18 +281,17 @@ def zero_rotation(mech: Mechanism) -> float | None:
 
 
 def failure_rotations(mech: Mechanism) -> list[tuple[str, float, float]]:
-    """(name, θ_f, capacity drop) of each restrainer that fails on the mechanism's side.
+    """(name, θ_f, capacity drop) of each restrainer lost on the mechanism's side.
 
-    The drop is the share of α lost when it fails: 1 − α_after/α_before at θ_f.
+    The drop is the share of α lost with it: 1 − α_after/α_before at θ_f.
     """
     out = []
     for sp in mech.block.restrainers:
-        k, r, phi = sp.side(mech.side)
-        theta_f = spring_failure_rotation(r, phi, sp.fails_at)
-        if k == 0.0 or not math.isfinite(theta_f) or theta_f >= THETA_MAX:
+        theta_f = loss_rotation(sp, mech.side)
+        if sp.side(mech.side)[0] == 0.0 or not math.isfinite(theta_f) or theta_f >= THETA_MAX:
             continue
         before = load_multiplier(mech, theta_f, intact=True)
-        after = before - spring_moment(k, r, phi, theta_f) / _overturning(mech, theta_f)
+        after = before - restrainer_moment(sp, mech.side, theta_f) / _overturning(mech, theta_f)
         out.append((sp.name, theta_f, 1.0 - after / before if before > 0 else 1.0))
     return out
 
@@ -262,6 +333,17 @@ class Capacity:
         return control_displacement(self.mech, theta) * self.factor
 
 
+def constant_forces_only(mech: Mechanism) -> bool:
+    """True when the code's straight line holds: no restrainer on the sure curve and none
+    giving a force at rest (a force or a pretension that can be lost would start the line at
+    an a0* the sure curve does not have)."""
+    s = mech.side
+    return not any(
+        sp.side(s)[0] and (not can_be_lost(sp, s) or force_at(sp, s, 0.0) > 0.0)
+        for sp in mech.block.restrainers
+    )
+
+
 def capacity(mech: Mechanism, FC: float) -> Capacity:
     """α0, e*, a0*, d*/d_k and d0* of a mechanism, and which curve the code uses.
 
@@ -274,7 +356,7 @@ def capacity(mech: Mechanism, FC: float) -> Capacity:
     theta0 = zero_rotation(mech)
     factor = displacement_factor(mech)
     d0 = None if theta0 is None else control_displacement(mech, theta0) * factor
-    linear = not any(sp.side(mech.side)[0] and not sp.can_fail for sp in mech.block.restrainers)
+    linear = constant_forces_only(mech)
     return Capacity(
         mech=mech,
         alpha0=a_0,
@@ -294,7 +376,7 @@ def curve_points(cap: Capacity, n: int = 11) -> list[dict[str, float]]:
     halves its growth limit, π/4, when there is no d0*).
     """
     mech = cap.mech
-    d_end = cap.d0_star if cap.d0_star is not None else cap.d_star_at(math.pi / 4)
+    d_end = cap.d0_star if cap.d0_star is not None else cap.d_star_at(CURVE_END)
     rows = []
     for k in range(n):
         d_star = d_end * k / (n - 1)

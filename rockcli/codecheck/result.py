@@ -76,6 +76,7 @@ class KinematicResult:
         notes: interpretations and warnings to show with the result.
         alpha0_by_side: α0 towards each side, keys "1" (θ > 0) and "-1" (θ < 0): loads off the
             mid-plane and thrusts make them differ.
+        restrainer_actions: how each restrainer entered the check, and its verification.
     """
 
     edition: str
@@ -92,6 +93,7 @@ class KinematicResult:
     demand: dict[str, object]
     notes: tuple[str, ...] = field(default_factory=tuple)
     alpha0_by_side: dict[str, float] = field(default_factory=dict)
+    restrainer_actions: tuple[RestrainerAction, ...] = ()
 
     def verdict(self) -> dict[str, bool | None]:
         """DLS and ULS satisfied? (None: not evaluated).
@@ -130,3 +132,33 @@ def _all(checks: list[Check]) -> bool | None:
     if not results or any(r is None for r in results):
         return None
     return all(results)
+
+
+@dataclass(frozen=True)
+class RestrainerAction:
+    """How one restrainer entered the kinematic check, and its own verification.
+
+    Attributes:
+        name: the restrainer's label.
+        code_action: "force" (a constant stabilising force) or "spring" (P0 + K·u, capped).
+        force: the force it gives α0 [N] (0 for a spring without pretension).
+        strength: its strength [N] (None: not known).
+        demand: the force the check relies on [N]: the force, or the spring's force at
+            ``demand_at``.
+        demand_at: where the spring's force is read (or "constant force").
+        utilisation: demand / strength (None: strength not known).
+        lost: True when the member is lost (rupture) before the rotation of ``demand_at``.
+        passed: demand ≤ strength and not lost (None: strength not known and not lost).
+        clause: the clause of its strength.
+    """
+
+    name: str
+    code_action: str
+    force: float
+    strength: float | None
+    demand: float
+    demand_at: str
+    utilisation: float | None
+    lost: bool
+    passed: bool | None
+    clause: str

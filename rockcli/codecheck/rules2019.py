@@ -9,6 +9,7 @@ PGA); ζ_E = capacity/demand. At height the demand is the floor spectrum of §C7
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from dataclasses import replace
 
 from rockcli.codecheck import spectra
@@ -140,6 +141,33 @@ def slv_linear_check(
     )
 
 
+def displacement_measure(
+    T: float, xi: float, pos: Position, g: float
+) -> Callable[[Spectrum], float]:
+    """The displacement demand [m] a spectrum gives the mechanism of secant period T [s] and
+    damping ξ [%]: SDe(T, ξ) at the ground, S_eZ(T)·T²/4π² at height (§C8.7.1.2.1, C7.2.3)."""
+    if not pos.at_height:
+        return lambda sp: sp.SDe(T, xi)
+    assert pos.T1 is not None
+    T1 = pos.T1
+    return lambda sp: floor_displacement(
+        T, floor_acceleration(sp, pos), T1, xi, g, 100.0 * pos.damping
+    )
+
+
+def slv_displacement_demand(
+    values: dict[str, float | None], slv: LimitStateDemand, pos: Position, g: float
+) -> float | None:
+    """The SLV displacement demand d* [m] at the site's ag, at T_SLV (None: no T_SLV).
+
+    The demand side of the SLV non-linear check (§C8.7.1.2.1), whose capacity is d_SLV.
+    """
+    T = values.get("T_SLV")
+    if T is None:
+        return None
+    return displacement_measure(T, DAMPING["SLV"], pos, g)(slv.spectrum)
+
+
 def displacement_check(
     ls: str,
     d: float | None,
@@ -167,19 +195,7 @@ def displacement_check(
             "no limit displacement: positive global stiffness and no limit given",
         )
     xi = DAMPING[ls]
-    if pos.at_height:
-        assert pos.T1 is not None
-        T1 = pos.T1
-
-        def measure(sp: Spectrum) -> float:
-            return floor_displacement(
-                T, floor_acceleration(sp, pos), T1, xi, g, 100.0 * pos.damping
-            )
-    else:
-
-        def measure(sp: Spectrum) -> float:
-            return sp.SDe(T, xi)
-
+    measure = displacement_measure(T, xi, pos, g)
     ag = capacity_ag(dem, measure, d)
     note = f"T = {T:.4f} s, ξ = {xi:g} %, d = {d:.5f} m" + bound_note(ag)
     if ag is not None and sld_cap is not None and ag < sld_cap:

@@ -468,9 +468,10 @@ class Restrainer(Table):
     )
     code_action: CodeAction | None = Field(
         None,
-        description="How the kinematic check takes it: 'force' (its strength, a stabilising "
-        "force in α0; default for a tie-rod with a grade or fy, fu) or 'spring' (its stiffness, "
-        "no force at rest; default otherwise)",
+        description="How the kinematic check takes it: 'force' (its strength, a constant "
+        "stabilising force in α0 and on the whole curve; default for a tie-rod with a grade or "
+        "fy, fu) or 'spring' (its pretension plus its stiffness, capped at its strength; "
+        "default otherwise); either until it breaks",
     )
 
     @model_validator(mode="after")

@@ -7,7 +7,7 @@ from typing import TYPE_CHECKING, Any
 from rockcli import __version__
 from rockcli.records.record import Record
 from rockcli.report.assess import strength_caveat
-from rockcli.report.kinematic import ULTIMATE_FIX, demand_line
+from rockcli.report.kinematic import ULTIMATE_FIX, actions_table, demand_line
 from rockcli.report.table import Column, Report, Table, format_value
 
 if TYPE_CHECKING:
@@ -160,9 +160,10 @@ def comparison_report(doc: dict[str, Any]) -> Report:
         f"rocking: both polarities, engine {roc['engine']['name']}; input: "
         + roc["record"].get("input_note", "the record itself, at the block's base"),
     )
+    actions = kin.get("restrainer_actions", [])
     return Report(
         title="rock compare",
-        tables=(table,),
+        tables=(table, *((actions_table(actions),) if actions else ())),
         notes=notes,
         verdict=comparison_verdict(doc),
         warnings=tuple(

@@ -5,7 +5,7 @@ from __future__ import annotations
 from typing import Any
 
 from rockcli import __version__
-from rockcli.codecheck.result import Check, KinematicResult
+from rockcli.codecheck.result import Check, KinematicResult, RestrainerAction
 from rockcli.report.table import Column, Report, Table, key_value
 
 SCHEMA = 1
@@ -58,6 +58,23 @@ def kinematic_document(
         "notes": list(result.notes),
         "warnings": list(warnings),
         "verdict": result.verdict(),
+        "restrainer_actions": [action_document(a) for a in result.restrainer_actions],
+    }
+
+
+def action_document(a: RestrainerAction) -> dict[str, Any]:
+    """How one restrainer entered the check and its verification, SI units (N)."""
+    return {
+        "name": a.name,
+        "code_action": a.code_action,
+        "force": a.force,
+        "strength": _number(a.strength),
+        "demand": a.demand,
+        "demand_at": a.demand_at,
+        "utilisation": _number(a.utilisation),
+        "lost": a.lost,
+        "passed": a.passed,
+        "clause": a.clause,
     }
 
 
@@ -99,6 +116,46 @@ RECORD_COLUMNS = (
     Column("PGA", "PGA", "g", "{:.4f}"),
     Column("source", "source", align="left"),
 )
+#: The restrainers in the check (forces in kN on the terminal, N in the JSON).
+ACTION_COLUMNS = (
+    Column("name", "restrainer"),
+    Column("code_action", "action"),
+    Column("force_kN", "force in α0", "kN", "{:.4g}"),
+    Column("demand_kN", "demand", "kN", "{:.4g}"),
+    Column("strength_kN", "strength", "kN", "{:.4g}"),
+    Column("utilisation", "use", "", "{:.3f}"),
+    Column("passed", "ok"),
+)
+#: N → kN for the terminal.
+KILO = 1e3
+
+
+def actions_table(actions: list[dict[str, Any]]) -> Table:
+    """ "Restrainers in the check": each restrainer's action, force, demand and strength."""
+    rows = tuple(
+        {
+            **a,
+            "force_kN": a["force"] / KILO,
+            "demand_kN": a["demand"] / KILO,
+            "strength_kN": None if a["strength"] is None else a["strength"] / KILO,
+        }
+        for a in actions
+    )
+    return Table("Restrainers in the check", ACTION_COLUMNS, rows)
+
+
+def action_notes(actions: list[dict[str, Any]]) -> list[str]:
+    """Where each spring's demand is read (a force's is itself), and which member is lost
+    before it."""
+    out = [
+        f"{a['name']}: {a['code_action']}, demand at {a['demand_at']} ({a['clause']})"
+        for a in actions
+        if a["code_action"] != "force"
+    ]
+    out += [f"{a['name']}: lost (rupture) before {a['demand_at']}" for a in actions if a["lost"]]
+    return out
+
+
 QUANTITIES = {
     "du_star": ("ultimate displacement du*", "m"),
     "ds_star": ("ds* = 0.4 du*", "m"),
@@ -133,6 +190,7 @@ def kinematic_report(doc: dict[str, Any]) -> Report:
         ),
     ]
     demand = demand_table(doc["demand"])
+    actions = doc.get("restrainer_actions", [])
     tables = (
         key_value("Mechanism and equivalent oscillator", items),
         Table("Capacity curve", CURVE_COLUMNS, tuple(doc["curve"])),
@@ -142,9 +200,11 @@ def kinematic_report(doc: dict[str, Any]) -> Report:
             CHECK_COLUMNS,
             tuple({**c, "clause_short": c["clause"].split(" ")[-1]} for c in doc["checks"]),
         ),
+        *((actions_table(actions),) if actions else ()),
     )
     notes = [
         *doc["notes"],
+        *action_notes(actions),
         *(
             f"demand {demand_line(ls, numbers, spectral=True)} (5 % damping)"
             for ls, numbers in doc["demand"].items()

@@ -13,9 +13,17 @@ from typing import Any
 
 from rockcli.codecheck import rules2009, rules2019
 from rockcli.codecheck.demand import LimitStateDemand, Spectrum, record_demand
-from rockcli.codecheck.kinematic import Capacity, Mechanism, alpha0, capacity, curve_points
+from rockcli.codecheck.kinematic import (
+    CURVE_END,
+    Capacity,
+    Mechanism,
+    alpha0,
+    capacity,
+    curve_points,
+)
 from rockcli.codecheck.position import Position, position
-from rockcli.codecheck.result import KinematicResult
+from rockcli.codecheck.restrainer_check import nonlinear_displacement_demand, restrainer_actions
+from rockcli.codecheck.result import Check, KinematicResult
 from rockcli.errors import InputError
 from rockcli.mechanics import Block
 from rockcli.model.derive_ntc import NtcSettings
@@ -229,6 +237,9 @@ def analyse(
             "rigid until activation: the elastic branch of free elements (§C8.7.1.6–7) "
             "is not modelled"
         )
+    actions = restrainer_actions(
+        cap, *governing_demand(cap, settings.edition, values, checks, dem, pos)
+    )
     return KinematicResult(
         edition=settings.edition,
         side=cap.mech.side,
@@ -246,7 +257,36 @@ def analyse(
         },
         notes=tuple(notes),
         alpha0_by_side={str(s): alpha0(mechanism(block, settings, s)) for s in (1, -1)},
+        restrainer_actions=actions,
     )
+
+
+def governing_demand(
+    cap: Capacity,
+    edition: str,
+    values: dict[str, float | None],
+    checks: list[Check],
+    dem: dict[str, LimitStateDemand],
+    pos: Position,
+) -> tuple[float, str]:
+    """(d* [m], what it is) at which a spring's force is verified against its strength.
+
+    The displacement demand of the non-linear SLV check when it is computed (2009: the largest
+    of SDe(Ts) and the demand at height; 2019: the SLV spectrum's at T_SLV), else the ultimate
+    displacement (du*; d_SLV), else the end of the capacity curve (positive stiffness, no limit).
+    """
+    if edition == "2009":
+        demand = nonlinear_displacement_demand(checks)
+        ultimate, name = values.get("du_star"), "du*"
+    else:
+        demand = rules2019.slv_displacement_demand(values, dem["SLV"], pos, cap.mech.block.g)
+        ultimate, name = values.get("d_SLV"), "d_SLV"
+    if demand is not None:
+        return demand, f"SLV displacement demand d* = {demand:.4g} m"
+    if ultimate is not None:
+        return ultimate, f"{name} = {ultimate:.4g} m"
+    end = cap.d_star_at(CURVE_END)
+    return end, f"end of the capacity curve d* = {end:.4g} m (no {name})"
 
 
 def _limit(cap: Capacity, settings: NtcSettings) -> float | None:

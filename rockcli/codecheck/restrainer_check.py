@@ -1,0 +1,81 @@
+"""Which force each restrainer gave the kinematic check, verified against its strength.
+
+A restrainer enters the check as its ``code_action`` says (:mod:`rockcli.codecheck.kinematic`):
+a constant force, its design strength (Circolare 617/2009 §C8A.4.1; Circolare 7/2019
+§C8.7.1.1), or a spring P0 + K·u capped at its strength. Either way the check relies on a
+force the member must carry: its design tension resistance N_t,Rd (NTC 2018 §4.2.4.1.2) is
+the limit (docs/interpretations.md, "Restrainers in the kinematic check").
+
+Pure and silent: only :mod:`math` and the code-check package.
+"""
+
+from __future__ import annotations
+
+import math
+
+from rockcli.codecheck.kinematic import (
+    FORCE,
+    Capacity,
+    force_at,
+    loss_rotation,
+    rotation_at,
+)
+from rockcli.codecheck.result import Check, Method, RestrainerAction
+from rockcli.mechanics import Restrainer
+
+#: The clause of the members' strength.
+STRENGTH_CLAUSE = "NTC 2018 §4.2.4.1.2"
+#: What ``demand_at`` says of a force.
+CONSTANT = "constant force"
+#: What ``demand_at`` says of a member that does not work on the side checked.
+NOT_ACTING = "does not act on the side checked"
+
+
+def nonlinear_displacement_demand(checks: tuple[Check, ...] | list[Check]) -> float | None:
+    """The governing displacement demand d* [m] of the 2009 non-linear ULS checks: the largest
+    of the ground and height demands (Circolare 617/2009 §C8A.4.2.3); None when not computed."""
+    demands = [
+        c.demand
+        for c in checks
+        if c.method is Method.NONLINEAR and c.unit == "m" and c.demand is not None
+    ]
+    return max(demands) if demands else None
+
+
+def demand_rotation(cap: Capacity, d_star: float) -> float:
+    """The rotation θ [rad] at which the mechanism reaches the spectral displacement d* [m]."""
+    return rotation_at(cap.mech, d_star / cap.factor)
+
+
+def restrainer_action(sp: Restrainer, cap: Capacity, theta: float, at: str) -> RestrainerAction:
+    """The action of one restrainer and its verification at rotation θ [rad] (``at`` says which).
+
+    force: what it gives α0 (θ = 0). demand: a force's code_force; a spring's force at θ
+    (capped at its strength; intact: ``lost`` says if it broke before θ).
+    """
+    s = cap.mech.side
+    strength = sp.strength if math.isfinite(sp.strength) else None
+    acts = sp.side(s)[0] > 0.0
+    force = force_at(sp, s, 0.0)
+    demand = sp.code_force if sp.code_action == FORCE else force_at(sp, s, theta)
+    lost = acts and theta > loss_rotation(sp, s)
+    use = None if strength is None else demand / strength
+    passed = False if lost else (None if use is None or not acts else use <= 1.0)
+    return RestrainerAction(
+        name=sp.name,
+        code_action=sp.code_action,
+        force=force,
+        strength=strength,
+        demand=demand if acts else 0.0,
+        demand_at=(CONSTANT if sp.code_action == FORCE else at) if acts else NOT_ACTING,
+        utilisation=use if acts else None,
+        lost=lost,
+        passed=passed,
+        clause=STRENGTH_CLAUSE,
+    )
+
+
+def restrainer_actions(cap: Capacity, d_star: float, at: str) -> tuple[RestrainerAction, ...]:
+    """Every restrainer's action, the springs read at the spectral displacement d* [m]."""
+    theta = demand_rotation(cap, d_star)
+    return tuple(restrainer_action(sp, cap, theta, at) for sp in cap.mech.block.restrainers)
