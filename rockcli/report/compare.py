@@ -137,11 +137,19 @@ def comparison_rows(doc: dict[str, Any]) -> tuple[dict[str, str], ...]:
                     "label": f"{p['name']} ({run['polarity']:+d})",
                     "code": "—",
                     "rocking": f"{1e3 * p['max_displacement']:.2f} mm, "
-                    f"{p['max_force'] / 1e3:.2f} kN",
+                    f"{p['max_force'] / 1e3:.2f} kN" + member_events(p),
                 }
             )
     rows.append({"label": "classification", "code": doc["classification"], "rocking": ""})
     return tuple(rows)
+
+
+def member_events(p: dict[str, Any]) -> str:
+    """ ", yielded", ", lost at t s" for a run's restrainer row (empty when it stayed elastic)."""
+    text = ", yielded" if p.get("yielded") else ""
+    if p.get("t_rupture") is not None:
+        text += f", lost at {p['t_rupture']:.3f} s"
+    return text
 
 
 def comparison_report(doc: dict[str, Any]) -> Report:

@@ -109,3 +109,31 @@ def test_the_lower_panel_names_the_motion_that_shook_the_block() -> None:
         ax = Figure().add_subplot()
         draw_record(ax, rec, 4.0, floor)
         assert ax.get_ylabel() == label
+
+
+def test_a_yielded_restrainer_gets_its_force_elongation_loop() -> None:
+    # Issue 9: the façade's tie-rod yields under the Ricker pulse; the loop panel draws the
+    # engine's force against the elongation, never above the yield line, and names the law.
+    needs_matplotlib()
+    from matplotlib.figure import Figure
+
+    from rockcli.dynamics.simulate import assess
+    from rockcli.model.derive import to_block
+    from rockcli.model.load import load_model
+    from rockcli.records.files import read_record
+    from rockcli.report.assess import model_document
+    from rockcli.report.plots.loops import acted, draw_loops
+
+    block = to_block(load_model(ROOT / "examples" / "facade.toml"))
+    rec = read_record(str(ROOT / "records" / "ricker_Tp0.5s_0.5g.txt"))
+    result = assess(block, rec.time, rec.accel, rec.dt, history=True)
+    rows = acted(result.runs)
+    names = [sp.name for sp in block.restrainers]
+    assert rows == [names.index("tie-rod")]  # the elastic vault does not get a panel
+    model = model_document("façade", "facade", block, "housner")
+    ax = Figure().add_subplot()
+    draw_loops(ax, model, result.runs, rows[0])
+    assert ax.get_title() == "tie-rod (elastic-plastic)"
+    f_y = model["restrainers"][rows[0]]["yield_pos"] / 1e3
+    forces = [max(line.get_ydata()) for line in ax.get_lines() if line.get_label() in ("+1", "-1")]
+    assert len(forces) == 2 and max(forces) <= f_y * (1 + 1e-12)

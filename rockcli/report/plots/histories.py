@@ -140,7 +140,8 @@ def plot_assessment(
     record: Record,
     overturn_angle: float = OVERTURN_ANGLE,
 ) -> None:
-    """θ/α of both polarities against time over the record's acceleration (paper Fig. 7, 11).
+    """θ/α of both polarities against time over the record's acceleration (paper Fig. 7, 11);
+    below them, the force–elongation loop of each restrainer that yielded or was lost.
 
     Args:
         doc: the `rock assess` JSON document.
@@ -149,8 +150,20 @@ def plot_assessment(
         record: the record the runs were computed with (acceleration [g]).
         overturn_angle: |θ| at which a run counts as overturned [rad].
     """
-    fig = new_figure(path, (10.0, 6.0))
-    spec = fig.add_gridspec(2, 1, height_ratios=(3, 1))
-    draw_time_panels(fig, [spec[0], spec[1]], doc, runs, record, overturn_angle)
+    from rockcli.report.plots.loops import acted, draw_loops
+
+    loops = acted(runs)
+    if not loops:
+        fig = new_figure(path, (10.0, 6.0))
+        spec = fig.add_gridspec(2, 1, height_ratios=(3, 1))
+        draw_time_panels(fig, [spec[0], spec[1]], doc, runs, record, overturn_angle)
+    else:
+        fig = new_figure(path, (10.0, 10.0))
+        outer = fig.add_gridspec(2, 1, height_ratios=(4, 2.6), hspace=0.25)
+        time_spec = outer[0].subgridspec(2, 1, height_ratios=(3, 1), hspace=0.08)
+        draw_time_panels(fig, [time_spec[0], time_spec[1]], doc, runs, record, overturn_angle)
+        loop_spec = outer[1].subgridspec(1, len(loops), wspace=0.25)
+        for k, row in enumerate(loops):
+            draw_loops(fig.add_subplot(loop_spec[k]), doc["model"], runs, row)
     fig.suptitle(f"rock assess — {doc['model']['name']} under {record.name}")
     save(fig, path)
