@@ -12,13 +12,15 @@ from typing import Any
 
 #: The largest utilisation (force / design strength) a rod may reach.
 UTILISATION_LIMIT = 1.0
+#: How to have the code's ULS evaluated (as `rock kinematic` says it).
+ULTIMATE_FIX = "set ntc.ultimate_displacement or a restrainer's fails_at"
 
 
 def failures(row: dict[str, Any]) -> list[str]:
     """Why a candidate does not pass (empty: it passes), one phrase per criterion."""
     why = []
     if row["code_uls_passed"] is None:
-        why.append("the code ULS is not evaluated")
+        why.append(f"the code ULS is not evaluated ({ULTIMATE_FIX})")
     elif not row["code_uls_passed"]:
         why.append(f"the code ULS fails (ζ = {_number(row['code_zeta'])})")
     if row["overturned"]:
