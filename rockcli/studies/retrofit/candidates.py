@@ -176,6 +176,7 @@ def steel_of(
     rod = model.restrainers[index] if index is not None else None
     if grade is None:
         grade = rod.grade.value if rod is not None and rod.grade is not None else DEFAULT_GRADE
+    grade = grade.upper()
     if grade not in GRADE_NAMES:
         raise InputError(
             "unknown steel grade", where="--grade", value=grade, allowed=", ".join(GRADE_NAMES)
