@@ -101,4 +101,3 @@ def retrofit_report(doc: dict[str, Any]) -> Report:
         ),
         verdict=verdict,
     )
-
