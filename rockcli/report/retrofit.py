@@ -86,7 +86,7 @@ def retrofit_report(doc: dict[str, Any]) -> Report:
     )
     chosen = doc["chosen"]
     verdict = (
-        f"Ø{chosen['diameter_mm']:g} mm ({doc['count']} × {doc['grade']}): {doc['reason']}"
+        f"{doc['reason']} ({doc['count']} bar(s) of {doc['grade']})"
         if chosen is not None
         else doc["reason"]
     )

@@ -27,7 +27,7 @@ def test_smallest_passing_diameter_is_chosen() -> None:
     rows = [row(10, code_uls_passed=False, code_zeta=0.8), row(12), row(16)]
     chosen, reason = choose(rows)
     assert chosen is rows[1]
-    assert reason.startswith("12 mm is the smallest diameter")
+    assert reason.startswith("Ø12 mm is the smallest diameter")
 
 
 def test_a_pass_below_a_failure_is_still_the_smallest() -> None:

@@ -42,7 +42,7 @@ def choose(rows: Sequence[dict[str, Any]]) -> tuple[dict[str, Any] | None, str]:
     for row in rows:
         if not failures(row):
             return row, (
-                f"{row['diameter_mm']:g} mm is the smallest diameter for which the code ULS "
+                f"Ø{row['diameter_mm']:g} mm is the smallest diameter for which the code ULS "
                 "passes, the block survives and the rod neither ruptures nor exceeds its strength"
             )
     largest = rows[-1]
