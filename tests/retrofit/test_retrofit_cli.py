@@ -183,3 +183,15 @@ def test_plot(tmp_path: Path) -> None:
     assert code == 0, err
     assert plot.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
     assert f"wrote {plot}" in err
+
+
+def test_plot_marks_overturns(tmp_path: Path) -> None:
+    # A free wall with a low, long rod under a strong pulse: the thin rods let it overturn
+    # (the plot's × branch); the figure is written either way.
+    pytest.importorskip("matplotlib")
+    plot = tmp_path / "retrofit.svg"
+    pulse = str(ROOT / "records" / "one-cosine_Tp2s_0.31g.txt")
+    doc = run_json(str(WALL), "--record", pulse, "--pga", "1.0", "--at", "0.3,0", "--length",
+                   "8", "--diameters", "10,40", "--plot", str(plot))  # fmt: skip
+    assert [c["overturned"] for c in doc["candidates"]] == [True, False]
+    assert plot.read_text().lstrip().startswith("<?xml")
