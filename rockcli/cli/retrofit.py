@@ -9,6 +9,7 @@ from rockcli.cli.options import (
     check_outputs,
     edition_option,
     engine_option,
+    exit_if_non_finite,
     force_option,
     ground_option,
     load_record,
@@ -104,6 +105,10 @@ def retrofit(model_path, record_path, record_format, dt, units, scale, pga, name
         plot_retrofit(doc, plot_path)
         announce_written(plot_path)
     show(doc, output, retrofit_report)
+    exit_if_non_finite(
+        [{**r, "message": f"Ø{c['diameter_mm']:g} mm: {r['message']}"}
+         for c in rows for r in c["broken_runs"]]
+    )  # fmt: skip
     if fail_if_none and chosen is None:
         raise SystemExit(EXIT_NONE)
 

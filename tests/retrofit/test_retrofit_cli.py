@@ -131,22 +131,29 @@ def test_fail_if_none_gate() -> None:
     assert run(*args, "--fail-if-none")[0] == 1
 
 
-def test_candidate_of_the_models_diameter_is_what_compare_says(shared_records: Path) -> None:
+@pytest.mark.parametrize("evaluated", [False, True])
+def test_candidate_of_the_models_diameter_is_what_compare_says(
+    shared_records: Path, tmp_path: Path, evaluated: bool
+) -> None:
     # The façade's own rod is Ø20 S275: its candidate is the model itself, so its numbers are
-    # `rock compare`'s on the same record (exact: the same derivation and engine).
+    # `rock compare`'s on the same record (exact: the same derivation and engine). With an
+    # ultimate displacement the code's ULS is evaluated and ζ is compare's governing ratio.
+    model = str(with_ultimate_displacement(tmp_path) if evaluated else FACADE)
     record = str(shared_records / "ELC180.AT2")
-    doc = run_json(str(FACADE), "--record", record, "--diameters", "16,20,24")
+    doc = run_json(model, "--record", record, "--diameters", "16,20,24")
     cand = doc["candidates"][1]
-    result = CliRunner().invoke(
-        cli, ["compare", str(FACADE), "--record", record, "--format", "json"]
-    )
+    result = CliRunner().invoke(cli, ["compare", model, "--record", record, "--format", "json"])
     comp = json.loads(result.stdout)
-    roc = comp["rocking"]
+    roc, kin = comp["rocking"], comp["kinematic"]
     assert cand["max_ratio"] == roc["max_ratio"]
     assert cand["max_force"] == max(r["restrainers"][1]["max_force"] for r in roc["runs"])
     check = next(c for c in roc["restrainer_checks"] if c["name"] == "tie-rod")
     assert (cand["strength"], cand["utilisation"]) == (check["strength"], check["utilisation"])
-    assert cand["code_uls_passed"] is comp["kinematic"]["verdict"]["ULS"]
+    assert cand["code_uls_passed"] is kin["verdict"]["ULS"]
+    uls = [c for c in kin["checks"] if c["limit_state"] in ("SLV", "SLC")]
+    ratios = [c["ratio"] for c in uls if c["method"] == "nonlinear"]
+    assert cand["code_zeta"] == (min(ratios) if evaluated else None)
+    assert (cand["code_zeta"] is not None) is evaluated
 
 
 def test_elc180_choice_is_the_smallest_that_passes(shared_records: Path, tmp_path: Path) -> None:
@@ -195,3 +202,32 @@ def test_plot_marks_overturns(tmp_path: Path) -> None:
                    "8", "--diameters", "10,40", "--plot", str(plot))  # fmt: skip
     assert [c["overturned"] for c in doc["candidates"]] == [True, False]
     assert plot.read_text().lstrip().startswith("<?xml")
+
+
+def test_non_finite_run_exits_3_after_the_report(monkeypatch: pytest.MonkeyPatch) -> None:
+    # A run that broke down (NaN) decides nothing: the report, then exit 3 naming the size
+    # (as assess and compare). Forced here: no shipped model breaks the engine.
+    from rockcli.studies.retrofit import run as retrofit_run
+
+    broken = [{"polarity": -1, "status": "non-finite", "message": "θ became NaN"}]
+    monkeypatch.setattr(retrofit_run, "broken_runs", lambda result: broken)
+    code, out, err = run(str(FACADE), "--record", str(RICKER), "--diameters", "20")
+    assert code == 3
+    assert "verdict:" in out
+    assert "polarity -1: Ø20 mm: θ became NaN" in err
+
+
+def test_broken_runs_lists_only_non_finite_runs() -> None:
+    import dataclasses
+
+    from rockcli.dynamics.result import Assessment, RunStatus
+    from rockcli.studies.assess import assess_model_output
+    from rockcli.studies.retrofit.run import broken_runs
+
+    result = assess_model_output(validate_model(read_toml(str(FACADE))), files.read_record(
+        str(RICKER)), "fast").result  # fmt: skip
+    assert broken_runs(result) == []
+    bad = dataclasses.replace(result.runs[1], status=RunStatus.NONFINITE, message="NaN")
+    assert broken_runs(Assessment((result.runs[0], bad))) == [
+        {"polarity": bad.polarity, "status": "non-finite", "message": "NaN"}
+    ]

@@ -14,10 +14,12 @@ from collections.abc import Callable, MutableSequence
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
+from rockcli.dynamics.result import RunStatus
 from rockcli.studies.retrofit.candidates import RetrofitPlan, build_candidate
 
 if TYPE_CHECKING:
     from rockcli.codecheck.result import KinematicResult
+    from rockcli.dynamics.result import Assessment
     from rockcli.records.record import Record
     from rockcli.studies.assess import AssessmentOutput
     from rockcli.studies.sweep.executor import Lane
@@ -107,7 +109,18 @@ def rocking_columns(out: AssessmentOutput, index: int) -> dict[str, Any]:
         "max_force": max(float(p.max_force) for p in peaks),
         "utilisation": rod_utilisation(out, index),
         "ruptured": any(p.t_fail is not None for p in peaks),
+        "broken_runs": broken_runs(result),
     }
+
+
+def broken_runs(result: Assessment) -> list[dict[str, Any]]:
+    """The runs that ended in a non-finite state (their numbers decide nothing): polarity,
+    status and message, as the assess document has them (usually none)."""
+    return [
+        {"polarity": r.polarity, "status": str(r.status), "message": r.message}
+        for r in result.runs
+        if r.status is RunStatus.NONFINITE
+    ]
 
 
 def rod_utilisation(out: AssessmentOutput, index: int) -> float | None:
