@@ -90,7 +90,7 @@ def retrofit(model_path, record_path, record_format, dt, units, scale, pga, name
     from rockcli.studies.retrofit.run import Analyses, run_retrofit
     from rockcli.studies.sweep.executor import local_executor
 
-    plan, model_name = retrofit_plan(model_path, name, at, length, diameters, grade, count)
+    plan, model = retrofit_plan(model_path, name, at, length, diameters, grade, count)
     check_outputs(force, plot=plot_path)
     record = load_record(record_path, record_format, dt, units, scale, pga)
     analyses = Analyses(engine, edition, ground)
@@ -98,7 +98,7 @@ def retrofit(model_path, record_path, record_format, dt, units, scale, pga, name
     with local_executor(jobs) as lanes, progress_bar(progress) as bar:
         rows = run_retrofit(plan, record, lanes, analyses, bar)
     chosen, reason = choose(rows)
-    doc = retrofit_document(plan, model_name, record, rows, chosen, reason)
+    doc = retrofit_document(plan, model, record, rows, chosen, reason, ground=ground)
     if plot_path:
         from rockcli.report.plots.retrofit import plot_retrofit
 
@@ -114,7 +114,7 @@ def retrofit(model_path, record_path, record_format, dt, units, scale, pga, name
 
 
 def retrofit_plan(model_path, name, at, length, diameters, grade, count):
-    """The validated plan of the options (InputError on bad input) and the model's name."""
+    """The validated plan of the options (InputError on bad input) and the model."""
     from rockcli.errors import InputError
     from rockcli.model.load import read_toml, validate_model
     from rockcli.studies.retrofit.candidates import (
@@ -140,4 +140,4 @@ def retrofit_plan(model_path, name, at, length, diameters, grade, count):
     model = validate_model(table, file=model_path)
     plan = make_plan(table, model, file=model_path, diameters_mm=sizes, name=name,
                      placement=placement, grade=grade, count=count)  # fmt: skip
-    return plan, model.name
+    return plan, model

@@ -6,29 +6,46 @@ from collections.abc import Sequence
 from typing import Any
 
 from rockcli import __version__
+from rockcli.model.schema import Model
 from rockcli.records.record import Record
 from rockcli.report.table import Column, Report, Table
 from rockcli.studies.retrofit.candidates import RetrofitPlan
 
 SCHEMA = 1
+#: What shook the block in the time history (record.input).
+INPUTS = {
+    "ground": "rocking input: the record itself, at the block's base",
+    "floor": "rocking input: the record's floor motion at the block's height ([building])",
+}
 #: Newtons per kilonewton (the tables show kN, the JSON N).
 N_PER_KN = 1000.0
 
 
 def retrofit_document(
     plan: RetrofitPlan,
-    model_name: str,
+    model: Model,
     record: Record,
     rows: Sequence[dict[str, Any]],
     chosen: dict[str, Any] | None,
     reason: str,
+    *,
+    ground: bool = False,
 ) -> dict[str, Any]:
-    """The `rock retrofit --format json` document: every candidate, the choice and why."""
+    """The `rock retrofit --format json` document: every candidate, the choice and why, and
+    the warnings on the model and the record (magnitudes that look like unit slips)."""
+    from rockcli.model.plausible import model_warnings
+    from rockcli.studies.floor import model_floor
+
+    floor = model_floor(model) is not None and not ground
     return {
         "schema": SCHEMA,
         "rock_version": __version__,
-        "model": {"name": model_name},
-        "record": {"name": record.name, "pga_g": record.pga},
+        "model": {"name": model.name},
+        "record": {
+            "name": record.name,
+            "pga_g": record.pga,
+            "input": "floor" if floor else "ground",
+        },
         "rod": {
             "name": plan.name,
             "placed": None
@@ -44,6 +61,7 @@ def retrofit_document(
         "candidates": list(rows),
         "chosen": chosen,
         "reason": reason,
+        "warnings": [*model_warnings(model), *record.warnings],
     }
 
 
@@ -98,6 +116,8 @@ def retrofit_report(doc: dict[str, Any]) -> Report:
             f"{doc['count']} bar(s) of {doc['grade']} per diameter; code ULS ζ = capacity/"
             "demand on the record's spectrum; max θ/α, peak force and utilisation over both "
             "polarities",
+            INPUTS[doc["record"]["input"]],
         ),
+        warnings=tuple(doc["warnings"]),
         verdict=verdict,
     )

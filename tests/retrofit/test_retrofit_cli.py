@@ -231,3 +231,22 @@ def test_broken_runs_lists_only_non_finite_runs() -> None:
     assert broken_runs(Assessment((result.runs[0], bad))) == [
         {"polarity": bad.polarity, "status": "non-finite", "message": "NaN"}
     ]
+
+
+def test_progress_bar_on_stderr_only() -> None:
+    code, out, err = run(str(FACADE), "--record", str(RICKER), "--diameters", "12,20",
+                         "--progress", "--format", "json")  # fmt: skip
+    assert code == 0
+    assert len(json.loads(out)["candidates"]) == 2  # stdout is the document alone
+    assert "2/2" in err
+
+
+def test_block_at_height_rocks_on_the_floor_motion_unless_ground() -> None:
+    # top-storey-wall.toml stands on a first floor ([building] Z > 0): as assess and compare,
+    # the time history takes the record's floor motion, the record itself with --ground.
+    model = str(ROOT / "examples" / "top-storey-wall.toml")
+    args = (model, "--record", str(RICKER), "--at", "2,0.1", "--length", "5", "--diameters", "16")
+    floor, ground = run_json(*args), run_json(*args, "--ground")
+    assert (floor["record"]["input"], ground["record"]["input"]) == ("floor", "ground")
+    assert floor["candidates"][0]["max_ratio"] != ground["candidates"][0]["max_ratio"]
+    assert floor["warnings"] == []
