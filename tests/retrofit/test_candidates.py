@@ -189,3 +189,7 @@ def test_a_diameter_that_makes_the_model_invalid_is_named() -> None:
     assert info.value.problem.startswith("the rod of 10 mm makes the model invalid: ")
     assert "pretension" in info.value.problem
     assert plan_of(table, diameters_mm=(20.0,)).diameters_mm == (20.0,)
+
+
+def test_grade_is_read_in_any_case() -> None:
+    assert plan_of(facade(), grade="s355").grade == "S355"
