@@ -9,6 +9,7 @@ from rockcli.cli.compare import compare
 from rockcli.cli.init import init
 from rockcli.cli.kinematic import kinematic
 from rockcli.cli.record import record
+from rockcli.cli.retrofit import retrofit
 from rockcli.cli.sweep import sweep
 from rockcli.cli.warmup import warmup
 
@@ -20,3 +21,4 @@ ALL.append(kinematic)
 ALL.append(compare)
 ALL.append(warmup)
 ALL.append(sweep)
+ALL.append(retrofit)

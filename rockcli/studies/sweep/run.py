@@ -16,7 +16,7 @@ from collections import deque
 from collections.abc import Callable, Iterator, MutableSequence, Sequence
 from concurrent.futures import FIRST_COMPLETED, BrokenExecutor, Future, wait
 from dataclasses import dataclass
-from typing import Any
+from typing import Any, Protocol, TypeVar, cast
 
 from rockcli.errors import InputError
 from rockcli.studies.sweep.cases import Case, check_cases, expand
@@ -49,6 +49,17 @@ WORKER_DIED = (
     "the worker process running this case died {} times (killed, or out of memory); "
     "rerun the study, or run this case alone"
 )
+
+
+class Batch(Protocol):
+    """Work for one submission: its cases, each with an ``id`` (a :class:`Chunk`, or the
+    chunk of another study run on the same lanes, e.g. rockcli.studies.retrofit.run)."""
+
+    @property
+    def cases(self) -> Sequence[Any]: ...
+
+
+B = TypeVar("B", bound=Batch)
 
 
 class SweepInterrupted(KeyboardInterrupt):
@@ -127,9 +138,13 @@ def measure(plan: StudyPlan, case: Case, npts: Sequence[int]) -> tuple[list[dict
 
 
 def run_chunks(
-    lanes: MutableSequence[Lane], chunks: Sequence[Chunk]
+    lanes: MutableSequence[Lane],
+    chunks: Sequence[B],
+    work: Callable[[B], list[dict[str, Any]]] | None = None,
 ) -> Iterator[list[dict[str, Any]]]:
-    """The rows of each chunk as it completes (any order).
+    """The rows of each chunk as it completes (any order): ``work(chunk)`` on a lane
+    (default :func:`~rockcli.studies.sweep.worker.run_chunk`, a study's chunks; a module-level
+    function, so that a worker process can import it).
 
     Each lane (an executor and its capacity) holds at most its capacity of submitted chunks;
     the next chunk goes to the first lane with room. A process pool that breaks (a worker
@@ -137,9 +152,10 @@ def run_chunks(
     :data:`CHUNK_ATTEMPTS` times each; then the chunk's cases are rows with an error. Any
     other error cancels what is queued and is raised.
     """
-    pending: dict[Future[list[dict[str, Any]]], tuple[int, Chunk]] = {}
+    run = work if work is not None else cast(Callable[[B], list[dict[str, Any]]], run_chunk)
+    pending: dict[Future[list[dict[str, Any]]], tuple[int, B]] = {}
     load = [0] * len(lanes)
-    todo: deque[Chunk] = deque(chunks)
+    todo: deque[B] = deque(chunks)
     attempts: dict[int, int] = {}
     restarts = 0
     try:
@@ -148,7 +164,7 @@ def run_chunks(
                 while load[i] < lane.capacity and todo:
                     chunk = todo.popleft()
                     try:
-                        future = lanes[i].executor.submit(run_chunk, chunk)
+                        future = lanes[i].executor.submit(run, chunk)
                     except BrokenExecutor:  # broke before one of its futures said so
                         if lanes[i].restart is None or restarts >= MAX_RESTARTS:
                             raise

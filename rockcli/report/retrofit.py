@@ -1,0 +1,123 @@
+"""The `rock retrofit` document (JSON, SI units) and its tables (kN, mm)."""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from typing import Any
+
+from rockcli import __version__
+from rockcli.model.schema import Model
+from rockcli.records.record import Record
+from rockcli.report.table import Column, Report, Table
+from rockcli.studies.retrofit.candidates import RetrofitPlan
+
+SCHEMA = 1
+#: What shook the block in the time history (record.input).
+INPUTS = {
+    "ground": "rocking input: the record itself, at the block's base",
+    "floor": "rocking input: the record's floor motion at the block's height ([building])",
+}
+#: Newtons per kilonewton (the tables show kN, the JSON N).
+N_PER_KN = 1000.0
+
+
+def retrofit_document(
+    plan: RetrofitPlan,
+    model: Model,
+    record: Record,
+    rows: Sequence[dict[str, Any]],
+    chosen: dict[str, Any] | None,
+    reason: str,
+    *,
+    ground: bool = False,
+) -> dict[str, Any]:
+    """The `rock retrofit --format json` document: every candidate, the choice and why, and
+    the warnings on the model and the record (magnitudes that look like unit slips)."""
+    from rockcli.model.plausible import model_warnings
+    from rockcli.studies.floor import model_floor
+
+    floor = model_floor(model) is not None and not ground
+    return {
+        "schema": SCHEMA,
+        "rock_version": __version__,
+        "model": {"name": model.name},
+        "record": {
+            "name": record.name,
+            "pga_g": record.pga,
+            "input": "floor" if floor else "ground",
+        },
+        "rod": {
+            "name": plan.name,
+            "placed": None
+            if plan.placement is None
+            else {
+                "height": plan.placement.height,
+                "from_pivot": plan.placement.from_pivot,
+                "length": plan.placement.length,
+            },
+        },
+        "grade": plan.grade,
+        "count": plan.count,
+        "candidates": list(rows),
+        "chosen": chosen,
+        "reason": reason,
+        "warnings": [*model_warnings(model), *record.warnings],
+    }
+
+
+COLUMNS = (
+    Column("d", "d", "mm", "{:g}"),
+    Column("K", "K", "kN/m", "{:.0f}"),
+    Column("strength", "strength", "kN", "{:.4g}"),
+    Column("code_zeta", "code ULS ζ", "", "{:.3f}"),
+    Column("code_uls", "code ULS"),
+    Column("max_ratio", "max θ/α", "", "{:.4f}"),
+    Column("overturned", "overturned"),
+    Column("max_force", "peak force", "kN", "{:.4g}"),
+    Column("utilisation", "utilisation", "", "{:.3f}"),
+    Column("ruptured", "ruptured"),
+)
+
+
+def table_row(row: dict[str, Any]) -> dict[str, Any]:
+    """One candidate in the table's units (mm, kN/m, kN)."""
+    passed = row["code_uls_passed"]
+    return {
+        **row,
+        "d": row["diameter_mm"],
+        "K": row["K"] / N_PER_KN,
+        "strength": None if row["strength"] is None else row["strength"] / N_PER_KN,
+        "code_uls": "not evaluated" if passed is None else ("pass" if passed else "fail"),
+        "max_force": row["max_force"] / N_PER_KN,
+    }
+
+
+def retrofit_report(doc: dict[str, Any]) -> Report:
+    """The candidates' table, the rod and record as notes, the choice as the verdict."""
+    rows = tuple(table_row(r) for r in doc["candidates"])
+    rod = doc["rod"]
+    where = (
+        "the model's tie-rod"
+        if rod["placed"] is None
+        else f"a new rod at height {rod['placed']['height']:g} m, {rod['placed']['from_pivot']:g}"
+        f" m from the pivot, {rod['placed']['length']:g} m long"
+    )
+    chosen = doc["chosen"]
+    verdict = (
+        f"{doc['reason']} ({doc['count']} bar(s) of {doc['grade']})"
+        if chosen is not None
+        else doc["reason"]
+    )
+    return Report(
+        title=f"rock retrofit — {doc['model']['name']} under {doc['record']['name']} "
+        f"(PGA {doc['record']['pga_g']:.3f} g)",
+        tables=(Table(f"'{rod['name']}': {where}", COLUMNS, rows),),
+        notes=(
+            f"{doc['count']} bar(s) of {doc['grade']} per diameter; code ULS ζ = capacity/"
+            "demand on the record's spectrum; max θ/α, peak force and utilisation over both "
+            "polarities",
+            INPUTS[doc["record"]["input"]],
+        ),
+        warnings=tuple(doc["warnings"]),
+        verdict=verdict,
+    )

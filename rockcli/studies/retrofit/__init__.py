@@ -1,0 +1,1 @@
+"""`rock retrofit`: size a tie-rod by both analyses (candidates, run, choose)."""

@@ -1,0 +1,167 @@
+"""Run the candidates of a retrofit: both analyses of each diameter, on the sweep's lanes.
+
+Each candidate is one case of a chunk sent to the sweep executor's lanes
+(:func:`rockcli.studies.sweep.run.run_chunks`): this process's thread with ``--jobs 1``, and
+worker processes with more. The chunk carries the model table, not a model: the worker
+validates it again (pickling a pydantic model is not cheaper, and the table is what the plan
+validated). A candidate's row is plain data (SI units), keyed by its case id.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable, MutableSequence
+from dataclasses import dataclass
+from typing import TYPE_CHECKING, Any
+
+from rockcli.dynamics.result import RunStatus
+from rockcli.studies.retrofit.candidates import RetrofitPlan, build_candidate
+
+if TYPE_CHECKING:
+    from rockcli.codecheck.result import KinematicResult
+    from rockcli.dynamics.result import Assessment
+    from rockcli.records.record import Record
+    from rockcli.studies.assess import AssessmentOutput
+    from rockcli.studies.sweep.executor import Lane
+
+
+@dataclass(frozen=True)
+class Candidate:
+    """One diameter to try: its case id (its place in the plan) and size [mm]."""
+
+    id: int
+    diameter_mm: float
+
+
+@dataclass(frozen=True)
+class Analyses:
+    """How both analyses run: the rocking engine, the code edition (None: the model's) and
+    ``ground`` (a block at height rocks on the record itself)."""
+
+    engine: str = "fast"
+    edition: str | None = None
+    ground: bool = False
+
+
+@dataclass(frozen=True)
+class RetrofitChunk:
+    """Candidates sent to a worker together, with what they share."""
+
+    plan: RetrofitPlan
+    record: Record
+    analyses: Analyses
+    cases: tuple[Candidate, ...]
+
+
+def run_retrofit_chunk(chunk: RetrofitChunk) -> list[dict[str, Any]]:
+    """The row of every candidate of the chunk (runs in a worker or in this process)."""
+    return [
+        {"case": c.id, **run_candidate(chunk.plan, c.diameter_mm, chunk.record, chunk.analyses)}
+        for c in chunk.cases
+    ]
+
+
+def run_candidate(
+    plan: RetrofitPlan, diameter_mm: float, record: Record, analyses: Analyses
+) -> dict[str, Any]:
+    """Both analyses of the model with the rod of this diameter: the code check on the
+    record's spectrum (one earthquake on both sides, as ``rock compare``) and the time
+    history of both polarities."""
+    from rockcli.studies.assess import assess_model_output
+    from rockcli.studies.kinematic import kinematic_model
+
+    model = build_candidate(plan, diameter_mm)
+    kin = kinematic_model(model, edition=analyses.edition, record=record)
+    out = assess_model_output(
+        model, record, analyses.engine, ground=analyses.ground, file=plan.file
+    )
+    return {
+        "diameter_mm": diameter_mm,
+        **rod_columns(out, plan.index),
+        **code_columns(kin),
+        **rocking_columns(out, plan.index),
+    }
+
+
+def rod_columns(out: AssessmentOutput, index: int) -> dict[str, Any]:
+    """The rod as derived: its stiffness K [N/m] (the stiffer side) and strength [N]."""
+    rod = out.block.restrainers[index]
+    return {"K": max(rod.k_pos, rod.k_neg), "strength": _finite(rod.strength)}
+
+
+def code_columns(kin: KinematicResult) -> dict[str, Any]:
+    """The code's ULS: pass (None: not evaluated) and the governing ζ = capacity/demand
+    (the rule of the sweep's column, rockcli.studies.sweep.worker.uls_ratio)."""
+    from rockcli.studies.sweep.worker import uls_ratio
+
+    return {"code_uls_passed": kin.verdict()["ULS"], "code_zeta": uls_ratio(kin.checks)}
+
+
+def rocking_columns(out: AssessmentOutput, index: int) -> dict[str, Any]:
+    """The time history over both polarities: max θ/α, overturning, the rod's peak force,
+    its utilisation (rockcli.studies.strength) and whether it ruptured."""
+    result = out.result
+    peaks = [run.restrainers[index] for run in result.runs]
+    return {
+        "rocking": str(result.verdict),
+        "max_ratio": float(result.max_ratio),
+        "overturned": any(r.overturned for r in result.runs),
+        "max_force": max(float(p.max_force) for p in peaks),
+        "utilisation": rod_utilisation(out, index),
+        "ruptured": any(p.t_fail is not None for p in peaks),
+        "broken_runs": broken_runs(result),
+    }
+
+
+def broken_runs(result: Assessment) -> list[dict[str, Any]]:
+    """The runs that ended in a non-finite state (their numbers decide nothing): polarity,
+    status and message, as the assess document has them (usually none)."""
+    return [
+        {"polarity": r.polarity, "status": str(r.status), "message": r.message}
+        for r in result.runs
+        if r.status is RunStatus.NONFINITE
+    ]
+
+
+def rod_utilisation(out: AssessmentOutput, index: int) -> float | None:
+    """The rod's row of the assessment's restrainer checks: its force over its strength
+    (None: it has no strength). The checks list the restrainers with a strength, in order."""
+    from rockcli.studies.strength import restrainer_checks
+
+    restrainers = out.block.restrainers
+    if not math.isfinite(restrainers[index].strength):
+        return None
+    row = sum(math.isfinite(r.strength) for r in restrainers[:index])
+    return float(restrainer_checks(out.block, out.result)[row]["utilisation"])
+
+
+def _finite(value: float) -> float | None:
+    return float(value) if math.isfinite(value) else None
+
+
+def run_retrofit(
+    plan: RetrofitPlan,
+    record: Record,
+    lanes: MutableSequence[Lane],
+    analyses: Analyses,
+    progress: Callable[[int, int], None] | None = None,
+) -> list[dict[str, Any]]:
+    """Every candidate's row, ascending in diameter, each diameter a chunk on the lanes.
+
+    Raises RuntimeError when a worker process died on a candidate (the sweep's row error).
+    """
+    from rockcli.studies.sweep.run import run_chunks
+
+    cases = [Candidate(i, d) for i, d in enumerate(plan.diameters_mm)]
+    chunks = [RetrofitChunk(plan, record, analyses, (c,)) for c in cases]
+    rows: dict[int, dict[str, Any]] = {}
+    if progress:
+        progress(0, len(cases))
+    for chunk_rows in run_chunks(lanes, chunks, run_retrofit_chunk):
+        for row in chunk_rows:
+            if "error" in row:
+                raise RuntimeError(f"{plan.diameters_mm[row['case']]:g} mm: {row['error']}")
+            rows[row.pop("case")] = row
+        if progress:
+            progress(len(rows), len(cases))
+    return [rows[c.id] for c in cases]
