@@ -47,8 +47,11 @@ def demand_rotation(cap: Capacity, d_star: float) -> float:
     return rotation_at(cap.mech, d_star / cap.factor)
 
 
-def restrainer_action(sp: Restrainer, cap: Capacity, theta: float, at: str) -> RestrainerAction:
-    """The action of one restrainer and its verification at rotation θ [rad] (``at`` says which).
+def restrainer_action(
+    sp: Restrainer, cap: Capacity, theta: float | None, at: str
+) -> RestrainerAction:
+    """The action of one restrainer and its verification at rotation θ [rad] (``at`` says which;
+    θ None: the check reaches no displacement, a spring's demand is not evaluated).
 
     force: what it gives α0 (θ = 0). demand: a force's code_force; a spring's force at θ
     (capped at its strength; intact: ``lost`` says if it broke before θ).
@@ -57,9 +60,13 @@ def restrainer_action(sp: Restrainer, cap: Capacity, theta: float, at: str) -> R
     strength = sp.strength if math.isfinite(sp.strength) else None
     acts = sp.side(s)[0] > 0.0
     force = force_at(sp, s, 0.0)
-    demand = sp.code_force if sp.code_action == FORCE else force_at(sp, s, theta)
-    lost = acts and theta > loss_rotation(sp, s)
-    use = None if strength is None else demand / strength
+    demand: float | None
+    if sp.code_action == FORCE:
+        demand = sp.code_force
+    else:
+        demand = None if theta is None else force_at(sp, s, theta)
+    lost = acts and theta is not None and theta > loss_rotation(sp, s)
+    use = None if strength is None or demand is None else demand / strength
     passed = False if lost else (None if use is None or not acts else use <= 1.0)
     return RestrainerAction(
         name=sp.name,
@@ -75,7 +82,10 @@ def restrainer_action(sp: Restrainer, cap: Capacity, theta: float, at: str) -> R
     )
 
 
-def restrainer_actions(cap: Capacity, d_star: float, at: str) -> tuple[RestrainerAction, ...]:
-    """Every restrainer's action, the springs read at the spectral displacement d* [m]."""
-    theta = demand_rotation(cap, d_star)
+def restrainer_actions(
+    cap: Capacity, d_star: float | None, at: str
+) -> tuple[RestrainerAction, ...]:
+    """Every restrainer's action, the springs read at the spectral displacement d* [m] (None:
+    no displacement to read them at)."""
+    theta = None if d_star is None else demand_rotation(cap, d_star)
     return tuple(restrainer_action(sp, cap, theta, at) for sp in cap.mech.block.restrainers)

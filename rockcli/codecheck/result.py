@@ -144,7 +144,7 @@ class RestrainerAction:
         force: the force it gives α0 [N] (0 for a spring without pretension).
         strength: its strength [N] (None: not known).
         demand: the force the check relies on [N]: the force, or the spring's force at
-            ``demand_at``.
+            ``demand_at`` (None: no displacement of the check to read it at).
         demand_at: where the spring's force is read (or "constant force").
         utilisation: demand / strength (None: strength not known).
         lost: True when the member is lost (rupture) before the rotation of ``demand_at``.
@@ -156,7 +156,7 @@ class RestrainerAction:
     code_action: str
     force: float
     strength: float | None
-    demand: float
+    demand: float | None
     demand_at: str
     utilisation: float | None
     lost: bool

@@ -136,7 +136,7 @@ def actions_table(actions: list[dict[str, Any]]) -> Table:
         {
             **a,
             "force_kN": a["force"] / KILO,
-            "demand_kN": a["demand"] / KILO,
+            "demand_kN": None if a["demand"] is None else a["demand"] / KILO,
             "strength_kN": None if a["strength"] is None else a["strength"] / KILO,
         }
         for a in actions
@@ -149,6 +149,8 @@ def action_notes(actions: list[dict[str, Any]]) -> list[str]:
     before it."""
     out = [
         f"{a['name']}: {a['code_action']}, demand at {a['demand_at']} ({a['clause']})"
+        if a["demand"] is not None
+        else f"{a['name']}: {a['code_action']}, demand not evaluated: {a['demand_at']}"
         for a in actions
         if a["code_action"] != "force"
     ]

@@ -14,7 +14,6 @@ from typing import Any
 from rockcli.codecheck import rules2009, rules2019
 from rockcli.codecheck.demand import LimitStateDemand, Spectrum, record_demand
 from rockcli.codecheck.kinematic import (
-    CURVE_END,
     Capacity,
     Mechanism,
     alpha0,
@@ -268,12 +267,13 @@ def governing_demand(
     checks: list[Check],
     dem: dict[str, LimitStateDemand],
     pos: Position,
-) -> tuple[float, str]:
+) -> tuple[float | None, str]:
     """(d* [m], what it is) at which a spring's force is verified against its strength.
 
     The displacement demand of the non-linear SLV check when it is computed (2009: the largest
     of SDe(Ts) and the demand at height; 2019: the SLV spectrum's at T_SLV), else the ultimate
-    displacement (du*; d_SLV), else the end of the capacity curve (positive stiffness, no limit).
+    displacement (du*; d_SLV), else none (positive stiffness and no limit: the check reaches no
+    displacement, so a spring's force there is not evaluated).
     """
     if edition == "2009":
         demand = nonlinear_displacement_demand(checks)
@@ -285,8 +285,7 @@ def governing_demand(
         return demand, f"SLV displacement demand d* = {demand:.4g} m"
     if ultimate is not None:
         return ultimate, f"{name} = {ultimate:.4g} m"
-    end = cap.d_star_at(CURVE_END)
-    return end, f"end of the capacity curve d* = {end:.4g} m (no {name})"
+    return None, f"the check reaches no displacement (no {name})"
 
 
 def _limit(cap: Capacity, settings: NtcSettings) -> float | None:
