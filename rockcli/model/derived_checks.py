@@ -15,7 +15,7 @@ from __future__ import annotations
 import math
 
 from rockcli.errors import InputError
-from rockcli.mechanics import Block, restrainer_coefficient, uplift_accelerations
+from rockcli.mechanics import Block, Restrainer, restrainer_coefficient, uplift_accelerations
 from rockcli.model.bounds import MAX_STIFFNESS
 
 #: What a derived quantity must be.
@@ -42,6 +42,7 @@ def check_block(block: Block) -> None:
     if block.loaded:
         _check_loaded(block)
     for i, restrainer in enumerate(block.restrainers):
+        _check_pretension(restrainer, f"restrainers[{i}].pretension")
         for side in (1, -1):
             k, r, _ = restrainer.side(side)
             where = f"restrainers[{i}]"
@@ -61,6 +62,20 @@ def check_block(block: Block) -> None:
                     value=coefficient,
                     allowed="a stiffness and a weight of the same order as a real element's",
                 )
+
+
+def _check_pretension(restrainer: Restrainer, where: str) -> None:
+    """The pretension below the yield force the member really has: a measured f_y is divided
+    by FC where the block is derived, after the file's own check (schema) with f_y as given."""
+    p0 = restrainer.pretension
+    limit = min(restrainer.yield_pos, restrainer.yield_neg, restrainer.rupture_force)
+    if p0 > 0.0 and p0 >= limit:
+        raise InputError(
+            f"not below the member's yield force {limit:g} N (its measured fy divided by FC)",
+            where=where,
+            value=p0,
+            allowed="0 <= pretension < the yield force and the anchor capacity [N]",
+        )
 
 
 def _check_loaded(block: Block) -> None:

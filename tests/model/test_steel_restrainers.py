@@ -96,6 +96,19 @@ def test_a_rod_without_steel_has_no_strength(tmp_path: Path) -> None:
 
 BAD = [
     ({"grade": "S460"}, "restrainers[0].grade", "S235"),
+    # issue 9's bad inputs: the law's keys
+    ({"pretension": 90e3}, "restrainers[0].pretension", "pretension <"),  # A·fy = 86.4 kN
+    ({"pretension": -1.0}, "restrainers[0].pretension", "[N]"),
+    ({"pretension": 30e3, "anchor_capacity": 25e3}, "restrainers[0].pretension", "anchor"),
+    ({"yield_pos": 50e3}, "restrainers[0].yield_pos", "grade"),
+    ({"grade": None, "law": "elastic-plastic"}, "restrainers[0].law", "grade"),
+    ({"law": "plastic"}, "restrainers[0].law", "elastic"),
+    ({"elongation_at_break": 0.2, "fails_at": 0.05}, "restrainers[0].fails_at", "one of"),
+    ({"elongation_at_break": 0.0}, "restrainers[0].elongation_at_break", "[-]"),
+    ({"elongation_at_break": 1.5}, "restrainers[0].elongation_at_break", "[-]"),
+    ({"grade": None, "code_action": "force"}, "restrainers[0].code_action", "strength"),
+    ({"code_action": "both"}, "restrainers[0].code_action", "force"),
+    ({"k_pos": 1e6}, "restrainers[0].k_pos", "tie-rod"),
     ({"fy": 240e6}, "restrainers[0].fy", "grade"),
     ({"grade": None, "fy": 240e6}, "restrainers[0].fu", "fu >= fy"),
     ({"grade": None, "fy": 400e6, "fu": 300e6}, "restrainers[0].fu", "fu >= fy"),
@@ -112,6 +125,47 @@ def test_bad_steel_is_one_line(tmp_path: Path, rod: dict, where: str, allowed: s
         load_model(model_with(tmp_path, **rod))
     assert info.value.where == where
     assert info.value.allowed is not None and allowed in info.value.allowed
+
+
+SPRING_BAD = [
+    ({"yield_pos": 0.0, "yield_neg": 1e3}, "restrainers[0].yield_pos", "[N]"),
+    ({"yield_pos": -5.0, "yield_neg": 1e3}, "restrainers[0].yield_pos", "[N]"),
+    ({"yield_pos": 1e3}, "restrainers[0].yield_neg", "yield_neg"),
+    ({"law": "elastic-plastic"}, "restrainers[0].yield_pos", "yield_pos"),
+    ({"law": "elastic", "yield_pos": 1e3, "yield_neg": 1e3}, "restrainers[0].yield_pos", "law"),
+    ({"yield_pos": 1e3, "yield_neg": 1e3, "pretension": 1e3}, "restrainers[0].pretension", "<"),
+    ({"elongation_at_break": 0.2}, "restrainers[0].elongation_at_break", "tie-rod"),
+]
+
+
+@pytest.mark.parametrize(
+    ("law", "where", "allowed"), SPRING_BAD, ids=[str(b[0]) for b in SPRING_BAD]
+)
+def test_bad_spring_law_is_one_line(tmp_path: Path, law: dict, where: str, allowed: str) -> None:
+    spring = {"name": "vault", "k": 4e6, "position": "top", **law}
+    data = {**copy.deepcopy(WALL), "restrainers": [spring]}
+    path = tmp_path / "s.toml"
+    path.write_text(tomli_w.dumps(data), encoding="utf-8")
+    with pytest.raises(InputError) as info:
+        load_model(path)
+    assert info.value.where == where
+    assert info.value.allowed is not None and allowed in info.value.allowed
+
+
+def test_pretension_above_the_measured_yield_over_fc_is_refused(tmp_path: Path) -> None:
+    # fy = 240 MPa on Ø20: A·fy = 75.4 kN as given (the file's own check passes 70 kN), but
+    # the member yields at A·fy/FC = 62.8 kN with FC = 1.2: refused where the block is derived.
+    path = model_with(tmp_path, grade=None, fy=240e6, fu=380e6, pretension=70e3)
+    with pytest.raises(InputError) as info:
+        load_model(path)
+    assert info.value.where == "restrainers[0].pretension" and "FC" in str(info.value)
+
+
+def test_a_bad_law_key_exits_2_with_one_line(tmp_path: Path) -> None:
+    path = model_with(tmp_path, pretension=90e3)
+    result = CliRunner().invoke(cli, ["assess", str(path), "--record", str(PULSE)])
+    assert result.exit_code == 2 and result.stdout == ""
+    assert result.stderr.count("\n") == 1 and "restrainers[0].pretension" in result.stderr
 
 
 def test_steel_keys_belong_to_tie_rods(tmp_path: Path) -> None:
