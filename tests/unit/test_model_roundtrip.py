@@ -66,14 +66,24 @@ analysis = optional(
     }
 )
 
+#: A yield force and a pretension below it (a fraction of it) [N]: the law's keys.
+yield_force = floats(1e2, 1e7)
 spring_stiffness = st.one_of(
     st.fixed_dictionaries({"k": stiffness}),
     st.fixed_dictionaries({"k_pos": stiffness, "k_neg": stiffness}),
+    st.fixed_dictionaries(
+        {"k": stiffness, "yield_pos": yield_force, "yield_neg": yield_force},
+        optional={"law": st.just("elastic-plastic"), "code_action": st.just("force")},
+    ),
     st.fixed_dictionaries(
         {"kind": st.just("tie-rod"), "diameter": floats(1e-3, 0.1), "length": floats(0.5, 30.0)},
         optional={
             "E": floats(1e9, 3e11),
             "acts": st.sampled_from(["both", "positive", "negative"]),
+            "grade": st.sampled_from(["S235", "S275", "S355"]),
+            "elongation_at_break": floats(0.01, 0.5),
+            "anchor_capacity": floats(1e2, 1e7),
+            "code_action": st.sampled_from(["spring", "force"]),
         },
     ),
 )
@@ -128,6 +138,16 @@ def building(draw: st.DrawFn) -> dict[str, Any]:
     )
 
 
+def consistent(spring: dict[str, Any]) -> dict[str, Any]:
+    """Drop the keys the drawn combination forbids: fails_at beside elongation_at_break, and
+    code_action = "force" on a tie-rod with neither its steel nor an anchor (no strength)."""
+    if "elongation_at_break" in spring:
+        spring.pop("fails_at", None)
+    if spring.get("kind") == "tie-rod" and not ({"grade", "anchor_capacity"} & spring.keys()):
+        spring.pop("code_action", None)
+    return spring
+
+
 @st.composite
 def models(draw: st.DrawFn) -> dict[str, Any]:
     """A valid model file as a dict."""
@@ -143,13 +163,17 @@ def models(draw: st.DrawFn) -> dict[str, Any]:
     thickness = 2 * b
     n = draw(st.integers(0, 3))
     restrainers = [
-        {
-            **draw(spring_stiffness),
-            **draw(placement(thickness)),
-            **draw(
-                optional({"name": st.text(min_size=1, max_size=20), "fails_at": floats(1e-4, 1.0)})
-            ),
-        }
+        consistent(
+            {
+                **draw(spring_stiffness),
+                **draw(placement(thickness)),
+                **draw(
+                    optional(
+                        {"name": st.text(min_size=1, max_size=20), "fails_at": floats(1e-4, 1.0)}
+                    )
+                ),
+            }
+        )
         for _ in range(n)
     ]
     if restrainers:
