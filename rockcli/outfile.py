@@ -65,6 +65,13 @@ def check_writable(path: str | Path, *, force: bool, where: str | None = None) -
         )
 
 
+def new_file_mode() -> int:
+    """The mode open() gives a new file: 0o666 less the process's umask."""
+    mask = os.umask(0)
+    os.umask(mask)
+    return 0o666 & ~mask
+
+
 def write_bytes(path: str | Path, data: bytes, *, where: str | None = None) -> None:
     """Write ``data`` to ``path`` atomically (temporary file + rename; symlinks not followed)."""
     target = Path(path)
@@ -72,6 +79,7 @@ def write_bytes(path: str | Path, data: bytes, *, where: str | None = None) -> N
     tmp_name = None
     try:
         fd, tmp_name = tempfile.mkstemp(prefix=f".{target.name}.", suffix=".tmp", dir=folder)
+        os.fchmod(fd, new_file_mode())  # mkstemp makes it 0600: give it a new file's mode
         with os.fdopen(fd, "wb") as fh:
             fh.write(data)
         os.replace(tmp_name, target)

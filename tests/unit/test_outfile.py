@@ -3,12 +3,13 @@
 from __future__ import annotations
 
 import os
+import stat
 from pathlib import Path
 
 import pytest
 
 from rockcli.errors import InputError
-from rockcli.outfile import check_writable, is_stdout, write_text
+from rockcli.outfile import check_writable, is_stdout, write_bytes, write_text
 
 
 def test_dash_is_stdout_and_always_allowed():
@@ -58,3 +59,18 @@ def test_symlink_at_the_target_is_replaced_not_followed(tmp_path: Path):
 def test_write_leaves_no_temporary_file(tmp_path: Path):
     write_text(tmp_path / "a.txt", "x")
     assert sorted(p.name for p in tmp_path.iterdir()) == ["a.txt"]
+
+
+def test_a_written_file_has_a_new_files_mode(tmp_path: Path):
+    # The atomic write goes through mkstemp (mode 0600): the result must be readable as any
+    # new file is (0666 less the umask), not private to its owner.
+    old = os.umask(0o022)
+    try:
+        out = tmp_path / "plot.png"
+        write_bytes(out, b"x")
+        assert stat.S_IMODE(out.stat().st_mode) == 0o644
+        os.umask(0o077)
+        write_bytes(out, b"y")
+        assert stat.S_IMODE(out.stat().st_mode) == 0o600
+    finally:
+        os.umask(old)
