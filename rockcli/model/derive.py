@@ -13,7 +13,13 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, replace
 
-from rockcli.codecheck.steel import CLAUSE, GRADES, rod_area, tension_resistance
+from rockcli.codecheck.steel import (
+    CLAUSE,
+    GRADES,
+    TensionResistance,
+    rod_area,
+    tension_resistance,
+)
 from rockcli.mechanics import (
     NEGATIVE,
     POSITIVE,
@@ -35,6 +41,7 @@ from rockcli.model.schema import (
     STEEL_MODULUS,
     Acts,
     CodeAction,
+    Law,
     Model,
     Position,
     RestitutionModel,
@@ -228,7 +235,7 @@ def to_restrainer(model: Model, index: int) -> Restrainer:
     k_pos, k_neg = stiffness(table)
     (r_pos, phi_pos), (r_neg, phi_neg) = attachment(model, table)
     strength, rule = member_strength(model, table)
-    yield_pos, yield_neg = table.yield_forces(confidence_factor(model) if table.fy else 1.0)
+    yield_pos, yield_neg, rupture_force = member_law(model, table)
     code_force = code_force_of(table, strength, (yield_pos, yield_neg))
     return Restrainer(
         name=table.name or f"restrainer {index + 1}",
@@ -245,7 +252,7 @@ def to_restrainer(model: Model, index: int) -> Restrainer:
         yield_pos=yield_pos,
         yield_neg=yield_neg,
         pretension=table.pretension or 0.0,
-        rupture_force=math.inf if table.anchor_capacity is None else table.anchor_capacity,
+        rupture_force=rupture_force,
         code_action=table.effective_code_action.value,
         code_force=code_force,
     )
@@ -284,18 +291,17 @@ def code_force_of(table: RestrainerTable, strength: float, yields: tuple[float, 
     return min(*yields, strength)
 
 
-def member_strength(model: Model, table: RestrainerTable) -> tuple[float, str]:
-    """(strength [N], what sets it): a tie-rod's design tension resistance, capped by the
-    anchor's capacity; a restrainer given by its stiffness has the anchor's capacity only.
+def steel_resistance(model: Model, table: RestrainerTable) -> tuple[TensionResistance, str] | None:
+    """A tie-rod's design tension resistance and its steel's label; None without a steel.
 
     Source: NTC 2018 §4.2.4.1.2 (codecheck.steel.tension_resistance): a standard grade with its
     nominal strengths; measured fy, fu of an existing bar divided by the confidence factor FC
-    of [ntc] (docs/interpretations.md). (inf, "") when neither a steel nor an anchor is given.
+    of [ntc] (docs/interpretations.md); capped by the anchor's capacity.
     """
-    anchor = math.inf if table.anchor_capacity is None else table.anchor_capacity
     if table.kind is not RestrainerKind.TIE_ROD or (table.grade is None and table.fy is None):
-        return (anchor, "anchor capacity") if math.isfinite(anchor) else (math.inf, "")
+        return None
     assert table.diameter is not None
+    anchor = math.inf if table.anchor_capacity is None else table.anchor_capacity
     area = rod_area(table.diameter, table.count or 1)
     if table.grade is not None:
         fy, fu = GRADES[table.grade.value]
@@ -305,9 +311,39 @@ def member_strength(model: Model, table: RestrainerTable) -> tuple[float, str]:
         fy, fu = table.fy, table.fu
         factor = confidence_factor(model)
         steel = f"measured fy, fu ÷ FC = {factor:g}"
-    res = tension_resistance(area, fy, fu, factor, anchor)
+    return tension_resistance(area, fy, fu, factor, anchor), steel
+
+
+def member_strength(model: Model, table: RestrainerTable) -> tuple[float, str]:
+    """(strength [N], what sets it): a tie-rod's design tension resistance, capped by the
+    anchor's capacity; a restrainer given by its stiffness has the anchor's capacity only.
+    (inf, "") when neither a steel nor an anchor is given (steel_resistance).
+    """
+    steel = steel_resistance(model, table)
+    if steel is None:
+        anchor = math.inf if table.anchor_capacity is None else table.anchor_capacity
+        return (anchor, "anchor capacity") if math.isfinite(anchor) else (math.inf, "")
+    res, label = steel
     what = {"plastic": "N_pl,Rd", "ultimate": "N_u,Rd", "anchor": "anchor capacity"}
-    return res.strength, f"{steel}: {what[res.governs]} governs ({CLAUSE})"
+    return res.strength, f"{label}: {what[res.governs]} governs ({CLAUSE})"
+
+
+def member_law(model: Model, table: RestrainerTable) -> tuple[float, float, float]:
+    """(yield while θ > 0, yield while θ < 0, rupture force) [N] of the member's law.
+
+    Elastic: no yield; lost at its anchor's capacity. A spring: its yield_pos, yield_neg. A
+    tie-rod of known steel yields at its design plastic resistance N_pl,Rd = A·f_y/γ_M0 and
+    breaks at the lower of its anchor's capacity and its net section's N_u,Rd = 0.9·A·f_u/γ_M2
+    (NTC 2018 §4.2.4.1.2): its force never exceeds its design strength N_t,Rd
+    (docs/interpretations.md, "Restrainer laws").
+    """
+    anchor = math.inf if table.anchor_capacity is None else table.anchor_capacity
+    steel = steel_resistance(model, table)
+    if table.effective_law is Law.ELASTIC or steel is None:
+        yield_pos, yield_neg = table.yield_forces()
+        return yield_pos, yield_neg, anchor
+    res = steel[0]
+    return res.plastic, res.plastic, min(anchor, res.ultimate)
 
 
 def stiffness(table: RestrainerTable) -> tuple[float, float]:

@@ -20,7 +20,7 @@ from typing import Any
 
 from pydantic import Field, model_validator
 
-from rockcli.codecheck.steel import GRADES, rod_area
+from rockcli.codecheck.steel import GAMMA_M0, GRADES, rod_area
 from rockcli.model.bounds import (
     MAX_LENGTH,
     MAX_MODULUS,
@@ -525,11 +525,12 @@ class Restrainer(Table):
             return self.code_action
         return CodeAction.FORCE if self.has_steel else CodeAction.SPRING
 
-    def yield_forces(self, factor: float = 1.0) -> tuple[float, float]:
+    def yield_forces(self) -> tuple[float, float]:
         """(yield while θ > 0, yield while θ < 0) [N] of the elastic-plastic law (inf: none).
 
-        A tie-rod yields at count·π·d²/4·f_y: the grade's nominal f_yk, or a measured f_y
-        divided by the confidence factor ``factor`` (docs/interpretations.md); both sides alike.
+        A tie-rod yields at its design plastic resistance count·π·d²/4·f_y/γ_M0 (NTC 2018
+        §4.2.4.1.2; a measured f_y is further divided by FC where the model is derived,
+        rockcli.model.derive.member_law); both sides alike.
         """
         if self.effective_law is Law.ELASTIC:
             return math.inf, math.inf
@@ -537,7 +538,7 @@ class Restrainer(Table):
             assert self.diameter is not None
             fy = GRADES[self.grade.value][0] if self.grade is not None else self.fy
             assert fy is not None
-            force = rod_area(self.diameter, self.count or 1) * fy / factor
+            force = rod_area(self.diameter, self.count or 1) * fy / GAMMA_M0
             return force, force
         pos = math.inf if self.yield_pos is None else self.yield_pos
         neg = math.inf if self.yield_neg is None else self.yield_neg

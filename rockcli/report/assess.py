@@ -81,12 +81,20 @@ def strength_warning(c: dict[str, Any]) -> str:
             "would have yielded or its anchorage given way, and the result after that is not "
             'valid; give it its steel or law = "elastic-plastic" with a yield force'
         )
-    events = []
-    if c["yielded"]:
-        events.append(f"it yielded (first at t = {c['t_yield']:.3f} s)")
     if c["ruptured"]:
-        events.append(f"it was lost at t = {c['t_rupture']:.3f} s")
-    return f"{head}{force}: {' and '.join(events) or 'it is beyond its strength'}"
+        return f"{head}{force}: it was lost at t = {c['t_rupture']:.3f} s"
+    return f"{head}{force}: it is beyond its strength"
+
+
+def yield_notes(checks: list[dict[str, Any]]) -> list[str]:
+    """A note per member that yielded and held: when, and its plastic elongation."""
+    return [
+        f"restrainer {c['name']!r} yielded at its design strength {c['strength'] / 1e3:.4g} kN "
+        f"(first at t = {c['t_yield']:.3f} s): plastic elongation "
+        f"{c['plastic_elongation'] * 1e3:.3g} mm at the end"
+        for c in checks
+        if c["yielded"] and not c["ruptured"]
+    ]
 
 
 def run_document(run: RockingRun) -> dict[str, Any]:
@@ -395,6 +403,7 @@ def assessment_report(doc: dict[str, Any]) -> Report:
         f"engine {eng['name']}, rtol {eng['rtol']:g}, atol {eng['atol']:g}, "
         f"rest threshold {eng['rest_velocity']:g} rad/s",
         *rec["notes"],
+        *yield_notes(doc.get("restrainer_checks", [])),
     ]
     notes = [n for n in notes if n]
     verdict = _verdict_line(doc)

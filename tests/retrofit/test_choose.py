@@ -52,8 +52,12 @@ def test_each_criterion_fails_a_candidate(changes: dict[str, Any], phrase: str) 
 
 
 def test_utilisation_of_exactly_one_passes() -> None:
-    # Utilisation ≤ 1 is the criterion (NTC 2018 §4.2.4.1.2: N_Ed / N_t,Rd ≤ 1).
+    # Utilisation ≤ 1 is the criterion (NTC 2018 §4.2.4.1.2: N_Ed / N_t,Rd ≤ 1); a rod that
+    # yielded at its strength reports 1 within the rounding of its plateau (FORCE_RTOL = 1e-9;
+    # 1 + 3e-14 measured): it passes, 1 + 1e-6 does not.
     assert failures(row(20, utilisation=1.0)) == []
+    assert failures(row(20, utilisation=1.0 + 3e-14)) == []
+    assert failures(row(20, utilisation=1.0 + 1e-6)) != []
 
 
 def test_none_in_the_range_names_what_fails_at_the_largest() -> None:
