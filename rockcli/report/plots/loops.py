@@ -3,7 +3,7 @@
 The elongation at each sample is u = r·[sin φ − sin(φ − |θ|)] of the member of the pivot the
 block rotates about (the engine's geometry, rockcli.mechanics.spring_elongation); the force is
 the engine's own, recorded at the sample (its law and state). One curve per polarity, the
-yield force and the design strength as lines.
+yield force and the design strength as lines; a member that was lost ends at a cross.
 """
 
 from __future__ import annotations
@@ -52,8 +52,15 @@ def draw_loops(ax: Axes, model: Mapping[str, Any], runs: Sequence[RockingRun], r
         if hist is None:
             continue
         u = elongation(hist.theta, spring, model.get("linearized", False))
+        force = hist.forces[row]
+        t_lost = run.restrainers[row].t_fail
+        if t_lost is not None:  # the member is gone: its loop ends where it was lost
+            keep = hist.time <= t_lost
+            u, force = u[keep], force[keep]
         color = POLARITY_COLORS.get(run.polarity, "k")
-        ax.plot(1e3 * u, hist.forces[row] / 1e3, color=color, lw=0.9, label=f"{run.polarity:+d}")
+        ax.plot(1e3 * u, force / 1e3, color=color, lw=0.9, label=f"{run.polarity:+d}")
+        if t_lost is not None and u.size:
+            ax.plot(1e3 * u[-1], force[-1] / 1e3, "x", color=color, ms=8, mew=2)
     yields = {spring.get("yield_pos"), spring.get("yield_neg")} - {None}
     for k, f_y in enumerate(sorted(yields)):
         ax.axhline(f_y / 1e3, color="k", ls="--", lw=0.8, label="yield F_y" if k == 0 else None)
