@@ -46,8 +46,9 @@ class Restrainer:
         yield_pos, yield_neg: yield force of the elastic-plastic law on each side [N] (inf:
             elastic).
         pretension: force in the member at rest [N].
-        rupture_force: force at which the anchorage gives way and the member is lost [N]
-            (inf: never).
+        rupture_force: force at which the member is lost [N] (inf: never): its anchorage's
+            capacity, or a tie-rod's net section N_u,Rd when lower than its yield force.
+        anchor_capacity: the anchorage's capacity as given [N] (inf: not given).
         code_action: "force" (the kinematic check takes ``code_force`` as a stabilising force
             in α0) or "spring" (its stiffness, no force at rest).
         code_force: the force the kinematic check relies on with code_action "force" [N].
@@ -68,6 +69,7 @@ class Restrainer:
     yield_neg: float = math.inf
     pretension: float = 0.0
     rupture_force: float = math.inf
+    anchor_capacity: float = math.inf
     code_action: str = "spring"
     code_force: float = 0.0
 

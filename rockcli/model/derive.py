@@ -253,6 +253,7 @@ def to_restrainer(model: Model, index: int) -> Restrainer:
         yield_neg=yield_neg,
         pretension=table.pretension or 0.0,
         rupture_force=rupture_force,
+        anchor_capacity=math.inf if table.anchor_capacity is None else table.anchor_capacity,
         code_action=table.effective_code_action.value,
         code_force=code_force,
     )

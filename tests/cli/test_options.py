@@ -141,9 +141,12 @@ def test_fail_on_uls_exits_1_when_the_uls_is_not_evaluated(tmp_path: Path) -> No
 
 
 def _not_evaluated_model(tmp_path: Path) -> Path:
-    """The façade with a tie-rod 100 times stiffer: positive global stiffness, no d0*."""
+    """The façade with a tie-rod 100 times stiffer and its vault elastic: positive global
+    stiffness, no d0*."""
     text = (ROOT / "examples" / "facade.toml").read_text(encoding="utf-8")
     model = tmp_path / "stiff.toml"
+    # and its vault elastic (no fails_at): a spring of unlimited strength, the curve hardens
+    text = text.replace("\nfails_at = 0.001 ", "\n# fails_at = 0.001 ", 1)
     model.write_text(text.replace("diameter = 0.020", "diameter = 0.200", 1), encoding="utf-8")
     return model
 
