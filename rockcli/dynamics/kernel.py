@@ -55,15 +55,15 @@ for _array_fn in (
     rules.spring_on_side,
     rules.spring_trig_on_side,
     rules.ground_acceleration,
-    rules.member_force,
-    rules.member_moment,
 ):
     register_jitable(inline="always")(_array_fn)
+register_jitable(rules.member_force)
+register_jitable(rules.member_moment)
 register_jitable(rules.side_index)
+register_jitable(rules.spring_arm)
 # The member laws' state changes: called at events only.
 for _law_fn in (rules.rotation_at_elongation, rules.set_levels, rules.plateau_work):
     register_jitable(_law_fn)
-_reset_laws = njit(cache=CACHE)(rules.reset_laws)
 _cross_up = njit(cache=CACHE)(rules.cross_up)
 _cross_down = njit(cache=CACHE)(rules.cross_down)
 _unload = njit(cache=CACHE)(rules.unload)
@@ -633,37 +633,27 @@ def _next_uplift(t, i, times, accel, pol, par, thr_pos, thr_neg):
 
 
 @njit(cache=CACHE)
-def _store_rest(hist_th, hist_om, hist_f, i_from, i_to, springs, alive):
-    """History at rest: θ = θ̇ = 0 at samples i_from..i_to (inclusive), the members' forces."""
-    if hist_th.size > 1:
-        for k in range(i_from, i_to + 1):
-            hist_th[k] = 0.0
-            hist_om[k] = 0.0
-            _store_forces(hist_f, k, 0, 0.0, springs, alive, False)
-
-
-@njit(cache=CACHE)
-def _store_forces(hist_f, k, s, a, springs, alive, lin):
-    """Each restrainer's force at sample k [N]: its member's on the pivot side s at rotation a;
-    at rest (s = 0) the larger of its two members' forces at a = 0 (a pretension)."""
-    for j in range(hist_f.shape[1]):
-        force = 0.0
-        if alive[j] != 0:
-            for side in (1, -1):
-                if s == 0 or side == s:
-                    kk, _, _, _ = _spring_on_side(springs, j, side)
-                    if kk != 0.0:
-                        u = _elongation_on_side(springs, j, side, a, lin)
-                        force = max(force, _member_force(springs, j, side, kk, u))
-        hist_f[k, j] = force
-
-
-@njit(cache=CACHE)
-def _store_sample(hist_th, hist_om, hist_f, k, th, om, s, springs, alive, lin):
-    """History at sample k: θ, θ̇ and the restrainers' forces."""
-    hist_th[k] = th
-    hist_om[k] = om
-    _store_forces(hist_f, k, s, s * th, springs, alive, lin)
+def _store(hist_th, hist_om, hist_f, i_from, i_to, th, om, s, springs, alive, lin):
+    """History at samples i_from..i_to (inclusive): θ, θ̇ and each restrainer's force [N]: its
+    member's on the pivot side s at rotation a = s·θ; at rest (s = 0) the larger of its two
+    members' forces at a = 0 (a pretension). One compiled function for every store (each
+    compiled function costs seconds of the first run)."""
+    if hist_th.size <= 1:
+        return
+    a = s * th
+    for k in range(i_from, i_to + 1):
+        hist_th[k] = th
+        hist_om[k] = om
+        for j in range(hist_f.shape[1]):
+            force = 0.0
+            if alive[j] != 0:
+                for side in (1, -1):
+                    if s == 0 or side == s:
+                        kk, _, _, _ = _spring_on_side(springs, j, side)
+                        if kk != 0.0:
+                            u = _elongation_on_side(springs, j, side, a, lin)
+                            force = max(force, _member_force(springs, j, side, kk, u))
+            hist_f[k, j] = force
 
 
 @njit(cache=CACHE)
@@ -691,12 +681,6 @@ def _apply_law_event(kind, row, s, a, t, springs, alive, spring_out, lin):
     ):
         spring_out[row, L.S_T_YIELD] = t
     return False
-
-
-@njit(cache=CACHE)
-def _close_plateaus(s, a, springs, alive, spring_out, lin):
-    """At the end of a run on pivot s at rotation a: plateaus in progress unload there."""
-    _apply_law_event(L.EV_UNLOAD, -1, s, a, 0.0, springs, alive, spring_out, lin)
 
 
 @njit(cache=CACHE, inline=INLINE)
@@ -807,8 +791,6 @@ def integrate(
     for r in range(n_rows):
         if springs[r, rules.COL_MEMORY] != 0.0:
             memory = True
-    if memory:
-        _reset_laws(springs, par[L.P_LINEAR] != 0.0)
     out_f[L.O_MAX_A] = 0.0
     out_f[L.O_THETA_MAX] = 0.0
     out_f[L.O_THETA_MIN] = 0.0
@@ -829,13 +811,13 @@ def integrate(
     s = _initial_side(th, om)
     f = 0.0
     h = times[1] - times[0]
-    _store_rest(hist_th, hist_om, hist_f, 0, 0, springs, alive)
+    _store(hist_th, hist_om, hist_f, 0, 0, 0.0, 0.0, 0, springs, alive, lin)
     if s != 0:
         out_f[L.O_T_UPLIFT] = t
         _update_peak(s * th, s, out_f, spring_out, springs, alive, par[L.P_LINEAR] != 0.0)
         f = _stage_at(t, th, om, s, i, times, accel, pol, par, springs, alive, points)
         if hist_th.size > 1:
-            _store_sample(hist_th, hist_om, hist_f, 0, th, om, s, springs, alive, lin)
+            _store(hist_th, hist_om, hist_f, 0, 0, th, om, s, springs, alive, lin)
     status = L.STATUS_COMPLETED
     nan_rejects = 0
     lowest, highest = _level_bounds(s, par, springs, alive)
@@ -843,7 +825,7 @@ def integrate(
         if s == 0:
             thr_pos, thr_neg = _uplift_thresholds(par, springs, alive, loaded, memory)
             tau, side, j = _next_uplift(t, i, times, accel, pol, par, thr_pos, thr_neg)
-            _store_rest(hist_th, hist_om, hist_f, i + 1, j, springs, alive)
+            _store(hist_th, hist_om, hist_f, i + 1, j, 0.0, 0.0, 0, springs, alive, lin)
             i = j
             if side == 0:
                 t = times[n - 1]
@@ -873,7 +855,7 @@ def integrate(
             t = t_next
             i += 1
             if hist_th.size > 1:
-                _store_sample(hist_th, hist_om, hist_f, i, th, om, s, springs, alive, lin)
+                _store(hist_th, hist_om, hist_f, i, i, th, om, s, springs, alive, lin)
             f = _stage_at(t, th, om, s, i, times, accel, pol, par, springs, alive, points)
             continue
         h_try = min(h, gap)
@@ -942,7 +924,7 @@ def integrate(
             if t == t_next:
                 i += 1
                 if hist_th.size > 1:
-                    _store_sample(hist_th, hist_om, hist_f, i, th, om, s, springs, alive, lin)
+                    _store(hist_th, hist_om, hist_f, i, i, th, om, s, springs, alive, lin)
             continue
         t_ev = t + x_ev * h_try
         om_ev = _dense(x_ev, om, h_try, q_om)
@@ -1003,7 +985,8 @@ def integrate(
     if s != 0 and status != L.STATUS_OVERTURNED:  # a NaN state updates no peak
         _update_peak(s * th, s, out_f, spring_out, springs, alive, lin)
     if memory and s != 0 and status != L.STATUS_NONFINITE:
-        _close_plateaus(s, s * th, springs, alive, spring_out, lin)
+        # a plateau in progress at the end unloads there (its plastic work counted)
+        _apply_law_event(L.EV_UNLOAD, -1, s, s * th, t, springs, alive, spring_out, lin)
     if status != L.STATUS_NONFINITE:
         row = _nonfinite_peak_force(spring_out)
         if row >= 0:

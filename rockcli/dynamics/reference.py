@@ -55,8 +55,6 @@ class _Phase:
         self.evals = 0
         self.max_evals = int(par[L.P_MAX_STEPS]) * EVALS_PER_STEP
         self.memory = bool(np.any(springs[:, rules.COL_MEMORY] != 0.0)) if springs.size else False
-        if self.memory:
-            rules.reset_laws(springs, self.lin)
 
 
 def _rhs(phase: _Phase, t0: float, g0: float, gs: float):

@@ -109,6 +109,17 @@ def member_force(springs, j, s, k, u):
     return 0.0
 
 
+def spring_arm(r, sin_phi, cos_phi, sin_a, cos_a, linearized):
+    """r·cos(φ − a), the lever arm of a horizontal force at the point (r·cos φ linearized) [m].
+
+    A function of scalars of its own (the engine compiles it without inlining its branch into
+    the right-hand side: numba's IR inlining of a conditional expression misfires).
+    """
+    if linearized:
+        return r * cos_phi
+    return r * cos_minus(sin_phi, cos_phi, sin_a, cos_a)
+
+
 def member_moment(springs, j, s, k, r, sin_phi, cos_phi, a, sin_a, cos_a, linearized):
     """F·r·cos(φ − a): the restoring moment of row j's member on side s [N·m].
 
@@ -117,8 +128,9 @@ def member_moment(springs, j, s, k, r, sin_phi, cos_phi, a, sin_a, cos_a, linear
     same bits as mechanics.spring_moment_trig).
     """
     u = spring_elongation_trig(r, sin_phi, cos_phi, a, sin_a, cos_a, linearized)
-    arm = r * cos_phi if linearized else r * cos_minus(sin_phi, cos_phi, sin_a, cos_a)
-    return member_force(springs, j, s, k, u) * arm
+    return member_force(springs, j, s, k, u) * spring_arm(
+        r, sin_phi, cos_phi, sin_a, cos_a, linearized
+    )
 
 
 def rotation_at_elongation(springs, j, s, u, linearized):

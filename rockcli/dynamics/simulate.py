@@ -163,15 +163,17 @@ def pack_springs(block: Block) -> np.ndarray:
         table[j, rules.COL_SIN_NEG] = math.sin(sp.phi_neg)
         table[j, rules.COL_COS_NEG] = math.cos(sp.phi_neg)
         pack_law(table[j], sp)
+    rules.reset_laws(table, block.linearized)
     return table
 
 
 def pack_law(row: np.ndarray, sp: Restrainer) -> None:
     """The member law's columns of one packed row (rules.py): yields, rupture force, c0.
 
-    The state columns (c, mode, levels) are set by the engines from these at the start of a run
-    (rules.reset_laws). A member without memory (elastic, no pretension, no anchor) keeps
-    COL_MEMORY = 0 and runs the elastic spring's arithmetic.
+    The state columns (c, mode, levels) are then set to rest by rules.reset_laws (pack_springs):
+    a packed table holds the state of one run's members, which the engines update. A member
+    without memory (elastic, no pretension, no anchor) keeps COL_MEMORY = 0 and runs the elastic
+    spring's arithmetic.
     """
     row[rules.COL_YIELD] = sp.yield_pos
     row[rules.COL_YIELD + 1] = sp.yield_neg
