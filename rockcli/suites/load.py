@@ -93,7 +93,8 @@ def translate(err: ErrorDetails, file: str | None) -> InputError:
     problem, _ = TRANSLATION.get(err["type"], (None, None))
     ctx = err.get("ctx", {})
     limits = (("gt", ">"), ("ge", ">="), ("lt", "<"), ("le", "<="))
-    allowed = " and ".join(f"{symbol} {ctx[key]}" for key, symbol in limits if key in ctx)
+    bounds = " and ".join(f"{symbol} {ctx[key]:g}" for key, symbol in limits if key in ctx)
+    allowed = f"a number {bounds}" if bounds else None
     value = None if err["type"] == "missing" else _short(err.get("input"))
     return InputError(
         problem or " ".join(err["msg"].split()),
@@ -112,6 +113,8 @@ def _allowed(err: ErrorDetails) -> str | None:
         return "name, records, target, period_range, tolerance and their keys"
     if err["type"] == "missing":
         return "required"
+    if err["type"].startswith(("float", "int", "finite")):
+        return "a number"
     return None
 
 
@@ -129,9 +132,10 @@ def check_records(suite: Suite, file: str | None) -> None:
     """At least MIN_RECORDS records, none listed twice (same file, or same name)."""
     if len(suite.records) < MIN_RECORDS:
         raise InputError(
-            f"too few records for the code's rule ({len(suite.records)})",
+            "too few records for the code's rule",
             file=file,
             where="records",
+            value=len(suite.records),
             allowed=f"at least {MIN_RECORDS} [[records]] (7 or more for the mean)",
         )
     seen: dict[str, int] = {}
