@@ -4,7 +4,14 @@ from __future__ import annotations
 
 import click
 
-from rockcli.cli.options import hazard_grid_option, output_format
+from rockcli.cli.options import (
+    announce_written,
+    check_outputs,
+    force_option,
+    hazard_grid_option,
+    output_format,
+)
+from rockcli.cli.plot_option import plot_option
 
 
 @click.group()
@@ -31,8 +38,10 @@ def suite() -> None:
     "lower bound, and check the suite with it.",
 )
 @hazard_grid_option
+@plot_option
+@force_option
 @output_format
-def check(suite_path, period, scale_mode, grid_file, output):
+def check(suite_path, period, scale_mode, grid_file, plot_path, force, output):
     """Check that the mean 5 %-damped spectrum of the suite's records matches the target
     (NTC §3.2.3.6: nowhere below −10 %, and in NTC 2018 nowhere above +30 %)."""
     from rockcli.report.suite import suite_report
@@ -42,8 +51,15 @@ def check(suite_path, period, scale_mode, grid_file, output):
 
     settings = load_suite(suite_path, period=period)
     check_grid_option(grid_file, settings.target.site is not None, suite_path)
+    check_outputs(force, plot=plot_path)
     result = run_suite_check(settings, grid_file, scale_auto=scale_mode == "auto")
-    show(suite_document(result), output, suite_report)
+    doc = suite_document(result)
+    if plot_path:
+        from rockcli.report.plots.suite import plot_suite
+
+        plot_suite(doc, plot_path)
+        announce_written(plot_path)
+    show(doc, output, suite_report)
 
 
 def check_grid_option(grid_file: str | None, has_site: bool, suite_path: str) -> None:
