@@ -95,6 +95,10 @@ def suite_report(doc: dict[str, Any]) -> Report:
 
 def auto_line(auto: dict[str, Any], doc: dict[str, Any]) -> str:
     """--scale auto: the factor and the verdict with it, or why no factor passes."""
+    if auto["factor"] is None:
+        return (
+            "--scale auto: the mean is zero at some period: no factor makes this suite compatible"
+        )
     head = f"--scale auto: common factor {auto['factor']:.4g} (smallest ratio on the lower bound)"
     if not auto["feasible"]:
         return (

@@ -128,11 +128,12 @@ class AutoScale:
     """The common factor of ``--scale auto``.
 
     Attributes:
-        factor: the factor that puts the mean's smallest ratio on the lower bound 1 + lo.
+        factor: the factor that puts the mean's smallest ratio on the lower bound 1 + lo
+            (None when the mean is zero somewhere: no factor can lift it).
         feasible: the largest ratio times the factor stays within 1 + hi.
     """
 
-    factor: float
+    factor: float | None
     feasible: bool
 
 
@@ -144,6 +145,9 @@ def auto_scale(ratio: np.ndarray, tolerance: tuple[float, float]) -> AutoScale:
     maximum closer to the upper bound, so when this f fails the upper bound no factor passes.
     """
     lo, hi = tolerance
-    factor = (1.0 + lo) / float(np.min(ratio))
+    smallest = float(np.min(ratio))
+    if not smallest > 0.0:  # a mean of zero somewhere: no factor lifts it
+        return AutoScale(factor=None, feasible=False)
+    factor = (1.0 + lo) / smallest
     feasible = factor * float(np.max(ratio)) <= (1.0 + hi) * (1.0 + BOUND_SLACK)
     return AutoScale(factor=factor, feasible=feasible)

@@ -18,7 +18,7 @@ from pydantic_core import ErrorDetails
 
 from rockcli.codecheck.categories import Edition
 from rockcli.errors import InputError, printable
-from rockcli.model.load import TRANSLATION, _dotted, _short, read_toml
+from rockcli.model.load import TRANSLATION, read_toml
 from rockcli.records.record import Record
 from rockcli.suites.schema import Suite, Target
 
@@ -30,6 +30,8 @@ CODE_PERIOD_RANGE = (0.15, 2.0)
 CODE_LOWER_TOLERANCE = -0.10
 #: Upper tolerance of NTC 2018 (no point more than 30 % above); NTC 2008 sets none.
 CODE_UPPER_TOLERANCE_2018 = 0.30
+#: Longest text value quoted back in an error line (characters).
+MAX_QUOTED = 60
 #: The lowest tolerance there can be: the mean at zero (−100 %).
 TOLERANCE_FLOOR = -1.0
 
@@ -95,14 +97,24 @@ def translate(err: ErrorDetails, file: str | None) -> InputError:
     limits = (("gt", ">"), ("ge", ">="), ("lt", "<"), ("le", "<="))
     bounds = " and ".join(f"{symbol} {ctx[key]:g}" for key, symbol in limits if key in ctx)
     allowed = f"a number {bounds}" if bounds else None
-    value = None if err["type"] == "missing" else _short(err.get("input"))
+    value = None if err["type"] == "missing" else err.get("input")
+    if isinstance(value, str) and len(value) > MAX_QUOTED:
+        value = value[:MAX_QUOTED] + "…"
     return InputError(
         problem or " ".join(err["msg"].split()),
         file=file,
-        where=_dotted(tuple(err["loc"])) or None,
-        value=value if not isinstance(value, dict | list) else None,
+        where=dotted(err["loc"]) or None,
+        value=value if isinstance(value, int | float | str) else None,
         allowed=allowed or _allowed(err),
     )
+
+
+def dotted(loc: Sequence[str | int]) -> str:
+    """``('records', 0, 'scale')`` → ``records[0].scale``."""
+    text = ""
+    for part in loc:
+        text += f"[{part}]" if isinstance(part, int) else ("." if text else "") + printable(part)
+    return text
 
 
 def _allowed(err: ErrorDetails) -> str | None:
@@ -240,21 +252,50 @@ def default_tolerance(suite: Suite) -> tuple[float, float]:
 
 def read_entries(settings: SuiteSettings) -> list[Record]:
     """Every record of the suite, read and scaled; InputError naming the suite file and the
-    record entry when one does not read."""
+    record entry when one does not read, is zero everywhere, or scales out of bounds."""
+    return [
+        scaled(read_entry(entry, settings.file), entry, settings.file) for entry in settings.entries
+    ]
+
+
+def read_entry(entry: SuiteEntry, file: str) -> Record:
+    """One record as read (InputError naming the suite file and the entry)."""
     from rockcli.records.files import read_record
+
+    try:
+        record = read_record(entry.path)
+    except InputError as exc:
+        raise InputError(
+            f"record {entry.name!r} does not read: {printable(exc.render())}",
+            file=file,
+            where=f"{entry.where}.path",
+            value=str(entry.path),
+            allowed="a readable record: PEER AT2, ESM ASCII, ITACA cor.acc or plain text",
+        ) from None
+    if not record.pga > 0.0:
+        raise InputError(
+            f"record {entry.name!r} is zero everywhere (PGA 0)",
+            file=file,
+            where=f"{entry.where}.path",
+            value=str(entry.path),
+            allowed="a record with motion in it",
+        )
+    return record
+
+
+def scaled(record: Record, entry: SuiteEntry, file: str) -> Record:
+    """The record times its scale (InputError when the scaled PGA is implausible)."""
     from rockcli.records.transform import scale
 
-    records = []
-    for entry in settings.entries:
-        try:
-            record = read_record(entry.path)
-            records.append(scale(record, entry.scale) if entry.scale != 1.0 else record)
-        except InputError as exc:
-            raise InputError(
-                f"record {entry.name!r} does not read: {printable(exc.render())}",
-                file=settings.file,
-                where=f"{entry.where}.path",
-                value=str(entry.path),
-                allowed="a readable record: PEER AT2, ESM ASCII, ITACA cor.acc or plain text",
-            ) from None
-    return records
+    if entry.scale == 1.0:
+        return record
+    try:
+        return scale(record, entry.scale)
+    except InputError as exc:
+        raise InputError(
+            exc.problem,
+            file=file,
+            where=f"{entry.where}.scale",
+            value=entry.scale,
+            allowed=exc.allowed,
+        ) from None

@@ -10,6 +10,7 @@ import numpy as np
 
 from rockcli.codecheck.categories import Edition
 from rockcli.codecheck.spectra import ElasticSpectrum, return_period
+from rockcli.errors import InputError
 from rockcli.records.record import Record
 from rockcli.suites.compat import (
     AutoScale,
@@ -47,15 +48,16 @@ def target_of(target: Target, grid_file: str | None) -> TargetSpectrum:
     (DM 14/01/2008 Allegato A); with the parameters given, they are used as they are.
     """
     TR = return_period(target.VN, target.CU, target.limit_state, target.edition)
-    site = target.site
-    if site is None:
-        assert target.ag is not None and target.F0 is not None and target.Tc_star is not None
-        ag, F0, Tc_star, source = target.ag, target.F0, target.Tc_star, "given in the suite"
-    else:
+    site, given = target.site, target.parameters
+    if given is not None:
+        (ag, F0, Tc_star), source = given, "given in the suite"
+    elif site is not None:
         from rockcli.codecheck.hazard import grid_path, read_grid, site_parameters
 
         ag, F0, Tc_star = site_parameters(read_grid(grid_path(grid_file)), *site, TR)
         source = f"hazard grid at {site[0]:.4f} E, {site[1]:.4f} N"
+    else:  # the suite's rules refuse a target without either
+        raise InputError("no site and no parameters", where="target")
     spectrum = ElasticSpectrum(ag, F0, Tc_star, target.soil, target.topography)
     return TargetSpectrum(spectrum, TR, source)
 
@@ -77,7 +79,10 @@ def run_suite_check(
     settings: SuiteSettings, grid_file: str | None, *, scale_auto: bool = False
 ) -> SuiteCheck:
     """Read the records, compute their spectra, the mean and the check (and the auto factor)."""
-    target = target_of(settings.target, grid_file)
+    try:
+        target = target_of(settings.target, grid_file)
+    except InputError as exc:  # a site outside the grid: name the suite file
+        raise exc.with_file(settings.file) from None
     records = read_entries(settings)
     periods = period_grid(*settings.period_range)
     spectra = record_spectra(records, periods)
@@ -87,7 +92,9 @@ def run_suite_check(
     auto = scaled = None
     if scale_auto:
         auto = auto_scale(check.ratio, settings.tolerance)
-        scaled = compatibility(periods, check.target, check.mean * auto.factor, settings.tolerance)
+        if auto.factor is not None:
+            mean = check.mean * auto.factor
+            scaled = compatibility(periods, check.target, mean, settings.tolerance)
     return SuiteCheck(settings, records, target, spectra, check, auto, scaled)
 
 
@@ -142,10 +149,11 @@ def suite_document(result: SuiteCheck) -> dict[str, Any]:
             for e, r, sa in zip(s.entries, result.records, result.spectra.tolist(), strict=True)
         ],
     }
-    if result.auto is not None and result.scaled is not None:
+    if result.auto is not None:
+        scaled = check_numbers(result.scaled) if result.scaled is not None else {"passed": False}
         doc["scale_auto"] = {
             "factor": result.auto.factor,
             "feasible": result.auto.feasible,
-            **check_numbers(result.scaled),
+            **scaled,
         }
     return doc

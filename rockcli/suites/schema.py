@@ -63,6 +63,13 @@ class Target(Table):
             return None
         return self.lon, self.lat
 
+    @property
+    def parameters(self) -> tuple[float, float, float] | None:
+        """(ag, F0, Tc_star) when the target gives them."""
+        if self.ag is None or self.F0 is None or self.Tc_star is None:
+            return None
+        return self.ag, self.F0, self.Tc_star
+
 
 class Suite(Table):
     """A suite file."""

@@ -101,7 +101,22 @@ def test_damaged_record_names_the_suite_and_the_entry(tmp_path: Path) -> None:
 
 def test_record_scaled_beyond_plausible_is_refused(tmp_path: Path) -> None:
     path = write_suite(tmp_path, [{**THREE[0], "scale": 1e6}, *THREE[1:]])
-    assert "records[0].path" in refused(path)
+    line = refused(path)
+    assert line.startswith(f"error: {path}: records[0].scale: the scaled record would reach"), line
+
+
+def test_record_of_zeros_is_refused(tmp_path: Path) -> None:
+    # A file that parses but holds no motion: its spectrum is zero, no check means anything.
+    (tmp_path / "zero.txt").write_text("0 0\n0.01 0\n0.02 0\n", encoding="utf-8")
+    path = write_suite(tmp_path, [*THREE, {"path": "zero.txt"}])
+    line = refused(path)
+    assert line.startswith(f"error: {path}: records[3].path: record 'zero' is zero everywhere")
+
+
+def test_site_outside_the_grid_names_the_suite(tmp_path: Path, grid_file: Path) -> None:
+    path = write_suite(tmp_path, THREE, target={"lon": 0.0, "lat": 0.0})
+    line = refused(path, "--hazard-grid", str(grid_file))
+    assert line.startswith(f"error: {path}: site: site outside the NTC hazard grid"), line
 
 
 def test_malformed_toml(tmp_path: Path) -> None:

@@ -13,6 +13,7 @@ from click.testing import CliRunner
 
 from rockcli.cli.main import cli
 from rockcli.records.files import read_record
+from rockcli.suites.compat import auto_scale
 from tests.suites.conftest import PULSES, newmark_peak, se_by_hand, write_suite
 
 RICKER = next(p for p in PULSES if p.name.startswith("ricker"))
@@ -77,3 +78,10 @@ def test_a_wide_upper_bound_makes_the_factor_pass(tmp_path: Path) -> None:
     doc = auto(multiples(tmp_path, [0.1, 0.2, 0.3], tolerance=[-0.10, 100.0]))
     assert doc["passed"] is False and doc["min_ratio"] < 0.9
     assert doc["scale_auto"]["feasible"] is True and doc["scale_auto"]["passed"] is True
+
+
+def test_a_mean_of_zero_has_no_factor() -> None:
+    # Unreachable from a suite file (a record of zeros is refused) but kept honest: a zero
+    # ratio cannot be lifted by any factor, and no division by zero.
+    result = auto_scale(np.array([0.0, 1.0]), (-0.10, 0.30))
+    assert result.factor is None and result.feasible is False
