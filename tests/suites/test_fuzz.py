@@ -3,6 +3,7 @@ traceback (bounded: 150 examples, no record is read)."""
 
 from __future__ import annotations
 
+import copy
 from typing import Any
 
 from hypothesis import HealthCheck, given, settings
@@ -51,9 +52,9 @@ SUITES = st.fixed_dictionaries(
 )
 
 
-@settings(max_examples=150, deadline=None, suppress_health_check=[HealthCheck.too_slow])
-@given(SUITES)
-def test_random_table_is_a_suite_or_one_input_error(data: dict[str, Any]) -> None:
+def check_suite_table(data: dict[str, Any]) -> None:
+    """A valid suite (every rule holds after resolving) or one InputError line naming the
+    file."""
     try:
         suite = validate_suite(data, "fuzz.toml")
     except InputError as exc:
@@ -65,3 +66,45 @@ def test_random_table_is_a_suite_or_one_input_error(data: dict[str, Any]) -> Non
     lo, hi = settings_.period_range
     assert 0 < lo < hi
     assert -1 < settings_.tolerance[0] < settings_.tolerance[1]
+
+
+@settings(max_examples=150, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(SUITES)
+def test_random_table_is_a_suite_or_one_input_error(data: dict[str, Any]) -> None:
+    check_suite_table(data)
+
+
+#: A valid suite table: the fuzz below damages one key of it at a time.
+VALID = {
+    "name": "s",
+    "records": [{"path": f"r{i}.txt", "scale": 1.0} for i in range(3)],
+    "target": {"ag": 0.25, "F0": 2.5, "Tc_star": 0.3, "limit_state": "SLV"},
+    "period_range": [0.15, 2.0],
+    "tolerance": [-0.1, 0.3],
+}
+#: Where the fuzz can damage it: (table path, key).
+SPOTS = [
+    ((), "name"),
+    ((), "period_range"),
+    ((), "tolerance"),
+    ((), "records"),
+    (("records", 0), "path"),
+    (("records", 1), "scale"),
+    (("records", 2), "name"),
+    (("target",), "ag"),
+    (("target",), "lon"),
+    (("target",), "limit_state"),
+    (("target",), "edition"),
+    (("target",), "soil"),
+]
+
+
+@settings(max_examples=150, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(st.sampled_from(SPOTS), VALUES)
+def test_damaged_valid_suite_is_a_suite_or_one_input_error(spot: Any, value: Any) -> None:
+    data = copy.deepcopy(VALID)
+    table: Any = data
+    for part in spot[0]:
+        table = table[part]
+    table[spot[1]] = value
+    check_suite_table(data)
