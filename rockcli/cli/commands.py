@@ -10,6 +10,7 @@ from rockcli.cli.init import init
 from rockcli.cli.kinematic import kinematic
 from rockcli.cli.record import record
 from rockcli.cli.retrofit import retrofit
+from rockcli.cli.suite import suite
 from rockcli.cli.sweep import sweep
 from rockcli.cli.warmup import warmup
 
@@ -22,3 +23,4 @@ ALL.append(compare)
 ALL.append(warmup)
 ALL.append(sweep)
 ALL.append(retrofit)
+ALL.append(suite)

@@ -1,9 +1,10 @@
-"""A suite's time history as data and as tables: the records, the code's rule, the verdict.
+"""A record suite's reports: `rock suite check` (the records, the compatibility table, the
+verdict) and the suite's time history (the records' max θ/α, the code's rule, the verdict).
 
-The JSON contract (issue 10): ``suite`` = {"n", "rule": "mean" | "worst", "measure",
-"limit_ratio", "verdict", "overturned_records", "records": [{"name", "scale", "pga_g",
-"max_ratio", "overturned"}], "compatibility": {"passed", "period_range": [a, b], "min_ratio",
-"max_ratio"} or null}.
+The time history's JSON contract (issue 10): ``suite`` = {"n", "rule": "mean" | "worst",
+"measure", "limit_ratio", "verdict", "overturned_records", "records": [{"name", "scale",
+"pga_g", "max_ratio", "overturned"}], "compatibility": {"passed", "period_range": [a, b],
+"min_ratio", "max_ratio"} or null}.
 """
 
 from __future__ import annotations
@@ -11,10 +12,114 @@ from __future__ import annotations
 from collections.abc import Mapping, Sequence
 from typing import Any
 
-from rockcli.report.table import Column, Table
+from rockcli.report.table import Column, Report, Table, key_value
 from rockcli.studies.suite.rule import SuiteMeasure
 
-RECORD_COLUMNS = (
+#: What the code does with a suite of this size (NTC §3.2.3.6).
+COUNT_TEXT = {
+    "mean": "{n} records: 7 or more, the mean effect of the records may be used",
+    "worst": "{n} records: 3 to 6, the worst effect of the records must be used (7 or more "
+    "for the mean)",
+}
+
+
+def band_text(tolerance: list[float | None]) -> str:
+    """The band as the user reads it: −10 %/+30 %, or −10 %/no upper bound."""
+    lo, hi = tolerance
+    upper = "no upper bound" if hi is None else f"{hi:+.0%}"
+    return f"{lo:+.0%} / {upper}"
+
+
+def verdict_line(numbers: dict[str, Any], doc: dict[str, Any]) -> str:
+    """compatible or NOT, the worst ratio and its period."""
+    word = "compatible" if numbers["passed"] else "NOT compatible"
+    return (
+        f"{word} over {doc['period_range'][0]:g}–{doc['period_range'][1]:g} s "
+        f"(band {band_text(doc['tolerance'])}): worst mean/target "
+        f"{numbers['worst_ratio']:.3f} at T = {numbers['worst_period']:.3g} s"
+    )
+
+
+def records_table(doc: dict[str, Any]) -> Table:
+    """Per record: name, scale, PGA (of the scaled record)."""
+    columns = (
+        Column("name", "record"),
+        Column("scale", "scale", "-", "{:.4g}"),
+        Column("pga_g", "PGA", "g", "{:.4g}"),
+    )
+    return Table("Records", columns, tuple(doc["records"]))
+
+
+def compatibility_table(doc: dict[str, Any]) -> Table:
+    """At every period of the grid: target, mean, ratio, within the band."""
+    rows = tuple(
+        {"T": T, "target": t, "mean": m, "ratio": r, "within": "yes" if w else "NO"}
+        for T, t, m, r, w in zip(
+            doc["periods"], doc["target"], doc["mean"], doc["ratio"], doc["within"], strict=True
+        )
+    )
+    columns = (
+        Column("T", "period", "s", "{:.3g}"),
+        Column("target", "target Se", "g", "{:.4g}"),
+        Column("mean", "mean Sa", "g", "{:.4g}"),
+        Column("ratio", "mean/target", "-", "{:.3f}"),
+        Column("within", "within band"),
+    )
+    return Table("Compatibility (5 % damping)", columns, rows)
+
+
+def target_table(doc: dict[str, Any]) -> Table:
+    """The target spectrum's parameters."""
+    p = doc["target_parameters"]
+    return key_value(
+        "Target spectrum",
+        [
+            ("limit state", p["limit_state"], "", ""),
+            ("edition", f"NTC {p['edition']}", "", ""),
+            ("TR", p["TR"], "years", "{:.0f}"),
+            ("ag", p["ag"], "g", "{:.4g}"),
+            ("F0", p["F0"], "-", "{:.4g}"),
+            ("TC*", p["Tc_star"], "s", "{:.4g}"),
+            ("soil, topography", f"{p['soil']}, {p['topography']}", "", ""),
+            ("S", p["S"], "-", "{:.4g}"),
+            ("from", p["source"], "", ""),
+        ],
+    )
+
+
+def suite_report(doc: dict[str, Any]) -> Report:
+    """The Report of a suite check document."""
+    notes = [COUNT_TEXT[doc["count_rule"]].format(n=doc["count"])]
+    verdict = verdict_line({"passed": doc["passed"], **doc}, doc)
+    auto = doc.get("scale_auto")
+    if auto is not None:
+        notes.append(auto_line(auto, doc))
+    return Report(
+        title=f"rock suite check — {doc['suite']}",
+        tables=(records_table(doc), target_table(doc), compatibility_table(doc)),
+        notes=tuple(notes),
+        verdict=verdict,
+    )
+
+
+def auto_line(auto: dict[str, Any], doc: dict[str, Any]) -> str:
+    """--scale auto: the factor and the verdict with it, or why no factor passes."""
+    if auto["factor"] is None:
+        return (
+            "--scale auto: the mean is zero at some period: no factor makes this suite compatible"
+        )
+    head = f"--scale auto: common factor {auto['factor']:.4g} (smallest ratio on the lower bound)"
+    if not auto["feasible"]:
+        return (
+            f"{head}; with it the largest ratio is {auto['max_ratio']:.3f}, above the upper "
+            "bound: no common factor makes this suite compatible"
+        )
+    return f"{head}; with it: {verdict_line(auto, doc)}"
+
+
+# --- the suite in the time history -----------------------------------------------------
+
+HISTORY_COLUMNS = (
     Column("name", "record", ""),
     Column("scale", "scale", "", "{:.4g}"),
     Column("pga_g", "PGA", "g", "{:.4f}"),
@@ -23,7 +128,7 @@ RECORD_COLUMNS = (
 )
 
 
-def suite_document(
+def history_document(
     measure: SuiteMeasure,
     rows: Sequence[Mapping[str, Any]],
     compatibility: Mapping[str, Any] | None = None,
@@ -43,12 +148,12 @@ def suite_document(
     }
 
 
-def records_table(doc: Mapping[str, Any]) -> Table:
+def history_records_table(doc: Mapping[str, Any]) -> Table:
     """One row per record: its scale, PGA, max θ/α over both polarities, overturned."""
-    return Table("Records of the suite, both polarities", RECORD_COLUMNS, tuple(doc["records"]))
+    return Table("Records of the suite, both polarities", HISTORY_COLUMNS, tuple(doc["records"]))
 
 
-def suite_verdict(doc: Mapping[str, Any]) -> str:
+def history_verdict(doc: Mapping[str, Any]) -> str:
     """The verdict line: the rule, the measure against its limit, the overturns, and whether
     the suite is compatible with its target spectrum."""
     how = "mean" if doc["rule"] == "mean" else "largest"

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from rockcli.report.suite import records_table, suite_document, suite_verdict
+from rockcli.report.suite import history_document, history_records_table, history_verdict
 from rockcli.studies.suite.rule import RecordOutcome, suite_measure
 
 ROWS = [
@@ -17,19 +17,19 @@ def measure():
 
 
 def test_the_document_has_the_contract_keys() -> None:
-    doc = suite_document(measure(), ROWS, {"passed": True, "period_range": [0.15, 2.0],
+    doc = history_document(measure(), ROWS, {"passed": True, "period_range": [0.15, 2.0],
                                            "min_ratio": 0.95, "max_ratio": 1.2})  # fmt: skip
     assert set(doc) == {"n", "rule", "measure", "limit_ratio", "verdict",
                         "overturned_records", "records", "compatibility"}  # fmt: skip
     assert set(doc["records"][0]) == {"name", "scale", "pga_g", "max_ratio", "overturned"}
     assert (doc["n"], doc["rule"], doc["verdict"]) == (3, "worst", "passes")
-    assert len(records_table(doc).rows) == 3
+    assert len(history_records_table(doc).rows) == 3
 
 
 def test_the_verdict_line_says_the_rule_and_an_incompatible_suite() -> None:
-    doc = suite_document(measure(), ROWS, {"passed": False, "period_range": [0.15, 2.0],
+    doc = history_document(measure(), ROWS, {"passed": False, "period_range": [0.15, 2.0],
                                            "min_ratio": 0.7, "max_ratio": 1.2})  # fmt: skip
-    line = suite_verdict(doc)
+    line = history_verdict(doc)
     assert line.startswith("passes: the largest of max θ/α over 3 records is 0.3000 against 1")
     assert line.endswith("not compatible with its target spectrum")
-    assert "0 of 3 overturn" in suite_verdict(suite_document(measure(), ROWS))
+    assert "0 of 3 overturn" in history_verdict(history_document(measure(), ROWS))

@@ -8,6 +8,7 @@ modules here import only the standard library at their top.
 - :func:`plot_kinematic`: the capacity curve a*–d* with the checks' demands.
 - :func:`plot_comparison`: both, side by side.
 - :func:`plot_sweep`: the collapse map of a systemic study, code against rocking.
+- :func:`plot_suite`: a record suite's spectra, their mean, the target and its band.
 """
 
 from __future__ import annotations
@@ -17,6 +18,7 @@ from rockcli.report.plots.collapse import outcome, plot_sweep
 from rockcli.report.plots.comparison import plot_comparison
 from rockcli.report.plots.files import MISSING, OPTION, check_plot_path, plot_format
 from rockcli.report.plots.histories import plot_assessment
+from rockcli.report.plots.suite import plot_suite
 
 __all__ = [
     "MISSING",
@@ -27,5 +29,6 @@ __all__ = [
     "plot_comparison",
     "plot_format",
     "plot_kinematic",
+    "plot_suite",
     "plot_sweep",
 ]

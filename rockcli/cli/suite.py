@@ -1,0 +1,75 @@
+"""`rock suite check SUITE`: a record suite's mean spectrum against the code's target."""
+
+from __future__ import annotations
+
+import click
+
+from rockcli.cli.options import (
+    announce_written,
+    check_outputs,
+    force_option,
+    hazard_grid_option,
+    output_format,
+)
+from rockcli.cli.plot_option import plot_option
+
+
+@click.group()
+def suite() -> None:
+    """Record suites: a set of scaled records and their target spectrum (a TOML suite file)."""
+
+
+@suite.command()
+@click.argument("suite_path", metavar="SUITE", type=click.Path(dir_okay=False))
+@click.option(
+    "--period",
+    type=float,
+    default=None,
+    metavar="T",
+    help="The structure's period [s]: check 0.15 s to max(2.0 s, 2T) (default 0.15–2.0 s).",
+)
+@click.option(
+    "--scale",
+    "scale_mode",
+    type=click.Choice(["none", "auto"]),
+    default="none",
+    show_default=True,
+    help="auto: also find the common factor that puts the mean's smallest ratio on the "
+    "lower bound, and check the suite with it.",
+)
+@hazard_grid_option
+@plot_option
+@force_option
+@output_format
+def check(suite_path, period, scale_mode, grid_file, plot_path, force, output):
+    """Check that the mean 5 %-damped spectrum of the suite's records matches the target
+    (NTC §3.2.3.6: nowhere below −10 %, and in NTC 2018 nowhere above +30 %)."""
+    from rockcli.report.suite import suite_report
+    from rockcli.report.table import show
+    from rockcli.suites.load import load_suite
+    from rockcli.suites.run import run_suite_check, suite_document
+
+    settings = load_suite(suite_path, period=period)
+    check_grid_option(grid_file, settings.target.site is not None, suite_path)
+    check_outputs(force, plot=plot_path)
+    result = run_suite_check(settings, grid_file, scale_auto=scale_mode == "auto")
+    doc = suite_document(result)
+    if plot_path:
+        from rockcli.report.plots.suite import plot_suite
+
+        plot_suite(doc, plot_path)
+        announce_written(plot_path)
+    show(doc, output, suite_report)
+
+
+def check_grid_option(grid_file: str | None, has_site: bool, suite_path: str) -> None:
+    """Refuse --hazard-grid when the suite's target gives its parameters (InputError)."""
+    from rockcli.errors import InputError
+
+    if grid_file is not None and not has_site:
+        raise InputError(
+            "not used: the suite's [target] gives ag, F0 and Tc_star",
+            where="--hazard-grid",
+            value=grid_file,
+            allowed=f"--hazard-grid only with lon and lat in [target] of {suite_path}",
+        )

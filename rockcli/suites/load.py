@@ -1,0 +1,301 @@
+"""Reading a suite file: TOML, the schema, the rules across keys, then the records.
+
+Every problem is one :class:`~rockcli.errors.InputError` naming the suite file, the key or
+record entry, the value and what is allowed.
+"""
+
+from __future__ import annotations
+
+import math
+import os
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+from pydantic import ValidationError
+from pydantic_core import ErrorDetails
+
+from rockcli.codecheck.categories import Edition
+from rockcli.errors import InputError, printable
+from rockcli.model.load import TRANSLATION, read_toml
+from rockcli.records.record import Record
+from rockcli.suites.schema import Suite, Target
+
+#: Fewest records of a suite (NTC §3.2.3.6: at least 3, the worst effect governing).
+MIN_RECORDS = 3
+#: The code's period range [s] (NTC 2008 and 2018 §3.2.3.6: 0.15–2.0 s, and 0.15 s–2T).
+CODE_PERIOD_RANGE = (0.15, 2.0)
+#: Lower tolerance on the mean spectrum, both editions (no point more than 10 % below).
+CODE_LOWER_TOLERANCE = -0.10
+#: Upper tolerance of NTC 2018 (no point more than 30 % above); NTC 2008 sets none.
+CODE_UPPER_TOLERANCE_2018 = 0.30
+#: Longest text value quoted back in an error line (characters).
+MAX_QUOTED = 60
+#: The lowest tolerance there can be: the mean at zero (−100 %).
+TOLERANCE_FLOOR = -1.0
+
+
+@dataclass(frozen=True)
+class SuiteEntry:
+    """One record of the suite: its label, file (resolved beside the suite file), scale."""
+
+    name: str
+    path: Path
+    scale: float
+    where: str
+
+
+@dataclass(frozen=True)
+class SuiteSettings:
+    """A validated suite with every default resolved.
+
+    Attributes:
+        name: the suite's name. file: the suite file as the user gave it.
+        entries: the records. target: the target table.
+        period_range: (a, b) [s]. tolerance: (lo, hi) as fractions (hi may be inf).
+    """
+
+    name: str
+    file: str
+    entries: tuple[SuiteEntry, ...]
+    target: Target
+    period_range: tuple[float, float]
+    tolerance: tuple[float, float]
+
+
+def load_suite(path: str | os.PathLike[str], *, period: float | None = None) -> SuiteSettings:
+    """Read, validate and resolve a suite file.
+
+    Args:
+        path: the TOML suite file.
+        period: the structure's period T [s] (``--period``): the range becomes 0.15 s to
+            max(2.0 s, 2T) (NTC §3.2.3.6); refused when the file gives ``period_range``.
+
+    Raises:
+        InputError: unreadable or malformed file, a bad key, or a rule across keys broken.
+    """
+    file = os.fspath(path)
+    suite = validate_suite(read_toml(file), file)
+    return resolve(suite, file, period)
+
+
+def validate_suite(data: Mapping[str, Any], file: str | None = None) -> Suite:
+    """The schema and the rules across keys; InputError (the first problem) otherwise."""
+    try:
+        suite = Suite.model_validate(data)
+    except ValidationError as exc:
+        raise translate(exc.errors()[0], file) from None
+    check_rules(suite, file)
+    return suite
+
+
+def translate(err: ErrorDetails, file: str | None) -> InputError:
+    """One pydantic error of the suite file as one InputError."""
+    problem, _ = TRANSLATION.get(err["type"], (None, None))
+    ctx = err.get("ctx", {})
+    limits = (("gt", ">"), ("ge", ">="), ("lt", "<"), ("le", "<="))
+    bounds = " and ".join(f"{symbol} {ctx[key]:g}" for key, symbol in limits if key in ctx)
+    allowed = f"a number {bounds}" if bounds else None
+    value = None if err["type"] == "missing" else err.get("input")
+    if isinstance(value, str) and len(value) > MAX_QUOTED:
+        value = value[:MAX_QUOTED] + "…"
+    return InputError(
+        problem or " ".join(err["msg"].split()),
+        file=file,
+        where=dotted(err["loc"]) or None,
+        value=value if isinstance(value, int | float | str) else None,
+        allowed=allowed or _allowed(err),
+    )
+
+
+def dotted(loc: Sequence[str | int]) -> str:
+    """``('records', 0, 'scale')`` → ``records[0].scale``."""
+    text = ""
+    for part in loc:
+        text += f"[{part}]" if isinstance(part, int) else ("." if text else "") + printable(part)
+    return text
+
+
+def _allowed(err: ErrorDetails) -> str | None:
+    ctx = err.get("ctx", {})
+    if "expected" in ctx:
+        return f"one of: {ctx['expected']}"
+    if err["type"] == "extra_forbidden":
+        return "name, records, target, period_range, tolerance and their keys"
+    if err["type"] == "missing":
+        return "required"
+    if err["type"].startswith(("float", "int", "finite")):
+        return "a number"
+    return None
+
+
+def check_rules(suite: Suite, file: str | None) -> None:
+    """The rules across keys (InputError naming the first broken one)."""
+    check_records(suite, file)
+    check_target(suite.target, file)
+    if suite.period_range is not None:
+        check_period_range(suite.period_range, file)
+    if suite.tolerance is not None:
+        check_tolerance(suite.tolerance, file)
+
+
+def check_records(suite: Suite, file: str | None) -> None:
+    """At least MIN_RECORDS records, none listed twice (same file, or same name)."""
+    if len(suite.records) < MIN_RECORDS:
+        raise InputError(
+            "too few records for the code's rule",
+            file=file,
+            where="records",
+            value=len(suite.records),
+            allowed=f"at least {MIN_RECORDS} [[records]] (7 or more for the mean)",
+        )
+    seen: dict[str, int] = {}
+    for i, (entry, name) in enumerate(zip(suite.records, suite.record_names(), strict=True)):
+        for key in (f"path {os.path.normpath(entry.path)}", f"name {name}"):
+            if key in seen:
+                raise InputError(
+                    f"record listed twice (the same {key.split()[0]} as records[{seen[key]}])",
+                    file=file,
+                    where=f"records[{i}]",
+                    value=entry.path if key.startswith("path") else name,
+                    allowed="each record once, with its own name",
+                )
+            seen[key] = i
+
+
+def check_target(target: Target, file: str | None) -> None:
+    """A site (lon and lat) or the parameters (ag, F0, Tc_star), all of one and none of the
+    other."""
+    site = {k: getattr(target, k) for k in ("lon", "lat")}
+    params = {k: getattr(target, k) for k in ("ag", "F0", "Tc_star")}
+    allowed = "either lon and lat (the hazard grid) or ag, F0 and Tc_star"
+    has_site = any(v is not None for v in site.values())
+    has_params = any(v is not None for v in params.values())
+    if has_site == has_params:
+        problem = "both a site and spectrum parameters" if has_site else "no site and no parameters"
+        raise InputError(problem, file=file, where="target", allowed=allowed)
+    group = site if has_site else params
+    for key, value in group.items():
+        if value is None:
+            raise InputError("missing key", file=file, where=f"target.{key}", allowed=allowed)
+
+
+def check_period_range(values: Sequence[float], file: str | None) -> None:
+    """[a, b] with 0 < a < b [s]."""
+    if len(values) != 2 or not 0.0 < values[0] < values[1]:
+        raise InputError(
+            "not a period range",
+            file=file,
+            where="period_range",
+            value=list(values),
+            allowed="[a, b] with 0 < a < b [s]",
+        )
+
+
+def check_tolerance(values: Sequence[float], file: str | None) -> None:
+    """[lo, hi] with −1 < lo < hi (fractions; hi may be inf)."""
+    if len(values) != 2 or not TOLERANCE_FLOOR < values[0] < values[1]:
+        raise InputError(
+            "not a tolerance band",
+            file=file,
+            where="tolerance",
+            value=list(values),
+            allowed="[lo, hi] as fractions with -1 < lo < hi, e.g. [-0.10, 0.30]",
+        )
+
+
+def resolve(suite: Suite, file: str, period: float | None) -> SuiteSettings:
+    """The settings with the defaults of the edition and the period applied."""
+    base = Path(file).parent
+    entries = tuple(
+        SuiteEntry(name, base / r.path, r.scale, f"records[{i}]")
+        for i, (r, name) in enumerate(zip(suite.records, suite.record_names(), strict=True))
+    )
+    return SuiteSettings(
+        name=suite.name,
+        file=file,
+        entries=entries,
+        target=suite.target,
+        period_range=period_range(suite, file, period),
+        tolerance=default_tolerance(suite),
+    )
+
+
+def period_range(suite: Suite, file: str, period: float | None) -> tuple[float, float]:
+    """The file's range, else 0.15 s to max(2.0 s, 2T) (NTC §3.2.3.6)."""
+    if period is not None and suite.period_range is not None:
+        raise InputError(
+            "conflicts with the suite file's period_range",
+            where="--period",
+            value=period,
+            allowed=f"--period T, or period_range in {file}, not both",
+        )
+    if suite.period_range is not None:
+        return suite.period_range[0], suite.period_range[1]
+    a, b = CODE_PERIOD_RANGE
+    if period is None:
+        return a, b
+    if not (math.isfinite(period) and period > 0):
+        raise InputError("out of range", where="--period", value=period, allowed="T > 0 [s]")
+    return a, max(b, 2.0 * period)
+
+
+def default_tolerance(suite: Suite) -> tuple[float, float]:
+    """The file's band, else −10 % and +30 % (2018) or no upper bound (2008)."""
+    if suite.tolerance is not None:
+        return suite.tolerance[0], suite.tolerance[1]
+    if suite.target.edition is Edition.E2009:
+        return CODE_LOWER_TOLERANCE, math.inf
+    return CODE_LOWER_TOLERANCE, CODE_UPPER_TOLERANCE_2018
+
+
+def read_entries(settings: SuiteSettings) -> list[Record]:
+    """Every record of the suite, read and scaled; InputError naming the suite file and the
+    record entry when one does not read, is zero everywhere, or scales out of bounds."""
+    return [
+        scaled(read_entry(entry, settings.file), entry, settings.file) for entry in settings.entries
+    ]
+
+
+def read_entry(entry: SuiteEntry, file: str) -> Record:
+    """One record as read (InputError naming the suite file and the entry)."""
+    from rockcli.records.files import read_record
+
+    try:
+        record = read_record(entry.path)
+    except InputError as exc:
+        raise InputError(
+            f"record {entry.name!r} does not read: {printable(exc.render())}",
+            file=file,
+            where=f"{entry.where}.path",
+            value=str(entry.path),
+            allowed="a readable record: PEER AT2, ESM ASCII, ITACA cor.acc or plain text",
+        ) from None
+    if not record.pga > 0.0:
+        raise InputError(
+            f"record {entry.name!r} is zero everywhere (PGA 0)",
+            file=file,
+            where=f"{entry.where}.path",
+            value=str(entry.path),
+            allowed="a record with motion in it",
+        )
+    return record
+
+
+def scaled(record: Record, entry: SuiteEntry, file: str) -> Record:
+    """The record times its scale (InputError when the scaled PGA is implausible)."""
+    from rockcli.records.transform import scale
+
+    if entry.scale == 1.0:
+        return record
+    try:
+        return scale(record, entry.scale)
+    except InputError as exc:
+        raise InputError(
+            exc.problem,
+            file=file,
+            where=f"{entry.where}.scale",
+            value=entry.scale,
+            allowed=exc.allowed,
+        ) from None

@@ -1,0 +1,159 @@
+"""`rock suite check`: the suite file, its records, the target spectrum and the check, as data."""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+from rockcli.codecheck.categories import Edition
+from rockcli.codecheck.spectra import ElasticSpectrum, return_period
+from rockcli.errors import InputError
+from rockcli.records.record import Record
+from rockcli.suites.compat import (
+    AutoScale,
+    Compatibility,
+    auto_scale,
+    compatibility,
+    count_rule,
+    period_grid,
+    record_spectra,
+    target_spectrum,
+)
+from rockcli.suites.load import SuiteSettings, read_entries
+from rockcli.suites.schema import Target
+
+#: The year of the code text of each edition (rock names editions by their Circolare).
+CODE_YEAR = {Edition.E2009: "2008", Edition.E2019: "2018"}
+#: Version of the JSON document of `rock suite check`.
+SCHEMA_VERSION = 1
+
+
+@dataclass(frozen=True)
+class TargetSpectrum:
+    """The target: the code spectrum, its return period [years] and where ag, F0, TC* came
+    from."""
+
+    spectrum: ElasticSpectrum
+    TR: float
+    source: str
+
+
+def target_of(target: Target, grid_file: str | None) -> TargetSpectrum:
+    """The elastic spectrum of the limit state's TR (NTC §3.2.1, §3.2.3.2.1).
+
+    With a site, ag, F0 and TC* come from the hazard grid at TR = −VN·CU/ln(1 − P_VR)
+    (DM 14/01/2008 Allegato A); with the parameters given, they are used as they are.
+    """
+    TR = return_period(target.VN, target.CU, target.limit_state, target.edition)
+    site, given = target.site, target.parameters
+    if given is not None:
+        (ag, F0, Tc_star), source = given, "given in the suite"
+    elif site is not None:
+        from rockcli.codecheck.hazard import grid_path, read_grid, site_parameters
+
+        ag, F0, Tc_star = site_parameters(read_grid(grid_path(grid_file)), *site, TR)
+        source = f"hazard grid at {site[0]:.4f} E, {site[1]:.4f} N"
+    else:  # the suite's rules refuse a target without either
+        raise InputError("no site and no parameters", where="target")
+    spectrum = ElasticSpectrum(ag, F0, Tc_star, target.soil, target.topography)
+    return TargetSpectrum(spectrum, TR, source)
+
+
+@dataclass(frozen=True)
+class SuiteCheck:
+    """Everything the command shows."""
+
+    settings: SuiteSettings
+    records: list[Record]
+    target: TargetSpectrum
+    spectra: np.ndarray
+    check: Compatibility
+    auto: AutoScale | None
+    scaled: Compatibility | None
+
+
+def run_suite_check(
+    settings: SuiteSettings, grid_file: str | None, *, scale_auto: bool = False
+) -> SuiteCheck:
+    """Read the records, compute their spectra, the mean and the check (and the auto factor)."""
+    try:
+        target = target_of(settings.target, grid_file)
+    except InputError as exc:  # a site outside the grid: name the suite file
+        raise exc.with_file(settings.file) from None
+    records = read_entries(settings)
+    periods = period_grid(*settings.period_range)
+    spectra = record_spectra(records, periods)
+    check = compatibility(
+        periods, target_spectrum(target.spectrum, periods), spectra.mean(axis=0), settings.tolerance
+    )
+    auto = scaled = None
+    if scale_auto:
+        auto = auto_scale(check.ratio, settings.tolerance)
+        if auto.factor is not None:
+            mean = check.mean * auto.factor
+            scaled = compatibility(periods, check.target, mean, settings.tolerance)
+    return SuiteCheck(settings, records, target, spectra, check, auto, scaled)
+
+
+def _bound(x: float) -> float | None:
+    return x if math.isfinite(x) else None
+
+
+def check_numbers(check: Compatibility) -> dict[str, Any]:
+    """The verdict of one check: passed, the worst ratio and its period."""
+    i = check.worst_index
+    return {
+        "passed": check.passed,
+        "worst_ratio": float(check.ratio[i]),
+        "worst_period": float(check.periods[i]),
+        "min_ratio": float(check.ratio.min()),
+        "max_ratio": float(check.ratio.max()),
+    }
+
+
+def suite_document(result: SuiteCheck) -> dict[str, Any]:
+    """The JSON document of `rock suite check` (full precision)."""
+    s, check, target = result.settings, result.check, result.target
+    spectrum = target.spectrum
+    doc: dict[str, Any] = {
+        "schema": SCHEMA_VERSION,
+        "suite": s.name,
+        "passed": check.passed,
+        "period_range": list(s.period_range),
+        "tolerance": [_bound(s.tolerance[0]), _bound(s.tolerance[1])],
+        "count": len(result.records),
+        "count_rule": count_rule(len(result.records)).value,
+        **{k: v for k, v in check_numbers(check).items() if k != "passed"},
+        "target_parameters": {
+            "limit_state": s.target.limit_state.value,
+            "edition": CODE_YEAR[s.target.edition],
+            "TR": target.TR,
+            "ag": spectrum.ag,
+            "F0": spectrum.F0,
+            "Tc_star": spectrum.Tc_star,
+            "soil": spectrum.soil.value,
+            "topography": spectrum.topography.value,
+            "S": spectrum.S,
+            "source": target.source,
+        },
+        "periods": check.periods.tolist(),
+        "target": check.target.tolist(),
+        "mean": check.mean.tolist(),
+        "ratio": check.ratio.tolist(),
+        "within": check.within.tolist(),
+        "records": [
+            {"name": e.name, "scale": e.scale, "pga_g": r.pga, "file": str(e.path), "Sa": sa}
+            for e, r, sa in zip(s.entries, result.records, result.spectra.tolist(), strict=True)
+        ],
+    }
+    if result.auto is not None:
+        scaled = check_numbers(result.scaled) if result.scaled is not None else {"passed": False}
+        doc["scale_auto"] = {
+            "factor": result.auto.factor,
+            "feasible": result.auto.feasible,
+            **scaled,
+        }
+    return doc

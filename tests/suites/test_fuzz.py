@@ -1,0 +1,110 @@
+"""The suite reader on random TOML-ish tables: a valid suite or one InputError, never a
+traceback (bounded: 150 examples, no record is read)."""
+
+from __future__ import annotations
+
+import copy
+from typing import Any
+
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
+from rockcli.errors import InputError
+from rockcli.suites.load import resolve, validate_suite
+from rockcli.suites.schema import Suite
+
+#: Values of every kind a TOML file can hold (and a few it cannot, e.g. None).
+SCALARS = st.one_of(
+    st.none(),
+    st.booleans(),
+    st.integers(-10, 10),
+    st.floats(allow_nan=True, allow_infinity=True),
+    st.text(max_size=8),
+    st.sampled_from(["SLV", "SLX", "A", "T5", "2018", "2008", "../x.AT2", ""]),
+)
+VALUES = st.recursive(
+    SCALARS,
+    lambda inner: st.lists(inner, max_size=4) | st.dictionaries(st.text(max_size=6), inner),
+    max_leaves=12,
+)
+RECORD = st.fixed_dictionaries(
+    {"path": st.one_of(st.text(max_size=6), VALUES)},
+    optional={"name": VALUES, "scale": VALUES, "extra": VALUES},
+)
+TARGET = st.fixed_dictionaries(
+    {},
+    optional={
+        k: st.one_of(st.floats(-200, 200), VALUES)
+        for k in ("lon", "lat", "ag", "F0", "Tc_star", "VN", "CU")
+    }
+    | {k: VALUES for k in ("limit_state", "edition", "soil", "topography")},
+)
+SUITES = st.fixed_dictionaries(
+    {},
+    optional={
+        "name": st.one_of(st.text(max_size=6), VALUES),
+        "records": st.one_of(st.lists(RECORD, max_size=8), VALUES),
+        "target": st.one_of(TARGET, VALUES),
+        "period_range": st.one_of(st.lists(st.floats(-1, 5), max_size=3), VALUES),
+        "tolerance": st.one_of(st.lists(st.floats(-2, 2), max_size=3), VALUES),
+        "other": VALUES,
+    },
+)
+
+
+def check_suite_table(data: dict[str, Any]) -> None:
+    """A valid suite (every rule holds after resolving) or one InputError line naming the
+    file."""
+    try:
+        suite = validate_suite(data, "fuzz.toml")
+    except InputError as exc:
+        line = str(exc)
+        assert line.startswith("fuzz.toml: ") and "\n" not in line, line
+        return
+    assert isinstance(suite, Suite) and len(suite.records) >= 3
+    settings_ = resolve(suite, "fuzz.toml", None)
+    lo, hi = settings_.period_range
+    assert 0 < lo < hi
+    assert -1 < settings_.tolerance[0] < settings_.tolerance[1]
+
+
+@settings(max_examples=150, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(SUITES)
+def test_random_table_is_a_suite_or_one_input_error(data: dict[str, Any]) -> None:
+    check_suite_table(data)
+
+
+#: A valid suite table: the fuzz below damages one key of it at a time.
+VALID = {
+    "name": "s",
+    "records": [{"path": f"r{i}.txt", "scale": 1.0} for i in range(3)],
+    "target": {"ag": 0.25, "F0": 2.5, "Tc_star": 0.3, "limit_state": "SLV"},
+    "period_range": [0.15, 2.0],
+    "tolerance": [-0.1, 0.3],
+}
+#: Where the fuzz can damage it: (table path, key).
+SPOTS = [
+    ((), "name"),
+    ((), "period_range"),
+    ((), "tolerance"),
+    ((), "records"),
+    (("records", 0), "path"),
+    (("records", 1), "scale"),
+    (("records", 2), "name"),
+    (("target",), "ag"),
+    (("target",), "lon"),
+    (("target",), "limit_state"),
+    (("target",), "edition"),
+    (("target",), "soil"),
+]
+
+
+@settings(max_examples=150, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(st.sampled_from(SPOTS), VALUES)
+def test_damaged_valid_suite_is_a_suite_or_one_input_error(spot: Any, value: Any) -> None:
+    data = copy.deepcopy(VALID)
+    table: Any = data
+    for part in spot[0]:
+        table = table[part]
+    table[spot[1]] = value
+    check_suite_table(data)
