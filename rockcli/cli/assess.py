@@ -8,10 +8,12 @@ from rockcli.cli.exits import EXIT_GATE
 from rockcli.cli.options import (
     announce_written,
     check_outputs,
+    check_record_options,
     engine_option,
     exit_if_non_finite,
     force_option,
     ground_option,
+    hazard_grid_option,
     load_record,
     output_format,
     with_record_options,
@@ -24,7 +26,24 @@ EXIT_OVERTURNS = EXIT_GATE
 
 @click.command()
 @click.argument("model_path", metavar="MODEL", type=click.Path(dir_okay=False))
-@with_record_options()
+@with_record_options(required=False)
+@click.option(
+    "--suite",
+    "suite_path",
+    type=click.Path(dir_okay=False),
+    default=None,
+    help="A record suite file (TOML; rock suite check): every record, both polarities, and "
+    "the code's rule (the mean over 7 or more records, the worst over 3–6).",
+)
+@hazard_grid_option
+@click.option(
+    "--jobs",
+    "-j",
+    type=click.IntRange(min=1),
+    default=1,
+    show_default=True,
+    help="With --suite: workers, this process and N − 1 worker processes.",
+)
 @engine_option
 @ground_option
 @click.option(
@@ -51,6 +70,9 @@ def assess(
     units,
     scale,
     pga,
+    suite_path,
+    grid_file,
+    jobs,
     engine,
     ground,
     history_path,
@@ -59,10 +81,14 @@ def assess(
     force,
     output,
 ):
-    """Rocking time history of MODEL under a record, both polarities, with the verdict."""
+    """Rocking time history of MODEL under a record (or every record of a suite), both
+    polarities, with the verdict."""
     from rockcli.report.assess import assessment_output_document
     from rockcli.studies.assess import run_assessment_output
 
+    if one_record_or_suite(record_path, suite_path, history_path, plot_path, grid_file):
+        check_record_options(None, record_format, dt, units, scale, pga)
+        return assess_with_suite(model_path, suite_path, grid_file, engine, ground, jobs, output)
     check_outputs(force, history=history_path, plot=plot_path)
     record = load_record(record_path, record_format, dt, units, scale, pga)
     history = history_path is not None or plot_path is not None
@@ -93,3 +119,51 @@ def assess(
     exit_if_non_finite(doc["runs"])
     if fail_on_overturn and doc["verdict"] == "overturns":
         raise SystemExit(EXIT_OVERTURNS)
+
+
+def one_record_or_suite(record_path, suite_path, history_path, plot_path, grid_file) -> bool:
+    """True for --suite, False for --record; InputError for both, neither, or a one-record
+    option with --suite (a history or a plot is one record's)."""
+    from rockcli.errors import InputError
+
+    if (record_path is None) == (suite_path is None):
+        where, value = ("--suite", suite_path) if record_path else ("--record", None)
+        raise InputError(
+            "give one record or one suite" if record_path else "missing",
+            where=where,
+            value=value,
+            allowed="--record FILE, or --suite SUITE.toml",
+        )
+    if suite_path is None:
+        if grid_file is not None:
+            raise InputError(
+                "applies only to a suite whose target is a site",
+                where="--hazard-grid",
+                value=grid_file,
+                allowed="--suite SUITE.toml with a [target] lon, lat",
+            )
+        return False
+    for option, value in (("--history", history_path), ("--plot", plot_path)):
+        if value is not None:
+            raise InputError(
+                "is one record's: not with --suite",
+                where=option,
+                value=value,
+                allowed=f"--record FILE with {option}",
+            )
+    return True
+
+
+def assess_with_suite(model_path, suite_path, grid_file, engine, ground, jobs, output) -> None:
+    """Every record of the suite through the time history, the code's rule, the report."""
+    from rockcli.report.suite import suite_assessment_document, suite_assessment_report
+    from rockcli.report.sweep import progress_bar
+    from rockcli.report.table import show
+    from rockcli.studies.suite.assess import assess_suite
+
+    with progress_bar(None) as bar:
+        result = assess_suite(
+            model_path, suite_path, grid_file, engine=engine, ground=ground, jobs=jobs,
+            progress=bar,
+        )  # fmt: skip
+    show(suite_assessment_document(result), output, suite_assessment_report)

@@ -13,6 +13,7 @@ from collections.abc import Mapping, Sequence
 from typing import Any
 
 from rockcli.report.table import Column, Report, Table, key_value
+from rockcli.studies.suite.assess import SuiteAssessment
 from rockcli.studies.suite.rule import SuiteMeasure
 
 #: What the code does with a suite of this size (NTC §3.2.3.6).
@@ -166,3 +167,50 @@ def history_verdict(doc: Mapping[str, Any]) -> str:
     if compat is not None and not compat["passed"]:
         line += " — the suite is not compatible with its target spectrum"
     return line
+
+
+#: What shook the block, as the report says it.
+INPUT_TEXT = {
+    "ground": "each record itself, at the block's base",
+    "floor": "each record's floor motion at the block's height (--ground: the record itself)",
+}
+#: The code's rule as the report says it.
+RULE_TEXT = {"mean": "the mean over 7 or more records", "worst": "the worst of 3–6 records"}
+
+
+def suite_assessment_document(sa: SuiteAssessment) -> dict[str, Any]:
+    """The whole `rock assess MODEL --suite SUITE --format json` document."""
+    from rockcli import __version__
+
+    return {
+        "schema": 1,
+        "rock_version": __version__,
+        "model": {"name": sa.name, "kind": sa.kind},
+        "suite_name": sa.suite,
+        "input": sa.rows[0].get("input", "ground") if sa.rows else "ground",
+        "suite": history_document(sa.measure, sa.rows, sa.compatibility),
+        "warnings": [],
+    }
+
+
+def suite_assessment_report(doc: dict[str, Any]) -> Report:
+    """The terminal report of a model under a suite: the records, the rule, the verdict."""
+    suite = doc["suite"]
+    compat = suite["compatibility"]
+    lo, hi = compat["period_range"]
+    notes = (
+        f"suite {doc['suite_name']!r}: mean spectrum / target from {compat['min_ratio']:.3f} to "
+        f"{compat['max_ratio']:.3f} over {lo:g}–{hi:g} s: "
+        + ("compatible" if compat["passed"] else "NOT compatible")
+        + " (rock suite check gives the table)",
+        f"rule: {RULE_TEXT[suite['rule']]} (NTC 2018 §7.3.5); an overturn counts at the "
+        "overturning angle over α",
+        f"input: {INPUT_TEXT[doc['input']]}",
+    )
+    return Report(
+        title=f"rock assess — {doc['model']['name']} under the suite {doc['suite_name']}",
+        tables=(history_records_table(suite),),
+        notes=notes,
+        verdict=history_verdict(suite),
+        warnings=tuple(doc["warnings"]),
+    )

@@ -81,6 +81,7 @@ def record_row(model: Any, item: SuiteRecord, engine: str, ground: bool, file: s
         "max_ratio": float(result.max_ratio),
         "overturned": any(r.overturned for r in result.runs),
         "verdict": str(result.verdict),
+        "input": "ground" if out.floor is None else "floor",
         "statuses": [str(r.status) for r in result.runs],
     }
 
