@@ -45,7 +45,8 @@ def _write_record(rec, output: str, detail: str) -> None:
 
 @click.group()
 def record() -> None:
-    """Ground-motion records: inspect, convert, generate a pulse, compute a floor motion."""
+    """Ground-motion records: inspect, convert, generate a pulse, compute a floor motion or
+    response spectra."""
 
 
 @record.command("info")

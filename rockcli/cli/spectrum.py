@@ -63,8 +63,8 @@ def spectrum(files, record_format, dt, units, scale, pga, damping, periods, outp
 
     Sd is the peak relative displacement of a linear oscillator (period T, damping ζ) at rest
     at the first sample, integrated exactly between samples, its free vibration after the
-    record included; Sa = ω²·Sd with ω = 2π/T (so Sa tends to the PGA as T → 0). --scale and
-    --pga apply to every record.
+    record included; Sa = ω²·Sd with ω = 2π/T (so Sa tends to the PGA as T → 0 for a record
+    that starts at rest). --scale and --pga apply to every record.
     """
     from rockcli.cli.options import load_record
     from rockcli.codecheck.response import response_spectrum
