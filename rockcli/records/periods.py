@@ -7,16 +7,19 @@ Two forms, one per value of the option:
   (``0.05:4:100``), like ``numpy.geomspace``.
 
 Every period lies in [MIN_PERIOD, MAX_PERIOD]; anything else is one InputError naming
-``--periods``, the value and the two forms. numpy only (no click).
+``--periods``, the value and the two forms. No click; numpy is imported inside the functions,
+so that the help of ``rock record spectrum`` reads the grid's constants without it.
 """
 
 from __future__ import annotations
 
 import math
-
-import numpy as np
+from typing import TYPE_CHECKING
 
 from rockcli.errors import InputError
+
+if TYPE_CHECKING:
+    import numpy as np
 
 #: The default grid: GRID_COUNT periods log-spaced from GRID_FIRST to GRID_LAST [s] …
 GRID_FIRST = 0.01
@@ -45,6 +48,8 @@ ALLOWED = (
 
 def default_periods() -> np.ndarray:
     """The default grid [s]: 100 log-spaced periods 0.01–4 s and the round ones, sorted."""
+    import numpy as np
+
     grid = np.geomspace(GRID_FIRST, GRID_LAST, GRID_COUNT)
     return np.unique(np.concatenate([grid, ROUND_PERIODS]))
 
@@ -55,6 +60,8 @@ def parse_periods(text: str | None) -> np.ndarray:
     Raises:
         InputError: empty, unparsable, non-finite, out of range, or too many periods.
     """
+    import numpy as np
+
     if text is None:
         return default_periods()
     body = text.strip()
@@ -86,6 +93,8 @@ def _parse_range(body: str, text: str) -> list[float]:
         raise _error("the count N of START:STOP:N is out of range", text)
     if not MIN_PERIOD <= start < stop <= MAX_PERIOD:
         raise _error("the range START:STOP:N needs START < STOP, both in range", text)
+    import numpy as np
+
     return [float(p) for p in np.geomspace(start, stop, n)]
 
 
