@@ -222,3 +222,13 @@ def test_more_records_than_a_table_shows() -> None:
 def test_scale_with_pga_is_refused() -> None:
     code, _, err = run(str(ONE_SINE), "--scale", "2", "--pga", "0.5")
     assert code == 2 and err.startswith("error: --scale: conflicts with --pga")
+
+
+def test_plot_is_an_svg_with_the_mean(tmp_path: Path) -> None:
+    """One line per record and, with two, their mean (its label in the SVG's legend)."""
+    pytest.importorskip("matplotlib")
+    path = tmp_path / "sa.svg"
+    code, _, _ = run(str(ONE_SINE), str(RICKER), "--plot", str(path), "--format", "json")
+    text = path.read_text(encoding="utf-8")
+    assert code == 0 and text.startswith("<?xml") and "<svg" in text
+    assert "mean of 2" in text and "ricker_Tp0.5s_0.5g" in text
