@@ -45,7 +45,8 @@ def _write_record(rec, output: str, detail: str) -> None:
 
 @click.group()
 def record() -> None:
-    """Ground-motion records: inspect, convert, generate a pulse, compute a floor motion."""
+    """Ground-motion records: inspect, convert, generate a pulse, compute a floor motion or
+    response spectra."""
 
 
 @record.command("info")
@@ -276,3 +277,13 @@ def _floor_record(rec, t1: float, psi: float, gamma: float, xi: float):
     from rockcli.studies.floor import Floor, floor_record
 
     return floor_record(rec, Floor(Z=None, T1=t1, psi=psi, gamma=gamma, xi=xi))
+
+
+def _register_spectrum() -> None:
+    """`rock record spectrum` lives in its own module (cli/spectrum.py)."""
+    from rockcli.cli.spectrum import spectrum
+
+    record.add_command(spectrum)
+
+
+_register_spectrum()

@@ -230,6 +230,34 @@ def free_vibration_peak(
     return np.maximum(np.abs(u), np.abs(turning))
 
 
+def step_overshoot(damping: float) -> float:
+    """Peak of a damped oscillator's response to a suddenly applied constant force, over the
+    static response: 1 + exp(−πζ/√(1 − ζ²)) (2 undamped).
+
+    Chopra, *Dynamics of Structures*, §4.3 (step force): u(t)/u_st = 1 − e^{−ζωt}(cos ω_D t +
+    ζ/√(1 − ζ²)·sin ω_D t), whose first and largest peak is at ω_D t = π.
+
+    Args:
+        damping: fraction of critical, 0 ≤ ζ < 1.
+    """
+    _check_damping(damping)
+    return 1.0 + math.exp(-math.pi * damping / math.sqrt(1.0 - damping * damping))
+
+
+def rigid_limit(accel_g: ArrayLike, damping: float) -> float:
+    """Sa [g] of a stiff oscillator (T → 0) at rest at the first sample of a record.
+
+    It follows the ground (Sa → PGA), except for a record that starts away from zero: the
+    jump from rest to a_g(0) is a step force, which it overshoots by :func:`step_overshoot`
+    (Chopra §4.3), so the limit is max(PGA, overshoot·|a_g(0)|).
+
+    Args:
+        accel_g: ground acceleration [g]. damping: fraction of critical, 0 ≤ ζ < 1.
+    """
+    a = np.asarray(accel_g, dtype=float)
+    return max(float(np.max(np.abs(a))), step_overshoot(damping) * abs(float(a[0])))
+
+
 def _check_record(time: ArrayLike, accel_g: ArrayLike) -> tuple[np.ndarray, np.ndarray]:
     t = np.asarray(time, dtype=float)
     a = np.asarray(accel_g, dtype=float)

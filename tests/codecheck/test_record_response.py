@@ -202,3 +202,21 @@ def test_lengths_must_agree() -> None:
 def test_negative_period_refused() -> None:
     with pytest.raises(InputError, match="periods"):
         response_spectrum(np.linspace(0, 1, 11), np.zeros(11), [-0.5])
+
+
+# --- the short-period limit ---------------------------------------------------------------------
+
+
+def test_step_overshoot_undamped_is_two() -> None:
+    """Chopra §4.3: a suddenly applied force on an undamped oscillator peaks at 2·u_st."""
+    assert response.step_overshoot(0.0) == 2.0
+
+
+def test_rigid_limit_is_the_pga_for_a_record_from_rest() -> None:
+    assert response.rigid_limit([0.0, 0.3, -0.4, 0.1], 0.05) == 0.4
+
+
+def test_rigid_limit_of_a_record_starting_off_zero() -> None:
+    """Starting at 0.3 g, peak 0.4 g: the step overshoots, 1 + e^{−πζ/√(1−ζ²)} (Chopra §4.3)."""
+    overshoot = 1 + math.exp(-math.pi * 0.05 / math.sqrt(1 - 0.05**2))  # 1.8545
+    assert response.rigid_limit([0.3, 0.4, 0.0], 0.05) == pytest.approx(0.3 * overshoot, rel=1e-15)

@@ -39,6 +39,7 @@ EXAMPLE_COMMANDS = (
     "init",
     "record info",
     "record pulse",
+    "record spectrum",
     "assess",
     "kinematic",
     "compare",
