@@ -16,10 +16,11 @@ from __future__ import annotations
 import math
 from collections.abc import Mapping, Sequence
 from enum import StrEnum
-from typing import Any
+from typing import Annotated, Any
 
 from pydantic import Field, model_validator
 
+from rockcli.codecheck.categories import LimitState
 from rockcli.codecheck.steel import GAMMA_M0, GRADES, rod_area
 from rockcli.model.bounds import (
     MAX_LENGTH,
@@ -315,7 +316,17 @@ class Analysis(Table):
         description="Use the linearized equation (sin x ≈ x, cos x ≈ 1); default false",
     )
     g: float = number("Gravity; default 9.81 [m/s²]", DEFAULT_GRAVITY, gt=0)
+    limit_ratio: dict[LimitState, LimitRatio] | None = Field(
+        None,
+        description="A record suite's limit on its measure of max θ/α, per limit state of the "
+        "suite's target, e.g. {SLV = 1.0, SLC = 1.5}; default 1, the static instability [-]",
+    )
 
+
+#: Largest limit of a suite's measure of max θ/α: the overturning angle π/2 over the most
+#: slender block's α would be larger still, but a limit past 100 no longer limits anything.
+MAX_LIMIT_RATIO = 100.0
+LimitRatio = Annotated[float, Field(strict=True, gt=0, le=MAX_LIMIT_RATIO, allow_inf_nan=False)]
 
 #: The three ways of placing a restrainer's attachment point.
 PLACEMENTS = (("radius", "angle"), ("height", "from_pivot"), ("position",))

@@ -204,7 +204,7 @@ OTHER_KEYS: dict[str, dict[str, Any]] = {
     "mass": {"weight": 100.0, "unit_weight": 18.0},
     "restitution": {"model": "explicit", "factor": 0.9, "e": 0.8},
     "motion": {"sides": "one", "stopped": "negative", "rebound": 1.0},
-    "analysis": {"tail": 10.0, **_ANALYSIS},
+    "analysis": {"tail": 10.0, **_ANALYSIS, "limit_ratio": {"SLV": 1.0}},
     "restrainers": {
         "name": "spring at the top",
         "kind": "spring",
@@ -376,7 +376,10 @@ def _absent_tables(present: set[str]) -> Iterator[str]:
 
 
 def _key_line(key: str, value: Any) -> str:
-    """``key = value`` as tomli-w writes it."""
+    """``key = value`` as tomli-w writes it; a table value as an inline table, on one line."""
+    if isinstance(value, dict):
+        inner = ", ".join(_key_line(str(k), v) for k, v in value.items())
+        return f"{key} = {{{inner}}}"
     return dumps({key: value}).strip()
 
 

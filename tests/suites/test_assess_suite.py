@@ -97,3 +97,25 @@ def test_neither_a_record_nor_a_suite_is_one_line() -> None:
 def test_a_hazard_grid_without_a_suite_is_one_line() -> None:
     code, _, err = run("assess", str(WALL), "--record", str(PULSES[0]), "--hazard-grid", "g.txt")
     assert code == 2 and "--hazard-grid" in err
+
+
+def test_the_models_limit_for_the_targets_limit_state_applies(tmp_path: Path) -> None:
+    # [analysis] limit_ratio = {SLV = 0.05}: the suite's target is SLV (its default), so the
+    # measure is held to 0.05 instead of 1; another state's limit does not apply.
+    suite = suite_file(tmp_path)
+    text = WALL.read_text(encoding="utf-8")
+    assert "[analysis]" not in text
+    for limits, expected in (("{SLV = 0.05}", 0.05), ("{SLC = 0.05}", 1.0)):
+        model = tmp_path / "wall.toml"
+        model.write_text(f"{text}\n[analysis]\nlimit_ratio = {limits}\n", encoding="utf-8")
+        doc = json.loads(run("assess", str(model), "--suite", str(suite), "--format", "json")[1])
+        assert doc["suite"]["limit_ratio"] == expected
+
+
+@pytest.mark.parametrize("limits", ["{SLX = 1.0}", "{SLV = 0}", "{SLV = -1}", "{SLV = 1e9}"])
+def test_a_bad_limit_is_one_line(tmp_path: Path, limits: str) -> None:
+    model = tmp_path / "wall.toml"
+    model.write_text(f"{WALL.read_text()}\n[analysis]\nlimit_ratio = {limits}\n")
+    code, out, err = run("assess", str(model), "--suite", str(suite_file(tmp_path)))
+    assert code == 2 and out == "" and err.count("\n") == 1
+    assert "analysis.limit_ratio" in err

@@ -33,11 +33,11 @@ def assess_suite(
     engine: str = "fast",
     ground: bool = False,
     jobs: int = 1,
-    limit_ratio: float = DEFAULT_LIMIT_RATIO,
     progress: Callable[[int, int], None] | None = None,
 ) -> SuiteAssessment:
     """Both polarities of the model under every record of the suite (its scales applied), on
-    ``jobs`` local workers, and the suite measure by the code's rule (rule.suite_measure).
+    ``jobs`` local workers, and the suite measure by the code's rule (rule.suite_measure)
+    against the model's limit for the suite target's limit state (limit_for).
 
     The compatibility check runs first: a suite that fails it still runs, and says so.
     """
@@ -58,7 +58,8 @@ def assess_suite(
         rows = run_suite(
             table, items, lanes, engine=engine, ground=ground, file=model_path, progress=progress
         )
-    measure = suite_measure(outcomes(rows), limit_ratio)  # ValueError: a worker died twice
+    limit = limit_for(model, settings.target.limit_state.value)
+    measure = suite_measure(outcomes(rows), limit)  # ValueError: a worker died twice
     numbers = check_numbers(check.check)
     compatibility = {
         "passed": numbers["passed"],
@@ -67,3 +68,12 @@ def assess_suite(
         "max_ratio": numbers["max_ratio"],
     }
     return SuiteAssessment(model.name, str(model.kind), settings.name, rows, measure, compatibility)
+
+
+def limit_for(model: Any, limit_state: str) -> float:
+    """The model's ``analysis.limit_ratio`` for the limit state, else θ/α = 1."""
+    limits = model.analysis.limit_ratio or {}
+    for state, value in limits.items():
+        if str(state) == limit_state:
+            return float(value)
+    return DEFAULT_LIMIT_RATIO
