@@ -14,6 +14,7 @@ from rockcli.cli.options import (
     force_option,
     ground_option,
     hazard_grid_option,
+    jobs_option,
     load_record,
     output_format,
     with_record_options,
@@ -36,14 +37,7 @@ EXIT_OVERTURNS = EXIT_GATE
     "the code's rule (the mean over 7 or more records, the worst over 3–6).",
 )
 @hazard_grid_option
-@click.option(
-    "--jobs",
-    "-j",
-    type=click.IntRange(min=1),
-    default=1,
-    show_default=True,
-    help="With --suite: workers, this process and N − 1 worker processes.",
-)
+@jobs_option("With --suite: workers, this process and N − 1 worker processes.")
 @engine_option
 @ground_option
 @click.option(

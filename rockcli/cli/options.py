@@ -54,6 +54,13 @@ hazard_grid_option = click.option(
 )
 
 
+def jobs_option(help_text: str):
+    """``--jobs/-j N``: local workers, this process and N − 1 worker processes."""
+    return click.option(
+        "--jobs", "-j", type=click.IntRange(min=1), default=1, show_default=True, help=help_text
+    )
+
+
 def record_options(required: bool) -> list:
     """The options that name a record and transform it."""
     return [

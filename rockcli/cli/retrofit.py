@@ -12,6 +12,7 @@ from rockcli.cli.options import (
     exit_if_non_finite,
     force_option,
     ground_option,
+    jobs_option,
     load_record,
     output_format,
     with_record_options,
@@ -52,14 +53,9 @@ EXIT_NONE = 1
     default=None,
     help="Bars side by side [default: the model's tie-rod's, else 1].",
 )
-@click.option(
-    "--jobs",
-    "-j",
-    type=click.IntRange(min=1),
-    default=1,
-    show_default=True,
-    help="Workers: this process and N − 1 worker processes (a candidate takes about 10 ms "
-    "on a 40 s record: more pays off for long records or the reference engine).",
+@jobs_option(
+    "Workers: this process and N − 1 worker processes (a candidate takes about 10 ms "
+    "on a 40 s record: more pays off for long records or the reference engine)."
 )
 @click.option(
     "--progress/--no-progress",
