@@ -71,6 +71,8 @@ _released_energy = njit(cache=CACHE)(rules.released_energy)
 _any_plastic = njit(cache=CACHE)(rules.any_plastic)
 _rest_moment = njit(cache=CACHE)(rules.rest_moment)
 _member_force = njit(cache=CACHE, inline="always")(rules.member_force)
+register_jitable(rules.elongation_on_side)
+_restrainer_force = njit(cache=CACHE)(rules.restrainer_force)
 _rhs = njit(cache=CACHE, inline="always")(rules.angular_acceleration)
 _loaded_rhs = njit(cache=CACHE)(
     rules.loaded_angular_acceleration
@@ -645,15 +647,7 @@ def _store(hist_th, hist_om, hist_f, i_from, i_to, th, om, s, springs, alive, li
         hist_th[k] = th
         hist_om[k] = om
         for j in range(hist_f.shape[1]):
-            force = 0.0
-            if alive[j] != 0:
-                for side in (1, -1):
-                    if s == 0 or side == s:
-                        kk, _, _, _ = _spring_on_side(springs, j, side)
-                        if kk != 0.0:
-                            u = _elongation_on_side(springs, j, side, a, lin)
-                            force = max(force, _member_force(springs, j, side, kk, u))
-            hist_f[k, j] = force
+            hist_f[k, j] = _restrainer_force(springs, alive, j, s, a, lin)
 
 
 @njit(cache=CACHE)

@@ -482,19 +482,7 @@ def _store(
         hist_th[i] = phase.th
         hist_om[i] = phase.om
         for j in range(hist_f.shape[1]):
-            hist_f[i, j] = _member_force_now(phase, j)
-
-
-def _member_force_now(phase: _Phase, j: int) -> float:
-    """Restrainer j's force in the current state (kernel.py's _store_forces)."""
-    if not phase.alive[j]:
-        return 0.0
-    force = 0.0
-    for side in (1, -1):
-        if phase.s == 0 or side == phase.s:
-            k, _, _, _ = rules.spring_on_side(phase.springs, j, side)
-            if k != 0.0:
-                a = phase.s * phase.th if phase.s else 0.0
-                u = rules.elongation_on_side(phase.springs, j, side, a, phase.lin)
-                force = max(force, rules.member_force(phase.springs, j, side, k, u))
-    return force
+            a = phase.s * phase.th if phase.s else 0.0
+            hist_f[i, j] = rules.restrainer_force(
+                phase.springs, phase.alive, j, phase.s, a, phase.lin
+            )

@@ -120,6 +120,22 @@ def spring_arm(r, sin_phi, cos_phi, sin_a, cos_a, linearized):
     return r * cos_minus(sin_phi, cos_phi, sin_a, cos_a)
 
 
+def restrainer_force(springs, alive, j, s, a, linearized):
+    """Restrainer row j's force in the current state [N]: its member's on pivot side s at
+    rotation a; at rest (s = 0) the larger of its two members' forces at a = 0 (a
+    pretension); 0 once it is lost. What the engines store in a run's history."""
+    force = 0.0
+    if alive[j] == 0:
+        return force
+    for side in (1, -1):
+        if s == 0 or side == s:
+            k, _, _, _ = spring_on_side(springs, j, side)
+            if k != 0.0:
+                u = elongation_on_side(springs, j, side, a, linearized)
+                force = max(force, member_force(springs, j, side, k, u))
+    return force
+
+
 def member_moment(springs, j, s, k, r, sin_phi, cos_phi, a, sin_a, cos_a, linearized):
     """F·r·cos(φ − a): the restoring moment of row j's member on side s [N·m].
 

@@ -21,7 +21,7 @@ from typing import Annotated, Any
 from pydantic import Field, model_validator
 
 from rockcli.codecheck.categories import LimitState
-from rockcli.codecheck.steel import GAMMA_M0, GRADES, rod_area
+from rockcli.codecheck.steel import GRADES, rod_area, tension_resistance
 from rockcli.model.bounds import (
     MAX_LENGTH,
     MAX_MODULUS,
@@ -547,9 +547,9 @@ class Restrainer(Table):
             return math.inf, math.inf
         if self.kind is RestrainerKind.TIE_ROD:
             assert self.diameter is not None
-            fy = GRADES[self.grade.value][0] if self.grade is not None else self.fy
-            assert fy is not None
-            force = rod_area(self.diameter, self.count or 1) * fy / GAMMA_M0
+            fy, fu = GRADES[self.grade.value] if self.grade is not None else (self.fy, self.fu)
+            assert fy is not None and fu is not None
+            force = tension_resistance(rod_area(self.diameter, self.count or 1), fy, fu).plastic
             return force, force
         pos = math.inf if self.yield_pos is None else self.yield_pos
         neg = math.inf if self.yield_neg is None else self.yield_neg
