@@ -8,12 +8,14 @@ from rockcli.cli.options import (
     announce_written,
     check_hazard_grid,
     check_outputs,
+    check_record_options,
     edition_option,
     engine_option,
     exit_if_non_finite,
     force_option,
     ground_option,
     hazard_grid_option,
+    jobs_option,
     load_record,
     output_format,
     with_record_options,
@@ -31,8 +33,10 @@ CLASSIFICATIONS = (
     "code-unconservative",
     "undetermined",
 )
-#: The values of --code-demand (rockcli.studies.compare.CodeDemand).
-CODE_DEMANDS = ("record", "model")
+#: The values of --code-demand with --record (rockcli.studies.compare.CodeDemand) and with
+#: --suite (rockcli.studies.suite.compare.SuiteCodeDemand); the first of each is the default.
+RECORD_DEMANDS = ("record", "model")
+SUITE_DEMANDS = ("target", "suite-mean")
 
 
 def refuse_record_demand(record_demand: bool) -> None:
@@ -49,18 +53,28 @@ def refuse_record_demand(record_demand: bool) -> None:
 
 @click.command()
 @click.argument("model_path", metavar="MODEL", type=click.Path(dir_okay=False))
-@with_record_options()
+@with_record_options(required=False)
+@click.option(
+    "--suite",
+    "suite_path",
+    type=click.Path(dir_okay=False),
+    default=None,
+    help="A record suite file (TOML; rock suite check): every record through the time "
+    "history by the code's rule, against the code check on the suite's target spectrum.",
+)
+@jobs_option("With --suite: workers, this process and N − 1 worker processes.")
 @edition_option
 @engine_option
 @ground_option
 @click.option(
     "--code-demand",
-    type=click.Choice(CODE_DEMANDS),
-    default="record",
-    show_default=True,
-    help="The code check's demand: the record's response spectrum (one earthquake on both "
-    "sides), or the model's own code spectrum ([ntc.demand] or [ntc.site]; the two sides then "
-    "see different earthquakes).",
+    type=click.Choice(RECORD_DEMANDS + SUITE_DEMANDS),
+    default=None,
+    help="The code check's demand. With --record: record (default), the record's response "
+    "spectrum (one earthquake on both sides), or model, the model's own code spectrum "
+    "([ntc.demand] or [ntc.site]; the two sides then see different earthquakes). With "
+    "--suite: target (default), the suite's target spectrum, or suite-mean, the mean "
+    "spectrum of its records.",
 )
 @click.option("--record-demand", is_flag=True, hidden=True)
 @hazard_grid_option
@@ -83,6 +97,8 @@ def compare(
     units,
     scale,
     pga,
+    suite_path,
+    jobs,
     edition,
     engine,
     ground,
@@ -94,7 +110,9 @@ def compare(
     force,
     output,
 ):
-    """Kinematic check and rocking time history of MODEL on the same record, side by side."""
+    """Kinematic check and rocking time history of MODEL on the same record (or suite of
+    records), side by side."""
+    from rockcli.cli.assess import one_record_or_suite
     from rockcli.report.compare import (
         comparison_output_document,
         comparison_report,
@@ -104,6 +122,16 @@ def compare(
     from rockcli.studies.compare import run_comparison_output
 
     refuse_record_demand(record_demand)
+    with_suite = one_record_or_suite(record_path, suite_path, None, plot_path, None)
+    code_demand = demand_for(code_demand, with_suite)
+    if with_suite:
+        check_record_options(None, record_format, dt, units, scale, pga)
+        doc = compare_with_suite(
+            model_path, suite_path, grid_file, code_demand, edition, engine, ground, jobs, output
+        )
+        if doc["classification"] in fail_on:
+            raise SystemExit(EXIT_FAIL_ON)
+        return
     check_hazard_grid(
         grid_file, model_path, demand_from="--record" if code_demand == "record" else None
     )
@@ -132,3 +160,40 @@ def compare(
     exit_if_non_finite(doc["rocking"]["runs"])
     if doc["classification"] in fail_on:
         raise SystemExit(EXIT_FAIL_ON)
+
+
+def demand_for(code_demand: str | None, with_suite: bool) -> str:
+    """--code-demand's value, its default for a record or a suite; InputError for a value of
+    the other kind."""
+    from rockcli.errors import InputError
+
+    allowed = SUITE_DEMANDS if with_suite else RECORD_DEMANDS
+    if code_demand is None:
+        return allowed[0]
+    if code_demand not in allowed:
+        raise InputError(
+            "applies to " + ("a record, not a suite" if with_suite else "a suite (--suite)"),
+            where="--code-demand",
+            value=code_demand,
+            allowed=" or ".join(allowed) + (" with --suite" if with_suite else " with --record"),
+        )
+    return code_demand
+
+
+def compare_with_suite(
+    model_path, suite_path, grid_file, code_demand, edition, engine, ground, jobs, output
+) -> dict:
+    """The code check and every record of the suite, side by side; the document shown."""
+    from rockcli.report.suite import suite_comparison_document, suite_comparison_report
+    from rockcli.report.sweep import progress_bar
+    from rockcli.report.table import show
+    from rockcli.studies.suite.compare import compare_suite
+
+    with progress_bar(None) as bar:
+        result = compare_suite(
+            model_path, suite_path, grid_file, code_demand=code_demand, edition=edition,
+            engine=engine, ground=ground, jobs=jobs, progress=bar,
+        )  # fmt: skip
+    doc = suite_comparison_document(result)
+    show(doc, output, suite_comparison_report)
+    return doc

@@ -52,6 +52,30 @@ class ScaledSpectrum:
 
 
 @dataclass(frozen=True)
+class MeanSpectrum:
+    """The mean of several spectra, period by period (a record suite's mean spectrum).
+
+    NTC 2018 §3.2.3.6 judges a suite by the mean of its records' elastic spectra; used as a
+    demand, the mean's Se, SDe and PGA are the arithmetic means of the records' own.
+    """
+
+    spectra: tuple[Spectrum, ...]
+
+    def Se(self, T: float, xi: float = 5.0) -> float:  # noqa: N802
+        """The mean of the spectra's Se at T [g]."""
+        return sum(s.Se(T, xi) for s in self.spectra) / len(self.spectra)
+
+    def SDe(self, T: float, xi: float = 5.0) -> float:  # noqa: N802
+        """The mean of the spectra's SDe at T [m]."""
+        return sum(s.SDe(T, xi) for s in self.spectra) / len(self.spectra)
+
+    @property
+    def pga_ground(self) -> float:
+        """The mean of the spectra's PGA [g] (in place of ag·S, as for one record)."""
+        return sum(s.pga_ground for s in self.spectra) / len(self.spectra)
+
+
+@dataclass(frozen=True)
 class LimitStateDemand:
     """The demand of one limit state.
 
@@ -80,14 +104,20 @@ class LimitStateDemand:
         return self.at_ag(self.ag)
 
 
-def record_demand(limit_state: str, spectrum: Spectrum, name: str) -> LimitStateDemand:
+#: How a record's spectrum stands in for the code's (the report's "source").
+RECORD_SOURCE = "its response spectrum, PGA in place of ag·S"
+
+
+def record_demand(
+    limit_state: str, spectrum: Spectrum, name: str, source: str = RECORD_SOURCE
+) -> LimitStateDemand:
     """A record as the demand: ag ↔ its PGA, scaling linearly (spec/ntc.md)."""
     pga = spectrum.pga_ground
     return LimitStateDemand(
         limit_state=limit_state,
         ag=pga,
         at_ag=lambda ag: ScaledSpectrum(spectrum, ag / pga),
-        source="its response spectrum, PGA in place of ag·S",
+        source=source,
         record=name,
     )
 

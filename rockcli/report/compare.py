@@ -77,7 +77,7 @@ def _yes_no(value: bool | None, yes: str, no: str) -> str:
     return "not evaluated" if value is None else (yes if value else no)
 
 
-def _governing(kin: dict[str, Any], states: tuple[str, ...]) -> dict[str, Any] | None:
+def governing_check(kin: dict[str, Any], states: tuple[str, ...]) -> dict[str, Any] | None:
     """The check that decides the verdict: among the deciding checks (the non-linear ones
     when the analysis has them, else the linear ones; codecheck.result.deciding), the
     evaluated one with the smallest capacity/demand ratio."""
@@ -87,10 +87,10 @@ def _governing(kin: dict[str, Any], states: tuple[str, ...]) -> dict[str, Any] |
     return min(checks, key=lambda c: c["ratio"]) if checks else None
 
 
-def _code_cell(
+def code_cell(
     kin: dict[str, Any], states: tuple[str, ...], verdict: bool | None, what: tuple[str, str]
 ) -> str:
-    check = _governing(kin, states)
+    check = governing_check(kin, states)
     text = _yes_no(verdict, what[0], what[1])
     if check is None:
         return text
@@ -107,16 +107,16 @@ def comparison_rows(doc: dict[str, Any]) -> tuple[dict[str, str], ...]:
     act, col = doc["activation"], doc["collapse"]
     uplift = act["t_uplift"]
     over = col["t_overturn"]
-    uls = _governing(kin, ("ULS", "SLV", "SLC"))
+    uls = governing_check(kin, ("ULS", "SLV", "SLC"))
     rows = [
         {
             "label": "activation",
-            "code": _code_cell(kin, ("DLS", "SLD"), act["code"], ("activates", "stays at rest")),
+            "code": code_cell(kin, ("DLS", "SLD"), act["code"], ("activates", "stays at rest")),
             "rocking": f"uplifts at {uplift:.3f} s" if uplift is not None else "stays at rest",
         },
         {
             "label": "collapse",
-            "code": _code_cell(kin, ("ULS", "SLV", "SLC"), col["code"], ("collapses", "survives"))
+            "code": code_cell(kin, ("ULS", "SLV", "SLC"), col["code"], ("collapses", "survives"))
             + ("" if col["code"] is not None else f"; {ULTIMATE_FIX}"),
             "rocking": _yes_no(col["rocking"], "overturns", "survives")
             + (f" at {over:.3f} s" if over is not None else ""),

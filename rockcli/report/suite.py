@@ -14,6 +14,7 @@ from typing import Any
 
 from rockcli.report.table import Column, Report, Table, key_value
 from rockcli.studies.suite.assess import SuiteAssessment
+from rockcli.studies.suite.compare import SuiteComparison
 from rockcli.studies.suite.rule import SuiteMeasure
 
 #: What the code does with a suite of this size (NTC §3.2.3.6).
@@ -212,5 +213,97 @@ def suite_assessment_report(doc: dict[str, Any]) -> Report:
         tables=(history_records_table(suite),),
         notes=notes,
         verdict=history_verdict(suite),
+        warnings=tuple(doc["warnings"]),
+    )
+
+
+# --- the suite against the code check (rock compare --suite) ----------------------------
+
+#: What the code check saw, as the report says it.
+CODE_DEMAND_TEXT = {
+    "target": "the suite's target spectrum",
+    "suite-mean": "the suite's mean spectrum",
+}
+
+
+def suite_comparison_document(sc: SuiteComparison) -> dict[str, Any]:
+    """The whole `rock compare MODEL --suite SUITE --format json` document: the suite
+    section of assess --suite, the code check's document, the limit state both verdicts are
+    of, the classification and what the code check saw."""
+    from rockcli.report.kinematic import kinematic_document
+
+    doc = suite_assessment_document(sc.assessment)
+    passed = sc.kinematic.verdict()[sc.verdict_key]
+    return {
+        **doc,
+        "kinematic": kinematic_document(sc.assessment.name, sc.kinematic),
+        "limit_state": sc.limit_state,
+        "collapse": {
+            "code": None if passed is None else not passed,
+            "code_verdict": sc.verdict_key,
+            "rocking": not sc.assessment.measure.passed,
+        },
+        "classification": str(sc.classification),
+        "code_demand": str(sc.code_demand),
+        "notes": list(sc.notes),
+    }
+
+
+def suite_comparison_rows(doc: Mapping[str, Any]) -> tuple[dict[str, str], ...]:
+    """The side-by-side rows: the limit state's verdict, its amplitude, the classification."""
+    from rockcli.report.compare import code_cell, governing_check
+    from rockcli.report.table import format_value
+
+    kin, suite, col = doc["kinematic"], doc["suite"], doc["collapse"]
+    states = (col["code_verdict"],)
+    check = governing_check(kin, states)
+    how = "mean" if suite["rule"] == "mean" else "largest"
+    return (
+        {
+            "label": f"{doc['limit_state']} verdict",
+            "code": code_cell(
+                kin, states, None if col["code"] is None else not col["code"], ("passes", "fails")
+            ),
+            "rocking": f"{suite['verdict']}: {how} max θ/α {suite['measure']:.4f} vs "
+            f"{suite['limit_ratio']:g}",
+        },  # fmt: skip
+        {
+            "label": "amplitude",
+            "code": "ζ = capacity/demand = "
+            + format_value(check["ratio"] if check else None, "{:.3f}"),
+            "rocking": f"{suite['overturned_records']} of {suite['n']} records overturn",
+        },
+        {"label": "classification", "code": doc["classification"], "rocking": ""},
+    )
+
+
+def suite_comparison_report(doc: dict[str, Any]) -> Report:
+    """The terminal report of a model under a suite against the code check."""
+    from rockcli.report.compare import COLUMNS
+    from rockcli.report.kinematic import demand_line
+
+    suite, kin = doc["suite"], doc["kinematic"]
+    base = suite_assessment_report(doc)
+    side = Table(
+        f"{doc['model']['name']} under the suite {doc['suite_name']}, {doc['limit_state']}",
+        COLUMNS,
+        suite_comparison_rows(doc),
+    )
+    edition = {"2009": "NTC 2008 + Circ. 617/2009", "2019": "NTC 2018 + Circ. 7/2019"}
+    notes = (
+        *base.notes,
+        f"code: {edition[kin['edition']]} on {CODE_DEMAND_TEXT[doc['code_demand']]}; both "
+        f"sides judged at {doc['limit_state']} (the suite target's limit state)",
+        "demand: " + "; ".join(demand_line(k, v) for k, v in kin["demand"].items()),
+        *doc["notes"],
+    )
+    verdict = doc["classification"]
+    if not suite["compatibility"]["passed"]:
+        verdict += " — the suite is not compatible with its target spectrum"
+    return Report(
+        title=f"rock compare — {doc['model']['name']} under the suite {doc['suite_name']}",
+        tables=(history_records_table(suite), side),
+        notes=notes,
+        verdict=verdict,
         warnings=tuple(doc["warnings"]),
     )

@@ -8,6 +8,7 @@ model's [ntc.demand.*] parameters, the model's [ntc.site] with the hazard grid.
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass, replace
 from typing import Any
 
@@ -311,25 +312,37 @@ def kinematic_model(
     site: tuple[float, float] | None = None,
     grid_file: str | None = None,
     spectrum: Spectrum | None = None,
+    demand_of: Callable[[NtcSettings, float], dict[str, LimitStateDemand]] | None = None,
 ) -> KinematicResult:
     """The kinematic analysis of a validated model.
 
     spectrum: the record's response spectrum when the caller already has it (a study reuses
-    one per record); record: the record, to compute it otherwise.
+    one per record); record: the record, to compute it otherwise. demand_of: every limit
+    state's demand from the settings and g, in place of record, site and the model's own (a
+    record suite's target, rockcli.studies.suite.compare).
     """
     from rockcli.model.derive import to_block
+
+    settings = check_settings(model, edition)
+    block = to_block(model)
+    if demand_of is not None:
+        return analyse(block, settings, demand_of(settings, block.g))
+    dem = demands(settings, block.g, record, site, grid_file, spectrum)
+    return analyse(block, settings, dem)
+
+
+def check_settings(model: Model, edition: str | None = None) -> NtcSettings:
+    """The model's code-check settings, with the edition of the command line when given."""
     from rockcli.model.derive_ntc import ntc_settings
 
     settings = ntc_settings(model)
-    if edition is not None:
-        settings = replace(
-            settings,
-            edition=edition,
-            defaults=tuple(d for d in settings.defaults if not d.startswith("edition")),
-        )
-    block = to_block(model)
-    dem = demands(settings, block.g, record, site, grid_file, spectrum)
-    return analyse(block, settings, dem)
+    if edition is None:
+        return settings
+    return replace(
+        settings,
+        edition=edition,
+        defaults=tuple(d for d in settings.defaults if not d.startswith("edition")),
+    )
 
 
 def run_kinematic(model_path: str, **options: Any) -> KinematicOutput:

@@ -6,10 +6,14 @@ from __future__ import annotations
 
 from collections.abc import Callable
 from dataclasses import dataclass
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from rockcli.studies.suite.rule import DEFAULT_LIMIT_RATIO, SuiteMeasure, suite_measure
 from rockcli.studies.suite.run import SuiteRecord, outcomes, run_suite
+
+if TYPE_CHECKING:
+    from rockcli.suites.load import SuiteSettings
+    from rockcli.suites.run import SuiteCheck
 
 
 @dataclass(frozen=True)
@@ -23,6 +27,35 @@ class SuiteAssessment:
     rows: list[dict[str, Any]]
     measure: SuiteMeasure
     compatibility: dict[str, Any]
+
+
+@dataclass(frozen=True)
+class LoadedSuite:
+    """A model and a suite, read and checked: the model file's table and validated model,
+    the suite's settings and its compatibility check (with the scaled records)."""
+
+    model_path: str
+    table: dict[str, Any]
+    model: Any
+    check: SuiteCheck
+
+    @property
+    def settings(self) -> SuiteSettings:
+        """The suite file's settings."""
+        return self.check.settings
+
+
+def load_suite_and_model(model_path: str, suite_path: str, grid_file: str | None) -> LoadedSuite:
+    """Read the model and the suite, and check the suite against its target (InputError on
+    bad input in either file; the compatibility check's verdict itself is data)."""
+    from rockcli.model.load import read_toml, validate_model
+    from rockcli.suites.load import load_suite
+    from rockcli.suites.run import run_suite_check
+
+    table = read_toml(model_path)
+    model = validate_model(table, file=model_path)
+    check = run_suite_check(load_suite(suite_path), grid_file)
+    return LoadedSuite(model_path, table, model, check)
 
 
 def assess_suite(
@@ -41,26 +74,35 @@ def assess_suite(
 
     The compatibility check runs first: a suite that fails it still runs, and says so.
     """
-    from rockcli.model.load import read_toml, validate_model
-    from rockcli.studies.sweep.executor import local_executor
-    from rockcli.suites.load import load_suite
-    from rockcli.suites.run import check_numbers, run_suite_check
+    loaded = load_suite_and_model(model_path, suite_path, grid_file)
+    return assess_loaded(loaded, engine=engine, ground=ground, jobs=jobs, progress=progress)
 
-    table = read_toml(model_path)
-    model = validate_model(table, file=model_path)
-    settings = load_suite(suite_path)
-    check = run_suite_check(settings, grid_file)
+
+def assess_loaded(
+    loaded: LoadedSuite,
+    *,
+    engine: str = "fast",
+    ground: bool = False,
+    jobs: int = 1,
+    progress: Callable[[int, int], None] | None = None,
+) -> SuiteAssessment:
+    """:func:`assess_suite` on a model and suite already read."""
+    from rockcli.studies.sweep.executor import local_executor
+    from rockcli.suites.run import check_numbers
+
+    settings, model = loaded.settings, loaded.model
     items = [
         SuiteRecord(entry.name, entry.scale, record)
-        for entry, record in zip(settings.entries, check.records, strict=True)
+        for entry, record in zip(settings.entries, loaded.check.records, strict=True)
     ]
     with local_executor(min(jobs, len(items))) as lanes:
         rows = run_suite(
-            table, items, lanes, engine=engine, ground=ground, file=model_path, progress=progress
-        )
+            loaded.table, items, lanes, engine=engine, ground=ground, file=loaded.model_path,
+            progress=progress,
+        )  # fmt: skip
     limit = limit_for(model, settings.target.limit_state.value)
     measure = suite_measure(outcomes(rows), limit)  # ValueError: a worker died twice
-    numbers = check_numbers(check.check)
+    numbers = check_numbers(loaded.check.check)
     compatibility = {
         "passed": numbers["passed"],
         "period_range": list(settings.period_range),
