@@ -161,10 +161,12 @@ def test_the_old_record_demand_flag_is_refused() -> None:
 
 
 def test_the_code_demand_choices_are_the_studies() -> None:
-    from rockcli.cli.compare import CODE_DEMANDS
+    from rockcli.cli.compare import RECORD_DEMANDS, SUITE_DEMANDS
     from rockcli.studies.compare import CodeDemand
+    from rockcli.studies.suite.compare import SuiteCodeDemand
 
-    assert CODE_DEMANDS == tuple(c.value for c in CodeDemand)
+    assert RECORD_DEMANDS == tuple(c.value for c in CodeDemand)
+    assert SUITE_DEMANDS == tuple(c.value for c in SuiteCodeDemand)
 
 
 def test_bad_record_is_one_error_line(tmp_path: Path) -> None:
