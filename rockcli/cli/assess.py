@@ -17,6 +17,7 @@ from rockcli.cli.options import (
     jobs_option,
     load_record,
     output_format,
+    target_option,
     with_record_options,
 )
 from rockcli.cli.plot_option import plot_option
@@ -31,12 +32,13 @@ EXIT_OVERTURNS = EXIT_GATE
 @click.option(
     "--suite",
     "suite_path",
-    type=click.Path(dir_okay=False),
+    type=click.Path(),
     default=None,
     help="A record suite file (TOML; rock suite check): every record, both polarities, and "
     "the code's rule (the mean over 7 or more records, the worst over 3–6).",
 )
 @hazard_grid_option
+@target_option
 @jobs_option("With --suite: workers, this process and N − 1 worker processes.")
 @engine_option
 @ground_option
@@ -65,6 +67,7 @@ def assess(
     scale,
     pga,
     suite_path,
+    target,
     grid_file,
     jobs,
     engine,
@@ -80,9 +83,11 @@ def assess(
     from rockcli.report.assess import assessment_output_document
     from rockcli.studies.assess import run_assessment_output
 
-    if one_record_or_suite(record_path, suite_path, history_path, plot_path, grid_file):
+    if one_record_or_suite(record_path, suite_path, history_path, plot_path, grid_file, target):
         check_record_options(None, record_format, dt, units, scale, pga)
-        return assess_with_suite(model_path, suite_path, grid_file, engine, ground, jobs, output)
+        return assess_with_suite(
+            model_path, (suite_path, target), grid_file, engine, ground, jobs, output
+        )
     check_outputs(force, history=history_path, plot=plot_path)
     record = load_record(record_path, record_format, dt, units, scale, pga)
     history = history_path is not None or plot_path is not None
@@ -115,9 +120,11 @@ def assess(
         raise SystemExit(EXIT_OVERTURNS)
 
 
-def one_record_or_suite(record_path, suite_path, history_path, plot_path, grid_file) -> bool:
-    """True for --suite, False for --record; InputError for both, neither, or a one-record
-    option with --suite (a history or a plot is one record's)."""
+def one_record_or_suite(
+    record_path, suite_path, history_path, plot_path, grid_file, target=None
+) -> bool:
+    """True for --suite, False for --record; InputError for both, neither, a one-record
+    option with --suite (a history or a plot is one record's), or --target with --record."""
     from rockcli.errors import InputError
 
     if (record_path is None) == (suite_path is None):
@@ -129,6 +136,13 @@ def one_record_or_suite(record_path, suite_path, history_path, plot_path, grid_f
             allowed="--record FILE, or --suite SUITE.toml",
         )
     if suite_path is None:
+        if target is not None:
+            raise InputError(
+                "applies only to a folder of records given as the suite",
+                where="--target",
+                value=target,
+                allowed="--suite DIR --target KEY=VALUE,…",
+            )
         if grid_file is not None:
             raise InputError(
                 "applies only to a suite whose target is a site",
@@ -148,8 +162,10 @@ def one_record_or_suite(record_path, suite_path, history_path, plot_path, grid_f
     return True
 
 
-def assess_with_suite(model_path, suite_path, grid_file, engine, ground, jobs, output) -> None:
-    """Every record of the suite through the time history, the code's rule, the report."""
+def assess_with_suite(model_path, suite, grid_file, engine, ground, jobs, output) -> None:
+    """Every record of the suite through the time history, the code's rule, the report.
+
+    suite: (the suite file or folder, the --target of a folder)."""
     from rockcli.report.suite import suite_assessment_document, suite_assessment_report
     from rockcli.report.sweep import progress_bar
     from rockcli.report.table import show
@@ -157,7 +173,7 @@ def assess_with_suite(model_path, suite_path, grid_file, engine, ground, jobs, o
 
     with progress_bar(None) as bar:
         result = assess_suite(
-            model_path, suite_path, grid_file, engine=engine, ground=ground, jobs=jobs,
-            progress=bar,
+            model_path, suite[0], grid_file, engine=engine, ground=ground, jobs=jobs,
+            progress=bar, target=suite[1],
         )  # fmt: skip
     show(suite_assessment_document(result), output, suite_assessment_report)

@@ -18,6 +18,7 @@ from rockcli.cli.options import (
     jobs_option,
     load_record,
     output_format,
+    target_option,
     with_record_options,
 )
 from rockcli.cli.plot_option import plot_option
@@ -57,11 +58,12 @@ def refuse_record_demand(record_demand: bool) -> None:
 @click.option(
     "--suite",
     "suite_path",
-    type=click.Path(dir_okay=False),
+    type=click.Path(),
     default=None,
     help="A record suite file (TOML; rock suite check): every record through the time "
     "history by the code's rule, against the code check on the suite's target spectrum.",
 )
+@target_option
 @jobs_option("With --suite: workers, this process and N − 1 worker processes.")
 @edition_option
 @engine_option
@@ -98,6 +100,7 @@ def compare(
     scale,
     pga,
     suite_path,
+    target,
     jobs,
     edition,
     engine,
@@ -122,13 +125,14 @@ def compare(
     from rockcli.studies.compare import run_comparison_output
 
     refuse_record_demand(record_demand)
-    with_suite = one_record_or_suite(record_path, suite_path, None, plot_path, None)
+    with_suite = one_record_or_suite(record_path, suite_path, None, plot_path, None, target)
     code_demand = demand_for(code_demand, with_suite)
     if with_suite:
         check_record_options(None, record_format, dt, units, scale, pga)
         doc = compare_with_suite(
-            model_path, suite_path, grid_file, code_demand, edition, engine, ground, jobs, output
-        )
+            model_path, (suite_path, target), grid_file, code_demand, edition, engine, ground,
+            jobs, output,
+        )  # fmt: skip
         if doc["classification"] in fail_on:
             raise SystemExit(EXIT_FAIL_ON)
         return
@@ -181,9 +185,11 @@ def demand_for(code_demand: str | None, with_suite: bool) -> str:
 
 
 def compare_with_suite(
-    model_path, suite_path, grid_file, code_demand, edition, engine, ground, jobs, output
+    model_path, suite, grid_file, code_demand, edition, engine, ground, jobs, output
 ) -> dict:
-    """The code check and every record of the suite, side by side; the document shown."""
+    """The code check and every record of the suite, side by side; the document shown.
+
+    suite: (the suite file or folder, the --target of a folder)."""
     from rockcli.report.suite import suite_comparison_document, suite_comparison_report
     from rockcli.report.sweep import progress_bar
     from rockcli.report.table import show
@@ -191,8 +197,8 @@ def compare_with_suite(
 
     with progress_bar(None) as bar:
         result = compare_suite(
-            model_path, suite_path, grid_file, code_demand=code_demand, edition=edition,
-            engine=engine, ground=ground, jobs=jobs, progress=bar,
+            model_path, suite[0], grid_file, code_demand=code_demand, edition=edition,
+            engine=engine, ground=ground, jobs=jobs, progress=bar, target=suite[1],
         )  # fmt: skip
     doc = suite_comparison_document(result)
     show(doc, output, suite_comparison_report)

@@ -54,6 +54,16 @@ hazard_grid_option = click.option(
 )
 
 
+target_option = click.option(
+    "--target",
+    "target",
+    default=None,
+    metavar="KEY=VALUE,…",
+    help="With a folder of records as the suite: its target spectrum, the keys of a suite "
+    "file's [target] (lon=13.40,lat=42.35,limit_state=SLV,soil=A, or ag=…,F0=…,Tc_star=…).",
+)
+
+
 def jobs_option(help_text: str):
     """``--jobs/-j N``: local workers, this process and N − 1 worker processes."""
     return click.option(

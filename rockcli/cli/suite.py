@@ -10,6 +10,7 @@ from rockcli.cli.options import (
     force_option,
     hazard_grid_option,
     output_format,
+    target_option,
 )
 from rockcli.cli.plot_option import plot_option
 
@@ -20,7 +21,8 @@ def suite() -> None:
 
 
 @suite.command()
-@click.argument("suite_path", metavar="SUITE", type=click.Path(dir_okay=False))
+@click.argument("suite_path", metavar="SUITE", type=click.Path())
+@target_option
 @click.option(
     "--period",
     type=float,
@@ -41,15 +43,17 @@ def suite() -> None:
 @plot_option
 @force_option
 @output_format
-def check(suite_path, period, scale_mode, grid_file, plot_path, force, output):
+def check(suite_path, target, period, scale_mode, grid_file, plot_path, force, output):
     """Check that the mean 5 %-damped spectrum of the suite's records matches the target
-    (NTC §3.2.3.6: nowhere below −10 %, and in NTC 2018 nowhere above +30 %)."""
+    (NTC §3.2.3.6: nowhere below −10 %, and in NTC 2018 nowhere above +30 %).
+
+    SUITE is a suite file (TOML), or a folder of records with --target."""
     from rockcli.report.suite import suite_report
     from rockcli.report.table import show
     from rockcli.suites.load import load_suite
     from rockcli.suites.run import run_suite_check, suite_document
 
-    settings = load_suite(suite_path, period=period)
+    settings = load_suite(suite_path, period=period, target=target)
     check_grid_option(grid_file, settings.target.site is not None, suite_path)
     check_outputs(force, plot=plot_path)
     result = run_suite_check(settings, grid_file, scale_auto=scale_mode == "auto")

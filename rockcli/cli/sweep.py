@@ -10,7 +10,7 @@ from contextlib import contextmanager
 
 import click
 
-from rockcli.cli.options import announce_written, output_format
+from rockcli.cli.options import announce_written, hazard_grid_option, output_format
 from rockcli.cli.plot_option import plot_option
 
 #: Name prefix of the thread that runs chunks in this process (studies.sweep.executor).
@@ -148,6 +148,7 @@ def terminate_as_interrupt() -> Iterator[None]:
     default=None,
     help="Progress bar on stderr [default: when stderr is a terminal].",
 )
+@hazard_grid_option
 @plot_option
 @output_format
 def sweep(
@@ -161,6 +162,7 @@ def sweep(
     records_dir,
     chunk_size,
     progress,
+    grid_file,
     plot_path,
     output,
 ):
@@ -183,7 +185,7 @@ def sweep(
     quick_exit()
     if resume and overwrite:
         raise click.UsageError("--resume and --force exclude each other")
-    plan = load_study(study_path, records_dir, allow_outside=allow_outside)
+    plan = load_study(study_path, records_dir, allow_outside=allow_outside, grid_file=grid_file)
     jobs = worker_count(jobs, len(expand(plan)))
     out = out or default_out(study_path)
     where = dask_executor(scheduler) if scheduler else local_executor(jobs)

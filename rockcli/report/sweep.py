@@ -151,6 +151,7 @@ def sweep_report(doc: dict[str, Any]) -> Report:
         ),
         f"{doc['cases']} cases ({doc['computed_cases']} run now, {doc['resumed_cases']} from an "
         f"earlier run) in {doc['wall_time_s']:.2f} s; every case in {doc['out']}/cases.csv",
+        *(suite_note(r) for r in doc["records"] if r.get("suite_records")),
         *(
             f"record {s['name']} skipped: {s['path']} is absent"
             + (f" (get it from {s['source']})" if s["source"] else "")
@@ -158,6 +159,24 @@ def sweep_report(doc: dict[str, Any]) -> Report:
         ),
     ]
     return Report(title=f"rock sweep — {doc['name']}", tables=tuple(tables), notes=tuple(notes))
+
+
+#: How a suite case's rocking verdict is reached (rockcli.studies.sweep.suite).
+SUITE_RULE_TEXT = {
+    "mean": "the mean of max θ/α over its records",
+    "worst": "the largest max θ/α of its records",
+}
+
+
+def suite_note(row: dict[str, Any]) -> str:
+    """What a suite entry of the study is: its records, the rule, its compatibility."""
+    compatible = "compatible" if row["compatible"] else "NOT compatible"
+    return (
+        f"{row['record']}: a suite of {row['suite_records']} records (each case counts once): "
+        f"rocking by {SUITE_RULE_TEXT[row['rule']]} against the model's {row['limit_state']} "
+        f"limit, the code at {row['limit_state']} on its target; mean spectrum / target "
+        f"{row['min_ratio']:.3f}–{row['max_ratio']:.3f}: {compatible}"
+    )
 
 
 @contextmanager

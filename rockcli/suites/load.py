@@ -64,20 +64,102 @@ class SuiteSettings:
     tolerance: tuple[float, float]
 
 
-def load_suite(path: str | os.PathLike[str], *, period: float | None = None) -> SuiteSettings:
-    """Read, validate and resolve a suite file.
+#: The files a folder of records takes as its suite, by suffix (any case): PEER AT2, ESM
+#: ASCII, ITACA cor.acc, plain text. Other files (notes, metadata) are not records.
+RECORD_SUFFIXES = (".at2", ".asc", ".acc", ".txt", ".dat")
+#: What --target takes.
+TARGET_ALLOWED = (
+    "KEY=VALUE pairs separated by commas, the keys of a suite's [target]: e.g. "
+    "lon=13.40,lat=42.35,limit_state=SLV,soil=A or ag=0.25,F0=2.4,Tc_star=0.3"
+)
+
+
+def load_suite(
+    path: str | os.PathLike[str], *, period: float | None = None, target: str | None = None
+) -> SuiteSettings:
+    """Read, validate and resolve a suite file, or a folder of records with its target.
 
     Args:
-        path: the TOML suite file.
+        path: the TOML suite file, or a folder whose record files (RECORD_SUFFIXES) are the
+            suite, each at scale 1, named by its file.
         period: the structure's period T [s] (``--period``): the range becomes 0.15 s to
             max(2.0 s, 2T) (NTC §3.2.3.6); refused when the file gives ``period_range``.
+        target: the ``--target`` text of a folder (a suite file has its own [target]).
 
     Raises:
         InputError: unreadable or malformed file, a bad key, or a rule across keys broken.
     """
     file = os.fspath(path)
+    if os.path.isdir(file):
+        try:
+            suite = validate_suite(folder_suite(file, target), file)
+        except InputError as exc:
+            raise on_target_option(exc) from None
+        return resolve(suite, file, period, base=Path(file))
+    if target is not None:
+        raise InputError(
+            "not used: a suite file has its own [target]",
+            where="--target",
+            value=target,
+            allowed="--target only with a folder of records (--suite DIR)",
+        )
     suite = validate_suite(read_toml(file), file)
     return resolve(suite, file, period)
+
+
+def folder_suite(folder: str, target: str | None) -> dict[str, Any]:
+    """The suite table of a folder: its record files, sorted by name, and --target."""
+    if target is None:
+        raise InputError(
+            "a folder of records needs its target spectrum",
+            file=folder,
+            where="--target",
+            allowed=TARGET_ALLOWED,
+        )
+    files = sorted(
+        p.name
+        for p in Path(folder).iterdir()
+        if p.is_file() and not p.name.startswith(".") and p.suffix.lower() in RECORD_SUFFIXES
+    )
+    name = Path(folder).resolve().name or folder
+    return {"name": name, "records": [{"path": f} for f in files], "target": parse_target(target)}
+
+
+def parse_target(text: str) -> dict[str, Any]:
+    """``lon=13.4,lat=42.35,soil=A`` → {"lon": 13.4, "lat": 42.35, "soil": "A"} (numbers as
+    numbers, the rest as text; the schema then checks each key)."""
+    out: dict[str, Any] = {}
+    for item in text.split(","):
+        key, sep, value = (part.strip() for part in item.partition("="))
+        if not sep or not key or not value or key in out:
+            raise InputError(
+                "not a KEY=VALUE pair" if key not in out else "key given twice",
+                where="--target",
+                value=item.strip(),
+                allowed=TARGET_ALLOWED,
+            )
+        out[key] = number_or_text(value)
+    return out
+
+
+def number_or_text(value: str) -> int | float | str:
+    """An int, else a float, else the text (as a TOML value would be)."""
+    for kind in (int, float):
+        try:
+            return kind(value)
+        except ValueError:
+            continue
+    return value
+
+
+def on_target_option(exc: InputError) -> InputError:
+    """An error in a folder suite's target, named as the option: ``--target soil``."""
+    where = exc.where or ""
+    if where == "target" or where.startswith("target."):
+        where = "--target" + (" " + where.removeprefix("target.") if "." in where else "")
+        return InputError(exc.problem, file=exc.file, where=where, value=exc.value,
+                          allowed=exc.allowed)  # fmt: skip
+    return exc
 
 
 def validate_suite(data: Mapping[str, Any], file: str | None = None) -> Suite:
@@ -205,9 +287,12 @@ def check_tolerance(values: Sequence[float], file: str | None) -> None:
         )
 
 
-def resolve(suite: Suite, file: str, period: float | None) -> SuiteSettings:
-    """The settings with the defaults of the edition and the period applied."""
-    base = Path(file).parent
+def resolve(
+    suite: Suite, file: str, period: float | None, *, base: Path | None = None
+) -> SuiteSettings:
+    """The settings with the defaults of the edition and the period applied; record paths
+    relative to ``base`` (default: the suite file's folder)."""
+    base = Path(file).parent if base is None else base
     entries = tuple(
         SuiteEntry(name, base / r.path, r.scale, f"records[{i}]")
         for i, (r, name) in enumerate(zip(suite.records, suite.record_names(), strict=True))
@@ -253,9 +338,33 @@ def default_tolerance(suite: Suite) -> tuple[float, float]:
 def read_entries(settings: SuiteSettings) -> list[Record]:
     """Every record of the suite, read and scaled; InputError naming the suite file and the
     record entry when one does not read, is zero everywhere, or scales out of bounds."""
+    records = [read_entry(entry, settings.file) for entry in settings.entries]
+    check_distinct(records, settings)
     return [
-        scaled(read_entry(entry, settings.file), entry, settings.file) for entry in settings.entries
+        scaled(record, entry, settings.file)
+        for record, entry in zip(records, settings.entries, strict=True)
     ]
+
+
+def check_distinct(records: Sequence[Record], settings: SuiteSettings) -> None:
+    """Refuse two entries that hold the same motion (the same samples at the same times, as
+    read, before scaling): two copies of a record, under two names or with other line ends,
+    are one record for the code's count."""
+    import hashlib
+
+    seen: dict[str, int] = {}
+    for i, record in enumerate(records):
+        digest = hashlib.sha256(record.time.tobytes() + record.accel.tobytes()).hexdigest()
+        if digest in seen:
+            first, entry = settings.entries[seen[digest]], settings.entries[i]
+            raise InputError(
+                f"record {entry.name!r} is the same motion as {first.name!r} ({first.where})",
+                file=settings.file,
+                where=f"{entry.where}.path",
+                value=str(entry.path),
+                allowed="each record once (a record's copies count once for the code)",
+            )
+        seen[digest] = i
 
 
 def read_entry(entry: SuiteEntry, file: str) -> Record:

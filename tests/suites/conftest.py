@@ -42,13 +42,27 @@ def write_suite(folder: Path, records: list[dict[str, Any]], **keys: Any) -> Pat
 
 
 def pulse_copies(folder: Path, count: int) -> list[Path]:
-    """``count`` record files in ``folder``: the shipped pulses copied under new names."""
+    """``count`` record files in ``folder``: the shipped pulses copied under new names, then
+    the pulses times 2, 3, … (a suite holds each motion once)."""
     paths = []
     for i in range(count):
-        target = folder / f"rec{i}_{PULSES[i % len(PULSES)].name}"
-        shutil.copyfile(PULSES[i % len(PULSES)], target)
+        source = PULSES[i % len(PULSES)]
+        target = folder / f"rec{i}_{source.name}"
+        multiple_of(source, target, 1 + i // len(PULSES))
         paths.append(target)
     return paths
+
+
+def multiple_of(source: Path, target: Path, factor: float) -> Path:
+    """A plain-text record at ``target``: the two-column record ``source`` with its
+    accelerations times ``factor`` (a copy when the factor is 1), written to the last digit."""
+    if factor == 1:
+        shutil.copyfile(source, target)
+        return target
+    data = np.loadtxt(source, comments="#")
+    data[:, 1] *= factor
+    np.savetxt(target, data, fmt="%.17g", header="time [s], acceleration [g]")
+    return target
 
 
 @pytest.fixture

@@ -10,19 +10,17 @@ from click.testing import CliRunner
 
 from rockcli.cli.main import cli
 from tests.cli.conftest import ROOT
+from tests.suites.conftest import multiple_of
 
 WALL = ROOT / "examples" / "wall.toml"
 PULSES = sorted((ROOT / "records").glob("*.txt"))
 
 
 def suite_file(tmp_path: Path, n: int = 3) -> Path:
-    """A suite of the shipped pulses (copied to files of their own past three: a suite lists
-    each record once) with a target given by its parameters (no hazard grid needed)."""
-    paths = []
-    for k in range(n):
-        path = tmp_path / f"r{k}.txt"
-        path.write_bytes(PULSES[k % 3].read_bytes())
-        paths.append(path)
+    """A suite of the shipped pulses (past three, the pulses times 2, 3, … in files of their
+    own: a suite holds each motion once) with a target given by its parameters (no hazard
+    grid needed)."""
+    paths = [multiple_of(PULSES[k % 3], tmp_path / f"r{k}.txt", 1 + k // 3) for k in range(n)]
     entries = "".join(
         f'[[records]]\npath = "{path}"\nname = "r{k}"\nscale = {1 + k / 10}\n\n'
         for k, path in enumerate(paths)

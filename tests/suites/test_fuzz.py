@@ -4,6 +4,8 @@ traceback (bounded: 150 examples, no record is read)."""
 from __future__ import annotations
 
 import copy
+import shutil
+from pathlib import Path
 from typing import Any
 
 from hypothesis import HealthCheck, given, settings
@@ -12,6 +14,7 @@ from hypothesis import strategies as st
 from rockcli.errors import InputError
 from rockcli.suites.load import resolve, validate_suite
 from rockcli.suites.schema import Suite
+from tests.suites.conftest import PULSES
 
 #: Values of every kind a TOML file can hold (and a few it cannot, e.g. None).
 SCALARS = st.one_of(
@@ -108,3 +111,31 @@ def test_damaged_valid_suite_is_a_suite_or_one_input_error(spot: Any, value: Any
         table = table[part]
     table[spot[1]] = value
     check_suite_table(data)
+
+
+@settings(
+    max_examples=150, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture]
+)
+@given(
+    st.lists(
+        st.one_of(
+            st.text(max_size=12),
+            st.tuples(
+                st.sampled_from(["lon", "lat", "ag", "F0", "Tc_star", "soil", "edition", "x"]),
+                st.one_of(st.text(max_size=6), st.floats().map(str), st.integers().map(str)),
+            ).map("=".join),
+        ),
+        max_size=6,
+    ).map(",".join)
+)
+def test_target_text_is_a_suite_or_one_error(tmp_path: Path, text: str) -> None:
+    # A folder suite with --target: a suite, or one InputError line (no record is read).
+    from rockcli.suites.load import load_suite
+
+    for pulse in PULSES:
+        if not (tmp_path / pulse.name).exists():
+            shutil.copyfile(pulse, tmp_path / pulse.name)
+    try:
+        load_suite(tmp_path, target=text)
+    except InputError as exc:
+        assert "\n" not in str(exc)

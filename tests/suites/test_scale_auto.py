@@ -4,7 +4,6 @@
 from __future__ import annotations
 
 import json
-import shutil
 from pathlib import Path
 
 import numpy as np
@@ -14,7 +13,7 @@ from click.testing import CliRunner
 from rockcli.cli.main import cli
 from rockcli.records.files import read_record
 from rockcli.suites.compat import auto_scale
-from tests.suites.conftest import PULSES, newmark_peak, se_by_hand, write_suite
+from tests.suites.conftest import PULSES, multiple_of, newmark_peak, se_by_hand, write_suite
 
 RICKER = next(p for p in PULSES if p.name.startswith("ricker"))
 #: The reference spectrum agrees with rock's to ≤ 6e-5 on the pulses (test_compatibility).
@@ -24,12 +23,12 @@ LINEAR_RTOL = 1e-12
 
 
 def multiples(folder: Path, factors: list[float], **keys: object) -> Path:
-    """A suite of copies of the Ricker pulse, scaled by ``factors``."""
+    """A suite of the Ricker pulse times ``factors``: file i holds the pulse times i + 1 (a
+    suite holds each motion once) and its ``scale`` is factor/(i + 1)."""
     records = []
     for i, factor in enumerate(factors):
-        copy = folder / f"ricker{i}.txt"
-        shutil.copyfile(RICKER, copy)
-        records.append({"path": copy.name, "scale": factor})
+        copy = multiple_of(RICKER, folder / f"ricker{i}.txt", i + 1)
+        records.append({"path": copy.name, "scale": factor / (i + 1)})
     return write_suite(folder, records, **keys)
 
 

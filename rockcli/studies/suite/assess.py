@@ -45,16 +45,19 @@ class LoadedSuite:
         return self.check.settings
 
 
-def load_suite_and_model(model_path: str, suite_path: str, grid_file: str | None) -> LoadedSuite:
-    """Read the model and the suite, and check the suite against its target (InputError on
-    bad input in either file; the compatibility check's verdict itself is data)."""
+def load_suite_and_model(
+    model_path: str, suite_path: str, grid_file: str | None, target: str | None = None
+) -> LoadedSuite:
+    """Read the model and the suite (a file, or a folder with its ``target`` text), and check
+    the suite against its target (InputError on bad input in either; the compatibility
+    check's verdict itself is data)."""
     from rockcli.model.load import read_toml, validate_model
     from rockcli.suites.load import load_suite
     from rockcli.suites.run import run_suite_check
 
     table = read_toml(model_path)
     model = validate_model(table, file=model_path)
-    check = run_suite_check(load_suite(suite_path), grid_file)
+    check = run_suite_check(load_suite(suite_path, target=target), grid_file)
     return LoadedSuite(model_path, table, model, check)
 
 
@@ -67,6 +70,7 @@ def assess_suite(
     ground: bool = False,
     jobs: int = 1,
     progress: Callable[[int, int], None] | None = None,
+    target: str | None = None,
 ) -> SuiteAssessment:
     """Both polarities of the model under every record of the suite (its scales applied), on
     ``jobs`` local workers, and the suite measure by the code's rule (rule.suite_measure)
@@ -74,7 +78,7 @@ def assess_suite(
 
     The compatibility check runs first: a suite that fails it still runs, and says so.
     """
-    loaded = load_suite_and_model(model_path, suite_path, grid_file)
+    loaded = load_suite_and_model(model_path, suite_path, grid_file, target)
     return assess_loaded(loaded, engine=engine, ground=ground, jobs=jobs, progress=progress)
 
 

@@ -15,7 +15,7 @@ Results only: rockcli.report.suite renders them.
 
 from __future__ import annotations
 
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass, replace
 from enum import StrEnum
 from typing import TYPE_CHECKING, Any
@@ -28,6 +28,7 @@ from rockcli.studies.suite.assess import LoadedSuite, SuiteAssessment
 if TYPE_CHECKING:
     from rockcli.codecheck.result import KinematicResult
     from rockcli.model.derive_ntc import NtcSettings
+    from rockcli.records.record import Record
     from rockcli.suites.schema import Target
 
 
@@ -102,14 +103,16 @@ def target_demand(
 
 
 def target_demands(
-    loaded: LoadedSuite, grid_file: str | None
+    target: Target, file: str | None, model: Any, grid_file: str | None
 ) -> Callable[[NtcSettings, float], dict[str, LimitStateDemand]]:
     """Every limit state's demand from the suite's target: its own state's spectrum; the other
-    states' from its site, or, for a target given by parameters, from the model's [ntc]."""
+    states' from its site, or, for a target given by parameters, from the model's [ntc].
+
+    file: the suite file, for messages.
+    """
     from rockcli.studies.compare import code_sets_demand
     from rockcli.studies.kinematic import LIMIT_STATES, demands
 
-    target, file = loaded.settings.target, loaded.settings.file
     own = target.limit_state.value
 
     def demand_of(settings: NtcSettings, g: float) -> dict[str, LimitStateDemand]:
@@ -123,7 +126,7 @@ def target_demands(
         states = LIMIT_STATES[settings.edition]
         if target.site is not None:
             return {ls: target_demand(target, ls, grid_file, g, at_site) for ls in states}
-        if any(ls != own for ls in states) and not code_sets_demand(loaded.model):
+        if any(ls != own for ls in states) and not code_sets_demand(model):
             raise InputError(
                 f"the target gives the {own} spectrum only; the code check also needs "
                 + ", ".join(ls for ls in states if ls != own),
@@ -143,15 +146,14 @@ def target_demands(
 
 
 def mean_demands(
-    loaded: LoadedSuite,
+    records: Sequence[Record], name: str
 ) -> Callable[[NtcSettings, float], dict[str, LimitStateDemand]]:
     """Every limit state's demand: the mean response spectrum of the suite's scaled records
-    (as one record's spectrum is with --code-demand record)."""
+    (as one record's spectrum is with --code-demand record). name: the suite's."""
     from rockcli.codecheck.demand import MeanSpectrum, record_demand
     from rockcli.codecheck.response import RecordSpectrum
     from rockcli.studies.kinematic import LIMIT_STATES
 
-    records, name = loaded.check.records, loaded.settings.name
     source = (
         f"the mean response spectrum of the suite's {len(records)} records (as scaled), "
         "mean PGA in place of ag·S"
@@ -205,6 +207,7 @@ def compare_suite(
     ground: bool = False,
     jobs: int = 1,
     progress: Callable[[int, int], None] | None = None,
+    target: str | None = None,
 ) -> SuiteComparison:
     """The code check on the suite's target (or mean) spectrum, the suite through the time
     history, and the classification of the two verdicts of the target's limit state.
@@ -215,15 +218,16 @@ def compare_suite(
     from rockcli.studies.kinematic import check_settings, kinematic_model
     from rockcli.studies.suite.assess import assess_loaded, load_suite_and_model
 
-    loaded = load_suite_and_model(model_path, suite_path, grid_file)
+    loaded = load_suite_and_model(model_path, suite_path, grid_file, target)
     which = SuiteCodeDemand(code_demand)
     settings = check_settings(loaded.model, edition)
     state = loaded.settings.target.limit_state.value
     key = verdict_key(settings.edition, state, loaded.settings.file)
+    suite = loaded.settings
     demand_of = (
-        mean_demands(loaded)
+        mean_demands(loaded.check.records, suite.name)
         if which is SuiteCodeDemand.SUITE_MEAN
-        else target_demands(loaded, grid_file)
+        else target_demands(suite.target, suite.file, loaded.model, grid_file)
     )
     kin = kinematic_model(loaded.model, edition=edition, demand_of=demand_of)
     assessment = assess_loaded(loaded, engine=engine, ground=ground, jobs=jobs, progress=progress)

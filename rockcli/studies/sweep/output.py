@@ -25,7 +25,7 @@ from typing import Any, NoReturn
 from rockcli import __version__
 from rockcli.errors import InputError
 from rockcli.outfile import write_text
-from rockcli.studies.sweep.study import StudyPlan
+from rockcli.studies.sweep.study import RecordSource, StudyPlan
 
 CASES_FILE = "cases.csv"
 STATE_FILE = "sweep.json"
@@ -52,6 +52,11 @@ RESULT_COLUMNS: dict[str, type] = {
     "a0_star": float,
     "Ts": float,
     "classification": str,
+    "limit_state": str,
+    "code_state": str,
+    "suite_rule": str,
+    "suite_records": int,
+    "suite_overturned": int,
     "error": str,
 }
 
@@ -135,12 +140,23 @@ def file_digest(path: str) -> str:
     return digest.hexdigest()
 
 
+def source_digest(source: RecordSource) -> str:
+    """The sha256 of a record file; of a suite file, over its bytes and its records' (a
+    record of the suite edited changes the study's results)."""
+    if not source.suite:
+        return file_digest(source.path)
+    from rockcli.suites.load import load_suite
+
+    parts = [file_digest(source.path)]
+    parts += [file_digest(str(e.path)) for e in load_suite(source.path).entries]
+    return hashlib.sha256(" ".join(parts).encode()).hexdigest()
+
+
 def fingerprint(plan: StudyPlan) -> str:
     """A hash of what decides the results: rock's version, the study, base model, records
     (each by its bytes, not its name or size)."""
     records = [
-        {**asdict(r), "path": Path(r.path).name, "sha256": file_digest(r.path)}
-        for r in plan.records
+        {**asdict(r), "path": Path(r.path).name, "sha256": source_digest(r)} for r in plan.records
     ]
     data = {
         "rock": __version__,
@@ -148,6 +164,7 @@ def fingerprint(plan: StudyPlan) -> str:
         "engine": plan.engine,
         "code_demand": plan.code_demand,
         "ground": plan.ground,
+        "grid": file_digest(plan.grid_file) if plan.grid_file else None,
         "axes": [(a.name, a.texts, a.values) for a in plan.axes],
         "base": plan.base,
         "records": records,

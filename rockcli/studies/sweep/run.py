@@ -208,9 +208,16 @@ def _restart(lanes: MutableSequence[Lane], i: int) -> bool:
 
 
 def record_facts(plan: StudyPlan) -> tuple[list[int], dict[str, dict[str, Any]]]:
-    """Each record read once here (a bad file fails before any work): samples and facts."""
+    """Each record read once here (a bad file fails before any work): samples and facts (a
+    suite: its records' samples, and its compatibility with its target)."""
+    from rockcli.studies.sweep.suite import suite_facts
+
     npts, facts = [], {}
     for source in plan.records:
+        if source.suite:
+            count, facts[source.name] = suite_facts(source, plan.grid_file)
+            npts.append(count)
+            continue
         try:
             record = read_source(source)
         except InputError as exc:

@@ -80,9 +80,20 @@ class AxisSpec(Table):
 class RecordSpec(Table):
     """One record of the study, and how to read and scale it."""
 
-    path: str = Field(..., min_length=1, description="a record file, relative to records_dir")
+    path: str | None = Field(
+        None, min_length=1, description="a record file, relative to records_dir"
+    )
+    suite: str | None = Field(
+        None,
+        min_length=1,
+        description="a record suite file (rock suite check), relative to records_dir, "
+        "instead of path: each case then runs every record of the suite and takes the code's "
+        "rule",
+    )
     name: str | None = Field(
-        None, min_length=1, description="a non-empty label (default: the file name)"
+        None,
+        min_length=1,
+        description="a non-empty label (default: the file name, or the suite's name)",
     )
     scale: float | None = Field(None, gt=0, description="a factor > 0 on the accelerations [-]")
     pga: float | None = Field(
@@ -182,7 +193,14 @@ class Axis:
 
 @dataclass(frozen=True)
 class RecordSource:
-    """A record file and how to read it (hashable: the key of the workers' cache)."""
+    """A record file and how to read it, or a suite file (hashable: the key of the workers'
+    cache).
+
+    Attributes:
+        name: the label. path: the file, resolved.
+        fmt, dt, units: how to read a record file. scale, pga: how to scale it.
+        suite: True when the file is a record suite (its records and scales inside).
+    """
 
     name: str
     path: str
@@ -191,6 +209,7 @@ class RecordSource:
     units: str | None = None
     scale: float | None = None
     pga: float | None = None
+    suite: bool = False
 
 
 @dataclass(frozen=True)
@@ -217,6 +236,7 @@ class StudyPlan:
     records: tuple[RecordSource, ...]
     skipped: tuple[SkippedRecord, ...]
     ground: bool = False
+    grid_file: str | None = None
 
 
 def parse_path(text: str) -> KeyPath | None:
@@ -334,7 +354,11 @@ def path_error(exc: OSError | ValueError, file: str, where: str) -> InputError:
 
 
 def load_study(
-    file: str, records_dir: str | None = None, *, allow_outside: bool = False
+    file: str,
+    records_dir: str | None = None,
+    *,
+    allow_outside: bool = False,
+    grid_file: str | None = None,
 ) -> StudyPlan:
     """Read and validate a study file: schema, base model, axis paths, record files.
 
@@ -342,6 +366,8 @@ def load_study(
         file: the study TOML (named in errors as given).
         records_dir: replaces the file's records_dir (the --records-dir option).
         allow_outside: let the file's paths leave its folder (the --allow-outside option).
+        grid_file: the NTC hazard grid for sites (the --hazard-grid option; else
+            $ROCK_HAZARD_GRID when a site needs it).
     """
     from rockcli.model.load import read_toml
     from rockcli.studies.sweep.paths import check_axes
@@ -385,6 +411,7 @@ def load_study(
         axes=axes,
         records=records,
         skipped=skipped,
+        grid_file=grid_file,
     )
 
 
@@ -418,9 +445,27 @@ def _records(
     present: list[RecordSource] = []
     skipped: list[SkippedRecord] = []
     for i, spec in enumerate(specs):
-        path = folder / spec.path
+        key, given = entry_file(spec, i, file)
+        path = folder / given
         if not allow_outside:
-            check_inside(path, folder, file, f"records[{i}].path", spec.path)
+            check_inside(path, folder, file, f"records[{i}].{key}", given)
+        if spec.suite is not None:
+            if not is_file(path, file, f"records[{i}].suite"):
+                if spec.optional:
+                    skipped.append(SkippedRecord(spec.name or given, str(path), spec.source))
+                    continue
+                raise InputError(
+                    "suite file not found",
+                    file=file,
+                    where=f"records[{i}].suite",
+                    value=str(path),
+                    allowed="an existing suite file (relative to records_dir, or to the study "
+                    "file), or optional = true to skip it",
+                )
+            source = suite_source(spec, path, folder, file, i, allow_outside)
+            _check_unique(present, source.name, file, i)
+            present.append(source)
+            continue
         name = spec.name or record_name(path)
         if spec.scale is not None and spec.pga is not None:
             raise InputError(
@@ -442,16 +487,65 @@ def _records(
                 allowed="an existing file (paths are relative to records_dir, or to the study "
                 "file; --records-dir sets the folder), or optional = true to skip it",
             )
-        if name in {r.name for r in present}:
-            raise InputError(
-                "two records with the same name",
-                file=file,
-                where=f"records[{i}]",
-                value=name,
-                allowed="a distinct name = ... for each record",
-            )
+        _check_unique(present, name, file, i)
         fmt = str(spec.format) if spec.format is not None else None
         present.append(
             RecordSource(name, str(path.resolve()), fmt, spec.dt, spec.units, spec.scale, spec.pga)
         )
     return tuple(present), tuple(skipped)
+
+
+#: The keys of a [[records]] entry that read or scale one record file (not with suite).
+RECORD_ONLY_KEYS = ("scale", "pga", "format", "dt", "units")
+
+
+def entry_file(spec: RecordSpec, i: int, file: str) -> tuple[str, str]:
+    """("path" or "suite", the file as written): exactly one of them, and no key that reads
+    or scales one record beside a suite (the suite file holds its records' scales)."""
+    if (spec.path is None) == (spec.suite is None):
+        raise InputError(
+            "give a record file or a suite file" if spec.path is None else "path and suite",
+            file=file,
+            where=f"records[{i}]",
+            allowed="path = RECORD, or suite = SUITE.toml (not both)",
+        )
+    if spec.suite is None:
+        return "path", str(spec.path)
+    for key in RECORD_ONLY_KEYS:
+        if getattr(spec, key) is not None:
+            raise InputError(
+                "reads or scales one record: not with suite",
+                file=file,
+                where=f"records[{i}].{key}",
+                value=getattr(spec, key),
+                allowed="scale in each [[records]] entry of the suite file",
+            )
+    return "suite", spec.suite
+
+
+def suite_source(
+    spec: RecordSpec, path: Path, folder: Path, file: str, i: int, allow_outside: bool
+) -> RecordSource:
+    """A suite entry, its file validated (rockcli.suites.load) and, unless allow_outside,
+    each of its records inside the records folder (a study reads only its own files)."""
+    from rockcli.suites.load import load_suite
+
+    settings = load_suite(str(path))
+    if not allow_outside:
+        for k, entry in enumerate(settings.entries):
+            check_inside(
+                entry.path, folder, file, f"records[{i}].suite", f"record {k + 1}: {entry.path}"
+            )
+    return RecordSource(spec.name or settings.name, str(path.resolve()), suite=True)
+
+
+def _check_unique(present: Sequence[RecordSource], name: str, file: str, i: int) -> None:
+    """Refuse a second entry with the same name (cases are keyed by it)."""
+    if name in {r.name for r in present}:
+        raise InputError(
+            "two records with the same name",
+            file=file,
+            where=f"records[{i}]",
+            value=name,
+            allowed="a distinct name = ... for each record",
+        )

@@ -24,15 +24,22 @@ ALPHA_DIGITS = 10
 
 
 def code_collapse(row: Mapping[str, Any]) -> bool | None:
-    """The code's collapse verdict: its ULS check not satisfied (None: not evaluated)."""
-    uls = row.get("code_uls")
-    return None if uls is None else uls == "fail"
+    """The code's collapse verdict: its ULS check not satisfied (None: not evaluated); for a
+    suite case, its check of the suite target's limit state (``code_state``)."""
+    verdict = row.get("code_state") if row.get("limit_state") else row.get("code_uls")
+    return None if verdict is None else verdict == "fail"
+
+
+#: The rocking verdicts that are a collapse: a record overturns the block, or a suite's
+#: measure reaches its limit (rockcli.studies.sweep.suite).
+COLLAPSES = ("overturns", "fails")
 
 
 def rocking_collapse(row: Mapping[str, Any]) -> bool | None:
-    """The rocking verdict: overturning in either polarity (None: not run or undecided)."""
+    """The rocking verdict: overturning in either polarity, or a suite that fails the code's
+    rule (None: not run or undecided)."""
     verdict = row.get("rocking")
-    return None if verdict in (None, "undecided") else verdict == "overturns"
+    return None if verdict in (None, "undecided") else verdict in COLLAPSES
 
 
 #: The counts that need each analysis (None in the summary when it did not run).
@@ -82,6 +89,14 @@ def tally(rows: Iterable[Mapping[str, Any]], analyses: Iterable[str]) -> dict[st
         out["undetermined"] += undetermined(row, ran)
         out["errors"] += bool(row.get("error"))
     return {k: v if NEEDS.get(k, set()) <= ran else None for k, v in out.items()}
+
+
+def run_count(rows: Iterable[Mapping[str, Any]], analyses: Iterable[str]) -> int:
+    """The time histories of the study: both polarities of every record of every case (a
+    suite case runs each of its records)."""
+    if "rocking" not in set(analyses):
+        return 0
+    return sum(2 * (row.get("suite_records") or 1) for row in rows)
 
 
 def share(part: int | None, whole: int | None) -> float | None:
@@ -165,7 +180,7 @@ def summarize(
         "name": plan.name,
         "analyses": list(plan.analyses),
         **total,
-        "runs": len(rows) * (2 if "rocking" in plan.analyses else 0),
+        "runs": run_count(rows, plan.analyses),
         "inconsistency_share": share(total["code_conservative"], total["code_collapses"]),
         "unconservative_share": share(total["code_unconservative"], total["rocking_collapses"]),
         "axes": [

@@ -173,15 +173,21 @@ def run_chunk(chunk: Chunk) -> list[dict[str, Any]]:
     its ``error`` and no results: the study goes on, the summary counts it, and ``--resume``
     does not run it again.
     """
+    from rockcli.studies.sweep.suite import read_suite, run_suite_case
+
     plan = chunk.plan
     source = plan.records[chunk.record] if chunk.record is not None else None
-    record = read_source(source) if source is not None else None
+    suite = read_suite(source) if source is not None and source.suite else None
+    record = read_source(source) if source is not None and suite is None else None
     rows = []
     for case in chunk.cases:
         known: dict[str, Any] = {"case": case.id}  # the block's R and α once computed
         try:
             model = build_model(plan, case)
             known["block_R"], known["block_alpha"] = model.geometry.polar
+            if suite is not None:
+                rows.append({"case": case.id, **run_suite_case(plan, model, suite)})
+                continue
             spectrum = spectrum_of(source, model.analysis.g) if source is not None else None
             rows.append({"case": case.id, **run_case(plan, model, record, spectrum)})
         except InputError as exc:
@@ -223,7 +229,10 @@ def run_case(
 
         own = record is not None and plan.code_demand == CodeDemand.RECORD
         kin = kinematic_model(
-            model, record=record if own else None, spectrum=spectrum if own else None
+            model,
+            record=record if own else None,
+            spectrum=spectrum if own else None,
+            grid_file=plan.grid_file,
         )
         row.update(kinematic_columns(kin))
     if roc is not None and kin is not None:
