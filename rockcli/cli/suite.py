@@ -39,11 +39,19 @@ def suite() -> None:
     help="auto: also find the common factor that puts the mean's smallest ratio on the "
     "lower bound, and check the suite with it.",
 )
+@click.option(
+    "--model",
+    "model_path",
+    type=click.Path(dir_okay=False),
+    default=None,
+    help="A model at height ([building] Z > 0): check the records' floor motions at its "
+    "height against the code's floor spectrum there (what its rocking analysis runs on).",
+)
 @hazard_grid_option
 @plot_option
 @force_option
 @output_format
-def check(suite_path, target, period, scale_mode, grid_file, plot_path, force, output):
+def check(suite_path, target, period, scale_mode, model_path, grid_file, plot_path, force, output):
     """Check that the mean 5 %-damped spectrum of the suite's records matches the target
     (NTC §3.2.3.6: nowhere below −10 %, and in NTC 2018 nowhere above +30 %).
 
@@ -56,7 +64,8 @@ def check(suite_path, target, period, scale_mode, grid_file, plot_path, force, o
     settings = load_suite(suite_path, period=period, target=target)
     check_grid_option(grid_file, settings.target.site is not None, suite_path)
     check_outputs(force, plot=plot_path)
-    result = run_suite_check(settings, grid_file, scale_auto=scale_mode == "auto")
+    floor = model_floor_of(model_path)
+    result = run_suite_check(settings, grid_file, scale_auto=scale_mode == "auto", floor=floor)
     doc = suite_document(result)
     if plot_path:
         from rockcli.report.plots.suite import plot_suite
@@ -77,3 +86,24 @@ def check_grid_option(grid_file: str | None, has_site: bool, suite_path: str) ->
             value=grid_file,
             allowed=f"--hazard-grid only with lon and lat in [target] of {suite_path}",
         )
+
+
+def model_floor_of(model_path: str | None):
+    """The floor at the model's height (rockcli.studies.floor.Floor); None without --model;
+    InputError for a model on the ground (its check is the ground's: drop --model)."""
+    if model_path is None:
+        return None
+    from rockcli.errors import InputError
+    from rockcli.model.load import load_model
+    from rockcli.studies.floor import model_floor
+
+    floor = model_floor(load_model(model_path))
+    if floor is None:
+        raise InputError(
+            "the model stands on the ground (no [building] or building.Z = 0): its suite is "
+            "checked at the ground",
+            file=model_path,
+            where="--model",
+            allowed="--model with a block at height ([building] Z > 0), or no --model",
+        )
+    return floor

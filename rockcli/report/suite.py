@@ -43,12 +43,15 @@ def verdict_line(numbers: dict[str, Any], doc: dict[str, Any]) -> str:
 
 
 def records_table(doc: dict[str, Any]) -> Table:
-    """Per record: name, scale, PGA (of the scaled record)."""
+    """Per record: name, scale, PGA (of the scaled record; and of its floor motion at
+    height)."""
     columns = (
         Column("name", "record"),
         Column("scale", "scale", "-", "{:.4g}"),
         Column("pga_g", "PGA", "g", "{:.4g}"),
     )
+    if doc.get("at_height"):
+        columns += (Column("floor_pga_g", "floor PGA", "g", "{:.4g}"),)
     return Table("Records", columns, tuple(doc["records"]))
 
 
@@ -85,13 +88,36 @@ def target_table(doc: dict[str, Any]) -> Table:
             ("soil, topography", f"{p['soil']}, {p['topography']}", "", ""),
             ("S", p["S"], "-", "{:.4g}"),
             ("from", p["source"], "", ""),
+            *height_rows(doc.get("at_height")),
         ],
     )
+
+
+def height_rows(h: dict[str, Any] | None) -> list[tuple[str, Any, str, str]]:
+    """The floor the target is moved to (--model at height)."""
+    if not h:
+        return []
+    return [
+        ("at height Z", h["Z"], "m", "{:g}"),
+        ("building T1, ψ, γ, ξ", f"{h['T1']:.3g} s, {h['psi']:.3g}, {h['gamma']:.3g}, "
+         f"{h['xi']:g}", "", ""),
+        ("floor acceleration a_Z", h["a_z"], "g", "{:.4g}"),
+        ("target", "floor spectrum S_eZ (Circ. 7/2019 §C7.2.3), 5 %", "", ""),
+    ]  # fmt: skip
+
+
+#: What the check compares at a block's height.
+HEIGHT_NOTE = (
+    "at height: each record's floor motion (ü_g + γ·ψ·ẍ₁ of the building's first mode, what "
+    "the block rocks on in rock assess) against the code's floor spectrum at Z, both at 5 %"
+)
 
 
 def suite_report(doc: dict[str, Any]) -> Report:
     """The Report of a suite check document."""
     notes = [COUNT_TEXT[doc["count_rule"]].format(n=doc["count"])]
+    if doc.get("at_height"):
+        notes.append(HEIGHT_NOTE)
     verdict = verdict_line({"passed": doc["passed"], **doc}, doc)
     auto = doc.get("scale_auto")
     if auto is not None:

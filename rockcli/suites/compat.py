@@ -12,8 +12,9 @@ from __future__ import annotations
 
 import math
 from collections.abc import Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from enum import StrEnum
+from typing import Protocol
 
 import numpy as np
 
@@ -68,6 +69,54 @@ def record_spectra(records: Sequence[Record], periods: np.ndarray) -> np.ndarray
 def target_spectrum(spectrum: ElasticSpectrum, periods: np.ndarray) -> np.ndarray:
     """Se(T) [g] of the code's elastic horizontal spectrum at the periods (NTC §3.2.3.2.1)."""
     return spectrum.curve(periods)[0]
+
+
+class FloorFilter(Protocol):
+    """The building's first mode at the block's height (rockcli.studies.floor.Floor)."""
+
+    Z: float | None
+    T1: float
+    psi: float
+    gamma: float
+    xi: float
+
+
+#: The mechanism's damping in the floor target [%]: the suite's check is at 5 % (§3.2.3.6).
+TARGET_DAMPING = 5.0
+
+
+def floor_target(
+    spectrum: ElasticSpectrum, floor: FloorFilter, periods: np.ndarray
+) -> tuple[np.ndarray, float]:
+    """The code's floor spectrum S_eZ(T) [g] at 5 % at the periods, and its floor
+    acceleration a_Z [g], from the ground target (Circolare 7/2019 §C7.2.3, with NTC 2018
+    §7.2.3: a_Z = Se(T1, ξ_k)·|γ·ψ(Z)|·√(1 + 0.0004·ξ_k²), then the plateau 0.8–1.1·T1 and
+    its branches; ξ_k the building's damping, read as in rock kinematic)."""
+    from rockcli.codecheck.position import Position
+    from rockcli.codecheck.rules2019 import floor_acceleration, floor_spectrum
+
+    pos = Position(Z=floor.Z or 0.0, T1=floor.T1, gamma=floor.gamma, psi=floor.psi,
+                   damping=floor.xi)  # fmt: skip
+    a_z = floor_acceleration(spectrum, pos)
+    xi_k = 100.0 * floor.xi
+    curve = np.array([floor_spectrum(T, a_z, floor.T1, TARGET_DAMPING, xi_k) for T in periods])
+    return curve, a_z
+
+
+def floor_records(records: Sequence[Record], floor: FloorFilter) -> list[Record]:
+    """Each record's floor motion ü_g + γ·ψ·ẍ₁ (rockcli.codecheck.floor.floor_motion), the
+    motion a block at that height rocks on in `rock assess`."""
+    from rockcli.codecheck.floor import floor_motion
+
+    return [
+        replace(
+            r,
+            accel=floor_motion(
+                r.time, r.accel, T1=floor.T1, psi=floor.psi, gamma=floor.gamma, xi=floor.xi
+            ),
+        )  # fmt: skip
+        for r in records
+    ]
 
 
 @dataclass(frozen=True)

@@ -15,9 +15,12 @@ from rockcli.records.record import Record
 from rockcli.suites.compat import (
     AutoScale,
     Compatibility,
+    FloorFilter,
     auto_scale,
     compatibility,
     count_rule,
+    floor_records,
+    floor_target,
     period_grid,
     record_spectra,
     target_spectrum,
@@ -63,8 +66,19 @@ def target_of(target: Target, grid_file: str | None) -> TargetSpectrum:
 
 
 @dataclass(frozen=True)
+class FloorCheck:
+    """The check at a block's height: the floor, its acceleration a_Z [g] and each record's
+    floor motion PGA [g]."""
+
+    floor: FloorFilter
+    a_z: float
+    pga: list[float]
+
+
+@dataclass(frozen=True)
 class SuiteCheck:
-    """Everything the command shows."""
+    """Everything the command shows. records: the ground records, scaled (what a time
+    history takes); spectra: of the motions checked (the floor motions at height)."""
 
     settings: SuiteSettings
     records: list[Record]
@@ -73,29 +87,44 @@ class SuiteCheck:
     check: Compatibility
     auto: AutoScale | None
     scaled: Compatibility | None
+    at_height: FloorCheck | None = None
 
 
 def run_suite_check(
-    settings: SuiteSettings, grid_file: str | None, *, scale_auto: bool = False
+    settings: SuiteSettings,
+    grid_file: str | None,
+    *,
+    scale_auto: bool = False,
+    floor: FloorFilter | None = None,
 ) -> SuiteCheck:
-    """Read the records, compute their spectra, the mean and the check (and the auto factor)."""
+    """Read the records, compute their spectra, the mean and the check (and the auto factor).
+
+    floor: check at a block's height instead: each record's floor motion against the code's
+    floor spectrum of the target (compat.floor_records, compat.floor_target).
+    """
     try:
         target = target_of(settings.target, grid_file)
     except InputError as exc:  # a site outside the grid: name the suite file
         raise exc.with_file(settings.file) from None
     records = read_entries(settings)
     periods = period_grid(*settings.period_range)
-    spectra = record_spectra(records, periods)
-    check = compatibility(
-        periods, target_spectrum(target.spectrum, periods), spectra.mean(axis=0), settings.tolerance
-    )
+    at_height = None
+    if floor is None:
+        spectra = record_spectra(records, periods)
+        curve = target_spectrum(target.spectrum, periods)
+    else:
+        motions = floor_records(records, floor)
+        spectra = record_spectra(motions, periods)
+        curve, a_z = floor_target(target.spectrum, floor, periods)
+        at_height = FloorCheck(floor, a_z, [float(m.pga) for m in motions])
+    check = compatibility(periods, curve, spectra.mean(axis=0), settings.tolerance)
     auto = scaled = None
     if scale_auto:
         auto = auto_scale(check.ratio, settings.tolerance)
         if auto.factor is not None:
             mean = check.mean * auto.factor
             scaled = compatibility(periods, check.target, mean, settings.tolerance)
-    return SuiteCheck(settings, records, target, spectra, check, auto, scaled)
+    return SuiteCheck(settings, records, target, spectra, check, auto, scaled, at_height)
 
 
 def _bound(x: float) -> float | None:
@@ -148,7 +177,20 @@ def suite_document(result: SuiteCheck) -> dict[str, Any]:
             {"name": e.name, "scale": e.scale, "pga_g": r.pga, "file": str(e.path), "Sa": sa}
             for e, r, sa in zip(s.entries, result.records, result.spectra.tolist(), strict=True)
         ],
+        "at_height": None,
     }
+    if result.at_height is not None:
+        h = result.at_height
+        doc["at_height"] = {
+            "Z": h.floor.Z,
+            "T1": h.floor.T1,
+            "psi": h.floor.psi,
+            "gamma": h.floor.gamma,
+            "xi": h.floor.xi,
+            "a_z": h.a_z,
+        }
+        for row, pga in zip(doc["records"], h.pga, strict=True):
+            row["floor_pga_g"] = pga
     if result.auto is not None:
         scaled = check_numbers(result.scaled) if result.scaled is not None else {"passed": False}
         doc["scale_auto"] = {

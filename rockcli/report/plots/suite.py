@@ -31,8 +31,11 @@ def plot_suite(doc: Mapping[str, Any], path: str | Path) -> None:
     for i, rec in enumerate(doc["records"]):
         color = RECORD_COLORS[i % len(RECORD_COLORS)]
         ax.plot(T, rec["Sa"], lw=0.7, alpha=0.7, color=color, label=rec["name"])
-    ax.plot(T, doc["mean"], color="k", lw=2.4, label="mean of the records")
-    ax.plot(T, doc["target"], color="tab:red", lw=1.6, label="target Se")
+    height = doc.get("at_height")
+    mean_label = "mean of the floor motions" if height else "mean of the records"
+    target_label = f"floor spectrum S_eZ at Z = {height['Z']:g} m" if height else "target Se"
+    ax.plot(T, doc["mean"], color="k", lw=2.4, label=mean_label)
+    ax.plot(T, doc["target"], color="tab:red", lw=1.6, label=target_label)
     lo, hi = doc["tolerance"]
     lower = [(1.0 + lo) * t for t in doc["target"]]
     upper = [(1.0 + hi) * t for t in doc["target"]] if hi is not None else None
@@ -44,7 +47,8 @@ def plot_suite(doc: Mapping[str, Any], path: str | Path) -> None:
     ax.set_xlabel("period T [s]")
     ax.set_ylabel("spectral acceleration (5 % damping) [g]")
     verdict = "compatible" if doc["passed"] else "NOT compatible"
-    ax.set_title(f"{doc['suite']}: {verdict}", fontsize="medium")
+    where = f", floor motions at Z = {height['Z']:g} m" if height else ""
+    ax.set_title(f"{doc['suite']}{where}: {verdict}", fontsize="medium")
     ax.grid(True, which="both", lw=0.3)
     ax.legend(fontsize="x-small", ncols=2)
     fig.suptitle("rock suite check")
