@@ -17,6 +17,7 @@ from rockcli.cli.options import (
     jobs_option,
     load_record,
     output_format,
+    suite_option,
     target_option,
     with_record_options,
 )
@@ -29,13 +30,9 @@ EXIT_OVERTURNS = EXIT_GATE
 @click.command()
 @click.argument("model_path", metavar="MODEL", type=click.Path(dir_okay=False))
 @with_record_options(required=False)
-@click.option(
-    "--suite",
-    "suite_path",
-    type=click.Path(),
-    default=None,
-    help="A record suite file (TOML; rock suite check): every record, both polarities, and "
-    "the code's rule (the mean over 7 or more records, the worst over 3–6).",
+@suite_option(
+    "A record suite file (TOML; rock suite check): every record, both polarities, and "
+    "the code's rule (the mean over 7 or more records, the worst over 3–6)."
 )
 @hazard_grid_option
 @target_option

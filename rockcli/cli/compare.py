@@ -18,6 +18,7 @@ from rockcli.cli.options import (
     jobs_option,
     load_record,
     output_format,
+    suite_option,
     target_option,
     with_record_options,
 )
@@ -55,13 +56,9 @@ def refuse_record_demand(record_demand: bool) -> None:
 @click.command()
 @click.argument("model_path", metavar="MODEL", type=click.Path(dir_okay=False))
 @with_record_options(required=False)
-@click.option(
-    "--suite",
-    "suite_path",
-    type=click.Path(),
-    default=None,
-    help="A record suite file (TOML; rock suite check): every record through the time "
-    "history by the code's rule, against the code check on the suite's target spectrum.",
+@suite_option(
+    "A record suite file (TOML; rock suite check): every record through the time "
+    "history by the code's rule, against the code check on the suite's target spectrum."
 )
 @target_option
 @jobs_option("With --suite: workers, this process and N − 1 worker processes.")

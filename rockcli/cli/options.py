@@ -54,6 +54,11 @@ hazard_grid_option = click.option(
 )
 
 
+def suite_option(help_text: str):
+    """``--suite SUITE``: a suite file, or a folder of records (with --target)."""
+    return click.option("--suite", "suite_path", type=click.Path(), default=None, help=help_text)
+
+
 target_option = click.option(
     "--target",
     "target",

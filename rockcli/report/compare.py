@@ -7,7 +7,7 @@ from typing import TYPE_CHECKING, Any
 from rockcli import __version__
 from rockcli.records.record import Record
 from rockcli.report.assess import strength_caveat
-from rockcli.report.kinematic import ULTIMATE_FIX, actions_table, demand_line
+from rockcli.report.kinematic import EDITION_TEXT, ULTIMATE_FIX, actions_table, demand_line
 from rockcli.report.table import Column, Report, Table, format_value
 
 if TYPE_CHECKING:
@@ -161,9 +161,8 @@ def comparison_report(doc: dict[str, Any]) -> Report:
         COLUMNS,
         comparison_rows(doc),
     )
-    edition = {"2009": "NTC 2008 + Circ. 617/2009", "2019": "NTC 2018 + Circ. 7/2019"}
     notes = (
-        f"code: {edition[kin['edition']]}, Ts/T_SLV as in `rock kinematic`; demand: "
+        f"code: {EDITION_TEXT[kin['edition']]}, Ts/T_SLV as in `rock kinematic`; demand: "
         + "; ".join(demand_line(k, v) for k, v in kin["demand"].items()),
         f"rocking: both polarities, engine {roc['engine']['name']}; input: "
         + roc["record"].get("input_note", "the record itself, at the block's base"),

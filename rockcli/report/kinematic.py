@@ -171,11 +171,13 @@ QUANTITIES = {
 }
 
 
+#: The code texts of each edition, as the reports name them.
+EDITION_TEXT = {"2009": "NTC 2008 + Circ. 617/2009", "2019": "NTC 2018 + Circ. 7/2019"}
+
+
 def kinematic_report(doc: dict[str, Any]) -> Report:
     """The terminal report of a kinematic document."""
-    edition = {"2009": "NTC 2008 + Circ. 617/2009", "2019": "NTC 2018 + Circ. 7/2019"}[
-        doc["edition"]
-    ]
+    edition = EDITION_TEXT[doc["edition"]]
     items = [
         ("edition", edition, "", ""),
         ("side of overturning", "θ > 0" if doc["side"] > 0 else "θ < 0", "", ""),

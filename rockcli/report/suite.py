@@ -45,7 +45,7 @@ def verdict_line(numbers: dict[str, Any], doc: dict[str, Any]) -> str:
 def records_table(doc: dict[str, Any]) -> Table:
     """Per record: name, scale, PGA (of the scaled record; and of its floor motion at
     height)."""
-    columns = (
+    columns: tuple[Column, ...] = (
         Column("name", "record"),
         Column("scale", "scale", "-", "{:.4g}"),
         Column("pga_g", "PGA", "g", "{:.4g}"),
@@ -306,7 +306,7 @@ def suite_comparison_rows(doc: Mapping[str, Any]) -> tuple[dict[str, str], ...]:
 def suite_comparison_report(doc: dict[str, Any]) -> Report:
     """The terminal report of a model under a suite against the code check."""
     from rockcli.report.compare import COLUMNS
-    from rockcli.report.kinematic import demand_line
+    from rockcli.report.kinematic import EDITION_TEXT, demand_line
 
     suite, kin = doc["suite"], doc["kinematic"]
     base = suite_assessment_report(doc)
@@ -315,10 +315,9 @@ def suite_comparison_report(doc: dict[str, Any]) -> Report:
         COLUMNS,
         suite_comparison_rows(doc),
     )
-    edition = {"2009": "NTC 2008 + Circ. 617/2009", "2019": "NTC 2018 + Circ. 7/2019"}
     notes = (
         *base.notes,
-        f"code: {edition[kin['edition']]} on {CODE_DEMAND_TEXT[doc['code_demand']]}; both "
+        f"code: {EDITION_TEXT[kin['edition']]} on {CODE_DEMAND_TEXT[doc['code_demand']]}; both "
         f"sides judged at {doc['limit_state']} (the suite target's limit state)",
         "demand: " + "; ".join(demand_line(k, v) for k, v in kin["demand"].items()),
         *doc["notes"],
