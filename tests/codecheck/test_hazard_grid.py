@@ -251,3 +251,19 @@ def test_header_with_a_malformed_return_period_names_the_line(label: str) -> Non
         parse_grid(text, source="grid.txt")
     assert (info.value.file, info.value.where) == ("grid.txt", "line 1")
     assert info.value.value == label.removeprefix("TR=")
+
+
+def test_a_grid_file_is_read_once_and_again_when_edited(tmp_path: Path) -> None:
+    # read_grid keeps the parsed grid of an unchanged file (a suite's limit states each ask
+    # for it); an edited file (other size or time) is parsed again, never served stale.
+    path = tmp_path / "grid.txt"
+    path.write_text(small_grid_text(), encoding="utf-8")
+    first = read_grid(path)
+    assert read_grid(path) is first
+    edited = small_grid_text().replace("\t2.5\t", "\t2.6\t", 1)
+    path.write_text(edited + "\r\n", encoding="utf-8")
+    again = read_grid(path)
+    assert again is not first and again.F0.max() == pytest.approx(2.6)
+    path.write_text("not a grid\n", encoding="utf-8")
+    with pytest.raises(InputError):
+        read_grid(path)
