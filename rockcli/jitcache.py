@@ -22,6 +22,7 @@ import hashlib
 import os
 import stat
 import tempfile
+from collections.abc import Callable
 from pathlib import Path
 
 PACKAGE = Path(__file__).resolve().parent
@@ -103,8 +104,120 @@ def configure() -> bool:
     CACHE = chosen is not None
     if chosen is not None:
         config.CACHE_DIR = str(chosen)  # type: ignore[attr-defined]
+        install_locator()
     _configured = True
     return CACHE
+
+
+def folder() -> Path | None:
+    """The cache folder in use (None: no cache, or not configured yet)."""
+    from numba.core import config
+
+    return Path(config.CACHE_DIR) if CACHE and _configured and config.CACHE_DIR else None
+
+
+def install_locator() -> None:
+    """Put :class:`PackageLocator` first among numba's cache locators (once)."""
+    from numba.core import caching
+
+    # CacheImpl since numba 0.61, _CacheImpl before: the list every cache implementation
+    # shares (a class attribute of their base).
+    impl = getattr(caching, "CacheImpl", None) or caching._CacheImpl
+    locator = package_locator()
+    if locator not in impl._locator_classes:
+        impl._locator_classes.insert(0, locator)
+
+
+_LOCATOR: type | None = None
+
+
+def package_locator() -> type:
+    """numba's cache locator for rock's own kernels: their cache files are named after the
+    file's place in the package and stamped with a digest of its content, never with its
+    absolute path or modification time.
+
+    numba's own locators name the cache subfolder after the absolute folder of the source
+    (a hash of ``…/site-packages/rockcli/dynamics``) and, before numba 0.61, stamp it with
+    the file's modification time: a cache compiled while the package was built (setup.py)
+    would then never match the installed files. Keyed on content and relative place, the
+    cache compiled at build time is found by the installed package; a file edited anyway
+    changes the folder (:func:`sources_digest`) and its own stamp.
+    """
+    global _LOCATOR
+    if _LOCATOR is not None:
+        return _LOCATOR
+    from numba.core.caching import UserProvidedCacheLocator
+
+    class PackageLocator(UserProvidedCacheLocator):  # type: ignore[misc]
+        """Cache files of rock's kernels: CACHE_DIR/rockcli_<subpackage>, content-stamped."""
+
+        def __init__(self, py_func: object, py_file: str) -> None:
+            super().__init__(py_func, py_file)
+            from numba.core import config
+
+            parts = Path(py_file).resolve().relative_to(PACKAGE.parent).parent.parts
+            self._cache_path = os.path.join(config.CACHE_DIR, "_".join(parts))
+
+        def get_source_stamp(self) -> str:
+            return hashlib.sha256(Path(self._py_file).read_bytes()).hexdigest()
+
+        @classmethod
+        def from_function(cls, py_func: object, py_file: str) -> PackageLocator | None:
+            try:
+                Path(py_file).resolve().relative_to(PACKAGE)
+            except (OSError, ValueError):
+                return None  # not one of rock's files: numba's own locators
+            return super().from_function(py_func, py_file)
+
+    _LOCATOR = PackageLocator
+    return PackageLocator
+
+
+#: The file in the cache folder that says every kernel was compiled there, for which numba
+#: and which processor (a cache of another machine is not used by numba).
+MARKER = "compiled.json"
+
+
+def machine_key() -> dict[str, object]:
+    """What a compiled kernel is valid for: numba's version and the processor (numba's own
+    key of a cached function: the target triple, CPU name and features)."""
+    import numba
+    from numba.core.registry import cpu_target
+
+    return {
+        "numba": numba.__version__,
+        "machine": list(cpu_target.target_context.codegen().magic_tuple()),
+    }
+
+
+def compiled() -> bool:
+    """True when the cache folder holds every kernel compiled for this numba and machine."""
+    import json
+
+    where = folder()
+    if where is None:
+        return False
+    try:
+        data = json.loads((where / MARKER).read_text(encoding="utf-8"))
+    except (OSError, ValueError):
+        return False
+    return isinstance(data, dict) and {k: data.get(k) for k in ("numba", "machine")} == (
+        machine_key()
+    )
+
+
+def mark_compiled(seconds: float) -> None:
+    """Record that every kernel is in the cache folder (and how long compiling took)."""
+    import json
+
+    where = folder()
+    if where is None:
+        return
+    try:
+        text = json.dumps({**machine_key(), "seconds": round(seconds, 1)})
+        (where / MARKER).write_text(text, encoding="utf-8")
+    except OSError:
+        pass
 
 
 def writable(folder: Path) -> bool:
@@ -157,3 +270,35 @@ def prune(base: Path, keep: Path) -> None:
     for old in base.glob("numba-*"):
         if old != keep:
             shutil.rmtree(old, ignore_errors=True)
+
+
+#: Seconds every kernel takes to compile the first time, measured with an empty cache on the
+#: 2-core development machine (`rock warmup`: 37–41 s); what the message announces.
+COMPILE_ESTIMATE = 40
+#: Called before the kernels compile, with COMPILE_ESTIMATE, and after, with the seconds it
+#: took: the command line sets them to say so on stderr (the numeric core stays silent).
+before_compile: Callable[[float], None] | None = None
+after_compile: Callable[[float], None] | None = None
+_ready = False
+
+
+def ensure_compiled(compile_all: Callable[[], float]) -> None:
+    """Compile every kernel now, announced, unless the cache holds them for this machine.
+
+    Called where a kernel is first used in a process (rockcli.dynamics.simulate,
+    rockcli.codecheck.response): without it numba compiles each kernel silently at its first
+    call, for tens of seconds with nothing on the screen. compile_all: compiles them all
+    (rockcli.dynamics.warmup.warmup) and returns the seconds it took.
+    """
+    global _ready
+    if _ready:
+        return
+    _ready = True  # compile_all runs the kernels, which come back here
+    if compiled():
+        return
+    if before_compile is not None:
+        before_compile(COMPILE_ESTIMATE)
+    seconds = compile_all()
+    mark_compiled(seconds)
+    if after_compile is not None:
+        after_compile(seconds)

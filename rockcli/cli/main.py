@@ -58,6 +58,7 @@ class RockGroup(click.Group):
 
     def main(self, *args, **kwargs):
         make_output_encodable()
+        announce_compiling()
         return super().main(*args, **kwargs)
 
     def invoke(self, ctx: click.Context) -> object:
@@ -86,6 +87,22 @@ class RockGroup(click.Group):
         finally:
             show_cache_note()
         return None  # unreachable: ctx.exit raises
+
+
+def announce_compiling() -> None:
+    """Say on stderr when the engine compiles (the first run on a machine: tens of seconds),
+    and when it is done; stdout keeps only the command's output."""
+    from rockcli import jitcache
+
+    def before(estimate: float) -> None:
+        click.echo(
+            f"compiling the rocking engine for this machine, once: ~{estimate:.0f} s", err=True
+        )
+
+    def after(seconds: float) -> None:
+        click.echo(f"engine compiled in {seconds:.0f} s; later runs start at once", err=True)
+
+    jitcache.before_compile, jitcache.after_compile = before, after
 
 
 def show_cache_note() -> None:

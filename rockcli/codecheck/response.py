@@ -170,8 +170,11 @@ def peak_displacement_uniform(
         damping: fraction of critical, 0 ≤ ζ < 1.
         free_tail: include the free vibration after the last sample.
     """
+    from rockcli import jitcache
     from rockcli.codecheck.response_kernel import peak_response
+    from rockcli.dynamics.warmup import warmup
 
+    jitcache.ensure_compiled(warmup)
     coefficients = np.ascontiguousarray(np.array(step_coefficients(dt, omega, damping)))
     peak, u, v = peak_response(np.ascontiguousarray(-accel), coefficients)
     if free_tail:

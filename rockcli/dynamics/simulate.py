@@ -222,8 +222,11 @@ def simulate(
 
         rtol, atol = _reference_tolerances()
     else:
+        from rockcli import jitcache
         from rockcli.dynamics.kernel import integrate as run
+        from rockcli.dynamics.warmup import warmup
 
+        jitcache.ensure_compiled(warmup)
         rtol, atol = settings.rtol, settings.atol
     par = pack_parameters(block, settings, rtol, atol)
     par[L.P_THETA0] = theta0
