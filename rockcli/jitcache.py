@@ -113,7 +113,8 @@ def folder() -> Path | None:
     """The cache folder in use (None: no cache, or not configured yet)."""
     from numba.core import config
 
-    return Path(config.CACHE_DIR) if CACHE and _configured and config.CACHE_DIR else None
+    cache_dir = getattr(config, "CACHE_DIR", None)
+    return Path(cache_dir) if CACHE and _configured and cache_dir else None
 
 
 def install_locator() -> None:
@@ -122,7 +123,7 @@ def install_locator() -> None:
 
     # CacheImpl since numba 0.61, _CacheImpl before: the list every cache implementation
     # shares (a class attribute of their base).
-    impl = getattr(caching, "CacheImpl", None) or caching._CacheImpl
+    impl = getattr(caching, "CacheImpl", None) or getattr(caching, "_CacheImpl")  # noqa: B009
     locator = package_locator()
     if locator not in impl._locator_classes:
         impl._locator_classes.insert(0, locator)
@@ -148,7 +149,7 @@ def package_locator() -> type:
         return _LOCATOR
     from numba.core.caching import UserProvidedCacheLocator
 
-    class PackageLocator(UserProvidedCacheLocator):  # type: ignore[misc]
+    class PackageLocator(UserProvidedCacheLocator):
         """Cache files of rock's kernels: CACHE_DIR/rockcli_<subpackage>, content-stamped."""
 
         def __init__(self, py_func: object, py_file: str) -> None:
@@ -156,7 +157,7 @@ def package_locator() -> type:
             from numba.core import config
 
             parts = Path(py_file).resolve().relative_to(PACKAGE.parent).parent.parts
-            self._cache_path = os.path.join(config.CACHE_DIR, "_".join(parts))
+            self._cache_path = os.path.join(getattr(config, "CACHE_DIR"), "_".join(parts))  # noqa: B009
 
         def get_source_stamp(self) -> str:
             return hashlib.sha256(Path(self._py_file).read_bytes()).hexdigest()
