@@ -467,6 +467,56 @@ def restrainer_coefficient(k: float, r: float, inertia: float) -> float:
     return k * r * r / inertia
 
 
+def mirrored(block: Block) -> Block:
+    """The block seen in a mirror through its vertical mid-plane: pivot O becomes O′.
+
+    Each restrainer's two sides are swapped (stiffness, arm, angle, yield), each load's and
+    thrust's distances from the two pivots, each thrust's direction, and the restitution of
+    the two sides. One-sided motion swaps its free side (two-sided motion ignores it).
+    """
+    from dataclasses import replace
+
+    return replace(
+        block,
+        free_side=-block.free_side if block.one_sided else block.free_side,
+        e=block.e if block.e_neg is None else block.e_neg,
+        e_neg=None if block.e_neg is None else block.e,
+        restrainers=tuple(
+            replace(
+                r,
+                k_pos=r.k_neg,
+                k_neg=r.k_pos,
+                r_pos=r.r_neg,
+                r_neg=r.r_pos,
+                phi_pos=r.phi_neg,
+                phi_neg=r.phi_pos,
+                yield_pos=r.yield_neg,
+                yield_neg=r.yield_pos,
+            )
+            for r in block.restrainers
+        ),
+        loads=tuple(replace(ld, x_pos=ld.x_neg, x_neg=ld.x_pos) for ld in block.loads),
+        thrusts=tuple(
+            replace(th, x_pos=th.x_neg, x_neg=th.x_pos, direction=-th.direction)
+            for th in block.thrusts
+        ),
+    )
+
+
+def mirror_symmetric(block: Block) -> bool:
+    """True when the block is its own mirror image (:func:`mirrored`), so that its response
+    to −üg is exactly its response to +üg with θ → −θ.
+
+    The equations of motion of the two pivots (paper Eq. 1 with the restrainers of §4.1, the
+    loads and thrusts of docs/physics.md) map onto each other under θ → −θ, üg → −üg when
+    every quantity of side +1 equals its counterpart of side −1: two-sided motion, each
+    restrainer the same on both sides, each load as far from O as from O′, the same
+    restitution after impacts on either side, and no thrust (a thrust pushes one way). Exact
+    equality: a difference in the last digit makes the block asymmetric.
+    """
+    return not block.one_sided and not block.thrusts and mirrored(block) == block
+
+
 # Columns of a row of the point table (point_table): the block at its centroid, each load,
 # each thrust. Weights [N] that bear on the block and that move with it horizontally, the
 # thrust d·F [N] (d = ±1 its direction), the point's x from pivot O and from O′ [m], its height

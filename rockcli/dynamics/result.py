@@ -95,6 +95,8 @@ class RockingRun:
         warnings: remarks for the reader (chattering, event limit, …).
         history: θ(t), θ̇(t) when asked for.
         impact_loss: kinetic energy lost in impacts and at rest [J] (0 without a mass).
+        mirror_of: the polarity this run is the mirror image of (a mirror-symmetric block:
+            not integrated, θ → −θ of that run), None when it was integrated.
     """
 
     polarity: int
@@ -119,6 +121,7 @@ class RockingRun:
     warnings: tuple[str, ...] = ()
     history: History | None = field(default=None, compare=False, repr=False)
     impact_loss: float = 0.0
+    mirror_of: int | None = None
 
     @property
     def overturned(self) -> bool:

@@ -30,6 +30,7 @@ from rockcli.mechanics import (
     NEGATIVE,
     Block,
     Restrainer,
+    mirror_symmetric,
     point_moments,
     point_table,
     spring_failure_rotation,
@@ -399,8 +400,19 @@ def assess(
     settings: SolverSettings | None = None,
     engine: Engine = Engine.FAST,
     history: bool = False,
+    mirror: bool = True,
 ) -> Assessment:
-    """Both polarities of the record (the response to +üg and −üg differ: spec/rocking.md)."""
+    """Both polarities of the record (the response to +üg and −üg differ: spec/rocking.md).
+
+    A mirror-symmetric block (mechanics.mirror_symmetric) is integrated for +üg only: its
+    response to −üg is the mirror image, θ → −θ (mirror_run), marked ``mirror_of = 1``.
+    mirror=False integrates both (the property tests check the two agree).
+    """
+    if mirror and mirror_symmetric(block):
+        first = simulate(
+            block, time, accel, dt, polarity=1, settings=settings, engine=engine, history=history
+        )
+        return Assessment(runs=(first, mirror_run(first)))
     runs = tuple(
         simulate(
             block, time, accel, dt, polarity=pol, settings=settings, engine=engine, history=history
@@ -408,3 +420,30 @@ def assess(
         for pol in (1, -1)
     )
     return Assessment(runs=runs)
+
+
+def mirror_run(run: RockingRun) -> RockingRun:
+    """The run of the reversed record of a mirror-symmetric block: ``run`` with θ → −θ.
+
+    Extremes swap and change sign, the history's θ and θ̇ change sign; amplitudes, times,
+    counts, energies and restrainer demands are the same (each restrainer is the same on both
+    sides). Its warnings name its own polarity.
+    """
+    from dataclasses import replace
+
+    history = run.history
+    if history is not None:
+        history = replace(history, theta=-history.theta, omega=-history.omega)
+    polarity = -run.polarity
+    warnings = tuple(
+        w.replace(f"polarity {run.polarity:+d}:", f"polarity {polarity:+d}:") for w in run.warnings
+    )
+    return replace(
+        run,
+        polarity=polarity,
+        theta_max=-run.theta_min,
+        theta_min=-run.theta_max,
+        history=history,
+        warnings=warnings,
+        mirror_of=run.polarity,
+    )

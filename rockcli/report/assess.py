@@ -130,6 +130,7 @@ def run_document(run: RockingRun) -> dict[str, Any]:
             for p in run.restrainers
         ],
         "impact_energy_loss": run.impact_loss,
+        "mirror_of": run.mirror_of,
     }
 
 
@@ -309,11 +310,35 @@ def _run_cell(run: dict[str, Any], key: str, fmt: str) -> str:
     return format_value(run[key], fmt)
 
 
+#: Why a polarity was not integrated.
+MIRROR_NOTE = (
+    "polarity {p:+d} is the mirror image of polarity {of:+d} (θ → −θ), not integrated: the block "
+    "is mirror-symmetric (two-sided, each restrainer and load the same from either pivot, no "
+    "thrust)"
+)
+
+
+def mirror_note(runs: list[dict[str, Any]]) -> str | None:
+    """The note that a run is a mirror image (None when both were integrated)."""
+    for r in runs:
+        if r.get("mirror_of") is not None:
+            return MIRROR_NOTE.format(p=r["polarity"], of=r["mirror_of"])
+    return None
+
+
+def polarity_label(run: dict[str, Any]) -> str:
+    """``polarity +1``, or ``polarity -1 (mirror of +1)`` for a run not integrated."""
+    label = f"polarity {run['polarity']:+d}"
+    if run.get("mirror_of") is not None:
+        label += f" (mirror of {run['mirror_of']:+d})"
+    return label
+
+
 def runs_table(runs: list[dict[str, Any]]) -> Table:
     """Quantities down, polarities across (an overturned run's θ/α reads "overturned")."""
     cols = (
         Column("label", ""),
-        *(Column(f"p{r['polarity']}", f"polarity {r['polarity']:+d}") for r in runs),
+        *(Column(f"p{r['polarity']}", polarity_label(r)) for r in runs),
         Column("unit", "unit"),
     )
     rows = tuple(
@@ -405,6 +430,7 @@ def assessment_report(doc: dict[str, Any]) -> Report:
         f"rest threshold {eng['rest_velocity']:g} rad/s",
         *rec["notes"],
         *yield_notes(doc.get("restrainer_checks", [])),
+        mirror_note(doc["runs"]),
     ]
     notes = [n for n in notes if n]
     verdict = _verdict_line(doc)
