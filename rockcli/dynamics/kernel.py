@@ -742,6 +742,25 @@ def _nonfinite_peak_force(spring_out):
 
 
 @njit(cache=CACHE)
+def _pass_samples(
+    i, t0, t1, th, om, h, q_th, q_om, times, s, hist_th, hist_om, hist_f, springs, alive, lin
+):
+    """The index of the last sample at or before t1 (the samples inside a free-tail step,
+    which is not clipped at them), and, when the history is kept, θ and θ̇ stored there from
+    the step's dense output (its 4th-order interpolant, as the events use)."""
+    n = times.size
+    j = i
+    while j + 1 < n and times[j + 1] <= t1:
+        j += 1
+        if hist_th.size > 1:
+            x = (times[j] - t0) / h
+            th_j = _dense(x, th, h, q_th)
+            om_j = _dense(x, om, h, q_om)
+            _store(hist_th, hist_om, hist_f, j, j, th_j, om_j, s, springs, alive, lin)
+    return j
+
+
+@njit(cache=CACHE)
 def integrate(
     times,
     accel,
@@ -815,7 +834,14 @@ def integrate(
     status = L.STATUS_COMPLETED
     nan_rejects = 0
     lowest, highest = _level_bounds(s, par, springs, alive)
+    free_from = int(par[L.P_FREE_FROM])
+    if free_from <= 0:
+        free_from = n
     while i < n - 1:
+        if s == 0 and i >= free_from:  # at rest on ground at rest: nothing more happens
+            _store(hist_th, hist_om, hist_f, i + 1, n - 1, 0.0, 0.0, 0, springs, alive, lin)
+            t = times[n - 1]
+            break
         if s == 0:
             thr_pos, thr_neg = _uplift_thresholds(par, springs, alive, loaded, memory)
             tau, side, j = _next_uplift(t, i, times, accel, pol, par, thr_pos, thr_neg)
@@ -843,13 +869,15 @@ def integrate(
         if out_i[L.I_STEPS] + out_i[L.I_REJECTED] >= max_steps:
             status = L.STATUS_STEP_LIMIT
             break
-        t_next = times[i + 1]
+        # In the free tail (ground at rest) the step runs to the end, not to the next sample.
+        last = n - 1 if i >= free_from else i + 1
+        t_next = times[last]
         gap = t_next - t
         if gap <= GAP_FRACTION * (t_next - times[i]):
             t = t_next
-            i += 1
             if hist_th.size > 1:
-                _store(hist_th, hist_om, hist_f, i, i, th, om, s, springs, alive, lin)
+                _store(hist_th, hist_om, hist_f, i + 1, last, th, om, s, springs, alive, lin)
+            i = last
             f = _stage_at(t, th, om, s, i, times, accel, pol, par, springs, alive, points)
             continue
         h_try = min(h, gap)
@@ -912,15 +940,29 @@ def integrate(
                 MAX_FACTOR if err == 0.0 else min(MAX_FACTOR, SAFETY * err**ERROR_EXPONENT)
             )
         if kind == L.EV_NONE:
-            t = t_next if h_try == gap else t + h_try
+            t1 = t_next if h_try == gap else t + h_try
+            if last > i + 1:  # the free tail: the samples the step passed
+                if hist_th.size > 1 and x_ev > 1.0:  # the scan was skipped: no dense output
+                    _dense_coefficients(k_th, q_th)
+                    _dense_coefficients(k_om, q_om)
+                i = _pass_samples(
+                    i, t, t1, th, om, h_try, q_th, q_om, times, s, hist_th, hist_om, hist_f,
+                    springs, alive, lin,
+                )  # fmt: skip
+            t = t1
             th, om, f = th1, om1, f1
             out_f[L.O_MAX_OMEGA] = max(out_f[L.O_MAX_OMEGA], abs(om))
             if t == t_next:
-                i += 1
+                i = last
                 if hist_th.size > 1:
                     _store(hist_th, hist_om, hist_f, i, i, th, om, s, springs, alive, lin)
             continue
         t_ev = t + x_ev * h_try
+        if last > i + 1:  # the free tail: the samples before the event
+            i = _pass_samples(
+                i, t, t_ev, th, om, h_try, q_th, q_om, times, s, hist_th, hist_om, hist_f,
+                springs, alive, lin,
+            )  # fmt: skip
         om_ev = _dense(x_ev, om, h_try, q_om)
         th_ev = _dense(x_ev, th, h_try, q_th)
         out_f[L.O_MAX_OMEGA] = max(out_f[L.O_MAX_OMEGA], abs(om_ev))

@@ -12,7 +12,10 @@ P_I0, P_UPLIFT_POS, P_UPLIFT_NEG, P_E_NEG = 18, 19, 20, 21
 # pretensioned member raises the uplift acceleration by its moment times this), and the polar
 # moment of inertia of the block and its loads about each pivot at rest [kg·m²] (impact losses).
 P_PRE_SCALE_POS, P_PRE_SCALE_NEG, P_INERTIA_POS, P_INERTIA_NEG = 22, 23, 24, 25
-N_PARAMS = 26
+# Index of the first sample of the free tail (the ground at rest from there on): steps past it
+# are chosen by the error controller alone, not clipped at the samples; 0: every step clipped.
+P_FREE_FROM = 26
+N_PARAMS = 27
 
 # Float outputs.
 O_MAX_A, O_THETA_MAX, O_THETA_MIN, O_MAX_OMEGA, O_T_OVERTURN, O_T_UPLIFT, O_T_END = range(7)

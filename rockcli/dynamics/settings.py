@@ -47,6 +47,9 @@ class SolverSettings:
         max_steps: steps after which the run stops with status "step-limit" (at most; the
             run's work budget, tied to the record's length, can stop it sooner:
             simulate.STEPS_PER_SAMPLE).
+        free_tail: after the record, let the error controller alone choose the steps (the
+            ground is at rest: no sample to align with; the history is interpolated at the
+            tail's samples); False clips every step at every sample, as during the record.
     """
 
     rtol: float = DEFAULT_RTOL
@@ -56,6 +59,7 @@ class SolverSettings:
     tail: float | None = None
     max_events: int = DEFAULT_MAX_EVENTS
     max_steps: int = DEFAULT_MAX_STEPS
+    free_tail: bool = True
 
     def tail_for(self, p: float) -> float:
         """The free-vibration tail [s] for a block of frequency parameter p [rad/s]."""

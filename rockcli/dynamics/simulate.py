@@ -75,6 +75,14 @@ def extend_with_tail(
     )
 
 
+def free_from(accel: np.ndarray, n_record: int) -> int:
+    """The first sample from which the ground stays at rest to the end: one past the record's
+    last non-zero sample (a zero-padded record rests before its tail), at most the first
+    sample of the tail. The segment that ramps to zero before it is integrated as usual."""
+    moving = np.flatnonzero(accel[:n_record])
+    return int(moving[-1]) + 1 if moving.size else 0
+
+
 def step_budget(n_samples: int, max_steps: int) -> int:
     """Steps a run may take over a grid of n_samples samples (STEPS_PER_SAMPLE, module doc)."""
     return min(max_steps, STEPS_PER_SAMPLE * n_samples + STEP_BUDGET_BASE)
@@ -233,6 +241,7 @@ def simulate(
     par[L.P_THETA0] = theta0
     par[L.P_OMEGA0] = omega0
     par[L.P_MAX_STEPS] = float(step_budget(times.size, settings.max_steps))
+    par[L.P_FREE_FROM] = float(free_from(acc, time.size)) if settings.free_tail else 0.0
     springs = pack_springs(block)
     points = pack_points(block)
     alive = np.ones(len(block.restrainers), dtype=np.int64)
