@@ -514,7 +514,19 @@ def mirror_symmetric(block: Block) -> bool:
     restitution after impacts on either side, and no thrust (a thrust pushes one way). Exact
     equality: a difference in the last digit makes the block asymmetric.
     """
-    return not block.one_sided and not block.thrusts and mirrored(block) == block
+    if block.one_sided or block.thrusts:
+        return False
+    if block.e_neg is not None and block.e_neg != block.e:
+        return False
+    # mirrored(block) == block, field by field without building the mirror (once per case of
+    # a study): each restrainer and load the same from either pivot.
+    return all(
+        r.k_pos == r.k_neg
+        and r.r_pos == r.r_neg
+        and r.phi_pos == r.phi_neg
+        and r.yield_pos == r.yield_neg
+        for r in block.restrainers
+    ) and all(ld.x_pos == ld.x_neg for ld in block.loads)
 
 
 # Columns of a row of the point table (point_table): the block at its centroid, each load,

@@ -218,6 +218,7 @@ def sweep(
         announce_written(os.path.join(result.out, name))
     if plot_path:
         from rockcli.report.plots import plot_sweep
+        from rockcli.studies.sweep.run import plot_rows
 
-        plot_sweep(result.cases, plot_path, by=result.split)
+        plot_sweep(plot_rows(plan, result.out), plot_path, by=result.split)
     show(result.summary, output, sweep_report)

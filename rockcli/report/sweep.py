@@ -152,13 +152,33 @@ def sweep_report(doc: dict[str, Any]) -> Report:
         f"{doc['cases']} cases ({doc['computed_cases']} run now, {doc['resumed_cases']} from an "
         f"earlier run) in {doc['wall_time_s']:.2f} s; every case in {doc['out']}/cases.csv",
         *(suite_note(r) for r in doc["records"] if r.get("suite_records")),
+        check_note(doc),
         *(
             f"record {s['name']} skipped: {s['path']} is absent"
             + (f" (get it from {s['source']})" if s["source"] else "")
             for s in doc["skipped_records"]
         ),
     ]
-    return Report(title=f"rock sweep — {doc['name']}", tables=tuple(tables), notes=tuple(notes))
+    return Report(
+        title=f"rock sweep — {doc['name']}",
+        tables=tuple(tables),
+        notes=tuple(n for n in notes if n),
+    )
+
+
+def check_note(doc: dict[str, Any]) -> str | None:
+    """Say when not every model of the grid was validated before the study ran."""
+    points = 1
+    for axis in doc["axes"]:
+        points *= len(axis["values"])
+    checked = doc.get("checked_up_front")
+    if checked is None or checked >= points:
+        return None
+    return (
+        f"{checked} of the grid's {points} models were validated before the study ran (every "
+        "value of every axis); the others as they ran: a case that is not a valid model is a "
+        "row with its error"
+    )
 
 
 #: How a suite case's rocking verdict is reached (rockcli.studies.sweep.suite).

@@ -46,7 +46,7 @@ class AssessmentOutput:
 
 def settings_from(options: Any) -> SolverSettings:
     """SolverSettings from the model's [analysis] options (same field names by design)."""
-    return SolverSettings(**dataclasses.asdict(options))
+    return SolverSettings(**{f.name: getattr(options, f.name) for f in dataclasses.fields(options)})
 
 
 def assess_model_output(

@@ -22,7 +22,7 @@ from hypothesis import strategies as st
 
 from rockcli.dynamics.result import RockingRun
 from rockcli.dynamics.simulate import assess
-from rockcli.mechanics import Block, Load, Restrainer, Thrust, mirror_symmetric
+from rockcli.mechanics import Block, Load, Restrainer, Thrust, mirror_symmetric, mirrored
 
 #: Few examples: each integrates whole time histories.
 EXAMPLES = settings(max_examples=30, deadline=None)
@@ -81,7 +81,7 @@ def fields(run: RockingRun) -> dict:
 @EXAMPLES
 @given(symmetric_blocks(), PULSES)
 def test_symmetric_blocks_take_the_shortcut_and_it_is_exact(block: Block, shape) -> None:
-    assert mirror_symmetric(block)
+    assert mirror_symmetric(block) and mirrored(block) == block
     t, a = pulse(shape[0] * math.tan(block.alpha), shape[1])
     short = assess(block, t, a, DT, history=True)
     full = assess(block, t, a, DT, history=True, mirror=False)
@@ -133,5 +133,8 @@ def break_symmetry(block: Block, how: str, amount: float) -> Block:
 def test_asymmetric_blocks_never_take_the_shortcut(block: Block, how, amount, shape) -> None:
     broken = break_symmetry(block, how, amount)
     assert not mirror_symmetric(broken)
+    # The field-by-field test is the definition: a block equal to its mirror, two-sided,
+    # without thrusts (a thrust's mirror pushes the other way).
+    assert mirrored(broken) != broken or broken.one_sided or broken.thrusts
     t, a = pulse(shape[0] * math.tan(block.alpha), shape[1])
     assert [r.mirror_of for r in assess(broken, t, a, DT).runs] == [None, None]

@@ -17,7 +17,7 @@ import io
 import json
 import math
 import os
-from collections.abc import Iterable, Mapping, Sequence
+from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
 from dataclasses import asdict
 from pathlib import Path
 from typing import Any, NoReturn
@@ -181,16 +181,19 @@ class Output:
         folder: str,
         plan: StudyPlan,
         n_cases: int,
-        labels: Mapping[int, Sequence[str]] | None = None,
+        label_of: Callable[[int], Sequence[str]] | None = None,
     ) -> None:
-        """labels: per case id, the first cells of its row (case, record, axis values) as
-        written, to check the rows kept on --resume against."""
-        self.labels = labels or {}
+        """label_of: a case id's first cells (case, record, axis values) as written, to check
+        the rows kept on --resume against."""
+        self.label_of = label_of
         self.folder = Path(folder)
         self.header = columns(plan)
         self.fingerprint = fingerprint(plan)
         self.n_cases = n_cases
         self.file = str(plan.file)
+        # The blocks of rows in cases.csv, in the order written: (first id, last id, byte
+        # offset, byte length); None once a block is not in ascending order.
+        self._blocks: list[tuple[int, int, int, int]] | None = []
 
     @property
     def cases_path(self) -> Path:
@@ -216,6 +219,9 @@ class Output:
         """Mark the study unfinished and rewrite cases.csv with the rows kept."""
         self._write_state(complete=False)
         self._rewrite(kept)
+        header = len(csv_lines([self.header]).encode("utf-8"))
+        size = self.cases_path.stat().st_size
+        self._blocks = [(min(kept), max(kept), header, size - header)] if kept else []
 
     def _check_writable(self) -> None:
         folder = self.folder
@@ -308,7 +314,7 @@ class Output:
             return f"{len(row)} cells, not {len(self.header)}"
         if not (row[0].isascii() and row[0].isdigit() and int(row[0]) < self.n_cases):
             return f"not a case id of this study (0 to {self.n_cases - 1})"
-        expected = self.labels.get(int(row[0]))
+        expected = self.label_of(int(row[0])) if self.label_of is not None else None
         if expected is not None and list(row[: len(expected)]) != list(expected):
             return "the record or axis values are not those of its case"
         cells = dict(zip(self.header, row, strict=True))
@@ -332,20 +338,63 @@ class Output:
         body = [self.header, *([rows[k][c] for c in self.header] for k in sorted(rows))]
         write_text(self.cases_path, csv_lines(body))
 
-    def append(self, rows: Iterable[Mapping[str, Any]]) -> list[dict[str, str]]:
-        """Append the rows of a completed chunk; returns them as written (text cells)."""
-        written = [{c: cell(row.get(c)) for c in self.header} for row in rows]
+    def append(self, rows: Iterable[Mapping[str, Any]]) -> list[int]:
+        """Append the rows of a completed chunk; returns their case ids."""
+        cells = [[cell(row.get(c)) for c in self.header] for row in rows]
+        ids = [int(r[0]) for r in cells]
+        data = csv_lines(cells).encode("utf-8")
         flags = os.O_WRONLY | os.O_APPEND | getattr(os, "O_NOFOLLOW", 0)  # never via a link
-        with open(os.open(self.cases_path, flags), "a", encoding="utf-8") as out:
-            out.write(csv_lines([[r[c] for c in self.header] for r in written]))
-            out.flush()
-        return written
+        fd = os.open(self.cases_path, flags)
+        try:
+            offset = os.fstat(fd).st_size
+            view = memoryview(data)
+            while view:
+                view = view[os.write(fd, view) :]
+        finally:
+            os.close(fd)
+        if ids and self._blocks is not None:
+            if all(a < b for a, b in zip(ids, ids[1:], strict=False)):
+                self._blocks.append((ids[0], ids[-1], offset, len(data)))
+            else:
+                self._blocks = None
+        return ids
 
-    def finish(self, rows: Mapping[int, Mapping[str, str]], summary: dict[str, Any]) -> None:
-        """Sort cases.csv by case id, write summary.json and mark the study complete."""
-        self._rewrite(rows)
+    def finish(self) -> None:
+        """Sort cases.csv by case id, streaming: the blocks written are each in order and
+        (in a study run from start to end) cover disjoint ranges of ids, so they are copied in
+        the order of their first id; otherwise (a resumed study) the rows are sorted in
+        memory."""
+        blocks = sorted(self._blocks) if self._blocks is not None else None
+        disjoint = blocks is not None and all(
+            a[1] < b[0] for a, b in zip(blocks, blocks[1:], strict=False)
+        )
+        if not disjoint or blocks is None:
+            self._rewrite(self.read_rows())
+            return
+        if all(a[2] < b[2] for a, b in zip(blocks, blocks[1:], strict=False)):
+            return  # written in order already
+        target = self.cases_path.with_name(CASES_FILE + ".sorting")
+        with open(self.cases_path, "rb") as src, open(target, "wb") as dst:
+            dst.write(csv_lines([self.header]).encode("utf-8"))
+            for _, _, offset, length in blocks:
+                src.seek(offset)
+                dst.write(src.read(length))
+        os.replace(target, self.cases_path)
+
+    def write_summary(self, summary: dict[str, Any]) -> None:
+        """Write summary.json and mark the study complete."""
         write_text(self.folder / SUMMARY_FILE, json.dumps(summary, indent=2, allow_nan=False))
         self._write_state(complete=True)
+
+    def typed_rows(self) -> Iterator[tuple[int, dict[str, Any]]]:
+        """Each case id and its result cells as values, read from cases.csv one row at a time."""
+        with open(self.cases_path, encoding="utf-8", newline="") as fh:
+            reader = csv.reader(fh)
+            header = next(reader, None)
+            if header is None:
+                return
+            for row in reader:
+                yield int(row[0]), typed(dict(zip(header, row, strict=True)))
 
 
 def _existing_parent(path: Path) -> Path:

@@ -9,7 +9,6 @@ value is set in them; the case's validation then says whether the result is a va
 
 from __future__ import annotations
 
-import copy
 from collections.abc import Mapping, Sequence
 from typing import Any, get_args, get_origin
 
@@ -122,26 +121,37 @@ def _text(path: Sequence[str | int]) -> str:
     return out
 
 
-def set_path(data: dict[str, Any], path: KeyPath, value: Scalar) -> None:
-    """Set a value in the model table in place, creating absent tables on the way."""
-    node: Any = data
-    for key in path[:-1]:
-        if isinstance(key, int):
-            node = node[key]
-        else:
-            node = node.setdefault(key, {})
-    node[path[-1]] = value
-
-
 def with_values(
     base: Mapping[str, Any], axes: Sequence[Axis], indices: Sequence[int]
 ) -> dict[str, Any]:
-    """A copy of the base model table with each axis at its index-th value."""
-    data = copy.deepcopy(dict(base))
+    """The base model table with each axis at its index-th value, the base untouched.
+
+    Only the tables and arrays on the axes' paths are copied (one level each); the rest is
+    shared with the base, which nothing mutates (validation reads the table). A deep copy of
+    the whole table per case was a third of a case's time in a large study.
+    """
+    data = dict(base)
     for axis, index in zip(axes, indices, strict=True):
         for path, value in zip(axis.paths, axis.values[index], strict=True):
-            set_path(data, path, value)
+            set_copied(data, path, value)
     return data
+
+
+def set_copied(data: dict[str, Any], path: KeyPath, value: Scalar) -> None:
+    """Set a value in a table whose containers on the path are copied first (and absent tables
+    created), so that tables shared with another table are never changed."""
+    node: Any = data
+    for key in path[:-1]:
+        if isinstance(key, int):
+            child = list(node[key]) if isinstance(node[key], list) else dict(node[key])
+        else:
+            found = node.get(key)
+            child = (
+                {} if found is None else (list(found) if isinstance(found, list) else dict(found))
+            )
+        node[key] = child
+        node = child
+    node[path[-1]] = value
 
 
 def check_axes(specs: Sequence[AxisSpec], base: Mapping[str, Any], file: str) -> tuple[Axis, ...]:

@@ -21,7 +21,7 @@ from typing import Any, Protocol, TypeVar, cast
 from rockcli.errors import InputError
 from rockcli.studies.sweep.cases import Case, check_cases, expand
 from rockcli.studies.sweep.executor import Lane
-from rockcli.studies.sweep.output import Output, cell, typed
+from rockcli.studies.sweep.output import Output, cell
 from rockcli.studies.sweep.study import StudyPlan
 from rockcli.studies.sweep.worker import Chunk, read_source, run_chunk
 
@@ -72,17 +72,15 @@ class SweepInterrupted(KeyboardInterrupt):
 
 @dataclass(frozen=True)
 class SweepResult:
-    """The summary document, every case's verdicts (for the collapse map) and the folder.
+    """The summary document and the output folder (the cases are in its cases.csv).
 
     Attributes:
         summary: the `rock sweep --format json` document.
-        cases: per case, R, alpha, record, code_collapse, rocking_collapse and the axes.
         split: the axis to draw one panel per value of (the first non-geometric one).
         out: the output folder.
     """
 
     summary: dict[str, Any]
-    cases: list[dict[str, Any]]
     split: str | None
     out: str
 
@@ -264,28 +262,33 @@ def run_sweep(
         run_facts: extra facts for the summary (jobs, scheduler).
         started: time.perf_counter() when the command started (the summary's wall time).
     """
-    from rockcli.studies.sweep.summary import case_rows, split_axis, summarize
+    from rockcli.studies.sweep.summary import split_axis, summarize
 
     start = time.perf_counter() if started is None else started
     cases = expand(plan)
-    first = {c.id: [cell(v) for v in _labels(plan, c).values()] for c in cases}
-    output = Output(out, plan, len(cases), first)
-    rows = output.check(resume=resume, overwrite=overwrite)  # before any work
-    check_cases(plan)
+    output = Output(out, plan, len(cases), lambda k: _label_cells(plan, cases[k]))
+    kept = output.check(resume=resume, overwrite=overwrite)  # before any work
+    checked = check_cases(plan)
     npts, facts = record_facts(plan)
-    output.start(rows)
-    resumed = len(rows)
-    todo = [c for c in cases if c.id not in rows]
-    labels = {c.id: _labels(plan, c) for c in todo}
+    output.start(kept)
+    # Which cases are saved: one byte each, not their rows (memory stays flat).
+    done = bytearray(len(cases))
+    for k in kept:
+        done[k] = 1
+    resumed = saved = len(kept)
+    todo = [c for c in cases if not done[c.id]]
+    del kept
     if progress:
-        progress(len(rows), len(cases))
+        progress(saved, len(cases))
     workers = sum(lane.workers for lane in lanes)
 
     def save(chunk_rows: list[dict[str, Any]]) -> None:
-        written = output.append({**labels[r["case"]], **r} for r in chunk_rows)
-        rows.update((int(w["case"]), w) for w in written)
+        nonlocal saved
+        for k in output.append({**_labels(plan, cases[r["case"]]), **r} for r in chunk_rows):
+            saved += not done[k]
+            done[k] = 1
         if progress:
-            progress(len(rows), len(cases))
+            progress(saved, len(cases))
 
     try:
         speed = 1.0
@@ -298,11 +301,11 @@ def run_sweep(
         ):
             save(chunk_rows)
     except KeyboardInterrupt:
-        raise SweepInterrupted(len(rows), len(cases), str(output.folder)) from None
+        raise SweepInterrupted(saved, len(cases), str(output.folder)) from None
     except OSError as exc:  # a full disk, a folder turned read-only
         raise InputError(
             f"cannot write the output folder: {exc.strerror or exc}; "
-            f"{len(rows)} of {len(cases)} cases saved",
+            f"{saved} of {len(cases)} cases saved",
             file=str(output.folder),
             where="--out",
             allowed="a writable folder with free space, then rerun with --resume",
@@ -312,14 +315,28 @@ def run_sweep(
         "computed_cases": len(cases) - resumed,
         "resumed_cases": resumed,
         **(run_facts or {}),
+        "checked_up_front": checked,
         "wall_time_s": time.perf_counter() - start,
     }
-    results = {k: typed(v) for k, v in rows.items()}
-    summary = summarize(plan, cases, results, facts, run)
-    output.finish(rows, summary)
-    return SweepResult(
-        summary, case_rows(plan, cases, results), split_axis(plan), str(output.folder)
-    )
+    output.finish()
+    summary = summarize(plan, ((cases[k], row) for k, row in output.typed_rows()), facts, run)
+    output.write_summary(summary)
+    return SweepResult(summary, split_axis(plan), str(output.folder))
+
+
+def plot_rows(plan: StudyPlan, out: str) -> list[dict[str, Any]]:
+    """Every case as the collapse map draws it (summary.case_rows), read back from the output
+    folder's cases.csv (only a plot needs them all at once)."""
+    from rockcli.studies.sweep.summary import case_rows
+
+    output = Output(out, plan, 0)
+    cases = expand(plan)
+    return case_rows(plan, cases, dict(output.typed_rows()))
+
+
+def _label_cells(plan: StudyPlan, case: Case) -> list[str]:
+    """The first cells of a case's row as written (its id, record and axis values)."""
+    return [cell(v) for v in _labels(plan, case).values()]
 
 
 def _labels(plan: StudyPlan, case: Case) -> dict[str, Any]:

@@ -65,30 +65,51 @@ def undetermined(row: Mapping[str, Any], analyses: Iterable[str]) -> bool:
     )
 
 
-def tally(rows: Iterable[Mapping[str, Any]], analyses: Iterable[str]) -> dict[str, int | None]:
-    """The counts of a set of cases (None: the analyses behind a count did not run)."""
-    out: dict[str, int] = {
-        "cases": 0,
-        "code_collapses": 0,
-        "rocking_collapses": 0,
-        "code_conservative": 0,
-        "code_unconservative": 0,
-        "consistent_safe": 0,
-        "consistent_unsafe": 0,
-        "undetermined": 0,
-        "errors": 0,
-    }
-    ran = set(analyses)
-    for row in rows:
+#: The counts of a set of cases.
+COUNT_KEYS = (
+    "cases",
+    "code_collapses",
+    "rocking_collapses",
+    "code_conservative",
+    "code_unconservative",
+    "consistent_safe",
+    "consistent_unsafe",
+    "undetermined",
+    "errors",
+)
+
+
+class Counts:
+    """The counts of a set of cases, one case at a time (a study's summary streams its rows:
+    no per-case object is kept)."""
+
+    def __init__(self, analyses: Iterable[str]) -> None:
+        self.ran = set(analyses)
+        self.counts = dict.fromkeys(COUNT_KEYS, 0)
+
+    def add(self, row: Mapping[str, Any]) -> None:
+        """Count one case."""
+        out = self.counts
         out["cases"] += 1
         out["code_collapses"] += code_collapse(row) is True
         out["rocking_collapses"] += rocking_collapse(row) is True
         kind = row.get("classification")
         if kind is not None and kind != "undetermined":
             out[kind.replace("-", "_")] += 1
-        out["undetermined"] += undetermined(row, ran)
+        out["undetermined"] += undetermined(row, self.ran)
         out["errors"] += bool(row.get("error"))
-    return {k: v if NEEDS.get(k, set()) <= ran else None for k, v in out.items()}
+
+    def result(self) -> dict[str, int | None]:
+        """The counts (None: the analyses behind a count did not run)."""
+        return {k: v if NEEDS.get(k, set()) <= self.ran else None for k, v in self.counts.items()}
+
+
+def tally(rows: Iterable[Mapping[str, Any]], analyses: Iterable[str]) -> dict[str, int | None]:
+    """The counts of a set of cases (None: the analyses behind a count did not run)."""
+    counts = Counts(analyses)
+    for row in rows:
+        counts.add(row)
+    return counts.result()
 
 
 def run_count(rows: Iterable[Mapping[str, Any]], analyses: Iterable[str]) -> int:
@@ -132,57 +153,60 @@ def sort_key(key: tuple[Hashable, ...]) -> tuple[tuple[int, Any], ...]:
 
 def summarize(
     plan: StudyPlan,
-    cases: Sequence[Case],
-    results: Mapping[int, Mapping[str, Any]],
+    rows: Iterable[tuple[Case, Mapping[str, Any]]],
     records: Mapping[str, Mapping[str, Any]],
     run: Mapping[str, Any],
 ) -> dict[str, Any]:
-    """The summary document (`rock sweep --format json`, schema 1).
+    """The summary document (`rock sweep --format json`, schema 1), in one pass over the
+    cases (memory: the groups' counts, not the cases).
 
     Args:
-        plan: the study. cases: every case. results: the typed result columns by case id.
+        plan: the study. rows: every case with its typed result columns.
         records: per record name, its pga_g, npts, duration_s, path.
         run: facts of this run (out, wall_time_s, computed, resumed, jobs, scheduler).
     """
-    rows = [_row(plan, c, results[c.id]) for c in cases]
-    total = tally(rows, plan.analyses)
+    analyses = plan.analyses
     order = {r.name: i for i, r in enumerate(plan.records)}
-
-    def by_record(row: Mapping[str, Any]) -> tuple[Hashable, ...]:
-        return order.get(row["record"], -1), row["record"]
-
-    def by_record_alpha(row: Mapping[str, Any]) -> tuple[Hashable, ...]:
-        return *by_record(row), row["_alpha"]
-
-    def by_axis(i: int) -> Callable[[Mapping[str, Any]], tuple[Hashable, ...]]:
-        return lambda row: (row["_index"][i], row["_label"][i], row["_alpha"])
-
+    total = Counts(analyses)
+    by_record: dict[tuple[Hashable, ...], Counts] = {}
+    by_record_alpha: dict[tuple[Hashable, ...], Counts] = {}
+    split = [i for i, a in enumerate(plan.axes) if any(p[0] != "geometry" for p in a.paths)]
+    by_axis: dict[int, dict[tuple[Hashable, ...], Counts]] = {i: {} for i in split}
+    runs = 0
+    for case, result in rows:
+        row = _row(plan, case, result)
+        total.add(row)
+        runs += 2 * (row.get("suite_records") or 1)
+        record = (order.get(row["record"], -1), row["record"])
+        _group(by_record, record, analyses).add(row)
+        _group(by_record_alpha, (*record, row["_alpha"]), analyses).add(row)
+        for i in split:
+            key = (row["_index"][i], row["_label"][i], row["_alpha"])
+            _group(by_axis[i], key, analyses).add(row)
+    counts = total.result()
     records_rows = [
-        {"record": k[1], **(records.get(str(k[1])) or {}), **t}
-        for k, t in grouped(rows, by_record, plan.analyses)
+        {"record": k[1], **(records.get(str(k[1])) or {}), **c.result()}
+        for k, c in _sorted(by_record)
     ]
     alpha_rows = [
-        {"record": k[1], "alpha": k[2], **t}
-        for k, t in grouped(rows, by_record_alpha, plan.analyses)
+        {"record": k[1], "alpha": k[2], **c.result()} for k, c in _sorted(by_record_alpha)
     ]
     axis_rows = {
-        axis.name: [
-            {axis.name: k[1], "alpha": k[2], **t}
-            for k, t in grouped(rows, by_axis(i), plan.analyses)
+        plan.axes[i].name: [
+            {plan.axes[i].name: k[1], "alpha": k[2], **c.result()} for k, c in _sorted(by_axis[i])
         ]
-        for i, axis in enumerate(plan.axes)
-        if any(p[0] != "geometry" for p in axis.paths)
+        for i in split
     }
     return {
         "schema": SCHEMA,
         "rock_version": __version__,
         "study": plan.file,
         "name": plan.name,
-        "analyses": list(plan.analyses),
-        **total,
-        "runs": run_count(rows, plan.analyses),
-        "inconsistency_share": share(total["code_conservative"], total["code_collapses"]),
-        "unconservative_share": share(total["code_unconservative"], total["rocking_collapses"]),
+        "analyses": list(analyses),
+        **counts,
+        "runs": runs if "rocking" in analyses else 0,
+        "inconsistency_share": share(counts["code_conservative"], counts["code_collapses"]),
+        "unconservative_share": share(counts["code_unconservative"], counts["rocking_collapses"]),
         "axes": [
             {
                 "name": a.name,
@@ -199,6 +223,21 @@ def summarize(
         "by_axis_alpha": axis_rows,
         **run,
     }
+
+
+def _group(
+    groups: dict[tuple[Hashable, ...], Counts], key: tuple[Hashable, ...], analyses: Iterable[str]
+) -> Counts:
+    found = groups.get(key)
+    if found is None:
+        found = groups[key] = Counts(analyses)
+    return found
+
+
+def _sorted(
+    groups: dict[tuple[Hashable, ...], Counts],
+) -> list[tuple[tuple[Hashable, ...], Counts]]:
+    return [(k, groups[k]) for k in sorted(groups, key=sort_key)]
 
 
 def _row(plan: StudyPlan, case: Case, result: Mapping[str, Any]) -> dict[str, Any]:
