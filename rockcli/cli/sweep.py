@@ -148,6 +148,15 @@ def terminate_as_interrupt() -> Iterator[None]:
     default=None,
     help="Progress bar on stderr [default: when stderr is a terminal].",
 )
+@click.option(
+    "--output",
+    "cases_format",
+    type=click.Choice(["csv", "parquet"]),
+    default="csv",
+    show_default=True,
+    help="The cases' file: cases.csv, or also cases.parquet (typed columns, for pandas and "
+    "polars; needs rockcli[parquet]).",
+)
 @hazard_grid_option
 @plot_option
 @output_format
@@ -162,6 +171,7 @@ def sweep(
     records_dir,
     chunk_size,
     progress,
+    cases_format,
     grid_file,
     plot_path,
     output,
@@ -185,6 +195,7 @@ def sweep(
     quick_exit()
     if resume and overwrite:
         raise click.UsageError("--resume and --force exclude each other")
+    check_parquet(cases_format)
     plan = load_study(study_path, records_dir, allow_outside=allow_outside, grid_file=grid_file)
     jobs = worker_count(jobs, len(expand(plan)))
     out = out or default_out(study_path)
@@ -202,6 +213,7 @@ def sweep(
                 progress=bar,
                 run_facts=facts,
                 started=started,
+                parquet=cases_format == "parquet",
             )
     except SweepInterrupted as exc:
         click.echo(
@@ -214,7 +226,8 @@ def sweep(
     except KeyboardInterrupt:
         click.echo("interrupted before any case ran", err=True)
         raise SystemExit(EXIT_INTERRUPTED) from None
-    for name in ("cases.csv", "summary.json"):
+    names = ("cases.csv", "cases.parquet") if cases_format == "parquet" else ("cases.csv",)
+    for name in (*names, "summary.json"):
         announce_written(os.path.join(result.out, name))
     if plot_path:
         from rockcli.report.plots import plot_sweep
@@ -222,3 +235,19 @@ def sweep(
 
         plot_sweep(plot_rows(plan, result.out), plot_path, by=result.split)
     show(result.summary, output, sweep_report)
+
+
+def check_parquet(cases_format: str) -> None:
+    """Refuse --output parquet without pyarrow, before any work (InputError naming the extra)."""
+    if cases_format != "parquet":
+        return
+    from rockcli.studies.sweep.output import PARQUET_EXTRA, parquet_available
+
+    if not parquet_available():
+        from rockcli.errors import InputError
+
+        raise InputError(
+            "needs pyarrow, which is not installed",
+            where="--output parquet",
+            allowed=PARQUET_EXTRA + ", or --output csv",
+        )

@@ -28,6 +28,9 @@ from rockcli.outfile import write_text
 from rockcli.studies.sweep.study import RecordSource, StudyPlan
 
 CASES_FILE = "cases.csv"
+PARQUET_FILE = "cases.parquet"
+#: What --output parquet needs, and how to get it.
+PARQUET_EXTRA = "pip install 'rockcli[parquet]' (pyarrow)"
 STATE_FILE = "sweep.json"
 SUMMARY_FILE = "summary.json"
 STATE_SCHEMA = 1
@@ -408,3 +411,49 @@ def _existing_parent(path: Path) -> Path:
 def typed(row: Mapping[str, str]) -> dict[str, Any]:
     """The result cells of a row as values (floats, booleans, text, None)."""
     return {k: parse_cell(unescape(row[k]), kind) for k, kind in RESULT_COLUMNS.items()}
+
+
+def parquet_available() -> bool:
+    """True when pyarrow can be imported (the parquet extra)."""
+    import importlib.util
+
+    return importlib.util.find_spec("pyarrow") is not None
+
+
+#: Arrow types of the result columns (RESULT_COLUMNS' Python types).
+_ARROW_TYPES = {float: "float64", bool: "bool", str: "string", int: "int64"}
+
+
+def write_parquet(csv_path: Path, parquet_path: Path, header: Sequence[str]) -> None:
+    """cases.csv as Parquet, streamed block by block (memory flat): the case id and the
+    result columns typed (RESULT_COLUMNS; empty cells null), the record and axis columns as
+    Arrow infers them, and text cells without the quote that guards them in the CSV against
+    spreadsheet formulas (:func:`escape`)."""
+    import pyarrow as pa
+    import pyarrow.compute as pc
+    import pyarrow.csv as pacsv
+    import pyarrow.parquet as pq
+
+    types = {"case": pa.int64(), "record": pa.string()}
+    types |= {k: pa.type_for_alias(_ARROW_TYPES[v]) for k, v in RESULT_COLUMNS.items()}
+    convert = pacsv.ConvertOptions(
+        column_types=types,
+        true_values=["true"],
+        false_values=["false"],
+        null_values=[""],
+        strings_can_be_null=True,
+    )
+    read = pacsv.ReadOptions(block_size=1 << 22)
+    reader = pacsv.open_csv(str(csv_path), read_options=read, convert_options=convert)
+    guarded = r"^'+[=+\-@\t\r]"
+    tmp = parquet_path.with_name(parquet_path.name + ".writing")
+    with pq.ParquetWriter(str(tmp), reader.schema) as writer:
+        for batch in reader:
+            columns = []
+            for field, column in zip(batch.schema, batch.columns, strict=True):
+                if pa.types.is_string(field.type):
+                    strip = pc.match_substring_regex(column, guarded)
+                    column = pc.if_else(strip, pc.utf8_slice_codeunits(column, 1), column)
+                columns.append(column)
+            writer.write_batch(pa.RecordBatch.from_arrays(columns, schema=batch.schema))
+    os.replace(tmp, parquet_path)

@@ -249,6 +249,7 @@ def run_sweep(
     progress: Progress | None = None,
     run_facts: dict[str, Any] | None = None,
     started: float | None = None,
+    parquet: bool = False,
 ) -> SweepResult:
     """Run every case of a study not already in the output folder; the summary.
 
@@ -261,6 +262,7 @@ def run_sweep(
         progress: called with (cases done, cases in all) after each chunk.
         run_facts: extra facts for the summary (jobs, scheduler).
         started: time.perf_counter() when the command started (the summary's wall time).
+        parquet: also write the cases as cases.parquet (needs pyarrow).
     """
     from rockcli.studies.sweep.summary import split_axis, summarize
 
@@ -319,6 +321,10 @@ def run_sweep(
         "wall_time_s": time.perf_counter() - start,
     }
     output.finish()
+    if parquet:
+        from rockcli.studies.sweep.output import PARQUET_FILE, write_parquet
+
+        write_parquet(output.cases_path, output.folder / PARQUET_FILE, output.header)
     summary = summarize(plan, ((cases[k], row) for k, row in output.typed_rows()), facts, run)
     output.write_summary(summary)
     return SweepResult(summary, split_axis(plan), str(output.folder))
