@@ -14,11 +14,20 @@ Prints:
 
     python benchmarks/sweep.py            # the §4.4 parts need ../shared/records
     python benchmarks/sweep.py --stop     # 4. below, alone
+    python benchmarks/sweep.py --scale    # 5. below, alone (needs ../shared/records)
 
 4. stopping (issue 7, item 13): a study with the reference engine (the pulses, 32 cases)
    with --jobs 2, sent SIGINT to its process group (a terminal's Ctrl-C) or SIGTERM, or
    SIGKILL, after STOP_AFTER s: the exit code, the time it takes to stop, the cases saved,
    and the processes (with their memory) still alive STOP_SETTLE s later.
+
+5. scale (issue 11, item 5): a rocking-only study of SCALE_CASES cases (R × α × K of the
+   paper's §4.4 wall with its top spring) on ELC180 (a 40 s record), and one of a tenth of the
+   cases, each with --jobs 1 and --jobs 2: wall time and cases/s (start-up included), the
+   peak memory of the processes (RSS, the largest of rock and its workers), the size of
+   cases.csv and of cases.parquet (pyarrow installed), and the 10⁶-case time extrapolated from
+   the larger study's throughput. Peak memory that does not grow with the cases is the
+   streaming at work.
 
 Target (issue: rock sweep): the §4.4 study on the three available real records (336 cases,
 both polarities, with the kinematic checks) under 5 s with --jobs 2, start-up included, on
@@ -206,8 +215,85 @@ def stop_times() -> None:
             print(stop_one(how, Path(folder)))
 
 
+#: Cases of the scale study (issue 11: 10⁵), and its grid: R × α × K.
+SCALE_CASES = 100_000
+SCALE_GRID = {"R": (1.0, 10.0, 50), "alpha": (0.05, 0.30, 50), "K": (1e2, 1e6, 40)}
+
+
+def scale_study(folder: Path, shrink: int = 1) -> Path:
+    """The scale study in ``folder`` (its base model and ELC180 copied beside it); with
+    shrink = 10, a tenth of the R values (a tenth of the cases)."""
+    import numpy as np
+
+    (folder / "wall.toml").write_bytes((STUDIES / "paper-4.4-wall.toml").read_bytes())
+    (folder / "ELC180.AT2").write_bytes((SHARED / "ELC180.AT2").read_bytes())
+    lo, hi, n = SCALE_GRID["R"]
+    R = np.linspace(lo, hi, n // shrink)
+    alpha = np.linspace(*SCALE_GRID["alpha"][:2], SCALE_GRID["alpha"][2])
+    K = np.geomspace(*SCALE_GRID["K"][:2], SCALE_GRID["K"][2])
+    text = 'name = "scale"\nbase = "wall.toml"\nanalyses = ["rocking"]\n'
+    for name, path, values in (
+        ("R", '"geometry.R"', R),
+        ("alpha", '"geometry.alpha"', alpha),
+        ("K", '["restrainers[0].k_pos", "restrainers[0].k_neg"]', K),
+    ):
+        cells = ", ".join(f"{v:.6g}" for v in values)
+        text += f'[[axes]]\npath = {path}\nname = "{name}"\nvalues = [{cells}]\n'
+    text += '[[records]]\npath = "ELC180.AT2"\n'
+    study = folder / f"scale-{shrink}.toml"
+    study.write_text(text)
+    return study
+
+
+def peak_rss_mb(args: list[str]) -> tuple[float, float]:
+    """(wall time [s], peak RSS [MB]) of a command and its workers (ru_maxrss of the
+    waited-for children: the largest of the process tree)."""
+    import resource
+
+    before = resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss
+    start = time.perf_counter()
+    subprocess.run(args, check=True, capture_output=True, cwd=ROOT)
+    took = time.perf_counter() - start
+    after = resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss
+    return took, max(after, before) / 1024
+
+
+def scale() -> None:
+    import importlib.util
+
+    parquet = importlib.util.find_spec("pyarrow") is not None
+    missing = "" if parquet else " (no pyarrow: no parquet)"
+    print(f"\nscale: rocking-only studies on ELC180 (40 s), one run each{missing}")
+    print("  cases    jobs   wall [s]   cases/s   peak RSS [MB]   cases.csv [MB]   parquet [MB]")
+    best = None
+    with tempfile.TemporaryDirectory() as tmp:
+        folder = Path(tmp)
+        for shrink in (10, 1):
+            study = scale_study(folder, shrink)
+            cases = SCALE_CASES // shrink
+            for jobs in ("1", "2"):
+                out = folder / f"out-{shrink}-{jobs}"
+                args = [ROCK, "sweep", str(study), "--jobs", jobs, "--out", str(out), "--force",
+                        "--no-progress", "--format", "json"]  # fmt: skip
+                if parquet:
+                    args += ["--output", "parquet"]
+                took, rss = peak_rss_mb(args)
+                csv_mb = (out / "cases.csv").stat().st_size / 1e6
+                pq = (out / "cases.parquet").stat().st_size / 1e6 if parquet else float("nan")
+                print(f"  {cases:7d}  {jobs:>4}   {took:8.1f}   {cases / took:7.0f}   "
+                      f"{rss:13.0f}   {csv_mb:14.1f}   {pq:12.1f}")  # fmt: skip
+                if shrink == 1 and (best is None or took < best):
+                    best = took
+    if best is not None:
+        extrapolated = best * 1e6 / SCALE_CASES
+        print(f"  10^6 cases extrapolated from the fastest 10^5 run: {extrapolated:.0f} s "
+              f"({extrapolated / 60:.1f} min; target 5 min)")  # fmt: skip
+
+
 if __name__ == "__main__" and "--stop" in sys.argv:
     stop_times()
+elif __name__ == "__main__" and "--scale" in sys.argv:
+    scale()
 elif __name__ == "__main__":
     start_up()
     if SHARED.is_dir():
