@@ -75,6 +75,32 @@ def extend_with_tail(
     )
 
 
+#: The last record extended with its tail: (time, accel, dt, tail) → (times, accel, free
+#: from). The polarities of a run, and the cases of a study's chunk, share the record.
+_last_samples: tuple[tuple, tuple] | None = None
+
+
+def samples_with_tail(
+    time: np.ndarray, accel: np.ndarray, dt: float, tail: float
+) -> tuple[np.ndarray, np.ndarray, int]:
+    """The kernel's samples (extend_with_tail, the record timed from 0) and the first free
+    sample (free_from), for the same arrays as the last call given back without recomputing.
+    The arrays are not changed by the engines."""
+    global _last_samples
+    # The arrays' identity, and their sums (an array changed in place is not the same record).
+    key = (time, accel, dt, tail, float(accel.sum()), float(time.sum()))
+    last = _last_samples
+    if last is not None:
+        old, found = last
+        if old[0] is time and old[1] is accel and old[2:] == key[2:]:
+            return found
+    origin = float(time[0])
+    times, acc = extend_with_tail(time - origin if origin else time, accel, dt, tail)
+    found = (times, acc, free_from(acc, time.size))
+    _last_samples = (key, found)
+    return found
+
+
 def free_from(accel: np.ndarray, n_record: int) -> int:
     """The first sample from which the ground stays at rest to the end: one past the record's
     last non-zero sample (a zero-padded record rests before its tail), at most the first
@@ -223,9 +249,8 @@ def simulate(
     settings = settings or SolverSettings()
     time = np.asarray(time, float)
     origin = float(time[0])
-    times, acc = extend_with_tail(
-        time - origin if origin else time, np.asarray(accel, float), dt, settings.tail_for(block.p)
-    )
+    times, acc, first_free = samples_with_tail(time, np.asarray(accel, float), dt,
+                                               settings.tail_for(block.p))  # fmt: skip
     if engine is Engine.REFERENCE:
         from rockcli.dynamics.reference import integrate_reference as run
 
@@ -241,7 +266,7 @@ def simulate(
     par[L.P_THETA0] = theta0
     par[L.P_OMEGA0] = omega0
     par[L.P_MAX_STEPS] = float(step_budget(times.size, settings.max_steps))
-    par[L.P_FREE_FROM] = float(free_from(acc, time.size)) if settings.free_tail else 0.0
+    par[L.P_FREE_FROM] = float(first_free) if settings.free_tail else 0.0
     springs = pack_springs(block)
     points = pack_points(block)
     alive = np.ones(len(block.restrainers), dtype=np.int64)

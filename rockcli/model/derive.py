@@ -110,8 +110,27 @@ class Description:
     thrusts: tuple[Thrust, ...] = ()
 
 
+#: The last model turned into a block, and its block: validating a model derives its block
+#: (load.check_derived) and running it derives it again, once per case of a study.
+_last_block: tuple[Model, Block] | None = None
+
+
 def to_block(model: Model) -> Block:
-    """The rigid block with its restrainers, in SI floats (spec/rocking.md)."""
+    """The rigid block with its restrainers, in SI floats (spec/rocking.md).
+
+    The same model object asked twice in a row gives the same block (models are not changed
+    after validation)."""
+    global _last_block
+    last = _last_block
+    if last is not None and last[0] is model:
+        return last[1]
+    block = derive_block(model)
+    _last_block = (model, block)
+    return block
+
+
+def derive_block(model: Model) -> Block:
+    """:func:`to_block` without its memory of the last model."""
     R, alpha = model.geometry.polar
     motion = model.motion
     one_sided = motion.sides is Sides.ONE
