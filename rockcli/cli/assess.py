@@ -31,8 +31,9 @@ EXIT_OVERTURNS = EXIT_GATE
 @click.argument("model_path", metavar="MODEL", type=click.Path(dir_okay=False))
 @with_record_options(required=False)
 @suite_option(
-    "A record suite file (TOML; rock suite check): every record, both polarities, and "
-    "the code's rule (the mean over 7 or more records, the worst over 3–6)."
+    "A record suite file (TOML; rock suite check), or a folder of records with --target: "
+    "every record, both polarities, and the code's rule (the mean over 7 or more records, "
+    "the worst over 3–6)."
 )
 @hazard_grid_option
 @target_option

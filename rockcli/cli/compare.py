@@ -57,8 +57,9 @@ def refuse_record_demand(record_demand: bool) -> None:
 @click.argument("model_path", metavar="MODEL", type=click.Path(dir_okay=False))
 @with_record_options(required=False)
 @suite_option(
-    "A record suite file (TOML; rock suite check): every record through the time "
-    "history by the code's rule, against the code check on the suite's target spectrum."
+    "A record suite file (TOML; rock suite check), or a folder of records with --target: "
+    "every record through the time history by the code's rule, against the code check on "
+    "the suite's target spectrum."
 )
 @target_option
 @jobs_option("With --suite: workers, this process and N − 1 worker processes.")
