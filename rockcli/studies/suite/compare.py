@@ -236,15 +236,3 @@ def compare_suite(
     return SuiteComparison(
         assessment, kin, state, key, kind, which, demand_notes(loaded, settings, which)
     )
-
-
-def comparison_numbers(sc: SuiteComparison) -> dict[str, Any]:
-    """The classification's inputs as data: the limit state, the code's verdict of it, the
-    suite's."""
-    passed = sc.kinematic.verdict()[sc.verdict_key]
-    return {
-        "limit_state": sc.limit_state,
-        "code_verdict": sc.verdict_key,
-        "code_passed": passed,
-        "rocking_passed": sc.assessment.measure.passed,
-    }

@@ -17,10 +17,9 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Literal
 
-#: Fewest records for the mean of the effects (NTC 2018 §7.3.5).
-MEAN_MIN_RECORDS = 7
-#: Fewest records of a suite at all (NTC 2018 §7.3.5: at least 3).
-MIN_RECORDS = 3
+from rockcli.suites.compat import CountRule, count_rule
+from rockcli.suites.load import MIN_RECORDS
+
 #: Default limit of the suite measure: θ/α = 1, the static instability of the free block.
 DEFAULT_LIMIT_RATIO = 1.0
 
@@ -72,7 +71,7 @@ def suite_rule(n: int) -> Rule:
     """
     if n < MIN_RECORDS:
         raise ValueError(f"a suite needs at least {MIN_RECORDS} records, not {n}")
-    return "mean" if n >= MEAN_MIN_RECORDS else "worst"
+    return "mean" if count_rule(n) is CountRule.MEAN else "worst"
 
 
 def suite_measure(

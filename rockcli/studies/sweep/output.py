@@ -367,11 +367,10 @@ class Output:
         (in a study run from start to end) cover disjoint ranges of ids, so they are copied in
         the order of their first id; otherwise (a resumed study) the rows are sorted in
         memory."""
-        blocks = sorted(self._blocks) if self._blocks is not None else None
-        disjoint = blocks is not None and all(
-            a[1] < b[0] for a, b in zip(blocks, blocks[1:], strict=False)
-        )
-        if not disjoint or blocks is None:
+        blocks = sorted(self._blocks or [])
+        if self._blocks is None or any(
+            a[1] >= b[0] for a, b in zip(blocks, blocks[1:], strict=False)
+        ):
             self._rewrite(self.read_rows())
             return
         if all(a[2] < b[2] for a, b in zip(blocks, blocks[1:], strict=False)):
@@ -390,14 +389,8 @@ class Output:
         self._write_state(complete=True)
 
     def typed_rows(self) -> Iterator[tuple[int, dict[str, Any]]]:
-        """Each case id and its result cells as values, read from cases.csv one row at a time."""
-        with open(self.cases_path, encoding="utf-8", newline="") as fh:
-            reader = csv.reader(fh)
-            header = next(reader, None)
-            if header is None:
-                return
-            for row in reader:
-                yield int(row[0]), typed(dict(zip(header, row, strict=True)))
+        """Each case id and its result cells as values (:func:`typed_rows`)."""
+        return typed_rows(self.cases_path)
 
 
 def _existing_parent(path: Path) -> Path:
@@ -406,6 +399,17 @@ def _existing_parent(path: Path) -> Path:
         if parent.is_dir():
             return parent
     return Path(".")
+
+
+def typed_rows(path: Path) -> Iterator[tuple[int, dict[str, Any]]]:
+    """Each case id and its result cells as values, read from a cases.csv one row at a time."""
+    with open(path, encoding="utf-8", newline="") as fh:
+        reader = csv.reader(fh)
+        header = next(reader, None)
+        if header is None:
+            return
+        for row in reader:
+            yield int(row[0]), typed(dict(zip(header, row, strict=True)))
 
 
 def typed(row: Mapping[str, str]) -> dict[str, Any]:

@@ -16,6 +16,7 @@ from collections import deque
 from collections.abc import Callable, Iterator, MutableSequence, Sequence
 from concurrent.futures import FIRST_COMPLETED, BrokenExecutor, Future, wait
 from dataclasses import dataclass
+from pathlib import Path
 from typing import Any, Protocol, TypeVar, cast
 
 from rockcli.errors import InputError
@@ -333,11 +334,10 @@ def run_sweep(
 def plot_rows(plan: StudyPlan, out: str) -> list[dict[str, Any]]:
     """Every case as the collapse map draws it (summary.case_rows), read back from the output
     folder's cases.csv (only a plot needs them all at once)."""
+    from rockcli.studies.sweep.output import CASES_FILE, typed_rows
     from rockcli.studies.sweep.summary import case_rows
 
-    output = Output(out, plan, 0)
-    cases = expand(plan)
-    return case_rows(plan, cases, dict(output.typed_rows()))
+    return case_rows(plan, expand(plan), dict(typed_rows(Path(out) / CASES_FILE)))
 
 
 def _label_cells(plan: StudyPlan, case: Case) -> list[str]:

@@ -112,14 +112,6 @@ def tally(rows: Iterable[Mapping[str, Any]], analyses: Iterable[str]) -> dict[st
     return counts.result()
 
 
-def run_count(rows: Iterable[Mapping[str, Any]], analyses: Iterable[str]) -> int:
-    """The time histories of the study: both polarities of every record of every case (a
-    suite case runs each of its records)."""
-    if "rocking" not in set(analyses):
-        return 0
-    return sum(2 * (row.get("suite_records") or 1) for row in rows)
-
-
 def share(part: int | None, whole: int | None) -> float | None:
     """part/whole, None when either is unknown or whole is 0."""
     return part / whole if part is not None and whole else None
