@@ -24,6 +24,7 @@ import stat
 import tempfile
 from collections.abc import Callable
 from pathlib import Path
+from typing import Any
 
 PACKAGE = Path(__file__).resolve().parent
 #: Whether the kernels are compiled with numba's ``cache=True`` (set by :func:`configure`).
@@ -127,6 +128,54 @@ def install_locator() -> None:
     locator = package_locator()
     if locator not in impl._locator_classes:
         impl._locator_classes.insert(0, locator)
+    install_quick_load()
+
+
+_quick_load_installed = False
+
+
+def install_quick_load() -> None:
+    """Load rock's cached kernels without first setting numba up to compile (once).
+
+    Before it loads any cached function, numba "refreshes" its CPU target: it imports and
+    registers every lowering it has (numba.np.arraymath and the rest, and through numba's
+    BLAS probe all of scipy.linalg), 0.6–0.75 s of every start measured on this machine
+    (cProfile of ``rock assess``: ``BaseContext.refresh`` under ``Cache.load_overload``),
+    although running machine code already compiled needs none of it. What running it needs is
+    set up elsewhere: the C helpers, math functions and exception symbols when the target
+    context is created (``BaseContext.__init__``, ``CPUContext.init``), and the runtime (NRT),
+    which is initialised here. A kernel that is not in the cache is still compiled the usual
+    way: numba's compiler refreshes the target itself before it compiles
+    (``numba.core.compiler.CompilerBase.__init__``).
+
+    Only caches located by :func:`package_locator` (rock's own files) take this path; where
+    numba's internals differ from what this expects, numba's own load runs.
+    """
+    global _quick_load_installed
+    if _quick_load_installed:
+        return
+    from numba.core import caching
+
+    cache_class = getattr(caching, "Cache", None)
+    original = getattr(cache_class, "load_overload", None)
+    if cache_class is None or original is None:
+        return
+    locator = package_locator()
+
+    def load_overload(self: Any, sig: Any, target_context: Any) -> Any:
+        impl = getattr(self, "_impl", None)
+        guard = getattr(self, "_guard_against_spurious_io_errors", None)
+        if not isinstance(getattr(impl, "locator", None), locator) or guard is None:
+            return original(self, sig, target_context)
+        from numba.core.runtime import rtsys
+
+        rtsys.initialize(target_context)
+        with guard():
+            return self._load_overload(sig, target_context)
+        return None  # the guard swallowed an I/O error: numba compiles instead
+
+    cache_class.load_overload = load_overload
+    _quick_load_installed = True
 
 
 _LOCATOR: type | None = None

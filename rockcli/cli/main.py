@@ -57,6 +57,9 @@ class RockGroup(click.Group):
     """click group that turns every exception into one line on stderr and its exit code."""
 
     def main(self, *args, **kwargs):
+        from rockcli.process import quick_exit
+
+        quick_exit()
         make_output_encodable()
         announce_compiling()
         return super().main(*args, **kwargs)

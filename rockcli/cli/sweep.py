@@ -189,10 +189,8 @@ def sweep(
     from rockcli.studies.sweep.executor import dask_executor, local_executor
     from rockcli.studies.sweep.run import SweepInterrupted, run_sweep
     from rockcli.studies.sweep.study import load_study
-    from rockcli.studies.sweep.worker import quick_exit
 
     started = time.perf_counter()
-    quick_exit()
     if resume and overwrite:
         raise click.UsageError("--resume and --force exclude each other")
     check_parquet(cases_format)

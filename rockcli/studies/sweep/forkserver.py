@@ -10,7 +10,8 @@ forking it is safe.
 
 from __future__ import annotations
 
-from rockcli.studies.sweep.worker import die_with_parent, quick_exit, single_thread, warm
+from rockcli.process import quick_exit
+from rockcli.studies.sweep.worker import die_with_parent, single_thread, warm
 
 single_thread()
 die_with_parent()  # the server dies with `rock sweep`, and its workers with it

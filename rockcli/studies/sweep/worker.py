@@ -10,8 +10,6 @@ The module imports nothing heavy at the top, so a spawned worker can set its env
 
 from __future__ import annotations
 
-import atexit
-import gc
 import os
 import threading
 import time
@@ -21,6 +19,7 @@ from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
 from rockcli.errors import InputError
+from rockcli.process import quick_exit
 from rockcli.studies.sweep.cases import Case, build_model, case_error
 from rockcli.studies.sweep.study import RecordSource, StudyPlan
 
@@ -116,16 +115,6 @@ def die_with_parent() -> bool:
     if os.getppid() != parent:  # the parent died before prctl
         os._exit(1)
     return True
-
-
-def quick_exit() -> None:
-    """At exit, freeze the objects instead of collecting them.
-
-    The interpreter's last garbage collections walk numba's large object graph: 0.3–0.4 s
-    at the exit of every process that loaded the kernels, measured on this machine, which a
-    pool's shutdown (and the user) waits for. Frozen objects are left to the OS.
-    """
-    atexit.register(gc.freeze)
 
 
 def warm() -> None:
