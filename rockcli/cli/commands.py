@@ -9,6 +9,7 @@ from rockcli.cli.compare import compare
 from rockcli.cli.init import init
 from rockcli.cli.kinematic import kinematic
 from rockcli.cli.record import record
+from rockcli.cli.report import report
 from rockcli.cli.retrofit import retrofit
 from rockcli.cli.suite import suite
 from rockcli.cli.sweep import sweep
@@ -24,3 +25,4 @@ ALL.append(warmup)
 ALL.append(sweep)
 ALL.append(retrofit)
 ALL.append(suite)
+ALL.append(report)

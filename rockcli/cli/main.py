@@ -53,16 +53,22 @@ def quiet_broken_pipe() -> None:
         os.close(devnull)
 
 
+#: The command line of this run, as the user typed it (a report records it to be re-run).
+INVOKED: tuple[str, ...] = ("rock",)
+
+
 class RockGroup(click.Group):
     """click group that turns every exception into one line on stderr and its exit code."""
 
-    def main(self, *args, **kwargs):
+    def main(self, args=None, *rest, **kwargs):
         from rockcli.process import quick_exit
 
+        global INVOKED
+        INVOKED = ("rock", *(sys.argv[1:] if args is None else args))
         quick_exit()
         make_output_encodable()
         announce_compiling()
-        return super().main(*args, **kwargs)
+        return super().main(args, *rest, **kwargs)
 
     def invoke(self, ctx: click.Context) -> object:
         try:

@@ -87,6 +87,27 @@ def alpha0(mech: Mechanism) -> float:
     return load_multiplier(mech, 0.0)
 
 
+def activation_terms(mech: Mechanism) -> dict[str, float]:
+    """The virtual work of activation per unit virtual rotation, term by term [N·m].
+
+    Circolare 617/2009 Eq. C8A.4.1 (Circolare 7/2019 §C8.7.1.1) at θ = 0, as
+    :func:`load_multiplier` sums it: ``stabilising`` = Σ_bearing P_i x_i (the weights' work
+    against the rotation), ``thrusts`` = s·Σ F_h z_h (thrusts towards the side checked do
+    positive work), ``restrainers`` = Σ_k M_k(0) (tie-rod forces and pretensions),
+    ``overturning`` = Σ_moving P_i z_i (the horizontal forces' work per unit α), and
+    α0 = (stabilising − thrusts + restrainers) / overturning, which is :func:`alpha0`.
+    """
+    g, h, t, _, _ = point_moments(mech.points, mech.side, 0.0, 1.0)
+    restrainers = _spring_moments(mech, 0.0, False, False)
+    return {
+        "stabilising": g,
+        "thrusts": mech.side * t,
+        "restrainers": restrainers,
+        "overturning": h,
+        "alpha0": (g - mech.side * t + restrainers) / h,
+    }
+
+
 def _moments(mech: Mechanism) -> tuple[float, float]:
     """(Σ P δx, Σ P δx²) per unit virtual rotation [N·m, N·m²], the block lumped or spread.
 

@@ -177,3 +177,29 @@ def test_positive_stiffness_needs_a_limit_2009() -> None:
         2 * block.R * math.cos(block.alpha)
     )  # u = 2R[sin α − sin(α − θ)] ≈ 2R cos α θ
     assert quantities(cap2, None)["du_star"] == pytest.approx(cap2.d_star_at(theta_f), rel=1e-3)
+
+
+def test_the_activation_terms_sum_to_alpha0_and_the_tied_block_closed_form() -> None:
+    # Circolare 617/2009 §C8A.4.1 (Circolare 7/2019 §C8.7.1.2): a lone block held by a tie-rod
+    # taken as its force T at height h_T has α0 = (W b + T h_T)/(W h); the terms are the sums
+    # α0 is made of, so they must give α0 itself (to rounding).
+    import math
+
+    from rockcli.codecheck.kinematic import Mechanism, activation_terms, alpha0
+    from rockcli.mechanics import Block, Restrainer
+
+    W_kg, T, h_T = 50_000.0, 80e3, 5.5  # kg, N, m
+    R, a = 3.0, 0.12
+    tie = Restrainer("tie", 2e7, 2e7, h_T / math.cos(0.05), 0.05, h_T / math.cos(0.05), 0.05,
+                     code_action="force", code_force=T)  # fmt: skip
+    block = Block(R=R, alpha=a, mass=W_kg, e=0.9, restrainers=(tie,))
+    mech = Mechanism(block=block, side=1, distributed=False)
+    terms = activation_terms(mech)
+    W = W_kg * block.g
+    b, h = R * math.sin(a), R * math.cos(a)
+    assert terms["stabilising"] == pytest.approx(W * b, rel=1e-12)
+    assert terms["restrainers"] == pytest.approx(T * h_T, rel=1e-12)
+    assert terms["overturning"] == pytest.approx(W * h, rel=1e-12)
+    assert terms["thrusts"] == 0.0
+    assert terms["alpha0"] == pytest.approx((W * b + T * h_T) / (W * h), rel=1e-12)
+    assert terms["alpha0"] == pytest.approx(alpha0(mech), rel=1e-12)

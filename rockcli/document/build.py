@@ -1,0 +1,512 @@
+"""The calculation report of a model under a record: the comparison's results as sections.
+
+Everything shown comes from the results `rock compare` computes (its JSON document and the
+runs with their histories) and from the model as analysed; this module computes nothing of
+the verdicts, it only puts them in the order an engineer files them: identification, model,
+site and demand, kinematic analysis, rocking analysis, comparison, and the software's own
+section (NTC 2018 §10.2: theory, field of use, the validation casebook of this install).
+"""
+
+from __future__ import annotations
+
+import hashlib
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass
+from pathlib import Path
+from typing import TYPE_CHECKING, Any
+
+from rockcli.document.content import Block, Document, Figure, Grid, Paragraph, Section
+from rockcli.document.words import Words
+
+#: What the report says of the record, in order (keys of the rocking document's record).
+RECORD_FACTS = ("name", "event", "station", "component", "npts", "dt", "duration", "pga_g",
+                "t_pga")  # fmt: skip
+
+if TYPE_CHECKING:
+    from matplotlib.figure import Figure as MplFigure
+
+    from rockcli.model.schema import Model
+    from rockcli.records.record import Record
+    from rockcli.studies.compare import ComparisonOutput
+
+
+@dataclass(frozen=True)
+class Inputs:
+    """What the report is about and how it was made.
+
+    Attributes:
+        model_path: the model file. record: the record as analysed. files: (role, path) of
+        every input file (model, record, hazard grid…), hashed in the identification.
+        command: the command line that made the report. date: when (ISO 8601).
+        casebook: the validation casebook's result on this install, or None when not run.
+    """
+
+    model_path: str
+    model: Model
+    record: Record
+    files: tuple[tuple[str, str], ...]
+    command: str
+    date: str
+    casebook: Any | None = None
+
+
+def build_document(
+    inputs: Inputs, out: ComparisonOutput, doc: Mapping[str, Any], lang: str
+) -> Document:
+    """The report of the comparison ``out`` (its JSON document ``doc``) in language ``lang``."""
+    from rockcli import __version__
+
+    w = Words(lang)
+    sections = (
+        identification(inputs, w),
+        model_section(inputs, doc["rocking"]["model"], w),
+        demand_section(inputs, doc, out, w),
+        kinematic_section(inputs, doc["kinematic"], w),
+        rocking_section(doc["rocking"], out, inputs.record, w),
+        comparison_section(doc, w),
+        software_section(inputs.casebook, w),
+    )
+    name = doc["rocking"]["model"]["name"]
+    return Document(
+        lang=lang,
+        title=w("report.title"),
+        subtitle=w("report.subtitle", model=name, record=inputs.record.name),
+        sections=sections,
+        header=f"rock {__version__} — {name}",
+        footer=w("report.footer", date=inputs.date),
+        labels={k: w(f"label.{k}") for k in ("contents", "figure", "table", "page")},
+    )
+
+
+# --- identification -------------------------------------------------------------------------
+
+
+def sha256_of(path: str | Path) -> str:
+    """The SHA-256 of a file's bytes (hex)."""
+    digest = hashlib.sha256()
+    with open(path, "rb") as handle:
+        for chunk in iter(lambda: handle.read(1 << 20), b""):
+            digest.update(chunk)
+    return digest.hexdigest()
+
+
+def source_digest() -> str:
+    """A SHA-256 over the package's Python sources and data (relative path and bytes, sorted):
+    it names the code that made the report, beyond its version number."""
+    root = Path(__file__).resolve().parents[1]
+    digest = hashlib.sha256()
+    for path in sorted(root.rglob("*")):
+        if path.suffix in (".py", ".toml", ".j2") and "__pycache__" not in path.parts:
+            digest.update(path.relative_to(root).as_posix().encode())
+            digest.update(path.read_bytes())
+    return digest.hexdigest()
+
+
+def identification(inputs: Inputs, w: Words) -> Section:
+    from rockcli import __version__
+
+    software = Grid(
+        caption=w("ident.software_caption"),
+        headers=(w("col.item"), w("col.value")),
+        rows=(
+            (w("ident.software"), w("ident.software_value")),
+            (w("ident.version"), __version__),
+            (w("ident.source_digest"), source_digest()),
+            (w("ident.date"), inputs.date),
+            (w("ident.command"), inputs.command),
+        ),
+    )
+    files = Grid(
+        caption=w("ident.files_caption"),
+        headers=(w("col.role"), w("col.file"), "SHA-256"),
+        rows=tuple((w(f"role.{role}"), path, sha256_of(path)) for role, path in inputs.files),
+    )
+    return Section("identification", w("section.identification"),
+                   (Paragraph(w("ident.intro")), software, files))  # fmt: skip
+
+
+# --- model ----------------------------------------------------------------------------------
+
+
+def model_section(inputs: Inputs, m: Mapping[str, Any], w: Words) -> Section:
+    from rockcli.document.figures import block_sketch
+
+    n = w.number
+    rows = [
+        (w("model.name"), m["name"], ""),
+        (w("model.kind"), m["kind"], ""),
+        ("R", n(m["R"]), "m"),
+        ("α", n(m["alpha"]), "rad"),
+        ("2b", n(2 * m["b"]), "m"),
+        ("2h", n(2 * m["h"]), "m"),
+        ("p", n(m["p"]), "rad/s"),
+        (w("model.mass"), n(m["mass"], "{:.1f}") if m["mass"] else "—", "kg"),
+        (w("model.restitution"), f"{n(m['e'])} ({m['e_rule']})", ""),
+        (w("model.sides"), w(f"model.sides_{m['sides']}"), ""),
+        (w("model.uplift"), n(m["uplift_acceleration_g"]), "g"),
+    ]
+    blocks: list[Block] = [
+        Paragraph(w("model.intro", file=inputs.model_path)),
+        Grid(
+            w("model.geometry_caption"),
+            (w("col.quantity"), w("col.value"), w("col.unit")),
+            tuple(rows),
+        ),  # fmt: skip
+    ]
+    if inputs.model.notes:
+        blocks.insert(1, Paragraph(inputs.model.notes, "note"))
+    blocks += loads_grids(m, w)
+    blocks.append(figure("sketch", block_sketch(m, w), w("figure.sketch_caption")))
+    return Section("model", w("section.model"), tuple(blocks))
+
+
+def loads_grids(m: Mapping[str, Any], w: Words) -> list[Block]:
+    """The loads, thrusts and restrainers of the model, a table each (only those it has)."""
+    n = w.number
+    grids: list[Block] = []
+    if m["loads"]:
+        grids.append(Grid(
+            w("model.loads_caption"),
+            (w("col.name"), w("col.weight_kn"), w("col.x_m"), w("col.z_m"), w("col.bears"),
+             w("col.moves")),
+            tuple((ld["name"], n(ld["weight"] / 1e3), n(ld["x_pos"]), n(ld["z"]),
+                   w.yes_no(ld["bears"]), w.yes_no(ld["moves"])) for ld in m["loads"]),
+            (False, True, True, True, False, False),
+        ))  # fmt: skip
+    if m["thrusts"]:
+        grids.append(Grid(
+            w("model.thrusts_caption"),
+            (w("col.name"), w("col.force_kn"), w("col.direction"), w("col.x_m"), w("col.z_m")),
+            tuple((t["name"], n(t["force"] / 1e3), t["direction"], n(t["x_pos"]), n(t["z"]))
+                  for t in m["thrusts"]),
+            (False, True, False, True, True),
+        ))  # fmt: skip
+    if m["restrainers"]:
+        grids.append(Grid(
+            w("model.restrainers_caption"),
+            (w("col.name"), w("col.law"), "K⁺ [kN/m]", "K⁻ [kN/m]", "r [m]", "φ [rad]",
+             w("col.strength_kn"), w("col.code_action")),
+            tuple(restrainer_row(r, w) for r in m["restrainers"]),
+            (False, False, True, True, True, True, True, False),
+        ))  # fmt: skip
+        rules = [
+            f"{r['name']}: {r['strength_rule']}" for r in m["restrainers"] if r["strength_rule"]
+        ]
+        grids += [Paragraph(w("model.strength_rule", rule=rule), "note") for rule in rules]
+    return grids
+
+
+def restrainer_row(r: Mapping[str, Any], w: Words) -> tuple[str, ...]:
+    n = w.number
+    action = w(f"model.action_{r['code_action']}")
+    if r["code_action"] == "force":
+        action += f" ({n(r['code_force'] / 1e3)} kN)"
+    return (
+        r["name"], r["law"], n(r["k_pos"] / 1e3), n(r["k_neg"] / 1e3), n(r["r_pos"]),
+        n(r["phi_pos"]), n(r["strength"] / 1e3) if r["strength"] else "—", action,
+    )  # fmt: skip
+
+
+# --- site and demand ------------------------------------------------------------------------
+
+
+def demand_section(
+    inputs: Inputs, doc: Mapping[str, Any], out: ComparisonOutput, w: Words
+) -> Section:
+    from rockcli.codecheck.response import RecordSpectrum
+    from rockcli.document.figures import spectra
+
+    kin, rocking = doc["kinematic"], doc["rocking"]
+    rec = rocking["record"]
+    n = w.number
+    blocks: list[Block] = [Paragraph(w(f"demand.intro_{doc['code_demand']}"))]
+    shown = [(k, v) for k, v in rec.items() if k in RECORD_FACTS and v not in (None, "")]
+    blocks.append(Grid(
+        w("demand.record_caption"),
+        (w("col.quantity"), w("col.value")),
+        tuple((w(f"record.{k}"), n(v) if isinstance(v, float) else str(v)) for k, v in shown),
+    ))  # fmt: skip
+    if rec.get("input_note"):
+        blocks.append(Paragraph(rec["input_note"], "note"))
+    code_spectra = code_spectra_of(inputs.model, kin)
+    if code_spectra:
+        blocks.append(hazard_grid(code_spectra, kin, w))
+        if doc["code_demand"] == "record":
+            blocks.append(Paragraph(w("demand.hazard_reference"), "note"))
+    blocks += record_demand_grids(kin["demand"], w)
+    record_spectrum = RecordSpectrum.from_record(inputs.record, g=rocking["model"]["g"])
+    marks = {"Ts": kin["Ts"]} if kin.get("Ts") else {}
+    blocks.append(figure(
+        "spectra",
+        spectra([(st, sp) for st, sp, _ in code_spectra], record_spectrum, inputs.record.name,
+                marks, w),
+        w("figure.spectra_caption"),
+    ))  # fmt: skip
+    return Section("demand", w("section.demand"), tuple(blocks))
+
+
+def code_spectra_of(model: Model, kin: Mapping[str, Any]) -> list[tuple[str, Any, str]]:
+    """The code's elastic spectrum of every limit state, with where its ag, F0, Tc* come from:
+    the check's own demand when it used the code's spectra, else the model's [ntc.demand]
+    (shown for reference beside a record's demand)."""
+    from rockcli.codecheck.categories import Soil, Topography
+    from rockcli.codecheck.spectra import ElasticSpectrum
+    from rockcli.model.derive_ntc import ntc_settings
+
+    settings = ntc_settings(model)
+    given = {
+        state: (d["ag"], d["F0"], d["Tc_star"], d["source"])
+        for state, d in kin["demand"].items()
+        if all(d.get(k) for k in ("ag", "F0", "Tc_star"))
+    } or {state: (*v, "[ntc.demand]") for state, v in settings.demand.items()}
+    return [
+        (
+            state,
+            ElasticSpectrum(ag, F0, Tc, Soil(settings.soil), Topography(settings.topography)),
+            source,
+        )
+        for state, (ag, F0, Tc, source) in given.items()
+    ]
+
+
+def hazard_grid(spectra: Sequence[tuple[str, Any, str]], kin: Mapping[str, Any], w: Words) -> Grid:
+    """ag, F0, Tc*, S, TB, TC, TD of each limit state's code spectrum (TR when known)."""
+    rows = []
+    for state, sp, source in spectra:
+        TR = kin["demand"].get(state, {}).get("TR")
+        rows.append((state, w.number(TR, "{:.0f}"), w.number(sp.ag, "{:.4f}"),
+                     w.number(sp.F0, "{:.3f}"), w.number(sp.Tc_star, "{:.3f}"),
+                     w.number(sp.S, "{:.3f}"), w.number(sp.TB, "{:.3f}"),
+                     w.number(sp.TC, "{:.3f}"), w.number(sp.TD, "{:.3f}"), source))  # fmt: skip
+    headers = (w("col.limit_state"), "TR [a]", "ag [g]", "F0", "Tc* [s]", "S", "TB [s]",
+               "TC [s]", "TD [s]", w("col.source"))  # fmt: skip
+    return Grid(w("demand.hazard_caption"), headers, tuple(rows), (False, *([True] * 8), False))
+
+
+def record_demand_grids(demand: Mapping[str, Any], w: Words) -> list[Block]:
+    """The record's spectral values the check used, per limit state."""
+    rows = [
+        (state, s["at"], w.number(s["T"]), w.number(s["Se"]), w.number(s["SDe"]))
+        for state, d in demand.items()
+        for s in d.get("spectral_values", [])
+    ]
+    if not rows:
+        return []
+    headers = (w("col.limit_state"), w("col.at"), "T [s]", "Se [g]", "SDe [m]")
+    return [Grid(w("demand.spectral_caption"), headers, tuple(rows),
+                 (False, False, True, True, True))]  # fmt: skip
+
+
+# --- kinematic analysis ---------------------------------------------------------------------
+
+
+def kinematic_section(inputs: Inputs, kin: Mapping[str, Any], w: Words) -> Section:
+    from rockcli.document.figures import capacity
+
+    n = w.number
+    blocks: list[Block] = [Paragraph(w(f"kin.intro_{kin['edition']}"))]
+    blocks.append(activation_grid(inputs.model, kin, w))
+    quantities = [
+        ("e*", kin["e_star"], "", "kin.e_star"),
+        ("a0*", kin["a0_star"], "m/s²", "kin.a0_star"),
+        ("FC", kin["FC"], "", "kin.FC"),
+        ("d0*", kin["d0_star"], "m", "kin.d0_star"),
+    ]
+    for key, unit in (("du_star", "m"), ("ds_star", "m"), ("as_star", "m/s²"), ("Ts", "s"),
+                      ("d_SLV", "m"), ("a_SLV", "m/s²"), ("T_SLV", "s"), ("d_SLC", "m"),
+                      ("a_SLC", "m/s²"), ("T_SLC", "s")):  # fmt: skip
+        if key in kin:
+            quantities.append((key.replace("_star", "*"), kin[key], unit, f"kin.{key}"))
+    blocks.append(Grid(
+        w("kin.quantities_caption"),
+        (w("col.symbol"), w("col.quantity"), w("col.value"), w("col.unit")),
+        tuple((sym, w(key), n(value), unit) for sym, value, unit, key in quantities),
+        (False, False, True, False),
+    ))  # fmt: skip
+    blocks.append(figure("capacity", capacity(kin, w), w("figure.capacity_caption")))
+    blocks.append(checks_grid(kin, w))
+    if kin.get("restrainer_actions"):
+        blocks.append(actions_grid(kin["restrainer_actions"], w))
+    blocks += [Paragraph(note, "note") for note in kin.get("notes", [])]
+    blocks += [Paragraph(text, "warning") for text in kin.get("warnings", [])]
+    verdict = kin["verdict"]
+    blocks.append(Paragraph(
+        "; ".join(f"{w(f'ls.{state}')}: {w.passed(passed)}" for state, passed in verdict.items()),
+        "verdict",
+    ))  # fmt: skip
+    return Section("kinematic", w("section.kinematic"), tuple(blocks))
+
+
+def activation_grid(model: Model, kin: Mapping[str, Any], w: Words) -> Grid:
+    """α0 by virtual work, term by term, on each side the check looks at (codecheck.kinematic
+    activation_terms: the same sums as α0 itself)."""
+    from rockcli.codecheck.kinematic import activation_terms
+    from rockcli.model.derive import to_block
+    from rockcli.studies.kinematic import check_settings, mechanism
+
+    block, settings = to_block(model), check_settings(model, kin["edition"])
+    sides = [int(s) for s in kin.get("alpha0_by_side", {str(kin["side"]): None})]
+    rows = []
+    for side in sides:
+        terms = activation_terms(mechanism(block, settings, side))
+        rows.append((
+            "O" if side > 0 else "O′",
+            *(w.number(terms[k] / 1e3, "{:.4g}") for k in ("stabilising", "thrusts",
+                                                            "restrainers", "overturning")),
+            w.number(terms["alpha0"]),
+        ))  # fmt: skip
+    headers = (w("col.pivot"), w("kin.work_stabilising"), w("kin.work_thrusts"),
+               w("kin.work_restrainers"), w("kin.work_overturning"), "α0")  # fmt: skip
+    return Grid(w("kin.activation_caption"), headers, tuple(rows), (False, *([True] * 5)))
+
+
+def checks_grid(kin: Mapping[str, Any], w: Words) -> Grid:
+    rows = tuple(
+        (w(f"ls.{c['limit_state']}"), w(f"kin.method_{c['method']}"), w(f"where.{c['location']}"),
+         w.number(c["demand"]), w.number(c["capacity"]), c["unit"], w.number(c["ratio"], "{:.3f}"),
+         w.passed(c["passed"]), c["clause"])
+        for c in kin["checks"]
+    )  # fmt: skip
+    headers = (w("col.limit_state"), w("col.method"), w("col.location"), w("col.demand"),
+               w("col.capacity"), w("col.unit"), "ζ", w("col.outcome"),
+               w("col.clause"))  # fmt: skip
+    return Grid(w("kin.checks_caption"), headers, rows,
+                (False, False, False, True, True, False, True, False, False))  # fmt: skip
+
+
+def actions_grid(actions: Sequence[Mapping[str, Any]], w: Words) -> Grid:
+    n = w.number
+    rows = tuple(
+        (a["name"], w(f"model.action_{a['code_action']}"), n(_kn(a["demand"])),
+         n(_kn(a["strength"])), n(a["utilisation"], "{:.3f}"), w.yes_no(a["lost"]),
+         w.passed(a["passed"]), a["clause"])
+        for a in actions
+    )  # fmt: skip
+    headers = (w("col.name"), w("col.code_action"), w("col.demand_kn"), w("col.strength_kn"),
+               w("col.utilisation"), w("col.lost"), w("col.outcome"), w("col.clause"))  # fmt: skip
+    return Grid(w("kin.actions_caption"), headers, rows,
+                (False, False, True, True, True, False, False, False))  # fmt: skip
+
+
+def _kn(force: float | None) -> float | None:
+    return None if force is None else force / 1e3
+
+
+# --- rocking analysis -----------------------------------------------------------------------
+
+
+def rocking_section(
+    rocking: Mapping[str, Any], out: ComparisonOutput, record: Record, w: Words
+) -> Section:
+    """Both polarities: the runs, θ/α(t) over the motion the block stood on, the restrainers."""
+    from rockcli.document.figures import histories, restrainer_forces
+
+    n = w.number
+    engine = rocking["engine"]
+    blocks: list[Block] = [Paragraph(w("rock.intro", rtol=n(engine["rtol"], "{:.0e}"),
+                                       rest=n(engine["rest_velocity"], "{:.0e}")))]  # fmt: skip
+    rows = tuple(
+        (polarity_label(r, w), w(f"status.{r['status']}"), n(r["max_ratio"]),
+         n(r["t_uplift"], "{:.3f}"), n(r["t_overturn"], "{:.3f}"), str(r["impacts"]),
+         n(r["impact_energy_loss"] / 1e3, "{:.3g}"))
+        for r in rocking["runs"]
+    )  # fmt: skip
+    headers = (w("col.polarity"), w("col.status"), "max θ/α", w("col.t_uplift"),
+               w("col.t_overturn"), w("col.impacts"), w("col.energy_kj"))  # fmt: skip
+    blocks.append(Grid(w("rock.runs_caption"), headers, rows,
+                       (False, False, True, True, True, True, True)))  # fmt: skip
+    result = out.rocking
+    runs = result.result.runs
+    shaken = result.shaking or record  # a block at height rocks on the floor's motion
+    blocks.append(figure("histories", histories(rocking, runs, shaken, result.overturn_angle, w),
+                         w("figure.histories_caption")))  # fmt: skip
+    if rocking["restrainer_checks"]:
+        blocks.append(restrainer_checks_grid(rocking["restrainer_checks"], w))
+    forces = restrainer_forces(rocking["model"], runs, w)
+    if forces is not None:
+        blocks.append(figure("forces", forces, w("figure.forces_caption")))
+    blocks += [Paragraph(text, "warning") for text in rocking.get("warnings", [])]
+    blocks.append(Paragraph(w(f"rock.verdict_{rocking['verdict']}",
+                              ratio=n(rocking["max_ratio"])), "verdict"))  # fmt: skip
+    return Section("rocking", w("section.rocking"), tuple(blocks))
+
+
+def polarity_label(run: Mapping[str, Any], w: Words) -> str:
+    sign = "+1" if run["polarity"] > 0 else "−1"
+    if run.get("mirror_of") is not None:
+        return w("rock.mirror", sign=sign)
+    return sign
+
+
+def restrainer_checks_grid(checks: Sequence[Mapping[str, Any]], w: Words) -> Grid:
+    n = w.number
+    rows = tuple(
+        (c["name"], c["law"], n(_kn(c["demand"])), n(_kn(c["strength"])),
+         n(c["utilisation"], "{:.3f}"), w.yes_no(c["yielded"]), w.yes_no(c["ruptured"]),
+         w.passed(c["passed"]), c["clause"])
+        for c in checks
+    )  # fmt: skip
+    headers = (w("col.name"), w("col.law"), w("col.force_kn"), w("col.strength_kn"),
+               w("col.utilisation"), w("col.yielded"), w("col.ruptured"), w("col.outcome"),
+               w("col.clause"))  # fmt: skip
+    return Grid(w("rock.restrainers_caption"), headers, rows,
+                (False, False, True, True, True, False, False, False, False))  # fmt: skip
+
+
+# --- comparison -----------------------------------------------------------------------------
+
+
+def comparison_section(doc: Mapping[str, Any], w: Words) -> Section:
+    n = w.number
+    act, col = doc["activation"], doc["collapse"]
+    rows = (
+        (w("cmp.activation"), w.yes_no(act["code"]), w.yes_no(act["rocking"])),
+        (w("cmp.collapse"), w.yes_no(col["code"]), w.yes_no(col["rocking"])),
+    )
+    classification = doc["classification"]
+    blocks: list[Block] = [
+        Paragraph(w("cmp.intro")),
+        Grid(w("cmp.caption"), ("", w("cmp.code"), w("cmp.rocking")), rows),
+        Paragraph(w(f"class.{classification}"), "verdict"),
+    ]
+    if act.get("t_uplift") is not None:
+        blocks.insert(2, Paragraph(w("cmp.uplift_at", t=n(act["t_uplift"], "{:.2f}"))))
+    blocks.append(Paragraph(w("cmp.unlike")))
+    blocks += [Paragraph(text, "warning") for text in doc.get("warnings", [])]
+    return Section("comparison", w("section.comparison"), tuple(blocks))
+
+
+# --- the software (NTC 2018 §10.2) ----------------------------------------------------------
+
+
+def software_section(casebook: Any | None, w: Words) -> Section:
+    blocks: list[Block] = [Paragraph(w(f"soft.theory_{k}")) for k in range(1, 5)]
+    blocks.append(Paragraph(w("soft.references")))
+    blocks += [Paragraph(w(f"soft.limits_{k}")) for k in range(1, 5)]
+    if casebook is None:
+        blocks.append(Paragraph(w("soft.casebook_missing"), "warning"))
+    else:
+        blocks += casebook_blocks(casebook, w)
+    return Section("software", w("section.software"), tuple(blocks))
+
+
+def casebook_blocks(casebook: Any, w: Words) -> list[Block]:
+    """The validation casebook's cases as run on this install, and the count."""
+    rows = tuple(
+        (c["id"], c["source"], c["quantity"], w.number(c["expected"], "{:.6g}"),
+         w.number(c["obtained"], "{:.6g}"), w.number(c["tolerance"], "{:.2g}"),
+         w.passed(c["passed"]))
+        for c in casebook["cases"]
+    )  # fmt: skip
+    headers = (w("col.case"), w("col.source"), w("col.quantity"), w("col.expected"),
+               w("col.obtained"), w("col.tolerance"), w("col.outcome"))  # fmt: skip
+    summary = w("soft.casebook_summary", passed=casebook["passed"], failed=casebook["failed"])
+    return [Paragraph(summary, "verdict" if not casebook["failed"] else "warning"),
+            Grid(w("soft.casebook_caption"), headers, rows,
+                 (False, False, False, True, True, True, False))]  # fmt: skip
+
+
+def figure(key: str, fig: MplFigure, caption: str) -> Figure:
+    from rockcli.document.figures import svg_markup
+
+    return Figure(key, svg_markup(fig), caption)

@@ -1,0 +1,202 @@
+"""The report's figures as SVG markup: the block to scale, the spectra, the capacity curve,
+θ/α(t) over the record, the restrainer forces against their strength.
+
+The plots of the terminal commands (rockcli.report.plots) draw the capacity curve and the
+time histories; this module puts them on the report's pages with the report's axis labels.
+matplotlib writes SVG with its text as paths (``svg.fonttype = "path"``, its default), so the
+figures look the same in every browser and in the PDF.
+"""
+
+from __future__ import annotations
+
+import io
+import math
+import re
+from collections.abc import Mapping, Sequence
+from typing import TYPE_CHECKING, Any
+
+from rockcli.document.words import Words
+
+if TYPE_CHECKING:
+    from matplotlib.axes import Axes
+    from matplotlib.figure import Figure as MplFigure
+
+    from rockcli.dynamics.result import RockingRun
+    from rockcli.records.record import Record
+
+#: Width of a full-width figure on an A4 page with 2 cm margins [in].
+PAGE_WIDTH = 6.7
+#: Periods of the spectra figure [s].
+SPECTRUM_PERIODS = (0.0, 4.0, 401)
+LS_COLORS = {"SLO": "tab:gray", "SLD": "tab:green", "SLV": "tab:red", "SLC": "tab:purple"}
+
+
+def new_figure(width: float, height: float) -> MplFigure:
+    from matplotlib.figure import Figure
+
+    return Figure(figsize=(width, height), layout="constrained")
+
+
+def svg_markup(fig: MplFigure) -> str:
+    """The figure as an <svg> element to inline in HTML (no XML prolog, no fixed size: it
+    scales to the width of the page)."""
+    buffer = io.StringIO()
+    try:
+        fig.savefig(buffer, format="svg", metadata={"Date": None})
+    finally:
+        fig.clear()
+    text = buffer.getvalue()
+    text = text[text.index("<svg") :]
+    return re.sub(r'<svg([^>]*?) width="[^"]*" height="[^"]*"', r"<svg\1", text, count=1)
+
+
+def block_sketch(model: Mapping[str, Any], words: Words) -> MplFigure:
+    """The block to scale: its outline 2b × 2h, pivots O and O′, centroid G, loads (weights
+    at their points), thrusts (arrows) and restrainers (springs to an anchor), every point
+    where the model puts it (docs/conventions.md: x from O, z above the base)."""
+    b, h = model["b"], model["h"]
+    width = 2.0 * b
+    fig = new_figure(PAGE_WIDTH * 0.62, min(6.5, max(3.0, 4.2 * (2 * h) / max(2 * h, 3 * width))))
+    ax = fig.add_subplot()
+    ax.fill([0, width, width, 0], [0, 0, 2 * h, 2 * h], color="#d9cbb5", ec="k", lw=1.2)
+    ax.plot([-0.6 * width, 1.6 * width], [0, 0], color="k", lw=0.8)
+    ax.plot([0], [0], "o", color="k", ms=5)
+    ax.annotate("O", (0, 0), xytext=(-10, -12), textcoords="offset points")
+    ax.plot([width], [0], "o", color="k", ms=5)
+    ax.annotate("O′", (width, 0), xytext=(4, -12), textcoords="offset points")
+    ax.plot([b], [h], "+", color="k", ms=10, mew=1.5)
+    ax.annotate("G", (b, h), xytext=(5, 5), textcoords="offset points")
+    span = max(width, 2 * h)
+    for load in model.get("loads", []):
+        ax.annotate("", (load["x_pos"], load["z"]), xytext=(load["x_pos"], load["z"] + 0.12 * span),
+                    arrowprops={"arrowstyle": "-|>", "color": "tab:blue", "lw": 1.5})  # fmt: skip
+        ax.annotate(load["name"], (load["x_pos"], load["z"] + 0.12 * span), fontsize="x-small",
+                    color="tab:blue", ha="center", va="bottom")  # fmt: skip
+    for thrust in model.get("thrusts", []):
+        sign = 1.0 if thrust["direction"] == "positive" else -1.0
+        start = thrust["x_pos"] + sign * 0.15 * span
+        ax.annotate("", (thrust["x_pos"], thrust["z"]), xytext=(start, thrust["z"]),
+                    arrowprops={"arrowstyle": "-|>", "color": "tab:red", "lw": 1.5})  # fmt: skip
+        ax.annotate(thrust["name"], (start, thrust["z"]), fontsize="x-small", color="tab:red")
+    for spring in model.get("restrainers", []):
+        _draw_spring(ax, spring, width, span)
+    ax.set_aspect("equal")
+    ax.set_xlim(-0.6 * width - 0.05 * span, 1.6 * width + 0.25 * span)
+    ax.set_ylim(-0.08 * span, 2 * h + 0.2 * span)
+    ax.set_xlabel(words("figure.x_m"))
+    ax.set_ylabel(words("figure.z_m"))
+    return fig
+
+
+def _draw_spring(ax: Axes, spring: Mapping[str, Any], width: float, span: float) -> None:
+    """A restrainer of the positive side: its point (r, φ from O) joined by a zig-zag to an
+    anchor beyond the face O′, the side towards which it holds the block back."""
+    import numpy as np
+
+    r, phi = spring["r_pos"], spring["phi_pos"]
+    if not spring["k_pos"]:
+        r, phi = spring["r_neg"], spring["phi_neg"]
+    x, z = r * math.sin(phi), r * math.cos(phi)
+    end = width + 0.35 * span
+    xs = np.linspace(x, end, 41)
+    zig = np.where((np.arange(41) > 8) & (np.arange(41) < 32), 0.02 * span, 0.0)
+    zs = z + zig * np.sign(np.sin(np.arange(41) * np.pi / 2 + 0.1))
+    ax.plot(xs, zs, color="tab:green", lw=1.2)
+    ax.plot([x], [z], "o", color="tab:green", ms=4)
+    ax.plot([end, end], [z - 0.05 * span, z + 0.05 * span], color="k", lw=2.5)
+    ax.annotate(spring["name"], (end, z), xytext=(4, 4), textcoords="offset points",
+                fontsize="x-small", color="tab:green")  # fmt: skip
+
+
+def spectra(
+    code: Sequence[tuple[str, Any]], record: Any | None, record_name: str,
+    marks: Mapping[str, float], words: Words,
+) -> MplFigure:  # fmt: skip
+    """Se(T) [g]: the code's elastic spectra (limit state, ElasticSpectrum), the record's
+    5 %-damped response spectrum (RecordSpectrum) when there is one, and the periods marked
+    (T1, Ts…)."""
+    import numpy as np
+
+    periods = np.linspace(*SPECTRUM_PERIODS)
+    fig = new_figure(PAGE_WIDTH, 3.2)
+    ax = fig.add_subplot()
+    for state, spectrum in code:
+        values = [spectrum.Se(float(T)) for T in periods]
+        ax.plot(periods, values, color=LS_COLORS.get(state, "k"), lw=1.4,
+                label=words("figure.code_spectrum", state=state))  # fmt: skip
+    if record is not None:
+        Se, _ = record.curve(periods[1:])
+        ax.plot(periods[1:], Se, color="k", lw=1.0, label=words("figure.record_spectrum",
+                                                                   record=record_name))  # fmt: skip
+    for name, T in marks.items():
+        ax.axvline(T, color="0.4", lw=0.8, ls="--")
+        ax.annotate(name, (T, 1.0), xycoords=("data", "axes fraction"), xytext=(3, -12),
+                    textcoords="offset points", fontsize="small")  # fmt: skip
+    ax.set_xlim(0.0, SPECTRUM_PERIODS[1])
+    ax.set_ylim(bottom=0.0)
+    ax.set_xlabel(words("figure.period"))
+    ax.set_ylabel(words("figure.se"))
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize="small")
+    return fig
+
+
+def capacity(kin: Mapping[str, Any], words: Words) -> MplFigure:
+    """The capacity curve with a0*, d0*, the edition's quantities and the demands."""
+    from rockcli.report.plots.capacity import draw_capacity
+
+    fig = new_figure(PAGE_WIDTH, 4.6)
+    ax = fig.add_subplot()
+    draw_capacity(ax, kin)
+    ax.set_title("")
+    ax.set_xlabel(words("figure.d_star"))
+    ax.set_ylabel(words("figure.a_star"))
+    return fig
+
+
+def histories(
+    rocking: Mapping[str, Any], runs: Sequence[RockingRun], record: Record, overturn_angle: float,
+    words: Words,
+) -> MplFigure:  # fmt: skip
+    """θ/α of both polarities against time, the record's acceleration beneath."""
+    from rockcli.report.plots.histories import draw_time_panels
+
+    fig = new_figure(PAGE_WIDTH, 4.4)
+    spec = fig.add_gridspec(2, 1, height_ratios=(3, 1))
+    draw_time_panels(fig, [spec[0], spec[1]], rocking, runs, record, overturn_angle)
+    top, bottom = fig.axes[0], fig.axes[1]
+    top.set_title("")
+    top.set_ylabel(words("figure.ratio"))
+    bottom.set_xlabel(words("figure.time"))
+    return fig
+
+
+def restrainer_forces(
+    model: Mapping[str, Any], runs: Sequence[RockingRun], words: Words
+) -> MplFigure | None:
+    """Each restrainer's force against time in both polarities, its strength as a line;
+    None when the model has no restrainer."""
+    springs = model.get("restrainers", [])
+    if not springs:
+        return None
+    fig = new_figure(PAGE_WIDTH, 1.2 + 1.6 * len(springs))
+    axes = fig.subplots(len(springs), 1, sharex=True, squeeze=False)[:, 0]
+    for j, (ax, spring) in enumerate(zip(axes, springs, strict=True)):
+        for run in runs:
+            hist = run.history
+            if hist is None or hist.forces.shape[0] <= j:
+                continue
+            color = "tab:blue" if run.polarity > 0 else "tab:orange"
+            sign = "+" if run.polarity > 0 else "−"
+            ax.plot(hist.time, hist.forces[j] / 1e3, color=color, lw=1.0,
+                    label=words("figure.polarity", sign=sign))  # fmt: skip
+        strength = spring.get("strength")
+        if strength:
+            ax.axhline(strength / 1e3, color="tab:red", lw=1.0, ls="--",
+                       label=words("figure.strength"))  # fmt: skip
+        ax.set_ylabel(words("figure.force_kn"))
+        ax.set_title(spring["name"], fontsize="small", loc="left")
+        ax.grid(alpha=0.3)
+        ax.legend(fontsize="x-small", loc="upper right")
+    axes[-1].set_xlabel(words("figure.time"))
+    return fig

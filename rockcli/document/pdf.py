@@ -1,0 +1,64 @@
+"""A calculation report as PDF, typeset by Typst (the ``typst`` package, a self-contained
+binary wheel: no system libraries, fonts included). The Document is written as Typst markup
+(templates/report.typ.j2) beside its figures' SVG files in a temporary folder and compiled.
+
+Chosen over WeasyPrint, which renders the HTML itself but needs the Pango system libraries
+(not installable from PyPI), and over a headless browser (a system package).
+"""
+
+from __future__ import annotations
+
+import tempfile
+from pathlib import Path
+
+from rockcli.document.content import Document, Figure
+
+#: Characters with a meaning in Typst markup, escaped with a backslash in text.
+TYPST_SPECIAL = "\\#$*_`<>@[]~/=-+'\"."
+
+
+def typst_text(text: object) -> str:
+    """Text as literal Typst markup: every character with a meaning escaped."""
+    out = []
+    for ch in str(text):
+        if ch in TYPST_SPECIAL:
+            out.append("\\" + ch)
+        elif ch == "\n":
+            out.append(" ")
+        else:
+            out.append(ch)
+    return "".join(out)
+
+
+def typst_string(text: object) -> str:
+    """Text as a Typst string literal."""
+    return '"' + str(text).replace("\\", "\\\\").replace('"', '\\"') + '"'
+
+
+def typst_source(doc: Document) -> str:
+    """The Typst markup of a Document (its figures referred to as ``<key>.svg``)."""
+    from jinja2 import Environment, PackageLoader, StrictUndefined
+
+    env = Environment(
+        loader=PackageLoader("rockcli.document", "templates"),
+        autoescape=False,
+        undefined=StrictUndefined,
+    )
+    env.filters["typst_text"] = typst_text
+    env.filters["typst_string"] = typst_string
+    return env.get_template("report.typ.j2").render(doc=doc)
+
+
+def render_pdf(doc: Document) -> bytes:
+    """The PDF of a Document."""
+    import typst
+
+    with tempfile.TemporaryDirectory(prefix="rock-report-") as tmp:
+        folder = Path(tmp)
+        for section in doc.sections:
+            for block in section.blocks:
+                if isinstance(block, Figure):
+                    (folder / f"{block.key}.svg").write_text(block.svg, encoding="utf-8")
+        source = folder / "report.typ"
+        source.write_text(typst_source(doc), encoding="utf-8")
+        return bytes(typst.compile(str(source), root=str(folder)))

@@ -1,0 +1,132 @@
+"""`rock report`: the calculation report as HTML and PDF, every section and figure in it, and
+its bad input refused before the analyses run."""
+
+from __future__ import annotations
+
+import re
+from pathlib import Path
+
+import pytest
+from click.testing import CliRunner
+
+from rockcli.cli.main import cli
+
+ROOT = Path(__file__).resolve().parents[2]
+ALTAR = ROOT / "examples" / "altar.toml"
+FACADE = ROOT / "examples" / "facade.toml"
+PULSE = ROOT / "records" / "ricker_Tp0.5s_0.5g.txt"
+SECTIONS = ("identification", "model", "demand", "kinematic", "rocking", "comparison", "software")
+#: The figures every report has (a restrainer's forces only where the model has one).
+FIGURES = ("sketch", "spectra", "capacity", "histories")
+
+pytest.importorskip("jinja2", reason="the report extra (jinja2) is not installed")
+pytest.importorskip("matplotlib", reason="the report extra (matplotlib) is not installed")
+
+
+def run(*args: str) -> tuple[int, str, str]:
+    result = CliRunner().invoke(cli, ["report", *args])
+    return result.exit_code, result.stdout, result.stderr
+
+
+@pytest.fixture(scope="module")
+def facade(tmp_path_factory: pytest.TempPathFactory) -> tuple[str, bytes]:
+    """The façade (a tie-rod, one-sided) under the Ricker pulse, in Italian, HTML and PDF."""
+    pytest.importorskip("typst", reason="the report extra (typst) is not installed")
+    folder = tmp_path_factory.mktemp("report")
+    html, pdf = folder / "facade.html", folder / "facade.pdf"
+    code, _, err = run(str(FACADE), "--record", str(PULSE), "-o", str(html), "--pdf", str(pdf))
+    assert code == 0, err
+    assert f"wrote {html}" in err and f"wrote {pdf}" in err
+    return html.read_text(encoding="utf-8"), pdf.read_bytes()
+
+
+def test_the_html_report_holds_every_section_and_figure(facade: tuple[str, bytes]) -> None:
+    html, _ = facade
+    for key in SECTIONS:
+        assert f'<section id="{key}"' in html, key
+    for key in (*FIGURES, "forces"):
+        assert f'id="figure-{key}"' in html, key
+    assert html.count("<svg") == len(FIGURES) + 1
+
+
+def test_the_html_report_is_self_contained(facade: tuple[str, bytes]) -> None:
+    # Nothing fetched from elsewhere: no external stylesheet, script, image or font.
+    html, _ = facade
+    assert not re.search(r'<(link|script)\b|\bsrc="http|url\(http|@import', html)
+
+
+def test_the_html_report_identifies_its_inputs(facade: tuple[str, bytes]) -> None:
+    import hashlib
+
+    html, _ = facade
+    for path in (FACADE, PULSE):
+        assert hashlib.sha256(path.read_bytes()).hexdigest() in html
+    assert f"rock report {FACADE} --record {PULSE} -o " in html  # the command line, re-runnable
+
+
+def test_the_italian_report_speaks_the_codes_terms(facade: tuple[str, bytes]) -> None:
+    html, _ = facade
+    assert '<html lang="it">' in html
+    for words in ("Relazione di calcolo", "Moltiplicatore di attivazione", "SLV"):
+        assert words in html, words
+
+
+def test_the_pdf_has_the_reports_pages_and_text(facade: tuple[str, bytes]) -> None:
+    pdfium = pytest.importorskip("pypdfium2", reason="pypdfium2 (test extra) is not installed")
+    _, data = facade
+    pdf = pdfium.PdfDocument(data)
+    assert 5 <= len(pdf) <= 12
+    text = " ".join(pdf[i].get_textpage().get_text_range() for i in range(len(pdf)))
+    for title in ("Identificazione", "Il modello", "Sito e azione sismica", "Analisi cinematica",
+                  "Analisi del rocking", "Confronto dei due esiti", "NTC 2018 §10.2"):  # fmt: skip
+        assert title in text, title
+    # The first page is not blank: rasterised, it has ink.
+    page = pdf[0].render(scale=0.5).to_pil().convert("L")
+    assert page.getextrema()[0] < 100
+
+
+def test_the_english_report(tmp_path: Path) -> None:
+    html = tmp_path / "altar.html"
+    code, _, err = run(str(ALTAR), "--record", str(PULSE), "-o", str(html), "--lang", "en")
+    assert code == 0, err
+    text = html.read_text(encoding="utf-8")
+    assert '<html lang="en">' in text and "Calculation report" in text
+    assert "Load multiplier at activation" in text
+
+
+@pytest.mark.parametrize(
+    ("args", "words"),
+    [
+        (["--lang", "fr"], "'fr' is not one of 'it', 'en'"),
+        (["-o", "{tmp}/missing/r.html"], "the folder does not exist"),
+        (["-o", "{tmp}/r.pdf"], "must end in .html"),
+        (["--pdf", "{tmp}/r.html"], "must end in .pdf"),
+        (["-o", "{tmp}/exists.html"], "file exists"),
+    ],
+)
+def test_bad_input_exits_2_before_the_analyses(tmp_path: Path, args: list[str], words: str) -> None:
+    (tmp_path / "exists.html").write_text("keep me")
+    args = [a.replace("{tmp}", str(tmp_path)) for a in args]
+    if "-o" not in args:
+        args += ["-o", str(tmp_path / "r.html")]
+    code, out, err = run(str(ALTAR), "--record", str(PULSE), *args)
+    assert code == 2 and words in err and "Traceback" not in err
+    assert (tmp_path / "exists.html").read_text() == "keep me"
+    assert not (tmp_path / "r.html").exists()
+
+
+def test_pdf_without_the_extra_names_it(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    import importlib.util
+
+    real = importlib.util.find_spec
+    monkeypatch.setattr(
+        importlib.util, "find_spec", lambda name, *a: None if name == "typst" else real(name, *a)
+    )
+    code, _, err = run(str(ALTAR), "--record", str(PULSE), "-o", str(tmp_path / "r.html"),
+                       "--pdf", str(tmp_path / "r.pdf"))  # fmt: skip
+    assert code == 2
+    assert err.strip().splitlines() == [
+        "error: --pdf: the PDF report needs typst, not installed (allowed: "
+        "pip install 'rockcli[report]')"
+    ]
+    assert not (tmp_path / "r.html").exists()
