@@ -11,12 +11,15 @@ from rockcli.cli.options import (
     announce_written,
     check_hazard_grid,
     check_outputs,
+    check_record_options,
     edition_option,
     engine_option,
     force_option,
     ground_option,
     hazard_grid_option,
     load_record,
+    suite_option,
+    target_option,
     with_record_options,
 )
 
@@ -30,7 +33,13 @@ EXTRA = "pip install 'rockcli[report]'"
 
 @click.command()
 @click.argument("model_path", metavar="MODEL", type=click.Path(dir_okay=False))
-@with_record_options(required=True)
+@with_record_options(required=False)
+@suite_option(
+    "A record suite file (TOML; rock suite check), or a folder of records with --target: the "
+    "report of `rock compare --suite` (the suite's compatibility, every record's time history "
+    "by the code's rule, the code check on the suite's target)."
+)
+@target_option
 @click.option(
     "-o",
     "--output",
@@ -51,11 +60,11 @@ EXTRA = "pip install 'rockcli[report]'"
 )
 @click.option(
     "--code-demand",
-    type=click.Choice(("record", "model")),
-    default="record",
-    show_default=True,
-    help="The code check's demand: the record's response spectrum, or the model's own code "
-    "spectrum ([ntc.demand] or [ntc.site]).",
+    type=click.Choice(("record", "model", "target", "suite-mean")),
+    default=None,
+    help="The code check's demand. With --record: record (default), the record's response "
+    "spectrum, or model, the model's own code spectrum. With --suite: target (default), or "
+    "suite-mean, the mean spectrum of its records.",
 )
 @edition_option
 @engine_option
@@ -63,17 +72,33 @@ EXTRA = "pip install 'rockcli[report]'"
 @hazard_grid_option
 @force_option
 def report(
-    model_path, record_path, record_format, dt, units, scale, pga, html_path, pdf_path, lang,
-    code_demand, edition, engine, ground, grid_file, force,
+    model_path, record_path, record_format, dt, units, scale, pga, suite_path, target, html_path,
+    pdf_path, lang, code_demand, edition, engine, ground, grid_file, force,
 ):  # fmt: skip
-    """The calculation report of MODEL under a record: identification and input digests, the
-    model and its sketch, the site and demand, the kinematic analysis, the rocking analysis,
-    the comparison, and the software's section (theory, field of use, the validation
-    casebook run on this install), in Italian or English."""
+    """The calculation report of MODEL under a record (or a record suite): identification
+    and input digests, the model and its sketch, the site and demand, the kinematic
+    analysis, the rocking analysis, the comparison, and the software's section (theory,
+    field of use, the validation casebook run on this install), in Italian or English."""
+    from rockcli.cli.assess import one_record_or_suite
+    from rockcli.cli.compare import demand_for
     from rockcli.cli.main import INVOKED
-    from rockcli.document.run import write_report
+    from rockcli.document.run import write_report, write_suite_report
 
+    with_suite = one_record_or_suite(record_path, suite_path, None, None, None, target)
+    code_demand = demand_for(code_demand, with_suite)
     check_report_paths(html_path, pdf_path, force)
+    common = {"html_path": html_path, "pdf_path": pdf_path, "lang": lang,
+              "command": shlex.join(INVOKED)}  # fmt: skip
+    if with_suite:
+        check_record_options(None, record_format, dt, units, scale, pga)
+        written = write_suite_report(
+            model_path, suite_path, target, grid_file, **common,
+            options={"code_demand": code_demand, "edition": edition, "engine": engine,
+                     "ground": ground},
+        )  # fmt: skip
+        for path, detail in written:
+            announce_written(path, detail)
+        return
     check_hazard_grid(
         grid_file, model_path, demand_from="--record" if code_demand == "record" else None
     )
@@ -81,10 +106,7 @@ def report(
     written = write_report(
         model_path,
         record,
-        html_path=html_path,
-        pdf_path=pdf_path,
-        lang=lang,
-        command=shlex.join(INVOKED),
+        **common,
         files=(("model", model_path), ("record", record_path))
         + ((("hazard_grid", grid_file),) if grid_file else ()),
         options={"code_demand": code_demand, "edition": edition, "engine": engine,

@@ -35,7 +35,8 @@ class Inputs:
     """What the report is about and how it was made.
 
     Attributes:
-        model_path: the model file. record: the record as analysed. files: (role, path) of
+        model_path: the model file. record: the record as analysed (None: a suite). files:
+        (role, path) of
         every input file (model, record, hazard grid…), hashed in the identification.
         command: the command line that made the report. date: when (ISO 8601).
         casebook: the validation casebook's result on this install, or None when not run.
@@ -43,7 +44,7 @@ class Inputs:
 
     model_path: str
     model: Model
-    record: Record
+    record: Record | None
     files: tuple[tuple[str, str], ...]
     command: str
     date: str
@@ -57,12 +58,15 @@ def build_document(
     from rockcli import __version__
 
     w = Words(lang)
+    record = inputs.record
+    if record is None:
+        raise ValueError("the report of one record needs its record (a suite: document.suite)")
     sections = (
         identification(inputs, w),
         model_section(inputs, doc["rocking"]["model"], w),
-        demand_section(inputs, doc, out, w),
+        demand_section(inputs, doc, record, w),
         kinematic_section(inputs, doc["kinematic"], w),
-        rocking_section(doc["rocking"], out, inputs.record, w),
+        rocking_section(doc["rocking"], out, record, w),
         comparison_section(doc, w),
         software_section(inputs.casebook, w),
     )
@@ -70,7 +74,7 @@ def build_document(
     return Document(
         lang=lang,
         title=w("report.title"),
-        subtitle=w("report.subtitle", model=name, record=inputs.record.name),
+        subtitle=w("report.subtitle", model=name, record=doc["rocking"]["record"]["name"]),
         sections=sections,
         header=f"rock {__version__} — {name}",
         footer=w("report.footer", date=inputs.date),
@@ -210,9 +214,8 @@ def restrainer_row(r: Mapping[str, Any], w: Words) -> tuple[str, ...]:
 # --- site and demand ------------------------------------------------------------------------
 
 
-def demand_section(
-    inputs: Inputs, doc: Mapping[str, Any], out: ComparisonOutput, w: Words
-) -> Section:
+def demand_section(inputs: Inputs, doc: Mapping[str, Any], record: Record, w: Words) -> Section:
+    """The record, the code's hazard, the spectral values the check used, the spectra."""
     from rockcli.codecheck.response import RecordSpectrum
     from rockcli.document.figures import spectra
 
@@ -234,11 +237,11 @@ def demand_section(
         if doc["code_demand"] == "record":
             blocks.append(Paragraph(w("demand.hazard_reference"), "note"))
     blocks += record_demand_grids(kin["demand"], w)
-    record_spectrum = RecordSpectrum.from_record(inputs.record, g=rocking["model"]["g"])
+    record_spectrum = RecordSpectrum.from_record(record, g=rocking["model"]["g"])
     marks = {"Ts": kin["Ts"]} if kin.get("Ts") else {}
     blocks.append(figure(
         "spectra",
-        spectra([(st, sp) for st, sp, _ in code_spectra], record_spectrum, inputs.record.name,
+        spectra([(st, sp) for st, sp, _ in code_spectra], record_spectrum, record.name,
                 marks, w),
         w("figure.spectra_caption"),
     ))  # fmt: skip

@@ -5,9 +5,11 @@ from __future__ import annotations
 import os
 from collections.abc import Sequence
 from datetime import UTC, datetime
+from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 if TYPE_CHECKING:
+    from rockcli.document.content import Document
     from rockcli.records.record import Record
 
 
@@ -32,9 +34,7 @@ def write_report(
 ) -> list[tuple[str, str]]:
     """Run both analyses of the model under the record, write the report; what was written."""
     from rockcli.document.build import Inputs, build_document
-    from rockcli.document.html import render_html
     from rockcli.model.load import load_model
-    from rockcli.outfile import write_bytes, write_text
     from rockcli.report.compare import comparison_output_document, comparison_warnings
     from rockcli.studies.compare import check_code_demand, compare_model_output
 
@@ -45,11 +45,65 @@ def write_report(
     doc["warnings"] = comparison_warnings(doc)
     inputs = Inputs(model_path, model, record, tuple(files), command, report_date())
     document = build_document(inputs, out, doc, lang)
+    return write_document(document, html_path, pdf_path, doc["classification"])
+
+
+def write_document(
+    document: Document, html_path: str, pdf_path: str | None, classification: str
+) -> list[tuple[str, str]]:
+    """Write the report as HTML (and PDF); what was written, for the "wrote" lines."""
+    from rockcli.document.html import render_html
+    from rockcli.outfile import write_bytes, write_text
+
     write_text(html_path, render_html(document), where="--output")
-    written = [(html_path, f"calculation report ({lang}), {doc['classification']}")]
+    written = [(html_path, f"calculation report ({document.lang}), {classification}")]
     if pdf_path is not None:
         from rockcli.document.pdf import render_pdf
 
         write_bytes(pdf_path, render_pdf(document), where="--pdf")
         written.append((pdf_path, "the same report as PDF"))
     return written
+
+
+def write_suite_report(
+    model_path: str,
+    suite_path: str,
+    target: str | None,
+    grid_file: str | None,
+    *,
+    html_path: str,
+    pdf_path: str | None,
+    lang: str,
+    command: str,
+    options: dict[str, Any],
+) -> list[tuple[str, str]]:
+    """Compare the model under the suite (as `rock compare --suite`), keep each record's
+    history for the figures, write the report; what was written."""
+    from rockcli.document.build import Inputs
+    from rockcli.document.suite import build_suite_document
+    from rockcli.report.assess import assessment_output_document
+    from rockcli.report.suite import suite_comparison_document
+    from rockcli.studies.assess import assess_model_output
+    from rockcli.studies.suite.assess import load_suite_and_model
+    from rockcli.studies.suite.compare import compare_loaded
+    from rockcli.suites.run import suite_document
+
+    loaded = load_suite_and_model(model_path, suite_path, grid_file, target)
+    comparison = compare_loaded(loaded, grid_file, **options)
+    doc = suite_comparison_document(comparison)
+    records = loaded.check.records
+    runs = []
+    for record in records:
+        engine, ground = options["engine"], options["ground"]
+        out = assess_model_output(
+            loaded.model, record, engine, ground=ground, file=model_path, history=True
+        )
+        runs.append((out, assessment_output_document(out, record), record))
+    files = [("model", model_path)]
+    if Path(suite_path).is_file():
+        files.append(("suite", suite_path))
+    files += [("record", str(entry.path)) for entry in loaded.settings.entries]
+    files += [("hazard_grid", grid_file)] if grid_file else []
+    inputs = Inputs(model_path, loaded.model, None, tuple(files), command, report_date())
+    document = build_suite_document(inputs, doc, suite_document(loaded.check), runs, lang)
+    return write_document(document, html_path, pdf_path, doc["classification"])

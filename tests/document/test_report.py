@@ -130,3 +130,38 @@ def test_pdf_without_the_extra_names_it(tmp_path: Path, monkeypatch: pytest.Monk
         "pip install 'rockcli[report]')"
     ]
     assert not (tmp_path / "r.html").exists()
+
+
+def test_the_report_of_a_suite(tmp_path: Path) -> None:
+    # The project's three pulses as a folder suite (3 records: the code's rule takes the
+    # worst), the target given by its parameters; the verdicts are those of
+    # `rock compare --suite` on the same input.
+    import json
+
+    from markupsafe import escape
+
+    from rockcli.document.words import Words
+
+    suite = ["--suite", str(ROOT / "records"), "--target",
+             "ag=0.25,F0=2.5,Tc_star=0.3,limit_state=SLV"]  # fmt: skip
+    html = tmp_path / "suite.html"
+    code, _, err = run(str(ALTAR), *suite, "-o", str(html), "--lang", "en")
+    assert code == 0, err
+    page = html.read_text(encoding="utf-8")
+    for key in SECTIONS:
+        assert f'<section id="{key}"' in page, key
+    assert 'id="figure-compatibility"' in page
+    assert all(f'id="figure-histories-{k}"' in page for k in (1, 2, 3))
+    compared = CliRunner().invoke(cli, ["compare", str(ALTAR), *suite, "--format", "json"])
+    doc = json.loads(compared.stdout)
+    assert str(escape(Words("en")(f"class.{doc['classification']}"))) in page
+    for record in doc["suite"]["records"]:
+        assert record["name"] in page
+        assert f"{record['max_ratio']:.4g}" in page
+    assert "the largest over the records" in page  # the rule for 3 records
+
+
+def test_record_and_suite_exclude_each_other(tmp_path: Path) -> None:
+    code, _, err = run(str(ALTAR), "--record", str(PULSE), "--suite", str(ROOT / "records"),
+                       "-o", str(tmp_path / "r.html"))  # fmt: skip
+    assert code == 2 and "give one record or one suite" in err

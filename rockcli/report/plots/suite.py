@@ -26,7 +26,13 @@ def plot_suite(doc: Mapping[str, Any], path: str | Path) -> None:
         path: the file to write, .png or .svg.
     """
     fig = new_figure(path, (9.0, 6.0))
-    ax = fig.add_subplot()
+    draw_suite(fig.add_subplot(), doc)
+    fig.suptitle("rock suite check")
+    save(fig, path)
+
+
+def draw_suite(ax: Any, doc: Mapping[str, Any]) -> None:
+    """The records' spectra, their mean, the target and its band on one axes (plot_suite)."""
     T = doc["periods"]
     for i, rec in enumerate(doc["records"]):
         color = RECORD_COLORS[i % len(RECORD_COLORS)]
@@ -51,8 +57,6 @@ def plot_suite(doc: Mapping[str, Any], path: str | Path) -> None:
     ax.set_title(f"{doc['suite']}{where}: {verdict}", fontsize="medium")
     ax.grid(True, which="both", lw=0.3)
     ax.legend(fontsize="x-small", ncols=2)
-    fig.suptitle("rock suite check")
-    save(fig, path)
 
 
 def _period_axis(ax: Any, lo: float, hi: float) -> None:

@@ -215,10 +215,31 @@ def compare_suite(
     The code check runs first: its bad input (a state the edition lacks, a target that gives
     too little) stops the command before the time histories.
     """
-    from rockcli.studies.kinematic import check_settings, kinematic_model
-    from rockcli.studies.suite.assess import assess_loaded, load_suite_and_model
+    from rockcli.studies.suite.assess import load_suite_and_model
 
     loaded = load_suite_and_model(model_path, suite_path, grid_file, target)
+    return compare_loaded(
+        loaded, grid_file, code_demand=code_demand, edition=edition, engine=engine,
+        ground=ground, jobs=jobs, progress=progress,
+    )  # fmt: skip
+
+
+def compare_loaded(
+    loaded: LoadedSuite,
+    grid_file: str | None,
+    *,
+    code_demand: str = SuiteCodeDemand.TARGET,
+    edition: str | None = None,
+    engine: str = "fast",
+    ground: bool = False,
+    jobs: int = 1,
+    progress: Callable[[int, int], None] | None = None,
+) -> SuiteComparison:
+    """:func:`compare_suite` on a model and suite already read (the calculation report keeps
+    the suite's scaled records for its figures)."""
+    from rockcli.studies.kinematic import check_settings, kinematic_model
+    from rockcli.studies.suite.assess import assess_loaded
+
     which = SuiteCodeDemand(code_demand)
     settings = check_settings(loaded.model, edition)
     state = loaded.settings.target.limit_state.value

@@ -1,0 +1,160 @@
+"""The calculation report of a model under a record suite (`rock report MODEL --suite S`).
+
+The verdicts are those of `rock compare MODEL --suite S` (the suite's time histories by the
+code's rule, NTC 2018 §7.3.5, against the code check on the suite's target at the same limit
+state); the figures of each record come from its time history run again with its history
+kept (the same function, the same numbers).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping, Sequence
+from typing import TYPE_CHECKING, Any
+
+from rockcli.document.build import (
+    Inputs,
+    code_spectra_of,
+    figure,
+    hazard_grid,
+    identification,
+    kinematic_section,
+    model_section,
+    software_section,
+)
+from rockcli.document.content import Block, Document, Grid, Paragraph, Section
+from rockcli.document.words import Words
+
+if TYPE_CHECKING:
+    from matplotlib.figure import Figure as MplFigure
+
+    from rockcli.records.record import Record
+    from rockcli.studies.assess import AssessmentOutput
+
+
+def build_suite_document(
+    inputs: Inputs,
+    doc: Mapping[str, Any],
+    check: Mapping[str, Any],
+    records: Sequence[tuple[AssessmentOutput, Mapping[str, Any], Record]],
+    lang: str,
+) -> Document:
+    """The report of a suite comparison.
+
+    Args:
+        inputs: the model, the files, the command line (``record`` None).
+        doc: the `rock compare --suite` JSON document.
+        check: the `rock suite check` JSON document of the suite (its compatibility).
+        records: each record's time history with its history kept, its `rock assess`
+            document and the scaled record, in the suite's order.
+        lang: the report's language.
+    """
+    from rockcli import __version__
+
+    w = Words(lang)
+    first = records[0][1]
+    sections = (
+        identification(inputs, w),
+        model_section(inputs, first["model"], w),
+        suite_demand_section(inputs, doc, check, w),
+        kinematic_section(inputs, doc["kinematic"], w),
+        suite_rocking_section(doc, records, w),
+        suite_comparison_section(doc, w),
+        software_section(inputs.casebook, w),
+    )
+    name = doc["model"]["name"]
+    return Document(
+        lang=lang,
+        title=w("report.title"),
+        subtitle=w("report.subtitle_suite", model=name, suite=doc["suite_name"]),
+        sections=sections,
+        header=f"rock {__version__} — {name}",
+        footer=w("report.footer", date=inputs.date),
+        labels={k: w(f"label.{k}") for k in ("contents", "figure", "table", "page")},
+    )
+
+
+def suite_demand_section(
+    inputs: Inputs, doc: Mapping[str, Any], check: Mapping[str, Any], w: Words
+) -> Section:
+    """The suite: its records and scales, its target, its compatibility (table and figure)."""
+    n = w.number
+    suite = doc["suite"]
+    blocks: list[Block] = [Paragraph(w("suite.intro", state=w(f"ls.{doc['limit_state']}")))]
+    blocks.append(Grid(
+        w("suite.records_caption"),
+        (w("col.record"), w("col.scale"), "PGA [g]"),
+        tuple((r["name"], n(r["scale"], "{:.3g}"), n(r["pga_g"])) for r in suite["records"]),
+        (False, True, True),
+    ))  # fmt: skip
+    code_spectra = code_spectra_of(inputs.model, doc["kinematic"])
+    if code_spectra:
+        blocks.append(hazard_grid(code_spectra, doc["kinematic"], w))
+    compat = suite["compatibility"]
+    lo, hi = compat["period_range"]
+    blocks.append(Paragraph(w(
+        "suite.compatible" if compat["passed"] else "suite.not_compatible",
+        lo=n(lo), hi=n(hi), low=n(compat["min_ratio"], "{:.3f}"),
+        high=n(compat["max_ratio"], "{:.3f}"),
+    ), "verdict" if compat["passed"] else "warning"))  # fmt: skip
+    blocks.append(figure("compatibility", compatibility_figure(check, w),
+                         w("figure.compatibility_caption")))  # fmt: skip
+    blocks += [Paragraph(note, "note") for note in doc.get("notes", [])]
+    return Section("demand", w("section.demand"), tuple(blocks))
+
+
+def compatibility_figure(check: Mapping[str, Any], w: Words) -> MplFigure:
+    from rockcli.document.figures import PAGE_WIDTH, new_figure
+    from rockcli.report.plots.suite import draw_suite
+
+    fig = new_figure(PAGE_WIDTH, 4.2)
+    ax = fig.add_subplot()
+    draw_suite(ax, check)
+    ax.set_title("")
+    ax.set_xlabel(w("figure.period"))
+    ax.set_ylabel(w("figure.sa"))
+    return fig
+
+
+def suite_rocking_section(
+    doc: Mapping[str, Any],
+    records: Sequence[tuple[AssessmentOutput, Mapping[str, Any], Record]],
+    w: Words,
+) -> Section:  # fmt: skip
+    """Every record's max θ/α and overturning, the code's rule over them, θ/α(t) of each."""
+    from rockcli.document.figures import histories
+
+    n = w.number
+    suite = doc["suite"]
+    blocks: list[Block] = [Paragraph(w(f"suite.rule_{suite['rule']}", n=suite["n"]))]
+    blocks.append(Grid(
+        w("suite.runs_caption"),
+        (w("col.record"), w("col.scale"), "max θ/α", w("col.overturned")),
+        tuple((r["name"], n(r["scale"], "{:.3g}"), n(r["max_ratio"]), w.yes_no(r["overturned"]))
+              for r in suite["records"]),
+        (False, True, True, False),
+    ))  # fmt: skip
+    blocks.append(Paragraph(w(
+        "suite.measure", measure=n(suite["measure"]), limit=n(suite["limit_ratio"]),
+        verdict=w(f"suite.verdict_{suite['verdict']}"), overturned=suite["overturned_records"],
+        n=suite["n"],
+    ), "verdict"))  # fmt: skip
+    for k, (out, rocking, record) in enumerate(records, start=1):
+        shaken = out.shaking or record  # a block at height rocks on the floor's motion
+        fig = histories(rocking, out.result.runs, shaken, out.overturn_angle, w)
+        name = suite["records"][k - 1]["name"]
+        blocks.append(figure(f"histories-{k}", fig, w("figure.suite_histories_caption",
+                                                       record=name)))  # fmt: skip
+    return Section("rocking", w("section.rocking"), tuple(blocks))
+
+
+def suite_comparison_section(doc: Mapping[str, Any], w: Words) -> Section:
+    collapse = doc["collapse"]
+    rows = ((w("cmp.collapse"), w.yes_no(collapse["code"]), w.yes_no(collapse["rocking"])),)
+    blocks: list[Block] = [
+        Paragraph(w("suite.cmp_intro", state=w(f"ls.{doc['limit_state']}"))),
+        Grid(w("cmp.caption"), ("", w("cmp.code"), w("cmp.rocking")), rows),
+        Paragraph(w(f"class.{doc['classification']}"), "verdict"),
+        Paragraph(w("cmp.unlike")),
+    ]
+    blocks += [Paragraph(text, "warning") for text in doc.get("warnings", [])]
+    return Section("comparison", w("section.comparison"), tuple(blocks))
