@@ -156,4 +156,5 @@ def suite_quantity(inputs: SuiteInput) -> float:
     spectrum = ElasticSpectrum(ag=inputs.ag, F0=inputs.F0, Tc_star=inputs.Tc_star,
                                soil=Soil(inputs.soil))  # fmt: skip
     mean = record_spectra(records, periods).mean(axis=0)
-    return float(compatibility(periods, target_spectrum(spectrum, periods), mean, SUITE_BAND).ratio[0])
+    check = compatibility(periods, target_spectrum(spectrum, periods), mean, SUITE_BAND)
+    return float(check.ratio[0])

@@ -14,7 +14,15 @@ from typing import Any
 from pydantic import ValidationError
 from pydantic_core import ErrorDetails
 
-from rockcli.casebook.schema import INPUTS, NEEDS_MODEL, QUANTITIES, Case, CaseFile, Table
+from rockcli.casebook.schema import (
+    INPUTS,
+    NEEDS_MODEL,
+    QUANTITIES,
+    Case,
+    CaseFile,
+    Table,
+    ToleranceType,
+)
 from rockcli.errors import InputError
 from rockcli.model.load import TRANSLATION, load_model, read_toml, validate_model
 from rockcli.model.schema import Model
@@ -85,6 +93,14 @@ def load_case(case: Case, index: int, file: str) -> LoadedCase:
             where=f"{where}.quantity",
             value=case.quantity,
             allowed="one of " + ", ".join(quantities),
+        )
+    if case.tolerance_type is ToleranceType.RELATIVE and case.expected == 0:
+        raise InputError(
+            "a relative tolerance of an expected 0 measures nothing",
+            file=file,
+            where=f"{where}.tolerance_type",
+            value=case.tolerance_type.value,
+            allowed="absolute when expected = 0",
         )
     inputs = validate_table(INPUTS[case.kind], case.input, file, f"{where}.input")
     check_bracket(inputs, file, f"{where}.input.bracket")

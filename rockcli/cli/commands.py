@@ -12,6 +12,7 @@ from rockcli.cli.record import record
 from rockcli.cli.retrofit import retrofit
 from rockcli.cli.suite import suite
 from rockcli.cli.sweep import sweep
+from rockcli.cli.validate import validate
 from rockcli.cli.warmup import warmup
 
 ALL: list[click.Command] = []
@@ -24,3 +25,4 @@ ALL.append(warmup)
 ALL.append(sweep)
 ALL.append(retrofit)
 ALL.append(suite)
+ALL.append(validate)
