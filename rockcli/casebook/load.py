@@ -28,8 +28,12 @@ from rockcli.model.load import TRANSLATION, load_model, read_toml, validate_mode
 from rockcli.model.schema import Model
 from rockcli.suites.load import dotted
 
-#: The bundled casebook, beside the package in a source checkout (examples/validation).
-BUNDLED = Path(__file__).resolve().parents[2] / "examples" / "validation"
+#: The bundled casebook's place in a source checkout (and in the folder `rock` runs from).
+BUNDLED_PATH = Path("examples") / "validation"
+#: Where the bundled casebook is looked for: beside the package (a source checkout or an
+#: editable install), then in the current folder (an installed package run from a checkout,
+#: as CI does).
+BUNDLED = (Path(__file__).resolve().parents[2] / BUNDLED_PATH, BUNDLED_PATH)
 #: Longest text value quoted back in an error line [characters].
 MAX_QUOTED = 60
 
@@ -46,13 +50,23 @@ class LoadedCase:
 
 def casebook_folder(folder: str | Path | None) -> Path:
     """The folder to read: the given one, else the bundled casebook (InputError if absent)."""
-    path = Path(folder) if folder is not None else BUNDLED
+    if folder is None:
+        found = next((path for path in BUNDLED if path.is_dir()), None)
+        if found is None:
+            raise InputError(
+                "the bundled casebook is not here (it lives in rock's source tree)",
+                where="casebook",
+                value=str(BUNDLED_PATH),
+                allowed="run from a checkout of rock, or --casebook DIR",
+            )
+        return found
+    path = Path(folder)
     if not path.is_dir():
         raise InputError(
             "not a folder of case files",
-            where="--casebook" if folder is not None else "casebook",
+            where="--casebook",
             value=str(path),
-            allowed="a folder of *.toml case files (the bundled one is examples/validation)",
+            allowed="a folder of *.toml case files",
         )
     return path
 
@@ -102,9 +116,10 @@ def load_case(case: Case, index: int, file: str) -> LoadedCase:
             value=case.tolerance_type.value,
             allowed="absolute when expected = 0",
         )
+    model = case_model(case, file, where)
     inputs = validate_table(INPUTS[case.kind], case.input, file, f"{where}.input")
     check_bracket(inputs, file, f"{where}.input.bracket")
-    return LoadedCase(case, inputs, case_model(case, file, where), file)
+    return LoadedCase(case, inputs, model, file)
 
 
 def case_model(case: Case, file: str, where: str) -> Model | None:
@@ -136,10 +151,18 @@ def validate_table(schema: type[Table], data: Mapping[str, Any], file: str, wher
     try:
         return schema.model_validate(data)
     except ValidationError as exc:
-        raise translate(exc.errors()[0], file, where) from None
+        # An unknown key first: a misspelt key also shows as the right one missing.
+        errors = sorted(exc.errors(), key=lambda err: err["type"] != "extra_forbidden")
+        raise translate(errors[0], file, where, keys_of(schema, errors[0]["loc"])) from None
 
 
-def translate(err: ErrorDetails, file: str, prefix: str) -> InputError:
+def keys_of(schema: type[Table], loc: tuple[int | str, ...]) -> str:
+    """The keys allowed where an unknown key was found (a case's, or the schema's own)."""
+    table = Case if schema is CaseFile and len(loc) > 1 else schema
+    return ", ".join(table.model_fields)
+
+
+def translate(err: ErrorDetails, file: str, prefix: str, keys: str = "") -> InputError:
     """One pydantic error as one InputError, the field path after ``prefix``."""
     problem, _ = TRANSLATION.get(err["type"], (None, None))
     ctx = err.get("ctx", {})
@@ -155,18 +178,18 @@ def translate(err: ErrorDetails, file: str, prefix: str) -> InputError:
         file=file,
         where=where,
         value=value if isinstance(value, int | float | str) else None,
-        allowed=f"a number {bounds}" if bounds else _allowed(err),
+        allowed=f"a number {bounds}" if bounds else _allowed(err, keys),
     )
 
 
-def _allowed(err: ErrorDetails) -> str | None:
+def _allowed(err: ErrorDetails, keys: str) -> str | None:
     ctx = err.get("ctx", {})
     if "expected" in ctx:
         return f"one of: {ctx['expected']}"
     if "pattern" in ctx:
         return "letters, digits, '.', '_' and '-', starting with a letter or digit"
     if err["type"] == "extra_forbidden":
-        return "the keys of docs/validation.md, 'Case files'"
+        return f"the keys {keys}" if keys else None
     if err["type"] == "missing":
         return "required"
     if err["type"].startswith(("float", "int", "finite")):

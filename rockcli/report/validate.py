@@ -110,6 +110,5 @@ def summary(doc: dict[str, Any]) -> str:
     """``N cases: P passed, F failed, S skipped``."""
     total = len(doc["cases"])
     return (
-        f"{total} cases: {doc['passed']} passed, {doc['failed']} failed, "
-        f"{doc['skipped']} skipped"
+        f"{total} cases: {doc['passed']} passed, {doc['failed']} failed, {doc['skipped']} skipped"
     )
