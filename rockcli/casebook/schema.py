@@ -17,6 +17,12 @@ from rockcli.model.schema_base import Table
 
 Positive = Annotated[float, Field(gt=0, allow_inf_nan=False)]
 Finite = Annotated[float, Field(allow_inf_nan=False)]
+#: A sample interval [s]: fine enough for any case, coarse enough to keep a case small.
+SampleInterval = Annotated[float, Field(ge=1e-5, le=0.01, description="[s]")]
+#: A period or a duration [s]: a case is short (the casebook runs in seconds).
+Seconds = Annotated[float, Field(gt=0, le=60, allow_inf_nan=False, description="[s]")]
+#: A bisection bracket's end: an amplitude [g] or a velocity [rad/s].
+BracketEnd = Annotated[float, Field(gt=0, le=1e3, allow_inf_nan=False)]
 
 
 class Kind(StrEnum):
@@ -119,13 +125,13 @@ class FreeRockingInput(Table):
 
     phi0: float = Field(gt=0, lt=1, description="θ0/α [-]")
     impacts: int = Field(default=1, ge=1, le=20, description="impacts before the amplitude")
-    dt: Positive = Field(default=1e-3, le=0.01, description="history sample interval [s]")
+    dt: SampleInterval = 1e-3
 
 
 class ImpulseInput(Table):
     """``impulse``: the initial velocity from θ = 0 that overturns, bisected in a bracket."""
 
-    bracket: tuple[Positive, Positive] = Field(description="[lo, hi] of θ̇0 [rad/s]")
+    bracket: tuple[BracketEnd, BracketEnd] = Field(description="[lo, hi] of θ̇0 [rad/s]")
 
 
 PulseKind = Literal["rectangular", "one-sine", "one-cosine", "half-sine"]
@@ -135,9 +141,9 @@ class PulseThresholdInput(Table):
     """``pulse-threshold``: the pulse amplitude that overturns, bisected in a bracket."""
 
     pulse: PulseKind
-    period: Positive = Field(description="the pulse's period Tp (rectangular: duration) [s]")
-    dt: Positive = Field(default=1e-3, le=0.01, description="sample interval [s]")
-    bracket: tuple[Positive, Positive] = Field(description="[lo, hi] of the amplitude [g]")
+    period: Seconds = Field(description="the pulse's period Tp (rectangular: duration) [s]")
+    dt: SampleInterval = 1e-3
+    bracket: tuple[BracketEnd, BracketEnd] = Field(description="[lo, hi] of the amplitude [g]")
 
 
 class SpectrumInput(Table):
@@ -148,7 +154,7 @@ class SpectrumInput(Table):
     Tc_star: Positive
     soil: Literal["A", "B", "C", "D", "E"] = "A"
     topography: Literal["T1", "T2", "T3", "T4"] = "T1"
-    period: float = Field(ge=0, allow_inf_nan=False, description="T [s]")
+    period: float = Field(ge=0, le=100, allow_inf_nan=False, description="T [s]")
     xi: Positive = Field(default=5.0, description="damping [%]")
 
 
@@ -165,33 +171,33 @@ class ResponseSpectrumInput(Table):
 
     pulse: PulseKind
     amplitude: Positive = Field(description="[g]")
-    period: Positive = Field(description="the pulse's period (rectangular: duration) [s]")
-    dt: Positive = Field(default=1e-3, le=0.01)
-    oscillator_period: Positive = Field(description="Tn [s]")
+    period: Seconds = Field(description="the pulse's period (rectangular: duration) [s]")
+    dt: SampleInterval = 1e-3
+    oscillator_period: Seconds = Field(description="Tn [s]")
     damping: float = Field(default=0.0, ge=0, lt=1, description="fraction of critical")
 
 
 class FloorInput(Table):
     """``floor``: the floor motion of a resonant sine through the building's first mode."""
 
-    T1: Positive
+    T1: Seconds
     psi: Positive
     gamma: Positive
     xi: float = Field(default=0.05, gt=0, lt=1)
     amplitude: Positive = Field(description="[g]")
     cycles: int = Field(ge=10, le=200)
     samples_per_period: int = Field(default=400, ge=20, le=4000)
-    last_cycles: int = Field(default=2, ge=1, description="cycles read for the peak")
+    last_cycles: int = Field(default=2, ge=1, le=10, description="cycles read for the peak")
 
 
 class SuiteInput(Table):
     """``suite``: resonant sines as a suite; their mean spectrum against the code's target."""
 
-    period: Positive = Field(description="the sines' period, the period checked [s]")
+    period: Seconds = Field(description="the sines' period, the period checked [s]")
     amplitude: Positive = Field(description="[g]")
     cycles: int = Field(ge=10, le=200)
     samples_per_period: int = Field(default=400, ge=20, le=4000)
-    scales: list[Positive] = Field(min_length=1)
+    scales: list[Positive] = Field(min_length=1, max_length=30)
     ag: Positive
     F0: Positive
     Tc_star: Positive
