@@ -10,6 +10,7 @@ runs).
 from __future__ import annotations
 
 import math
+from dataclasses import replace
 
 import numpy as np
 
@@ -22,6 +23,7 @@ from rockcli.casebook.schema import (
     SpectrumInput,
     SuiteInput,
 )
+from rockcli.errors import InputError
 from rockcli.mechanics import Block, linear_global_stiffness, stiffness_coefficient
 from rockcli.model.derive import to_block
 from rockcli.model.schema import Model
@@ -38,8 +40,6 @@ def model_quantity(model: Model, inputs: ModelInput, quantity: str) -> float:
     if quantity in simple:
         return simple[quantity]
     if inputs.restrainer > len(block.restrainers):
-        from rockcli.errors import InputError
-
         raise InputError(
             "no such restrainer in the model",
             where="input.restrainer",
@@ -60,7 +60,6 @@ def positive_stiffness_ratio(block: Block, index: int) -> float:
     The stiffness is linear in the restrainer's K (mechanics.linear_global_stiffness): its
     value at K = 0 and its slope give the root K*.
     """
-    from dataclasses import replace
 
     def stiffness_with(k: float) -> float:
         springs = list(block.restrainers)

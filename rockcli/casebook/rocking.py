@@ -35,8 +35,9 @@ TAIL_OVER_P = 100.0
 QUIET_DT = 0.01
 
 
-class NoThreshold(Exception):
-    """The verdict does not flip inside the bracket (the case fails; not bad input)."""
+class NotObtained(Exception):
+    """No value for the case: the verdict does not flip inside the bracket, or the run ends
+    before the half-cycle asked for (the case fails; this is not bad input)."""
 
 
 def model_settings(model: Model, block: Block, **changes: object) -> SolverSettings:
@@ -72,7 +73,7 @@ def free_amplitude(model: Model, inputs: FreeRockingInput) -> float:
     assert run.history is not None
     peaks = half_cycle_peaks(run.history.theta)
     if len(peaks) < inputs.impacts:
-        raise NoThreshold(f"only {len(peaks)} complete half-cycles before the run ended")
+        raise NotObtained(f"only {len(peaks)} complete half-cycles before the run ended")
     return peaks[inputs.impacts - 1]
 
 
@@ -116,10 +117,10 @@ def bisect(overturns: Callable[[float], bool], lo: float, hi: float) -> float:
     """The value in [lo, hi] where ``overturns`` flips from False to True.
 
     Raises:
-        NoThreshold: it overturns at lo already, or survives at hi.
+        NotObtained: it overturns at lo already, or survives at hi.
     """
     if overturns(lo) or not overturns(hi):
-        raise NoThreshold(f"the verdict does not flip between {lo:.6g} and {hi:.6g}")
+        raise NotObtained(f"the verdict does not flip between {lo:.6g} and {hi:.6g}")
     while hi - lo > BISECT_RTOL * hi:
         mid = 0.5 * (lo + hi)
         if overturns(mid):

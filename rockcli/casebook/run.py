@@ -10,7 +10,7 @@ from enum import StrEnum
 from pathlib import Path
 
 from rockcli.casebook import code, rocking, schema
-from rockcli.casebook.load import LoadedCase, load_casebook
+from rockcli.casebook.load import LoadedCase, casebook_folder, load_casebook
 from rockcli.casebook.schema import QUANTITIES, Kind, ToleranceType
 from rockcli.errors import InputError
 
@@ -83,8 +83,6 @@ def run_casebook(folder: Path | str | None = None, grid_file: str | None = None)
     Raises:
         InputError: a malformed case file, case or model.
     """
-    from rockcli.casebook.load import casebook_folder
-
     cases = load_casebook(folder)
     grid = available_grid(grid_file)
     results = tuple(run_case(case, grid) for case in cases)
@@ -112,7 +110,7 @@ def run_case(loaded: LoadedCase, grid_file: str | None) -> CaseResult:
         return result_of(loaded, None, Status.SKIPPED, note=NO_GRID)
     try:
         obtained = obtain(loaded, grid_file)
-    except rocking.NoThreshold as exc:
+    except rocking.NotObtained as exc:
         return result_of(loaded, None, Status.FAILED, note=str(exc))
     except InputError as exc:
         raise exc.with_file(f"{loaded.file} (case {case.id})") from None
