@@ -13,6 +13,7 @@ from rockcli.cli.report import report
 from rockcli.cli.retrofit import retrofit
 from rockcli.cli.suite import suite
 from rockcli.cli.sweep import sweep
+from rockcli.cli.validate import validate
 from rockcli.cli.warmup import warmup
 
 ALL: list[click.Command] = []
@@ -26,3 +27,4 @@ ALL.append(sweep)
 ALL.append(retrofit)
 ALL.append(suite)
 ALL.append(report)
+ALL.append(validate)

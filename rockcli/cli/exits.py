@@ -4,7 +4,8 @@ from __future__ import annotations
 
 #: The command did what was asked.
 EXIT_DONE = 0
-#: A verdict gate the user asked for (--fail-on-overturn, --fail-on, --fail-on-uls) tripped.
+#: A verdict gate the user asked for (--fail-on-overturn, --fail-on, --fail-on-uls) tripped;
+#: `rock validate`: a case of the casebook is outside its tolerance.
 EXIT_GATE = 1
 #: Bad input (same as click's usage errors).
 EXIT_INPUT = 2

@@ -1,0 +1,159 @@
+"""The model, kinematic and spectrum cases, on the paths `rock` itself takes.
+
+Model quantities come from the derived block (``rockcli.model.derive.to_block``), the
+kinematic ones from ``rockcli.studies.kinematic.kinematic_model`` (what `rock kinematic`
+runs), the spectra from ``rockcli.codecheck`` (NTC spectrum, hazard grid, response spectrum,
+floor motion) and the suite's ratio from ``rockcli.suites.compat`` (what `rock suite check`
+runs).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import replace
+
+import numpy as np
+
+from rockcli.casebook.schema import (
+    FloorInput,
+    HazardInput,
+    KinematicInput,
+    ModelInput,
+    ResponseSpectrumInput,
+    SpectrumInput,
+    SuiteInput,
+)
+from rockcli.errors import InputError
+from rockcli.mechanics import Block, linear_global_stiffness, stiffness_coefficient
+from rockcli.model.derive import to_block
+from rockcli.model.schema import Model
+from rockcli.records.record import Record
+
+#: NTC 2018 §3.2.3.6 band of the suite case (the ratio itself is what is checked).
+SUITE_BAND = (-0.10, 0.30)
+
+
+def model_quantity(model: Model, inputs: ModelInput, quantity: str) -> float:
+    """A quantity of the derived block; restrainer ones of the chosen restrainer."""
+    block = to_block(model)
+    simple = {"R": block.R, "alpha": block.alpha, "p": block.p, "e": block.e, "c_E": block.p2}
+    if quantity in simple:
+        return simple[quantity]
+    if inputs.restrainer > len(block.restrainers):
+        raise InputError(
+            "no such restrainer in the model",
+            where="input.restrainer",
+            value=inputs.restrainer,
+            allowed=f"1 to {len(block.restrainers)}",
+        )
+    spring = block.restrainers[inputs.restrainer - 1]
+    if quantity == "k_pos":
+        return spring.k_pos
+    if quantity == "c_K":
+        return stiffness_coefficient(spring.k_pos, block.R, block.inertia)
+    return positive_stiffness_ratio(block, inputs.restrainer - 1)
+
+
+def positive_stiffness_ratio(block: Block, index: int) -> float:
+    """4KR/(mg) at which the linearized global stiffness of side θ > 0 changes sign.
+
+    The stiffness is linear in the restrainer's K (mechanics.linear_global_stiffness): its
+    value at K = 0 and its slope give the root K*.
+    """
+
+    def stiffness_with(k: float) -> float:
+        springs = list(block.restrainers)
+        springs[index] = replace(springs[index], k_pos=k, k_neg=k)
+        return linear_global_stiffness(replace(block, restrainers=tuple(springs)))
+
+    at_zero = stiffness_with(0.0)
+    slope = stiffness_with(1.0) - at_zero
+    k_star = -at_zero / slope
+    assert block.mass is not None
+    return 4.0 * k_star * block.R / (block.mass * block.g)
+
+
+def kinematic_quantity(model: Model, inputs: KinematicInput, quantity: str) -> float | None:
+    """A quantity of `rock kinematic` on the model (its own demand)."""
+    from rockcli.studies.kinematic import kinematic_model
+
+    result = kinematic_model(model, edition=inputs.edition)
+    direct = {
+        "alpha0": result.alpha0,
+        "e_star": result.e_star,
+        "a0_star": result.a0_star,
+        "d0_star": result.d0_star,
+    }
+    return direct[quantity] if quantity in direct else result.quantities.get(quantity)
+
+
+def spectrum_quantity(inputs: SpectrumInput, quantity: str) -> float:
+    """A value of the NTC elastic spectrum (NTC §3.2.3.2)."""
+    from rockcli.codecheck.spectra import ElasticSpectrum
+
+    spectrum = ElasticSpectrum(
+        ag=inputs.ag,
+        F0=inputs.F0,
+        Tc_star=inputs.Tc_star,
+        soil=inputs.soil,  # type: ignore[arg-type]
+        topography=inputs.topography,  # type: ignore[arg-type]
+    )
+    if quantity == "Se":
+        return spectrum.Se(inputs.period, inputs.xi)
+    if quantity == "SDe":
+        return spectrum.SDe(inputs.period, inputs.xi)
+    return float(getattr(spectrum, quantity))
+
+
+def hazard_quantity(inputs: HazardInput, quantity: str, grid_file: str) -> float:
+    """ag [g], F0 or Tc* [s] of the grid at the site and return period (Allegato A)."""
+    from rockcli.codecheck.hazard import read_grid, site_parameters
+
+    values = site_parameters(read_grid(grid_file), inputs.lon, inputs.lat, inputs.TR)
+    return float(getattr(values, quantity))
+
+
+def response_quantity(inputs: ResponseSpectrumInput, quantity: str) -> float:
+    """Sa [g] or Sd [m] of a linear oscillator under a generated pulse."""
+    from rockcli.codecheck.response import response_spectrum
+    from rockcli.records.pulses import make_pulse
+
+    rec = make_pulse(inputs.pulse, inputs.amplitude, inputs.period, dt=inputs.dt)
+    Sa, Sd = response_spectrum(rec.time, rec.accel, [inputs.oscillator_period], inputs.damping)
+    return float(Sa[0] if quantity == "Sa" else Sd[0])
+
+
+def sine(amplitude: float, period: float, cycles: int, samples: int) -> tuple[np.ndarray, ...]:
+    """amplitude·sin(2πt/period) [g] over whole cycles, ``samples`` per period."""
+    dt = period / samples
+    time = np.arange(0.0, cycles * period + dt / 2, dt)
+    return time, amplitude * np.sin(2.0 * math.pi * time / period)
+
+
+def floor_quantity(inputs: FloorInput) -> float:
+    """The peak floor acceleration [g] over the last cycles of a sine at the building's T1."""
+    from rockcli.codecheck.floor import floor_motion
+
+    time, accel = sine(inputs.amplitude, inputs.T1, inputs.cycles, inputs.samples_per_period)
+    floor = floor_motion(time, accel, T1=inputs.T1, psi=inputs.psi, gamma=inputs.gamma,
+                         xi=inputs.xi)  # fmt: skip
+    last = time >= (inputs.cycles - inputs.last_cycles) * inputs.T1
+    return float(np.max(np.abs(floor[last])))
+
+
+def suite_quantity(inputs: SuiteInput) -> float:
+    """The suite's mean Sa over the code's Se at the sines' period (NTC §3.2.3.6)."""
+    from rockcli.codecheck.spectra import ElasticSpectrum, Soil
+    from rockcli.suites.compat import compatibility, record_spectra, target_spectrum
+
+    time, accel = sine(inputs.amplitude, inputs.period, inputs.cycles, inputs.samples_per_period)
+    dt = inputs.period / inputs.samples_per_period
+    records = [
+        Record(f"sine x{s:g}", "generated", "pulse", time, s * accel, dt) for s in inputs.scales
+    ]
+    periods = np.array([inputs.period])
+    spectrum = ElasticSpectrum(ag=inputs.ag, F0=inputs.F0, Tc_star=inputs.Tc_star,
+                               soil=Soil(inputs.soil))  # fmt: skip
+    mean = record_spectra(records, periods).mean(axis=0)
+    check = compatibility(periods, target_spectrum(spectrum, periods), mean, SUITE_BAND)
+    return float(check.ratio[0])
