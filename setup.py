@@ -29,11 +29,34 @@ COMPILE = (
 )
 
 
+#: The validation casebook (examples/validation and the model its paper cases read) and where
+#: the built package carries it, so that an installed `rock validate` and `rock report` run it.
+CASEBOOK = (("examples/validation", "validation"), ("examples/altar.toml", "altar.toml"))
+CASEBOOK_IN_PACKAGE = os.path.join("rockcli", "casebook", "bundled")
+
+
+def copy_casebook(build_lib: str) -> None:
+    """Copy the casebook's files into the built package (rockcli/casebook/bundled)."""
+    import shutil
+
+    here = os.path.dirname(os.path.abspath(__file__))
+    target = os.path.join(build_lib, CASEBOOK_IN_PACKAGE)
+    for source, name in CASEBOOK:
+        origin = os.path.join(here, source)
+        if os.path.isdir(origin):
+            shutil.copytree(origin, os.path.join(target, name), dirs_exist_ok=True)
+        elif os.path.isfile(origin):
+            os.makedirs(target, exist_ok=True)
+            shutil.copy2(origin, os.path.join(target, name))
+
+
 class BuildWithKernels(build_py):
-    """build_py, then the kernels compiled into the built package."""
+    """build_py, then the casebook copied in and the kernels compiled into the built package."""
 
     def run(self) -> None:
         super().run()
+        if not getattr(self, "editable_mode", False):
+            copy_casebook(self.build_lib)
         if getattr(self, "editable_mode", False) or os.environ.get("ROCK_NO_PRECOMPILE"):
             return
         lib = os.path.abspath(self.build_lib)

@@ -28,12 +28,15 @@ from rockcli.model.load import TRANSLATION, load_model, read_toml, validate_mode
 from rockcli.model.schema import Model
 from rockcli.suites.load import dotted
 
-#: The bundled casebook's place in a source checkout (and in the folder `rock` runs from).
+#: The bundled casebook's place in a source checkout.
 BUNDLED_PATH = Path("examples") / "validation"
-#: Where the bundled casebook is looked for: beside the package (a source checkout or an
-#: editable install), then in the current folder (an installed package run from a checkout,
-#: as CI does).
-BUNDLED = (Path(__file__).resolve().parents[2] / BUNDLED_PATH, BUNDLED_PATH)
+#: Where the bundled casebook is looked for: in the installed package (setup.py copies it to
+#: rockcli/casebook/bundled when it builds the package), then in the source checkout the
+#: package runs from (an editable install).
+BUNDLED = (
+    Path(__file__).resolve().parent / "bundled" / "validation",
+    Path(__file__).resolve().parents[2] / BUNDLED_PATH,
+)
 #: Longest text value quoted back in an error line [characters].
 MAX_QUOTED = 60
 
@@ -54,10 +57,10 @@ def casebook_folder(folder: str | Path | None) -> Path:
         found = next((path for path in BUNDLED if path.is_dir()), None)
         if found is None:
             raise InputError(
-                "the bundled casebook is not here (it lives in rock's source tree)",
+                "the bundled casebook is not installed with this rock",
                 where="casebook",
-                value=str(BUNDLED_PATH),
-                allowed="run from a checkout of rock, or --casebook DIR",
+                value=str(BUNDLED[0]),
+                allowed="reinstall rock (pip install .), or --casebook DIR",
             )
         return found
     path = Path(folder)

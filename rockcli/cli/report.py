@@ -9,14 +9,12 @@ import click
 
 from rockcli.cli.options import (
     announce_written,
-    check_hazard_grid,
     check_outputs,
     check_record_options,
     edition_option,
     engine_option,
     force_option,
     ground_option,
-    hazard_grid_option,
     load_record,
     suite_option,
     target_option,
@@ -69,7 +67,14 @@ EXTRA = "pip install 'rockcli[report]'"
 @edition_option
 @engine_option
 @ground_option
-@hazard_grid_option
+@click.option(
+    "--hazard-grid",
+    "grid_file",
+    default=None,
+    type=click.Path(dir_okay=False),
+    help="NTC Allegato B grid file: for a site in the model or the suite's target, and for "
+    "the validation casebook's hazard-grid cases (default: $ROCK_HAZARD_GRID).",
+)
 @force_option
 def report(
     model_path, record_path, record_format, dt, units, scale, pga, suite_path, target, html_path,
@@ -99,9 +104,8 @@ def report(
         for path, detail in written:
             announce_written(path, detail)
         return
-    check_hazard_grid(
-        grid_file, model_path, demand_from="--record" if code_demand == "record" else None
-    )
+    # No check_hazard_grid: besides a site of the model, the grid serves the casebook's
+    # hazard-grid cases in the report's §10.2 section.
     record = load_record(record_path, record_format, dt, units, scale, pga)
     written = write_report(
         model_path,

@@ -493,20 +493,35 @@ def software_section(casebook: Any | None, w: Words) -> Section:
     return Section("software", w("section.software"), tuple(blocks))
 
 
-def casebook_blocks(casebook: Any, w: Words) -> list[Block]:
-    """The validation casebook's cases as run on this install, and the count."""
+def casebook_blocks(casebook: Mapping[str, Any], w: Words) -> list[Block]:
+    """The validation casebook's cases as run on this install (`rock validate`'s document),
+    and the count."""
+    n = w.number
     rows = tuple(
-        (c["id"], c["source"], c["quantity"], w.number(c["expected"], "{:.6g}"),
-         w.number(c["obtained"], "{:.6g}"), w.number(c["tolerance"], "{:.2g}"),
-         w.passed(c["passed"]))
+        (c["id"], c["source"], f"{c['quantity']} [{c['unit']}]" if c.get("unit") else c["quantity"],
+         n(c["expected"], "{:.6g}"), n(c["obtained"], "{:.6g}"), error_text(c.get("error"), w),
+         f"{n(c['tolerance'], '{:.1e}')} ({w('tol.' + c['tolerance_type'])})",
+         w(f"case.{c['status']}"))
         for c in casebook["cases"]
     )  # fmt: skip
     headers = (w("col.case"), w("col.source"), w("col.quantity"), w("col.expected"),
-               w("col.obtained"), w("col.tolerance"), w("col.outcome"))  # fmt: skip
-    summary = w("soft.casebook_summary", passed=casebook["passed"], failed=casebook["failed"])
+               w("col.obtained"), w("col.error"), w("col.tolerance"), w("col.outcome"))  # fmt: skip
+    summary = w("soft.casebook_summary", passed=casebook["passed"], failed=casebook["failed"],
+                skipped=casebook.get("skipped", 0))  # fmt: skip
     return [Paragraph(summary, "verdict" if not casebook["failed"] else "warning"),
             Grid(w("soft.casebook_caption"), headers, rows,
-                 (False, False, False, True, True, True, False))]  # fmt: skip
+                 (False, False, False, True, True, True, True, False))]  # fmt: skip
+
+
+#: Errors below this are shown as "< TINY_ERROR" (rounding; their digits differ by machine).
+TINY_ERROR = 1e-12
+
+
+def error_text(error: float | None, w: Words) -> str:
+    """A case's error, one significant digit; rounding-level errors as "< 1e-12"."""
+    if error is not None and 0.0 <= error < TINY_ERROR:
+        return "< " + w.number(TINY_ERROR, "{:.0e}")
+    return w.number(error, "{:.1e}")
 
 
 def figure(key: str, fig: MplFigure, caption: str) -> Figure:

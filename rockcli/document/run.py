@@ -21,6 +21,20 @@ def report_date() -> str:
     return moment.strftime("%Y-%m-%d %H:%M UTC")
 
 
+def casebook_document(grid_file: str | None) -> dict[str, Any] | None:
+    """The validation casebook run on this install (`rock validate --format json`'s document);
+    None when the install has no casebook (the report then says so). Its hazard-grid cases
+    run when the report has the grid, else they are skipped, as in `rock validate`."""
+    from rockcli.casebook.run import run_casebook
+    from rockcli.errors import InputError
+    from rockcli.report.validate import validate_document
+
+    try:
+        return validate_document(run_casebook(grid_file=grid_file))
+    except InputError:
+        return None
+
+
 def write_report(
     model_path: str,
     record: Record,
@@ -43,7 +57,8 @@ def write_report(
     out = compare_model_output(model, record, file=model_path, history=True, **options)
     doc = comparison_output_document(out, record)
     doc["warnings"] = comparison_warnings(doc)
-    inputs = Inputs(model_path, model, record, tuple(files), command, report_date())
+    inputs = Inputs(model_path, model, record, tuple(files), command, report_date(),
+                    casebook_document(options.get("grid_file")))  # fmt: skip
     document = build_document(inputs, out, doc, lang)
     return write_document(document, html_path, pdf_path, doc["classification"])
 
@@ -104,6 +119,7 @@ def write_suite_report(
         files.append(("suite", suite_path))
     files += [("record", str(entry.path)) for entry in loaded.settings.entries]
     files += [("hazard_grid", grid_file)] if grid_file else []
-    inputs = Inputs(model_path, loaded.model, None, tuple(files), command, report_date())
+    inputs = Inputs(model_path, loaded.model, None, tuple(files), command, report_date(),
+                    casebook_document(grid_file))  # fmt: skip
     document = build_suite_document(inputs, doc, suite_document(loaded.check), runs, lang)
     return write_document(document, html_path, pdf_path, doc["classification"])

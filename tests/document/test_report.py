@@ -165,3 +165,19 @@ def test_record_and_suite_exclude_each_other(tmp_path: Path) -> None:
     code, _, err = run(str(ALTAR), "--record", str(PULSE), "--suite", str(ROOT / "records"),
                        "-o", str(tmp_path / "r.html"))  # fmt: skip
     assert code == 2 and "give one record or one suite" in err
+
+
+def test_the_software_section_holds_the_casebook_run_here(facade: tuple[str, bytes]) -> None:
+    # The §10.2 section runs `rock validate`'s casebook on this install: every case is in it
+    # with its outcome, and the count agrees with rock validate's own.
+    import json
+
+    from rockcli.casebook.load import load_casebook
+
+    html, _ = facade
+    software = html[html.index('<section id="software"') :]
+    ids = [loaded.case.id for loaded in load_casebook()]
+    assert all(f"<td>{case_id}</td>" in software for case_id in ids)
+    result = CliRunner().invoke(cli, ["validate", "--format", "json"])
+    doc = json.loads(result.stdout)
+    assert f"{doc['passed']} superati, {doc['failed']} non superati" in software

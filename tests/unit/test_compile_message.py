@@ -95,7 +95,13 @@ def test_the_built_wheel_carries_the_compiled_engine(tmp_path: Path) -> None:
     for name in ("pyproject.toml", "setup.py", "README.md"):
         (source / name).parent.mkdir(parents=True, exist_ok=True)
         (source / name).write_bytes((ROOT / name).read_bytes())
-    for path in (ROOT / "rockcli").rglob("*.py"):
+    package_files = [
+        p for p in (ROOT / "rockcli").rglob("*") if p.suffix in (".py", ".toml", ".j2")
+    ]
+    casebook = [*(ROOT / "examples" / "validation").rglob("*.toml"), ROOT / "examples/altar.toml"]
+    for path in (*package_files, *casebook):
+        if "__pycache__" in path.parts:
+            continue
         target = source / path.relative_to(ROOT)
         target.parent.mkdir(parents=True, exist_ok=True)
         target.write_bytes(path.read_bytes())
@@ -113,3 +119,9 @@ def test_the_built_wheel_carries_the_compiled_engine(tmp_path: Path) -> None:
     cached = [n for n in names if n.startswith("rockcli/__pycache__/numba-")]
     assert any(n.endswith("/" + jitcache.MARKER) for n in cached)
     assert any("/rockcli_dynamics/kernel.integrate-" in n for n in cached)
+    # The report's catalogues and templates, and the validation casebook with the model its
+    # cases read (setup.py copies it in): an installed rock runs `validate` and `report`.
+    for name in ("rockcli/document/messages/it.toml", "rockcli/document/templates/report.html.j2",
+                 "rockcli/casebook/bundled/validation/paper.toml",
+                 "rockcli/casebook/bundled/altar.toml"):  # fmt: skip
+        assert name in names, name
