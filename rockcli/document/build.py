@@ -310,6 +310,7 @@ def kinematic_section(inputs: Inputs, kin: Mapping[str, Any], w: Words) -> Secti
     blocks: list[Block] = [Paragraph(w(f"kin.intro_{kin['edition']}"))]
     blocks.append(activation_grid(inputs.model, kin, w))
     quantities = [
+        ("M*", participating_mass_of(inputs.model, kin), "kg", "kin.M_star"),
         ("e*", kin["e_star"], "", "kin.e_star"),
         ("a0*", kin["a0_star"], "m/s²", "kin.a0_star"),
         ("FC", kin["FC"], "", "kin.FC"),
@@ -338,6 +339,17 @@ def kinematic_section(inputs: Inputs, kin: Mapping[str, Any], w: Words) -> Secti
         "verdict",
     ))  # fmt: skip
     return Section("kinematic", w("section.kinematic"), tuple(blocks))
+
+
+def participating_mass_of(model: Model, kin: Mapping[str, Any]) -> float:
+    """M* of the side the check governs (Circolare 617/2009 Eq. C8A.4.2; Circolare 7/2019
+    Eq. C8.7.1.2), by codecheck.kinematic.participating_mass, the function e* comes from."""
+    from rockcli.codecheck.kinematic import participating_mass
+    from rockcli.model.derive import to_block
+    from rockcli.studies.kinematic import check_settings, mechanism
+
+    settings = check_settings(model, kin["edition"])
+    return participating_mass(mechanism(to_block(model), settings, int(kin["side"])))
 
 
 def activation_grid(model: Model, kin: Mapping[str, Any], w: Words) -> Grid:

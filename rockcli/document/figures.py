@@ -12,7 +12,7 @@ from __future__ import annotations
 import io
 import math
 import re
-from collections.abc import Mapping, Sequence
+from collections.abc import Callable, Mapping, Sequence
 from typing import TYPE_CHECKING, Any
 
 from rockcli.document.words import Words
@@ -141,17 +141,33 @@ def spectra(
     return fig
 
 
+def on_page(
+    draw: Callable[[Any, Mapping[str, Any]], None], data: Mapping[str, Any], height: float,
+    labels: tuple[str, str],
+) -> MplFigure:  # fmt: skip
+    """A terminal command's plot (``draw(ax, data)``) at the page's width, its title left to
+    the caption, its axes labelled in the report's language."""
+    fig = new_figure(PAGE_WIDTH, height)
+    ax = fig.add_subplot()
+    draw(ax, data)
+    ax.set_title("")
+    ax.set_xlabel(labels[0])
+    ax.set_ylabel(labels[1])
+    return fig
+
+
 def capacity(kin: Mapping[str, Any], words: Words) -> MplFigure:
     """The capacity curve with a0*, d0*, the edition's quantities and the demands."""
     from rockcli.report.plots.capacity import draw_capacity
 
-    fig = new_figure(PAGE_WIDTH, 4.6)
-    ax = fig.add_subplot()
-    draw_capacity(ax, kin)
-    ax.set_title("")
-    ax.set_xlabel(words("figure.d_star"))
-    ax.set_ylabel(words("figure.a_star"))
-    return fig
+    return on_page(draw_capacity, kin, 4.6, (words("figure.d_star"), words("figure.a_star")))
+
+
+def compatibility(check: Mapping[str, Any], words: Words) -> MplFigure:
+    """A suite's spectra, their mean, the target and its band (`rock suite check`'s plot)."""
+    from rockcli.report.plots.suite import draw_suite
+
+    return on_page(draw_suite, check, 4.2, (words("figure.period"), words("figure.sa")))
 
 
 def histories(

@@ -25,8 +25,6 @@ from rockcli.document.content import Block, Document, Grid, Paragraph, Section
 from rockcli.document.words import Words
 
 if TYPE_CHECKING:
-    from matplotlib.figure import Figure as MplFigure
-
     from rockcli.records.record import Record
     from rockcli.studies.assess import AssessmentOutput
 
@@ -77,6 +75,8 @@ def suite_demand_section(
     inputs: Inputs, doc: Mapping[str, Any], check: Mapping[str, Any], w: Words
 ) -> Section:
     """The suite: its records and scales, its target, its compatibility (table and figure)."""
+    from rockcli.document.figures import compatibility
+
     n = w.number
     suite = doc["suite"]
     blocks: list[Block] = [Paragraph(w("suite.intro", state=w(f"ls.{doc['limit_state']}")))]
@@ -96,23 +96,10 @@ def suite_demand_section(
         lo=n(lo), hi=n(hi), low=n(compat["min_ratio"], "{:.3f}"),
         high=n(compat["max_ratio"], "{:.3f}"),
     ), "verdict" if compat["passed"] else "warning"))  # fmt: skip
-    blocks.append(figure("compatibility", compatibility_figure(check, w),
+    blocks.append(figure("compatibility", compatibility(check, w),
                          w("figure.compatibility_caption")))  # fmt: skip
     blocks += [Paragraph(note, "note") for note in doc.get("notes", [])]
     return Section("demand", w("section.demand"), tuple(blocks))
-
-
-def compatibility_figure(check: Mapping[str, Any], w: Words) -> MplFigure:
-    from rockcli.document.figures import PAGE_WIDTH, new_figure
-    from rockcli.report.plots.suite import draw_suite
-
-    fig = new_figure(PAGE_WIDTH, 4.2)
-    ax = fig.add_subplot()
-    draw_suite(ax, check)
-    ax.set_title("")
-    ax.set_xlabel(w("figure.period"))
-    ax.set_ylabel(w("figure.sa"))
-    return fig
 
 
 def suite_rocking_section(
