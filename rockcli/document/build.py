@@ -181,7 +181,8 @@ def loads_grids(m: Mapping[str, Any], w: Words) -> list[Block]:
         grids.append(Grid(
             w("model.thrusts_caption"),
             (w("col.name"), w("col.force_kn"), w("col.direction"), w("col.x_m"), w("col.z_m")),
-            tuple((t["name"], n(t["force"] / 1e3), t["direction"], n(t["x_pos"]), n(t["z"]))
+            tuple((t["name"], n(t["force"] / 1e3), w(f"model.direction_{t['direction']}"),
+                   n(t["x_pos"]), n(t["z"]))
                   for t in m["thrusts"]),
             (False, True, False, True, True),
         ))  # fmt: skip

@@ -73,11 +73,13 @@ def block_sketch(model: Mapping[str, Any], words: Words) -> MplFigure:
         ax.annotate(load["name"], (load["x_pos"], load["z"] + 0.12 * span), fontsize="x-small",
                     color="tab:blue", ha="center", va="bottom")  # fmt: skip
     for thrust in model.get("thrusts", []):
-        sign = 1.0 if thrust["direction"] == "positive" else -1.0
+        sign = 1.0 if thrust["direction"] in (1, "positive") else -1.0  # towards θ > 0: −x
         start = thrust["x_pos"] + sign * 0.15 * span
         ax.annotate("", (thrust["x_pos"], thrust["z"]), xytext=(start, thrust["z"]),
                     arrowprops={"arrowstyle": "-|>", "color": "tab:red", "lw": 1.5})  # fmt: skip
-        ax.annotate(thrust["name"], (start, thrust["z"]), fontsize="x-small", color="tab:red")
+        ax.annotate(thrust["name"], (start, thrust["z"]), xytext=(0, -10),
+                    textcoords="offset points", fontsize="x-small", color="tab:red", ha="center",
+                    va="top")  # fmt: skip
     for spring in model.get("restrainers", []):
         _draw_spring(ax, spring, width, span)
     ax.set_aspect("equal")

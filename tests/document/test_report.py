@@ -181,3 +181,20 @@ def test_the_software_section_holds_the_casebook_run_here(facade: tuple[str, byt
     result = CliRunner().invoke(cli, ["validate", "--format", "json"])
     doc = json.loads(result.stdout)
     assert f"{doc['passed']} superati, {doc['failed']} non superati" in software
+
+
+def test_the_sketch_draws_each_thrust_towards_its_side() -> None:
+    # docs/conventions.md: O is the pivot of θ > 0, x is measured from O into the block, and a
+    # thrust's direction is the sense of rotation it pushes towards: towards θ > 0 the block
+    # tips over O, so the arrow points to −x (it starts on the +x side of its point).
+    from rockcli.document.figures import block_sketch
+    from rockcli.document.words import Words
+
+    model = {"b": 0.25, "h": 1.6, "loads": [], "restrainers": [],
+             "thrusts": [{"name": "push", "force": 1e3, "direction": d, "x_pos": 0.2, "z": 3.0}
+                         for d in (1, -1)]}  # fmt: skip
+    ax = block_sketch(model, Words("en")).axes[0]
+    arrows = [a for a in ax.texts if getattr(a, "arrow_patch", None) is not None]
+    starts = sorted(a.xyann[0] - a.xy[0] for a in arrows)
+    assert starts[0] < 0 < starts[1]  # one from +x (towards θ > 0), one from −x
+    assert arrows[0].xyann[0] > arrows[0].xy[0]  # the first is direction = 1
