@@ -18,6 +18,9 @@ from typing import TYPE_CHECKING, Any
 from rockcli.document.content import Block, Document, Figure, Grid, Paragraph, Section
 from rockcli.document.words import Words
 
+#: The limit states of the code's verdict per edition (2019's verdict also sums them up as
+#: DLS and ULS, which the report does not repeat).
+VERDICT_STATES = {"2009": ("DLS", "ULS"), "2019": ("SLD", "SLV", "SLC")}
 #: What the report says of the record, in order (keys of the rocking document's record).
 RECORD_FACTS = ("name", "event", "station", "component", "npts", "dt", "duration", "pga_g",
                 "t_pga")  # fmt: skip
@@ -207,7 +210,7 @@ def restrainer_row(r: Mapping[str, Any], w: Words) -> tuple[str, ...]:
     if r["code_action"] == "force":
         action += f" ({n(r['code_force'] / 1e3)} kN)"
     return (
-        r["name"], r["law"], n(r["k_pos"] / 1e3), n(r["k_neg"] / 1e3), n(r["r_pos"]),
+        r["name"], w(f"law.{r['law']}"), n(r["k_pos"] / 1e3), n(r["k_neg"] / 1e3), n(r["r_pos"]),
         n(r["phi_pos"]), n(r["strength"] / 1e3) if r["strength"] else "—", action,
     )  # fmt: skip
 
@@ -335,8 +338,9 @@ def kinematic_section(inputs: Inputs, kin: Mapping[str, Any], w: Words) -> Secti
     blocks += [Paragraph(note, "note") for note in kin.get("notes", [])]
     blocks += [Paragraph(text, "warning") for text in kin.get("warnings", [])]
     verdict = kin["verdict"]
+    states = VERDICT_STATES[kin["edition"]]
     blocks.append(Paragraph(
-        "; ".join(f"{w(f'ls.{state}')}: {w.passed(passed)}" for state, passed in verdict.items()),
+        "; ".join(f"{w(f'ls.{state}')}: {w.passed(verdict.get(state))}" for state in states),
         "verdict",
     ))  # fmt: skip
     return Section("kinematic", w("section.kinematic"), tuple(blocks))
@@ -457,7 +461,7 @@ def polarity_label(run: Mapping[str, Any], w: Words) -> str:
 def restrainer_checks_grid(checks: Sequence[Mapping[str, Any]], w: Words) -> Grid:
     n = w.number
     rows = tuple(
-        (c["name"], c["law"], n(_kn(c["demand"])), n(_kn(c["strength"])),
+        (c["name"], w(f"law.{c['law']}"), n(_kn(c["demand"])), n(_kn(c["strength"])),
          n(c["utilisation"], "{:.3f}"), w.yes_no(c["yielded"]), w.yes_no(c["ruptured"]),
          w.passed(c["passed"]), c["clause"])
         for c in checks

@@ -16,6 +16,7 @@ from collections.abc import Callable, Mapping, Sequence
 from typing import TYPE_CHECKING, Any
 
 from rockcli.document.words import Words
+from rockcli.report.plots.phrases import Say
 
 if TYPE_CHECKING:
     from matplotlib.axes import Axes
@@ -143,15 +144,24 @@ def spectra(
     return fig
 
 
+def phrases(words: Words) -> Say:
+    """The figures' words in the report's language (the catalogue's ``[plot]`` table)."""
+
+    def say(key: str, **values: Any) -> str:
+        return words(f"plot.{key}", **values)
+
+    return say
+
+
 def on_page(
-    draw: Callable[[Any, Mapping[str, Any]], None], data: Mapping[str, Any], height: float,
-    labels: tuple[str, str],
+    draw: Callable[..., None], data: Mapping[str, Any], height: float, labels: tuple[str, str],
+    words: Words,
 ) -> MplFigure:  # fmt: skip
-    """A terminal command's plot (``draw(ax, data)``) at the page's width, its title left to
-    the caption, its axes labelled in the report's language."""
+    """A terminal command's plot (``draw(ax, data, say)``) at the page's width, its title
+    left to the caption, its words and axis labels in the report's language."""
     fig = new_figure(PAGE_WIDTH, height)
     ax = fig.add_subplot()
-    draw(ax, data)
+    draw(ax, data, phrases(words))
     ax.set_title("")
     ax.set_xlabel(labels[0])
     ax.set_ylabel(labels[1])
@@ -162,14 +172,18 @@ def capacity(kin: Mapping[str, Any], words: Words) -> MplFigure:
     """The capacity curve with a0*, d0*, the edition's quantities and the demands."""
     from rockcli.report.plots.capacity import draw_capacity
 
-    return on_page(draw_capacity, kin, 4.6, (words("figure.d_star"), words("figure.a_star")))
+    labels = (words("figure.d_star"), words("figure.a_star"))
+    fig = on_page(draw_capacity, kin, 5.4, labels, words)
+    # One column under the axes: the checks' labels are long, two columns leave the page.
+    fig.axes[0].legend(loc="upper center", bbox_to_anchor=(0.5, -0.12), fontsize="x-small")
+    return fig
 
 
 def compatibility(check: Mapping[str, Any], words: Words) -> MplFigure:
     """A suite's spectra, their mean, the target and its band (`rock suite check`'s plot)."""
     from rockcli.report.plots.suite import draw_suite
 
-    return on_page(draw_suite, check, 4.2, (words("figure.period"), words("figure.sa")))
+    return on_page(draw_suite, check, 4.2, (words("figure.period"), words("figure.sa")), words)
 
 
 def histories(
@@ -181,7 +195,8 @@ def histories(
 
     fig = new_figure(PAGE_WIDTH, 4.4)
     spec = fig.add_gridspec(2, 1, height_ratios=(3, 1))
-    draw_time_panels(fig, [spec[0], spec[1]], rocking, runs, record, overturn_angle)
+    draw_time_panels(fig, [spec[0], spec[1]], rocking, runs, record, overturn_angle,
+                     phrases(words))  # fmt: skip
     top, bottom = fig.axes[0], fig.axes[1]
     top.set_title("")
     top.set_ylabel(words("figure.ratio"))

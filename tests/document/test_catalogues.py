@@ -3,6 +3,7 @@ numbers written as each language writes them."""
 
 from __future__ import annotations
 
+import re
 import string
 
 import pytest
@@ -27,12 +28,18 @@ def test_a_message_has_the_same_fields_in_every_language(key: str) -> None:
     assert len({frozenset(fields(catalogue(lang)[key])) for lang in LANGUAGES}) == 1
 
 
+def words_of(text: str) -> list[str]:
+    """The words of a message: letters only, fields and symbols (m/s², d*, Ts) left out."""
+    return re.findall(r"[^\W\d_]{4,}", re.sub(r"\{[^}]*\}", "", text))
+
+
 def test_no_message_is_left_untranslated() -> None:
     # Italian is the filing language: a sentence copied over from English is a slip. Symbols,
-    # units and proper names are the same in both, so only messages of several words count.
+    # units, formulas and proper names are the same in both, so only messages of three or
+    # more words count.
     same = [
         k for k, text in catalogue("it").items()
-        if text == catalogue("en")[k] and len(text.split()) > 3
+        if text == catalogue("en")[k] and len(words_of(text)) >= 3
     ]  # fmt: skip
     assert not same
 
@@ -47,3 +54,12 @@ def test_the_code_terms_in_italian() -> None:
     it = Words("it")
     assert it("ls.ULS") == "SLV" and it("ls.DLS") == "SLD"
     assert "moltiplicatore di attivazione" in it("kin.intro_2019").lower()
+
+
+def test_the_figures_english_words_are_the_terminal_plots() -> None:
+    # The report's English figures say what the terminal commands' plots say
+    # (rockcli.report.plots.phrases), and every phrase is in every language.
+    from rockcli.report.plots.phrases import ENGLISH
+
+    plot = {k.removeprefix("plot."): v for k, v in catalogue("en").items() if k.startswith("plot.")}
+    assert plot == ENGLISH

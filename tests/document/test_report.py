@@ -198,3 +198,12 @@ def test_the_sketch_draws_each_thrust_towards_its_side() -> None:
     starts = sorted(a.xyann[0] - a.xy[0] for a in arrows)
     assert starts[0] < 0 < starts[1]  # one from +x (towards θ > 0), one from −x
     assert arrows[0].xyann[0] > arrows[0].xy[0]  # the first is direction = 1
+
+
+def test_the_kinematic_verdict_names_each_limit_state_once(facade: tuple[str, bytes]) -> None:
+    # The façade is checked by the 2019 rules: SLD, SLV and SLC, each once (its verdict
+    # document also sums them up as DLS and ULS, which in Italian are SLD and SLV again).
+    html, _ = facade
+    kinematic = html[html.index('<section id="kinematic"') : html.index('<section id="rocking"')]
+    line = re.findall(r'<p class="verdict">([^<]*)</p>', kinematic)[-1]
+    assert [part.split(":")[0] for part in line.split("; ")] == ["SLD", "SLV", "SLC"]

@@ -7,6 +7,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from rockcli.report.plots.files import new_figure, save
+from rockcli.report.plots.phrases import Say, english
 
 if TYPE_CHECKING:
     from matplotlib.axes import Axes
@@ -15,8 +16,10 @@ PASSED_COLORS = {True: "tab:green", False: "tab:red", None: "0.5"}
 LIMIT_STATE_STYLES = {"DLS": "--", "SLD": "--", "ULS": "-.", "SLV": "-.", "SLC": ":"}
 
 
-def _word(passed: bool | None) -> str:
-    return "not evaluated" if passed is None else ("satisfied" if passed else "NOT satisfied")
+def _word(passed: bool | None, say: Say) -> str:
+    if passed is None:
+        return say("not_evaluated")
+    return say("satisfied" if passed else "not_satisfied")
 
 
 def _curve(kin: Mapping[str, Any]) -> tuple[list[float], list[float]]:
@@ -41,47 +44,48 @@ def _draw_secant(ax: Axes, d: float, a: float, label: str, color: str) -> None:
     ax.plot([d], [a], "o", color=color, ms=6, label=label)
 
 
-def _draw_quantities(ax: Axes, kin: Mapping[str, Any]) -> None:
+def _draw_quantities(ax: Axes, kin: Mapping[str, Any], say: Say) -> None:
     """2009: du* and the secant to (ds*, as*) with Ts; 2019: the SLV/SLC points with T."""
     if kin.get("du_star") is not None:
         du = kin["du_star"]
-        ax.axvline(du, color="k", ls="--", lw=1.0, label=f"du* = {du:.4g} m (ULS capacity)")
+        ax.axvline(du, color="k", ls="--", lw=1.0, label=say("du", du=du))
         ax.annotate(
             "du*", (du, 1.0), xycoords=("data", "axes fraction"), xytext=(3, -3),
             textcoords="offset points", ha="left", va="top", fontsize="small",
         )  # fmt: skip
     if kin.get("ds_star") is not None and kin.get("Ts") is not None:
-        label = (
-            f"(ds*, as*) = ({kin['ds_star']:.3g} m, {kin['as_star']:.3g} m/s²), "
-            f"Ts = {kin['Ts']:.3g} s"
-        )
+        label = say("secant_2009", ds=kin["ds_star"], a=kin["as_star"], T=kin["Ts"])
         _draw_secant(ax, kin["ds_star"], kin["as_star"], label, "tab:blue")
     for ls, color in (("SLV", "tab:blue"), ("SLC", "tab:purple")):
         d, a, T = kin.get(f"d_{ls}"), kin.get(f"a_{ls}"), kin.get(f"T_{ls}")
         if d is not None and a is not None:
-            period = f", T_{ls} = {T:.3g} s" if T is not None else ""
-            _draw_secant(ax, d, a, f"{ls}: d = {d:.4g} m, a = {a:.3g} m/s²{period}", color)
+            state = say(f"state_{ls}")
+            label = (
+                say("secant_period", state=state, d=d, a=a, T=T)
+                if T is not None
+                else say("secant_2019", state=state, d=d, a=a)
+            )
+            _draw_secant(ax, d, a, label, color)
 
 
-def _check_name(c: Mapping[str, Any]) -> str:
-    method = "non-linear" if c["method"] == "nonlinear" else "linear"
-    return f"{c['limit_state']} {method}, {c['location']}"
+def _check_name(c: Mapping[str, Any], say: Say) -> str:
+    state, method = say(f"state_{c['limit_state']}"), say(f"method_{c['method']}")
+    return say("check_name", state=state, method=method, where=say(f"where_{c['location']}"))
 
 
-def _check_label(c: Mapping[str, Any]) -> str:
+def _check_label(c: Mapping[str, Any], say: Say) -> str:
+    name = _check_name(c, say)
     if c["demand"] is None or c["capacity"] is None:
-        return f"{_check_name(c)}: not evaluated (see the notes)"
+        return say("check_not_evaluated", name=name)
+    numbers = {"name": name, "demand": c["demand"], "capacity": c["capacity"],
+               "unit": c["unit"], "word": _word(c["passed"], say)}  # fmt: skip
     if c["unit"] in ("m/s²", "m"):
-        return f"{_check_name(c)}: demand {c['demand']:.3g} {c['unit']} ({_word(c['passed'])})"
+        return say("check_demand", **numbers)
     # 2019 compares peak ground accelerations: the ag the element withstands and the site's.
-    quantity = "ag " if c["unit"] == "g" else ""
-    return (
-        f"{_check_name(c)}: {quantity}capacity {c['capacity']:.3g} vs demand "
-        f"{c['demand']:.3g} {c['unit']} ({_word(c['passed'])})"
-    )
+    return say("check_ag" if c["unit"] == "g" else "check_capacity", **numbers)
 
 
-def _draw_checks(ax: Axes, kin: Mapping[str, Any]) -> None:
+def _draw_checks(ax: Axes, kin: Mapping[str, Any], say: Say) -> None:
     """The demands of the checks: accelerations [m/s²] as horizontal lines (against a0*),
     displacements [m] as points on the curve (against du*); the checks off the a*–d* plane
     (2019: ag [g]) and those not evaluated as legend entries with a square of their colour."""
@@ -91,18 +95,21 @@ def _draw_checks(ax: Axes, kin: Mapping[str, Any]) -> None:
         color = PASSED_COLORS[c["passed"]]
         style = LIMIT_STATE_STYLES.get(c["limit_state"], "-")
         if c["passed"] is not None and c["unit"] == "m/s²":
-            ax.axhline(c["demand"], color=color, ls=style, lw=1.2, label=_check_label(c))
+            ax.axhline(c["demand"], color=color, ls=style, lw=1.2, label=_check_label(c, say))
+            mark = say("demand_mark", state=say(f"state_{c['limit_state']}"),
+                       where=say(f"where_{c['location']}"))  # fmt: skip
             ax.annotate(
-                f"{c['limit_state']} {c['location']}", (1.0, c["demand"]),
+                mark, (1.0, c["demand"]),
                 xycoords=("axes fraction", "data"), xytext=(-3, 2), textcoords="offset points",
                 ha="right", va="bottom", fontsize="x-small", color=color,
             )  # fmt: skip
         elif c["passed"] is not None and c["unit"] == "m":
             a = _a_on_curve(kin, c["demand"])
             ax.plot([c["demand"]] * 2, [0.0, a], color=color, ls=style, lw=1.2)
-            ax.plot([c["demand"]], [a], "D", color=color, ms=6, label=_check_label(c))
+            ax.plot([c["demand"]], [a], "D", color=color, ms=6, label=_check_label(c, say))
         else:
-            ax.add_line(Line2D([], [], ls="none", marker="s", color=color, label=_check_label(c)))
+            label = _check_label(c, say)
+            ax.add_line(Line2D([], [], ls="none", marker="s", color=color, label=label))
 
 
 #: The frame shows a* up to this multiple of the largest acceleration the checks use (a0*, the
@@ -120,7 +127,7 @@ def _crossing(ds: list[float], as_: list[float], level: float) -> float:
     return ds[-1]
 
 
-def _frame(ax: Axes, kin: Mapping[str, Any]) -> None:
+def _frame(ax: Axes, kin: Mapping[str, Any], say: Say) -> None:
     """Axes from 0; when the curve rises past FRAME_FACTOR × the checks' accelerations, the
     frame stops there and the legend says where the curve goes."""
     from matplotlib.lines import Line2D
@@ -137,37 +144,40 @@ def _frame(ax: Axes, kin: Mapping[str, Any]) -> None:
     xs += [c["demand"] for c in kin["checks"] if c["unit"] == "m"]
     ax.set_xlim(0.0, 1.05 * max(x for x in xs if x is not None))
     ax.set_ylim(0.0, top)
-    note = f"the curve leaves the frame: a* = {as_[-1]:.3g} m/s² at d* = {ds[-1]:.3g} m"
+    note = say("off_frame", a=as_[-1], d=ds[-1])
     ax.add_line(Line2D([], [], ls="none", label=note))
 
 
-def _verdict_text(kin: Mapping[str, Any]) -> str:
+def _verdict_text(kin: Mapping[str, Any], say: Say) -> str:
     """2009: DLS and ULS; 2019: its three limit states."""
     states = ("SLD", "SLV", "SLC") if kin["edition"] == "2019" else ("DLS", "ULS")
-    return ", ".join(f"{ls} {_word(kin['verdict'].get(ls))}" for ls in states)
+    return ", ".join(
+        say("verdict_item", state=say(f"state_{ls}"), word=_word(kin["verdict"].get(ls), say))
+        for ls in states
+    )
 
 
-def draw_capacity(ax: Axes, kin: Mapping[str, Any]) -> None:
+def draw_capacity(ax: Axes, kin: Mapping[str, Any], say: Say = english) -> None:
     """The capacity curve a*–d* with a0*, d0*, the edition's quantities and the demands
-    (paper Fig. 6)."""
+    (paper Fig. 6); say: the figure's words (rockcli.report.plots.phrases)."""
     from rockcli.report.kinematic import CIRCOLARE
 
     ds, as_ = _curve(kin)
-    ax.plot(ds, as_, color="k", lw=2.0, label="capacity curve a*(d*)")
+    ax.plot(ds, as_, color="k", lw=2.0, label=say("curve"))
     a0 = kin["a0_star"]
-    ax.plot([0.0], [a0], "o", color="k", ms=6, clip_on=False, label=f"a0* = {a0:.4g} m/s²")
+    ax.plot([0.0], [a0], "o", color="k", ms=6, clip_on=False, label=say("a0", a0=a0))
     if kin["d0_star"] is not None:
         d0 = kin["d0_star"]
-        ax.plot([d0], [0.0], "o", color="k", mfc="w", clip_on=False, label=f"d0* = {d0:.4g} m")
-    _draw_quantities(ax, kin)
-    _draw_checks(ax, kin)
-    _frame(ax, kin)
+        ax.plot([d0], [0.0], "o", color="k", mfc="w", clip_on=False, label=say("d0", d0=d0))
+    _draw_quantities(ax, kin, say)
+    _draw_checks(ax, kin, say)
+    _frame(ax, kin, say)
     ax.set_xlabel("spectral displacement d* [m]")
     ax.set_ylabel("spectral acceleration a* [m/s²]")
     ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.12), fontsize="x-small", ncols=2)
     ax.grid(alpha=0.3)
     ax.set_title(
-        f"Kinematic analysis, {CIRCOLARE[kin['edition']]}\n{_verdict_text(kin)}",
+        f"Kinematic analysis, {CIRCOLARE[kin['edition']]}\n{_verdict_text(kin, say)}",
         fontsize="medium",
     )
 

@@ -8,6 +8,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from rockcli.report.plots.files import new_figure, save
+from rockcli.report.plots.phrases import Say, english
 
 if TYPE_CHECKING:
     from matplotlib.axes import Axes
@@ -31,12 +32,11 @@ def _history(run: RockingRun) -> History:
     return run.history
 
 
-def _run_label(run: RockingRun) -> str:
+def _run_label(run: RockingRun, say: Say) -> str:
     sign = "+" if run.polarity > 0 else "−"
-    text = f"polarity {sign}1: max θ/α = {run.max_ratio:.3f}"
     if run.t_overturn is not None:
-        text += f", overturns at {run.t_overturn:.2f} s"
-    return text
+        return say("run_overturns", sign=sign, ratio=run.max_ratio, t=run.t_overturn)
+    return say("run", sign=sign, ratio=run.max_ratio)
 
 
 def _ratio_limits(peak: float, level: float | None, free_side: int | None) -> tuple[float, float]:
@@ -47,7 +47,7 @@ def _ratio_limits(peak: float, level: float | None, free_side: int | None) -> tu
     return (-0.15 * top, top) if free_side > 0 else (-top, 0.15 * top)
 
 
-def _plot_runs(ax: Axes, runs: Sequence[RockingRun], alpha: float) -> float:
+def _plot_runs(ax: Axes, runs: Sequence[RockingRun], alpha: float, say: Say) -> float:
     """θ/α of each run, a cross where it overturns; returns the peak |θ|/α drawn."""
     peak = 0.0
     for run in runs:
@@ -55,18 +55,20 @@ def _plot_runs(ax: Axes, runs: Sequence[RockingRun], alpha: float) -> float:
         ratio = hist.theta / alpha
         peak = max(peak, float(abs(ratio).max(initial=0.0)))
         color = POLARITY_COLORS.get(run.polarity, "k")
-        ax.plot(hist.time, ratio, color=color, lw=1.0, label=_run_label(run))
+        ax.plot(hist.time, ratio, color=color, lw=1.0, label=_run_label(run, say))
         if run.overturned:
             ax.plot(hist.time[-1], ratio[-1], "x", color=color, ms=9, mew=2, clip_on=False)
     return peak
 
 
-def _mark_levels(ax: Axes, sides: tuple[int, ...], level: float | None, angle: float) -> None:
+def _mark_levels(
+    ax: Axes, sides: tuple[int, ...], level: float | None, angle: float, say: Say
+) -> None:
     """θ = ±α, and the overturning level |θ| = angle when it is drawn (level: in θ/α)."""
     for k, side in enumerate(sides):
-        ax.axhline(side, color="k", ls="--", lw=0.8, label="θ = ±α" if k == 0 else None)
+        ax.axhline(side, color="k", ls="--", lw=0.8, label=say("alpha_level") if k == 0 else None)
         if level is not None:
-            label = f"overturning, |θ| = {angle:.3g} rad" if k == 0 else None
+            label = say("overturn_level", angle=angle) if k == 0 else None
             ax.axhline(side * level, color="tab:red", ls=":", lw=1.2, label=label)
     ax.axhline(0.0, color="0.6", lw=0.5)
 
@@ -77,25 +79,30 @@ def draw_histories(
     runs: Sequence[RockingRun],
     overturn_angle: float,
     verdict: str,
+    say: Say = english,
 ) -> None:
     """θ/α of both polarities against time, ±1 (θ = ±α) and the overturning level (drawn
-    when a run overturns, else named as off scale), the legend above the axes."""
+    when a run overturns, else named as off scale), the legend above the axes; say: the
+    figure's words (rockcli.report.plots.phrases)."""
     alpha = model["alpha"]
     free_side = model["free_side"] if model["sides"] == "one" else None
-    peak = _plot_runs(ax, runs, alpha)
+    peak = _plot_runs(ax, runs, alpha, say)
     level = overturn_angle / alpha
     shown = level if any(r.overturned for r in runs) or peak >= level else None
-    _mark_levels(ax, (free_side,) if free_side else (1, -1), shown, overturn_angle)
+    _mark_levels(ax, (free_side,) if free_side else (1, -1), shown, overturn_angle, say)
     if shown is None:
         ax.text(
-            0.99, 0.03, f"overturning at |θ|/α = {level:.3g} (off scale)",
+            0.99, 0.03, say("off_scale", level=level),
             transform=ax.transAxes, ha="right", va="bottom", fontsize="small", color="tab:red",
         )  # fmt: skip
     ax.set_ylim(*_ratio_limits(peak, shown, free_side))
     ax.set_ylabel("amplitude ratio θ/α [-]")
-    title = f"Rocking time history, both polarities: {verdict}"
-    if free_side:
-        title += f" (one-sided: θ {'<' if free_side > 0 else '>'} 0 stopped)"
+    word = say(f"verdict_{verdict}")
+    title = (
+        say("histories_one_sided", verdict=word, sign="<" if free_side > 0 else ">")
+        if free_side
+        else say("histories_title", verdict=word)
+    )
     ax.legend(
         loc="lower left", bbox_to_anchor=(0.0, 1.0), ncols=2, fontsize="small", frameon=False,
         title=title, alignment="left",
@@ -103,15 +110,19 @@ def draw_histories(
     ax.grid(alpha=0.3)
 
 
-def draw_record(ax: Axes, record: Record, t_end: float, floor: bool = False) -> None:
+def draw_record(
+    ax: Axes, record: Record, t_end: float, floor: bool = False, say: Say = english
+) -> None:
     """The acceleration that shook the block [g] (polarity +1), to the end of the runs: the
     record at the base, or its floor motion for a block at height (``floor``)."""
-    ax.plot(record.time, record.accel, color="0.25", lw=0.8, label=f"{record.name} (polarity +1)")
+    ax.plot(
+        record.time, record.accel, color="0.25", lw=0.8, label=say("record", record=record.name)
+    )
     ax.axhline(0.0, color="0.6", lw=0.5)
     ax.set_xlim(float(record.time[0]), max(t_end, float(record.time[-1])))
     ax.set_xlabel("time t [s]")
-    ax.set_ylabel("floor acc. [g]" if floor else "ground acc. [g]")
-    ax.legend(loc="upper right", fontsize="small", title=f"PGA {record.pga:.3g} g")
+    ax.set_ylabel(say("floor_acc") if floor else say("ground_acc"))
+    ax.legend(loc="upper right", fontsize="small", title=say("pga", pga=record.pga))
     ax.grid(alpha=0.3)
 
 
@@ -122,14 +133,15 @@ def draw_time_panels(
     runs: Sequence[RockingRun],
     record: Record,
     overturn_angle: float,
+    say: Say = english,
 ) -> None:
     """θ/α above, the record below, on a shared time axis, in a gridspec cell pair."""
     top = fig.add_subplot(spec[0])
     bottom = fig.add_subplot(spec[1], sharex=top)
-    draw_histories(top, doc["model"], runs, overturn_angle, doc["verdict"])
+    draw_histories(top, doc["model"], runs, overturn_angle, doc["verdict"], say)
     top.tick_params(labelbottom=False)
     floor = doc.get("record", {}).get("input") == "floor"
-    draw_record(bottom, record, max(r.t_end for r in runs), floor)
+    draw_record(bottom, record, max(r.t_end for r in runs), floor, say)
 
 
 def plot_assessment(

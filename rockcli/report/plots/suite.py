@@ -7,6 +7,7 @@ from pathlib import Path
 from typing import Any
 
 from rockcli.report.plots.files import new_figure, save
+from rockcli.report.plots.phrases import Say, english
 
 #: Colours of the records: matplotlib's tab10 without its red, which marks the target.
 RECORD_COLORS = tuple(
@@ -31,23 +32,24 @@ def plot_suite(doc: Mapping[str, Any], path: str | Path) -> None:
     save(fig, path)
 
 
-def draw_suite(ax: Any, doc: Mapping[str, Any]) -> None:
-    """The records' spectra, their mean, the target and its band on one axes (plot_suite)."""
+def draw_suite(ax: Any, doc: Mapping[str, Any], say: Say = english) -> None:
+    """The records' spectra, their mean, the target and its band on one axes (plot_suite);
+    say: the figure's words (rockcli.report.plots.phrases)."""
     T = doc["periods"]
     for i, rec in enumerate(doc["records"]):
         color = RECORD_COLORS[i % len(RECORD_COLORS)]
         ax.plot(T, rec["Sa"], lw=0.7, alpha=0.7, color=color, label=rec["name"])
     height = doc.get("at_height")
-    mean_label = "mean of the floor motions" if height else "mean of the records"
-    target_label = f"floor spectrum S_eZ at Z = {height['Z']:g} m" if height else "target Se"
+    mean_label = say("mean_floor") if height else say("mean_records")
+    target_label = say("floor_target", Z=height["Z"]) if height else say("target")
     ax.plot(T, doc["mean"], color="k", lw=2.4, label=mean_label)
     ax.plot(T, doc["target"], color="tab:red", lw=1.6, label=target_label)
     lo, hi = doc["tolerance"]
     lower = [(1.0 + lo) * t for t in doc["target"]]
     upper = [(1.0 + hi) * t for t in doc["target"]] if hi is not None else None
-    ax.plot(T, lower, color="tab:red", lw=1.0, ls="--", label=f"band {lo:+.0%} (lower)")
+    ax.plot(T, lower, color="tab:red", lw=1.0, ls="--", label=say("band_lower", lo=lo))
     if upper is not None:
-        ax.plot(T, upper, color="tab:red", lw=1.0, ls="--", label=f"band {hi:+.0%} (upper)")
+        ax.plot(T, upper, color="tab:red", lw=1.0, ls="--", label=say("band_upper", hi=hi))
         ax.fill_between(T, lower, upper, color="tab:red", alpha=0.08)
     _period_axis(ax, T[0], T[-1])
     ax.set_xlabel("period T [s]")
