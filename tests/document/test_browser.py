@@ -35,7 +35,22 @@ def chromium(*args: str) -> subprocess.CompletedProcess[bytes]:
 
 
 @pytest.fixture(scope="module")
-def page(tmp_path_factory: pytest.TempPathFactory) -> Path:
+def browser_runs(tmp_path_factory: pytest.TempPathFactory) -> None:
+    """Skip, with chromium's own words, where it is installed but cannot run (a sandbox
+    without the kernel features it needs): a blank page must render first."""
+    blank = tmp_path_factory.mktemp("probe") / "blank.html"
+    blank.write_text("<!DOCTYPE html><title>probe</title><p>probe</p>", encoding="utf-8")
+    try:
+        done = chromium("--dump-dom", blank.as_uri())
+    except subprocess.TimeoutExpired:
+        pytest.skip(f"chromium did not render a blank page in {TIMEOUT} s here")
+    if done.returncode != 0 or b"probe" not in done.stdout:
+        tail = done.stderr.decode(errors="replace").strip().splitlines()[-1:] or ["no output"]
+        pytest.skip(f"chromium cannot run here: {tail[0]}")
+
+
+@pytest.fixture(scope="module")
+def page(tmp_path_factory: pytest.TempPathFactory, browser_runs: None) -> Path:
     pytest.importorskip("matplotlib", reason="the report extra is not installed")
     pytest.importorskip("jinja2", reason="the report extra is not installed")
     html = tmp_path_factory.mktemp("browser") / "altar.html"
