@@ -45,12 +45,18 @@ edition_option = click.option(
     help="Override [ntc].edition: 2009 (NTC 2008 + Circ. 617/2009) or 2019 (NTC 2018 + "
     "Circ. 7/2019).",
 )
-hazard_grid_option = click.option(
-    "--hazard-grid",
-    "grid_file",
-    default=None,
-    type=click.Path(dir_okay=False),
-    help="NTC Allegato B grid file, when a site sets the demand (default: $ROCK_HAZARD_GRID).",
+
+
+def hazard_grid(help_text: str):
+    """``--hazard-grid FILE``: the NTC Allegato B grid, with what it serves in the command."""
+    return click.option(
+        "--hazard-grid", "grid_file", default=None, type=click.Path(dir_okay=False),
+        help=help_text,
+    )  # fmt: skip
+
+
+hazard_grid_option = hazard_grid(
+    "NTC Allegato B grid file, when a site sets the demand (default: $ROCK_HAZARD_GRID)."
 )
 
 

@@ -15,6 +15,7 @@ from rockcli.cli.options import (
     engine_option,
     force_option,
     ground_option,
+    hazard_grid,
     load_record,
     suite_option,
     target_option,
@@ -67,13 +68,9 @@ EXTRA = "pip install 'rockcli[report]'"
 @edition_option
 @engine_option
 @ground_option
-@click.option(
-    "--hazard-grid",
-    "grid_file",
-    default=None,
-    type=click.Path(dir_okay=False),
-    help="NTC Allegato B grid file: for a site in the model or the suite's target, and for "
-    "the validation casebook's hazard-grid cases (default: $ROCK_HAZARD_GRID).",
+@hazard_grid(
+    "NTC Allegato B grid file: for a site in the model or the suite's target, and for the "
+    "validation casebook's hazard-grid cases (default: $ROCK_HAZARD_GRID)."
 )
 @force_option
 def report(

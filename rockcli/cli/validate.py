@@ -5,7 +5,7 @@ from __future__ import annotations
 import click
 
 from rockcli.cli.exits import EXIT_GATE
-from rockcli.cli.options import output_format
+from rockcli.cli.options import hazard_grid, output_format
 
 #: Exit code when a case is outside its tolerance (README, exit codes).
 EXIT_CASE_FAILED = EXIT_GATE
@@ -19,13 +19,9 @@ EXIT_CASE_FAILED = EXIT_GATE
     type=click.Path(file_okay=False),
     help="A folder of case files to run instead of the bundled casebook (examples/validation).",
 )
-@click.option(
-    "--hazard-grid",
-    "grid_file",
-    default=None,
-    type=click.Path(dir_okay=False),
-    help="NTC Allegato B grid file for the hazard-grid cases (default: $ROCK_HAZARD_GRID; "
-    "without one those cases are skipped).",
+@hazard_grid(
+    "NTC Allegato B grid file for the hazard-grid cases (default: $ROCK_HAZARD_GRID; "
+    "without one those cases are skipped)."
 )
 @output_format
 def validate(folder, grid_file, output):

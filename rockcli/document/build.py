@@ -88,15 +88,6 @@ def build_document(
 # --- identification -------------------------------------------------------------------------
 
 
-def sha256_of(path: str | Path) -> str:
-    """The SHA-256 of a file's bytes (hex)."""
-    digest = hashlib.sha256()
-    with open(path, "rb") as handle:
-        for chunk in iter(lambda: handle.read(1 << 20), b""):
-            digest.update(chunk)
-    return digest.hexdigest()
-
-
 def source_digest() -> str:
     """A SHA-256 over the package's Python sources and data (relative path and bytes, sorted):
     it names the code that made the report, beyond its version number."""
@@ -111,6 +102,7 @@ def source_digest() -> str:
 
 def identification(inputs: Inputs, w: Words) -> Section:
     from rockcli import __version__
+    from rockcli.studies.sweep.output import file_digest
 
     software = Grid(
         caption=w("ident.software_caption"),
@@ -126,7 +118,7 @@ def identification(inputs: Inputs, w: Words) -> Section:
     files = Grid(
         caption=w("ident.files_caption"),
         headers=(w("col.role"), w("col.file"), "SHA-256"),
-        rows=tuple((w(f"role.{role}"), path, sha256_of(path)) for role, path in inputs.files),
+        rows=tuple((w(f"role.{role}"), path, file_digest(path)) for role, path in inputs.files),
     )
     return Section("identification", w("section.identification"),
                    (Paragraph(w("ident.intro")), software, files))  # fmt: skip
@@ -312,9 +304,10 @@ def kinematic_section(inputs: Inputs, kin: Mapping[str, Any], w: Words) -> Secti
 
     n = w.number
     blocks: list[Block] = [Paragraph(w(f"kin.intro_{kin['edition']}"))]
-    blocks.append(activation_grid(inputs.model, kin, w))
+    mechs = mechanisms(inputs.model, kin)
+    blocks.append(activation_grid(mechs, w))
     quantities = [
-        ("M*", participating_mass_of(inputs.model, kin), "kg", "kin.M_star"),
+        ("M*", participating_mass_of(mechs, kin), "kg", "kin.M_star"),
         ("e*", kin["e_star"], "", "kin.e_star"),
         ("a0*", kin["a0_star"], "m/s²", "kin.a0_star"),
         ("FC", kin["FC"], "", "kin.FC"),
@@ -346,29 +339,33 @@ def kinematic_section(inputs: Inputs, kin: Mapping[str, Any], w: Words) -> Secti
     return Section("kinematic", w("section.kinematic"), tuple(blocks))
 
 
-def participating_mass_of(model: Model, kin: Mapping[str, Any]) -> float:
-    """M* of the side the check governs (Circolare 617/2009 Eq. C8A.4.2; Circolare 7/2019
-    Eq. C8.7.1.2), by codecheck.kinematic.participating_mass, the function e* comes from."""
-    from rockcli.codecheck.kinematic import participating_mass
-    from rockcli.model.derive import to_block
-    from rockcli.studies.kinematic import check_settings, mechanism
-
-    settings = check_settings(model, kin["edition"])
-    return participating_mass(mechanism(to_block(model), settings, int(kin["side"])))
-
-
-def activation_grid(model: Model, kin: Mapping[str, Any], w: Words) -> Grid:
-    """α0 by virtual work, term by term, on each side the check looks at (codecheck.kinematic
-    activation_terms: the same sums as α0 itself)."""
-    from rockcli.codecheck.kinematic import activation_terms
+def mechanisms(model: Model, kin: Mapping[str, Any]) -> dict[int, Any]:
+    """The check's mechanism on each side it looks at (studies.kinematic.mechanism: the block,
+    its loads and thrusts as the check took them), keyed by side."""
     from rockcli.model.derive import to_block
     from rockcli.studies.kinematic import check_settings, mechanism
 
     block, settings = to_block(model), check_settings(model, kin["edition"])
-    sides = [int(s) for s in kin.get("alpha0_by_side", {str(kin["side"]): None})]
+    sides = {int(s) for s in kin.get("alpha0_by_side", {})} | {int(kin["side"])}
+    return {side: mechanism(block, settings, side) for side in sorted(sides, reverse=True)}
+
+
+def participating_mass_of(mechs: Mapping[int, Any], kin: Mapping[str, Any]) -> float:
+    """M* of the side the check governs (Circolare 617/2009 Eq. C8A.4.2; Circolare 7/2019
+    Eq. C8.7.1.2), by codecheck.kinematic.participating_mass, the function e* comes from."""
+    from rockcli.codecheck.kinematic import participating_mass
+
+    return participating_mass(mechs[int(kin["side"])])
+
+
+def activation_grid(mechs: Mapping[int, Any], w: Words) -> Grid:
+    """α0 by virtual work, term by term, on each side the check looks at (codecheck.kinematic
+    activation_terms: the same sums as α0 itself)."""
+    from rockcli.codecheck.kinematic import activation_terms
+
     rows = []
-    for side in sides:
-        terms = activation_terms(mechanism(block, settings, side))
+    for side, mech in mechs.items():
+        terms = activation_terms(mech)
         rows.append((
             "O" if side > 0 else "O′",
             *(w.number(terms[k] / 1e3, "{:.4g}") for k in ("stabilising", "thrusts",

@@ -108,8 +108,8 @@ def write_suite_report(
     doc = suite_comparison_document(comparison)
     records = loaded.check.records
     runs = []
+    engine, ground = options["engine"], options["ground"]
     for record in records:
-        engine, ground = options["engine"], options["ground"]
         out = assess_model_output(
             loaded.model, record, engine, ground=ground, file=model_path, history=True
         )

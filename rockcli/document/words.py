@@ -50,9 +50,6 @@ class Words:
         text = catalogue(self.lang)[key]
         return text.format(**values) if values else text
 
-    def has(self, key: str) -> bool:
-        return key in catalogue(self.lang)
-
     def number(self, value: float | None, fmt: str = "{:.4g}") -> str:
         """A number as this language writes it; an em dash for none (or NaN)."""
         if value is None or value != value:
