@@ -8,6 +8,7 @@ acceleration by root search over ag with F0 and Tc* fixed; a record scales linea
 
 from __future__ import annotations
 
+import math
 from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Protocol
@@ -120,6 +121,57 @@ def record_demand(
         source=source,
         record=name,
     )
+
+
+#: Spacing of the period grid on which the maximum of a record's spectrum over a range is
+#: sought [s] (absolute, so that a study's cases share the grid's spectral values), and the
+#: width to which the best grid interval is then narrowed by golden-section search [s].
+RANGE_STEP = 0.01
+RANGE_TOLERANCE = 1e-5
+#: The golden ratio's conjugate, (√5 − 1)/2.
+GOLDEN = 0.6180339887498949
+
+
+def period_grid(lo: float, hi: float, step: float = RANGE_STEP) -> list[float]:
+    """The periods k·step inside (lo, hi), with hi itself (and lo when > 0) [s]."""
+    first = math.floor(lo / step) + 1
+    last = math.ceil(hi / step) - 1
+    inner = [k * step for k in range(first, last + 1)]
+    return sorted({*([lo] if lo > 0.0 else []), *inner, hi})
+
+
+def range_maximum(f: Callable[[float], float], lo: float, hi: float) -> tuple[float, float]:
+    """(T*, f(T*)): the largest value of f over the periods [lo, hi] [s].
+
+    Circolare 7/2019 §C8.7.1.2.1.8: with site records (or a site response analysis) the
+    displacement demand is "il valore massimo dello spostamento spettrale valutato
+    nell'intervallo di periodi [T0, T_SLV]". A record's spectrum has peaks: f is sampled on a
+    grid of RANGE_STEP (:func:`period_grid`), then the best grid point's two neighbouring
+    intervals are narrowed by golden-section search to RANGE_TOLERANCE; the largest value seen
+    wins (never less than the grid's maximum).
+    """
+    grid = period_grid(lo, hi)
+    values = [f(T) for T in grid]
+    k = max(range(len(grid)), key=values.__getitem__)
+    a, b = grid[max(k - 1, 0)], grid[min(k + 1, len(grid) - 1)]
+    return max((grid[k], values[k]), golden_maximum(f, a, b), key=lambda tv: tv[1])
+
+
+def golden_maximum(f: Callable[[float], float], a: float, b: float) -> tuple[float, float]:
+    """(T, f(T)): a local maximum of f in [a, b] by golden-section search, to RANGE_TOLERANCE
+    (Kiefer 1953; Press et al., Numerical Recipes, §10.2)."""
+    c, d = b - GOLDEN * (b - a), a + GOLDEN * (b - a)
+    fc, fd = f(c), f(d)
+    while b - a > RANGE_TOLERANCE:
+        if fc >= fd:
+            b, d, fd = d, c, fc
+            c = b - GOLDEN * (b - a)
+            fc = f(c)
+        else:
+            a, c, fc = c, d, fd
+            d = a + GOLDEN * (b - a)
+            fd = f(d)
+    return (c, fc) if fc >= fd else (d, fd)
 
 
 def bound_note(ag: float | None) -> str:

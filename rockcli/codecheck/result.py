@@ -21,6 +21,30 @@ class Location(StrEnum):
 
 
 @dataclass(frozen=True)
+class SpectralDemand:
+    """Where a displacement check read its demand on the spectrum, so that it can be redone by
+    hand: the damping, the period (or the range searched and the period of its maximum) and the
+    spectral displacement at the limit state's own ag.
+
+    Attributes:
+        damping: the mechanism's damping in the spectrum [%] (5, or 8 at SLV / 10 at SLC in 2019).
+        period: the period at which the demand is read [s] (the maximum's, over a range).
+        value: the spectral displacement demand there, at the limit state's own ag [m].
+        period_range: [T_lo, T_hi] [s] over which the maximum was taken (Circ. 7/2019
+            §C8.7.1.2.1.8, a record or a suite as the demand); None: read at one period.
+        rule: the rule in words, with its clause.
+        at_secant: the demand at the secant period itself [m] (T_hi of the range).
+    """
+
+    damping: float
+    period: float
+    value: float
+    period_range: tuple[float, float] | None = None
+    rule: str = ""
+    at_secant: float | None = None
+
+
+@dataclass(frozen=True)
 class Check:
     """One verification: demand against capacity, the clause, any interpretation made.
 
@@ -32,6 +56,8 @@ class Check:
         passed: capacity ≥ demand; None when not evaluated.
         clause: the article of the Circolare.
         note: an interpretation or a reason it was not evaluated.
+        spectral: where a displacement check read the spectrum (None: an acceleration check,
+            or not evaluated).
     """
 
     limit_state: str
@@ -42,6 +68,7 @@ class Check:
     unit: str
     clause: str
     note: str = ""
+    spectral: SpectralDemand | None = None
 
     @property
     def passed(self) -> bool | None:

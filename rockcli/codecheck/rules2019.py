@@ -13,12 +13,30 @@ from collections.abc import Callable
 from dataclasses import replace
 
 from rockcli.codecheck import spectra
-from rockcli.codecheck.demand import LimitStateDemand, Spectrum, bound_note, capacity_ag
+from rockcli.codecheck.demand import (
+    LimitStateDemand,
+    Spectrum,
+    bound_note,
+    capacity_ag,
+    range_maximum,
+)
 from rockcli.codecheck.kinematic import FAILURE_DROP, Capacity, failure_rotations
 from rockcli.codecheck.position import Position
-from rockcli.codecheck.result import Check, Location, Method
+from rockcli.codecheck.result import Check, Location, Method, SpectralDemand
 
 CLAUSE = "§C8.7.1.2.1"
+#: The clause of the displacement demand of a record or a site response: the maximum of the
+#: spectral displacement over [T0, T_SLV] (and [T0, T_SLC]).
+CLAUSE_RANGE = "§C8.7.1.2.1.8"
+#: T0 of a mechanism rigid until activation (no elastic branch, C8.7.1.6–7 not modelled): its
+#: initial stiffness is infinite, its period zero; the range searched is [0, T_SLV]
+#: (docs/interpretations.md).
+T0_RIGID = 0.0
+#: The secant periods' formulas as the Circolare writes them (C8.7.1.10, C8.7.1.11).
+PERIOD_FORMULA = {
+    "SLV": "T_SLV = 1.68π·√(d_SLV/a(d_SLV)) [C8.7.1.10]",
+    "SLC": "T_SLC = 1.56π·√(d_SLC/a(d_SLC)) [C8.7.1.11]",
+}
 CLAUSE_FLOOR = "§C7.2.3"
 #: d_SLV = 0.4·d0 and d_SLC = 0.6·d0 (§C8.7.1.2.1).
 SLV_SHARE, SLC_SHARE = 0.4, 0.6
@@ -155,17 +173,47 @@ def displacement_measure(
     )
 
 
+def spectral_demand(
+    ls: str, T: float, dem: LimitStateDemand, pos: Position, g: float
+) -> SpectralDemand:
+    """Where the displacement demand of limit state ``ls`` is read, and its value [m] at the
+    limit state's own ag.
+
+    A code spectrum: at the secant period T (Circolare 7/2019 §C8.7.1.2.1.8: "per i valori
+    caratteristici del periodo corrispondenti ai due stati limite"; the code's displacement
+    spectrum does not decrease with T there). A record or a suite's mean spectrum (also its
+    floor spectrum at height): "il valore massimo dello spostamento spettrale valutato
+    nell'intervallo di periodi [T0, T_SLV]" (§C8.7.1.2.1.8), T0 = T0_RIGID, the same for SLC.
+    A record's spectrum scales linearly with ag, so the period of the maximum is the same at
+    every ag and the capacity's root search reads the spectrum there.
+    """
+    xi = DAMPING[ls]
+
+    def at(period: float) -> float:
+        return displacement_measure(period, xi, pos, g)(dem.spectrum)
+
+    at_secant = at(T)
+    name = f"T_{ls}"
+    if dem.record is None:
+        rule = f"SDe({name}) of the code spectrum ({CLAUSE_RANGE})"
+        return SpectralDemand(xi, T, at_secant, None, rule, at_secant)
+    T_max, value = range_maximum(at, T0_RIGID, T)
+    rule = f"max Sd over [T0, {name}] = [{T0_RIGID:g}, {T:.4g}] s ({CLAUSE_RANGE})"
+    return SpectralDemand(xi, T_max, value, (T0_RIGID, T), rule, at_secant)
+
+
 def slv_displacement_demand(
     values: dict[str, float | None], slv: LimitStateDemand, pos: Position, g: float
 ) -> float | None:
-    """The SLV displacement demand d* [m] at the site's ag, at T_SLV (None: no T_SLV).
+    """The SLV displacement demand d* [m] at the site's ag (None: no T_SLV).
 
-    The demand side of the SLV non-linear check (§C8.7.1.2.1), whose capacity is d_SLV.
+    The demand side of the SLV non-linear check (§C8.7.1.2.1), whose capacity is d_SLV: at
+    T_SLV, or the maximum over [T0, T_SLV] of a record's spectrum (:func:`spectral_demand`).
     """
     T = values.get("T_SLV")
     if T is None:
         return None
-    return displacement_measure(T, DAMPING["SLV"], pos, g)(slv.spectrum)
+    return spectral_demand("SLV", T, slv, pos, g).value
 
 
 def displacement_check(
@@ -177,10 +225,11 @@ def displacement_check(
     g: float,
     sld_cap: float | None,
 ) -> Check:
-    """ag at which the displacement demand at period T reaches d (root search), §C8.7.1.2.1.
+    """ag at which the displacement demand reaches d (root search), §C8.7.1.2.1.
 
-    Ground: SDe(T, ξ); at height: S_eZ(T)·T²/4π² (floor spectrum). If the capacity is below
-    ag,SLD it is taken as ag,SLD.
+    Ground: SDe(T, ξ); at height: S_eZ(T)·T²/4π² (floor spectrum); at the secant period T, or
+    for a record at the period of the maximum over [T0, T] (:func:`spectral_demand`). If the
+    capacity is below ag,SLD it is taken as ag,SLD.
     """
     where = Location.HEIGHT if pos.at_height else Location.GROUND
     if d is None or T is None:
@@ -195,12 +244,18 @@ def displacement_check(
             "no limit displacement: positive global stiffness and no limit given",
         )
     xi = DAMPING[ls]
-    measure = displacement_measure(T, xi, pos, g)
+    spectral = spectral_demand(ls, T, dem, pos, g)
+    measure = displacement_measure(spectral.period, xi, pos, g)
     ag = capacity_ag(dem, measure, d)
-    note = f"T = {T:.4f} s, ξ = {xi:g} %, d = {d:.5f} m" + bound_note(ag)
+    note = f"{PERIOD_FORMULA[ls]} = {T:.4f} s, ξ = {xi:g} %, d = {d:.5f} m" + bound_note(ag)
+    if spectral.period_range is not None:
+        note += (
+            f"; demand {spectral.rule}: {spectral.value:.5g} m at T = {spectral.period:.4g} s"
+            f" (at {ls} period itself {spectral.at_secant:.5g} m)"
+        )
     if ag is not None and sld_cap is not None and ag < sld_cap:
         ag, note = sld_cap, note + "; below ag,SLD: ag,SLD taken"
-    return Check(ls, Method.NONLINEAR, where, dem.ag, ag, "g", CLAUSE, note)
+    return Check(ls, Method.NONLINEAR, where, dem.ag, ag, "g", CLAUSE, note, spectral)
 
 
 def check_2019(

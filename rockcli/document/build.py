@@ -285,15 +285,16 @@ def hazard_grid(spectra: Sequence[tuple[str, Any, str]], kin: Mapping[str, Any],
 def record_demand_grids(demand: Mapping[str, Any], w: Words) -> list[Block]:
     """The record's spectral values the check used, per limit state."""
     rows = [
-        (state, s["at"], w.number(s["T"]), w.number(s["Se"]), w.number(s["SDe"]))
+        (state, s["at"], w.number(s["T"]), w.number(s["damping"], "{:g}"), w.number(s["Se"]),
+         w.number(s["SDe"]))
         for state, d in demand.items()
         for s in d.get("spectral_values", [])
-    ]
+    ]  # fmt: skip
     if not rows:
         return []
-    headers = (w("col.limit_state"), w("col.at"), "T [s]", "Se [g]", "SDe [m]")
+    headers = (w("col.limit_state"), w("col.at"), "T [s]", w("col.damping"), "Se [g]", "SDe [m]")
     return [Grid(w("demand.spectral_caption"), headers, tuple(rows),
-                 (False, False, True, True, True))]  # fmt: skip
+                 (False, False, True, True, True, True))]  # fmt: skip
 
 
 # --- kinematic analysis ---------------------------------------------------------------------
@@ -326,6 +327,9 @@ def kinematic_section(inputs: Inputs, kin: Mapping[str, Any], w: Words) -> Secti
     ))  # fmt: skip
     blocks.append(figure("capacity", capacity(kin, w), w("figure.capacity_caption")))
     blocks.append(checks_grid(kin, w))
+    demand = demand_grid(kin, w)
+    if demand is not None:
+        blocks += [demand, Paragraph(w(f"kin.periods_{kin['edition']}"), "note")]
     if kin.get("restrainer_actions"):
         blocks.append(actions_grid(kin["restrainer_actions"], w))
     blocks += [Paragraph(note, "note") for note in kin.get("notes", [])]
@@ -389,6 +393,27 @@ def checks_grid(kin: Mapping[str, Any], w: Words) -> Grid:
                w("col.clause"))  # fmt: skip
     return Grid(w("kin.checks_caption"), headers, rows,
                 (False, False, False, True, True, False, True, False, False))  # fmt: skip
+
+
+def demand_grid(kin: Mapping[str, Any], w: Words) -> Grid | None:
+    """Where each displacement check read the spectrum: damping, period range, the period used
+    and the spectral displacement there (None: no displacement check was evaluated)."""
+    n = w.number
+    rows = tuple(
+        (w(f"ls.{c['limit_state']}"), w(f"where.{c['location']}"), n(c["demand_damping"], "{:g}"),
+         "—" if c["demand_period_range"] is None
+         else f"[{n(c['demand_period_range'][0], '{:g}')}; {n(c['demand_period_range'][1])}]",
+         n(c["demand_period"]), n(c["demand_spectral"], "{:.5g}"),
+         w("kin.rule_range" if c["demand_period_range"] else "kin.rule_period"))
+        for c in kin["checks"]
+        if c.get("demand_period") is not None
+    )  # fmt: skip
+    if not rows:
+        return None
+    headers = (w("col.limit_state"), w("col.location"), w("col.damping"), w("col.period_range"),
+               w("col.period"), w("col.spectral_displacement"), w("col.rule"))  # fmt: skip
+    return Grid(w("kin.demand_caption"), headers, rows,
+                (False, False, True, True, True, True, False))  # fmt: skip
 
 
 def actions_grid(actions: Sequence[Mapping[str, Any]], w: Words) -> Grid:

@@ -19,7 +19,11 @@ def _number(x: float | None) -> float | None:
 
 
 def check_document(c: Check, edition: str) -> dict[str, Any]:
-    """One check, full precision."""
+    """One check, full precision; a displacement check also says where it read the spectrum:
+    ``demand_damping`` [%], ``demand_period`` [s] (the maximum's, over a range),
+    ``demand_period_range`` [T_lo, T_hi] [s] (None: read at one period), ``demand_spectral``
+    [m] (the spectral displacement there at the limit state's own ag), ``demand_rule``."""
+    sp = c.spectral
     return {
         "limit_state": c.limit_state,
         "method": str(c.method),
@@ -31,6 +35,12 @@ def check_document(c: Check, edition: str) -> dict[str, Any]:
         "passed": c.passed,
         "clause": f"{CIRCOLARE[edition]} {c.clause}",
         "note": c.note,
+        "demand_damping": None if sp is None else sp.damping,
+        "demand_period": None if sp is None else sp.period,
+        "demand_period_range": None if sp is None or sp.period_range is None
+        else list(sp.period_range),
+        "demand_spectral": None if sp is None else sp.value,
+        "demand_rule": None if sp is None else sp.rule,
     }
 
 
@@ -210,7 +220,7 @@ def kinematic_report(doc: dict[str, Any]) -> Report:
         *doc["notes"],
         *action_notes(actions),
         *(
-            f"demand {demand_line(ls, numbers, spectral=True)} (5 % damping)"
+            f"demand {demand_line(ls, numbers, spectral=True)}"
             for ls, numbers in doc["demand"].items()
             if numbers.get("spectral_values")
         ),
@@ -250,7 +260,8 @@ def demand_line(ls: str, numbers: dict[str, Any], spectral: bool = False) -> str
     a record's name and PGA, and with ``spectral`` its spectrum where the checks read it."""
     if "record" in numbers:
         values = "".join(
-            f", Se({v['at']} = {v['T']:.3g} s) {v['Se']:.4g} g, SDe {v['SDe']:.4g} m"
+            f", Se({v['at']}: T = {v['T']:.4g} s, ξ = {v['damping']:g} %) {v['Se']:.4g} g, "
+            f"SDe {v['SDe']:.4g} m"
             for v in (numbers.get("spectral_values", ()) if spectral else ())
         )
         return f"{ls} record {numbers['record']}, PGA {numbers['PGA']:.4g} g{values}"

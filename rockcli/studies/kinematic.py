@@ -23,7 +23,7 @@ from rockcli.codecheck.kinematic import (
 )
 from rockcli.codecheck.position import Position, position
 from rockcli.codecheck.restrainer_check import nonlinear_displacement_demand, restrainer_actions
-from rockcli.codecheck.result import Check, KinematicResult
+from rockcli.codecheck.result import Check, KinematicResult, Location
 from rockcli.errors import InputError
 from rockcli.mechanics import Block
 from rockcli.model.derive_ntc import NtcSettings
@@ -106,9 +106,10 @@ def demand_numbers(demand: LimitStateDemand) -> dict[str, object]:
 
 
 #: The periods each limit state's checks read a record's spectrum at, beyond T1 at height, by
-#: the name of the quantity: Ts of the 2009 non-linear (ULS = SLV) check, the secant periods
-#: of 2019's SLV and SLC checks; SLD's checks read accelerations only.
-CHECK_PERIODS = {"SLD": (), "SLV": ("Ts", "T_SLV"), "SLC": ("T_SLC",)}
+#: the name of the quantity, with the damping [%] they read it at: Ts of the 2009 non-linear
+#: (ULS = SLV) check at 5 %, the secant periods of 2019's SLV (8 %) and SLC (10 %) checks
+#: (Circolare 7/2019 §C8.7.1.2.1.8); SLD's checks read accelerations only.
+CHECK_PERIODS = {"SLD": (), "SLV": (("Ts", 5.0), ("T_SLV", 8.0)), "SLC": (("T_SLC", 10.0),)}
 
 
 def with_spectral_values(
@@ -117,18 +118,30 @@ def with_spectral_values(
     pos: Position,
     values: dict[str, float | None],
     limit_state: str,
+    checks: tuple[Check, ...] | list[Check] = (),
 ) -> dict[str, object]:
-    """A record's demand with its spectrum's values where the limit state's checks read it
-    (5 % damping): Se [g] and SDe [m] at the building's T1 (at height) and at the mechanism's
-    periods (CHECK_PERIODS)."""
+    """A record's demand with its spectrum's values where the limit state's checks read it,
+    each at the damping the check uses: Se [g] and SDe [m] at the building's T1 (at height, the
+    building's damping), at the mechanism's periods (CHECK_PERIODS) and, where a check took
+    the maximum over a range of periods (2019), at the period of that maximum."""
     if demand.record is None:
         return numbers
-    periods = [("T1", pos.T1)] if pos.at_height else []
-    periods += [(name, values.get(name)) for name in CHECK_PERIODS.get(limit_state, ())]
+    building = 100.0 * pos.damping
+    periods = [("T1", pos.T1, building)] if pos.at_height else []
+    periods += [
+        (name, values.get(name), xi) for name, xi in CHECK_PERIODS.get(limit_state, ())
+    ]
+    periods += [
+        (f"max over [{c.spectral.period_range[0]:g}, {c.spectral.period_range[1]:.4g}] s",
+         c.spectral.period, c.spectral.damping)
+        for c in checks
+        if c.limit_state == limit_state and c.spectral and c.spectral.period_range
+        and c.location is Location.GROUND
+    ]  # fmt: skip
     spectrum = demand.spectrum
     numbers["spectral_values"] = [
-        {"at": name, "T": T, "Se": spectrum.Se(T), "SDe": spectrum.SDe(T)}
-        for name, T in periods
+        {"at": name, "T": T, "damping": xi, "Se": spectrum.Se(T, xi), "SDe": spectrum.SDe(T, xi)}
+        for name, T, xi in periods
         if T is not None and T > 0
     ]
     return numbers
@@ -253,7 +266,8 @@ def analyse(
         checks=tuple(checks),
         curve=tuple(curve_points(cap)),
         demand={
-            ls: with_spectral_values(demand_numbers(d), d, pos, values, ls) for ls, d in dem.items()
+            ls: with_spectral_values(demand_numbers(d), d, pos, values, ls, checks)
+            for ls, d in dem.items()
         },
         notes=tuple(notes),
         alpha0_by_side={str(s): alpha0(mechanism(block, settings, s)) for s in (1, -1)},

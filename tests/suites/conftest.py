@@ -82,9 +82,15 @@ def grid_file() -> Path:
 
 
 def newmark_peak(
-    time: np.ndarray, accel_g: np.ndarray, periods: np.ndarray, *, dt: float, tail: float
+    time: np.ndarray,
+    accel_g: np.ndarray,
+    periods: np.ndarray,
+    *,
+    dt: float,
+    tail: float,
+    damping: float = 0.05,
 ) -> np.ndarray:
-    """Sa(T) = ω²·max|u| [g] at 5 % damping by Newmark's average acceleration (γ = 1/2,
+    """Sa(T) = ω²·max|u| [g] at 5 % damping (or ``damping``, a fraction) by Newmark's average acceleration (γ = 1/2,
     β = 1/4; Chopra §5.4), the ground motion interpolated linearly onto steps of ``dt`` (an
     integer fraction of the record's uniform step) and followed by ``tail`` seconds at rest.
 
@@ -93,7 +99,7 @@ def newmark_peak(
     the usual response-spectrum programs), the peak is taken at the record's own samples while
     the record lasts, and on the fine steps (≈ continuously) after it.
     """
-    zeta, gamma, beta = 0.05, 0.5, 0.25
+    zeta, gamma, beta = damping, 0.5, 0.25
     sub = round(float(time[1] - time[0]) / dt)
     dt = float(time[1] - time[0]) / sub
     t = time[0] + dt * np.arange(int(round((time[-1] - time[0] + tail) / dt)) + 1)
