@@ -52,6 +52,11 @@ class Restrainer:
         code_action: "force" (the kinematic check takes ``code_force`` as a stabilising force
             in α0) or "spring" (its stiffness, no force at rest).
         code_force: the force the kinematic check relies on with code_action "force" [N].
+        elongation_capacity: a steel bar's design elongation from its unstressed length,
+            ε_u·L/γ_ε [m] (``math.inf``: not a bar of known steel; codecheck.tie).
+        overstrength: a steel bar's γ_ov·A·f_y, the force its anchorage must exceed [N]
+            (0: not a bar of known steel; codecheck.tie).
+        ductility_rule: where ε_u comes from (for reports; "" when not a bar).
     """
 
     name: str
@@ -72,6 +77,9 @@ class Restrainer:
     anchor_capacity: float = math.inf
     code_action: str = "spring"
     code_force: float = 0.0
+    elongation_capacity: float = math.inf
+    overstrength: float = 0.0
+    ductility_rule: str = ""
 
     def side(self, s: int) -> tuple[float, float, float]:
         """(K [N/m], r [m], φ [rad]) for pivot side s = ±1."""

@@ -78,8 +78,22 @@ def restrainer_action(
         utilisation=use if acts else None,
         lost=lost,
         passed=passed,
-        clause=STRENGTH_CLAUSE,
+        clause=member_clause(sp),
     )
+
+
+#: The basis of the check of a member known only by its failure elongation (the paper's vault).
+DISPLACEMENT_BASIS = "its failure elongation fails_at (the paper's §4.2, Eq. 9–10)"
+#: The basis of a member's given strength (yield forces, anchor capacity), not a steel's.
+GIVEN_BASIS = "its strength as given in the model (yield_pos/yield_neg, anchor_capacity)"
+
+
+def member_clause(sp: Restrainer) -> str:
+    """What a member's check rests on: the steel clause for a tie-rod of known steel (its
+    strength rule names it), the model's own values for any other member."""
+    if sp.strength_rule.endswith(f"({STRENGTH_CLAUSE})"):
+        return STRENGTH_CLAUSE
+    return GIVEN_BASIS if math.isfinite(sp.strength) else DISPLACEMENT_BASIS
 
 
 def restrainer_actions(

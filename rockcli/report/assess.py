@@ -62,6 +62,46 @@ def effectiveness(block: Block) -> list[dict[str, Any]]:
     return rows
 
 
+def check_table_row(c: dict[str, Any]) -> dict[str, Any]:
+    """A restrainer check in the terminal's units (kN, mm): force, ductility, anchorage."""
+    duct, anchor = c["ductility"], c["anchor"] or {}
+    return {
+        **c,
+        "demand": c["demand"] / 1e3,
+        "strength": _scaled(c["strength"], 1e-3),
+        "elongation": _scaled(duct["demand"], 1e3),
+        "elongation_capacity": _scaled(duct["capacity"], 1e3),
+        "overstrength": _scaled(anchor.get("demand"), 1e-3),
+        "anchor": _scaled(anchor.get("capacity"), 1e-3),
+    }
+
+
+def _scaled(value: float | None, factor: float) -> float | None:
+    return None if value is None else value * factor
+
+
+def check_notes(checks: list[dict[str, Any]]) -> list[str]:
+    """Where each restrainer check's capacities come from, and an anchorage to be designed."""
+    out = [
+        f"restrainer {c['name']!r}: "
+        + (f"strength from {c['rule']}" if c["strength"] is not None else f"verified on {c['rule']}")
+        for c in checks
+    ]
+    out += [
+        f"restrainer {c['name']!r}: elongation it can take: {c['ductility']['rule']}"
+        for c in checks
+        if c["ductility"]["capacity"] is not None and c["ductility"]["rule"] != c["rule"]
+    ]
+    out += [
+        f"restrainer {c['name']!r}: anchorage not verified (no anchor_capacity): design it for "
+        f"at least γov·A·fy = {c['anchor']['demand'] / 1e3:.4g} kN (capacity design, "
+        "NTC 2018 §7.5.1)"
+        for c in checks
+        if c["anchor"] is not None and c["anchor"]["passed"] is None
+    ]
+    return out
+
+
 def strength_warnings(checks: list[dict[str, Any]]) -> list[str]:
     """A warning per restrainer that fails its strength check: an elastic one beyond its
     strength (the run is not valid after that), an elastic-plastic one that yielded or broke."""
@@ -69,8 +109,27 @@ def strength_warnings(checks: list[dict[str, Any]]) -> list[str]:
 
 
 def strength_warning(c: dict[str, Any]) -> str:
-    """The warning of one failed strength check (studies.strength.restrainer_checks row)."""
+    """The warning of one failed check (studies.strength.restrainer_checks row): its force,
+    its ductility or its anchorage."""
     head = f"restrainer {c['name']!r}: "
+    duct, anchor = c["ductility"], c["anchor"] or {}
+    if c["utilisation"] is None and c["ruptured"]:
+        return (
+            f"{head}its elongation reached {duct['capacity'] * 1e3:.4g} mm, what it can take "
+            f"({duct['rule']}): it was lost at t = {c['t_rupture']:.3f} s"
+        )
+    if duct["passed"] is False:
+        return (
+            f"{head}its largest elongation {duct['demand'] * 1e3:.4g} mm exceeds what it can "
+            f"take, {duct['capacity'] * 1e3:.4g} mm ({duct['rule']})"
+            + (f"; it broke at t = {c['t_rupture']:.3f} s" if c["ruptured"] else "")
+        )
+    if anchor.get("passed") is False:
+        return (
+            f"{head}the anchor governs: its capacity {anchor['capacity'] / 1e3:.4g} kN is below "
+            f"the bar's over-strength γov·A·fy = {anchor['demand'] / 1e3:.4g} kN (capacity "
+            "design, NTC 2018 §7.5.1): the anchor would give way before the bar yields"
+        )
     force = (
         f"the time history's force {c['demand'] / 1e3:.4g} kN against its design strength "
         f"{c['strength'] / 1e3:.4g} kN (utilisation {c['utilisation']:.3g})"
@@ -92,6 +151,12 @@ def yield_notes(checks: list[dict[str, Any]]) -> list[str]:
         f"restrainer {c['name']!r} yielded at its design strength {c['strength'] / 1e3:.4g} kN "
         f"(first at t = {c['t_yield']:.3f} s): plastic elongation "
         f"{c['plastic_elongation'] * 1e3:.3g} mm at the end"
+        + (
+            f"; largest elongation {c['ductility']['demand'] * 1e3:.4g} mm of the "
+            f"{c['ductility']['capacity'] * 1e3:.4g} mm it can take"
+            if c["ductility"]["capacity"] is not None
+            else ""
+        )
         for c in checks
         if c["yielded"] and not c["ruptured"]
     ]
@@ -366,8 +431,11 @@ CHECK_COLUMNS = (
     Column("demand", "max force", "kN", "{:.2f}"),
     Column("strength", "strength", "kN", "{:.2f}"),
     Column("utilisation", "utilisation", "", "{:.3f}"),
+    Column("elongation", "elongation", "mm", "{:.1f}"),
+    Column("elongation_capacity", "can take", "mm", "{:.1f}"),
+    Column("overstrength", "γov·A·fy", "kN", "{:.2f}"),
+    Column("anchor", "anchor", "kN", "{:.2f}"),
     Column("passed", "passed", ""),
-    Column("rule", "strength from", "", align="left"),
 )
 EFFECT_COLUMNS = (
     Column("name", "restrainer", ""),
@@ -412,11 +480,8 @@ def assessment_report(doc: dict[str, Any]) -> Report:
     if springs:
         tables.append(Table("Restrainer demands", SPRING_COLUMNS, springs))
     if doc.get("restrainer_checks"):
-        rows = tuple(
-            {**c, "demand": c["demand"] / 1e3, "strength": c["strength"] / 1e3}
-            for c in doc["restrainer_checks"]
-        )
-        tables.append(Table("Restrainer strength", CHECK_COLUMNS, rows))
+        rows = tuple(check_table_row(c) for c in doc["restrainer_checks"])
+        tables.append(Table("Restrainer checks", CHECK_COLUMNS, rows))
     if doc["effectiveness"]:
         tables.append(
             Table(
@@ -430,6 +495,7 @@ def assessment_report(doc: dict[str, Any]) -> Report:
         f"rest threshold {eng['rest_velocity']:g} rad/s",
         *rec["notes"],
         *yield_notes(doc.get("restrainer_checks", [])),
+        *check_notes(doc.get("restrainer_checks", [])),
         mirror_note(doc["runs"]),
     ]
     notes = [n for n in notes if n]
@@ -499,7 +565,7 @@ def strength_caveat(checks: Any) -> str:
     if invalid:
         parts.append(f"not valid: {', '.join(invalid)} beyond its strength as an elastic member")
     if failed:
-        parts.append(f"restrainer check failed: {', '.join(failed)} (NTC 2018 §4.2.4.1.2)")
+        parts.append(f"restrainer check failed: {', '.join(failed)} (see the warnings)")
     return "".join(f" — {p}" for p in parts)
 
 

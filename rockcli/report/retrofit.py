@@ -10,6 +10,7 @@ from rockcli.model.schema import Model
 from rockcli.records.record import Record
 from rockcli.report.table import Column, Report, Table
 from rockcli.studies.retrofit.candidates import RetrofitPlan
+from rockcli.studies.retrofit.choose import failures
 
 SCHEMA = 1
 #: What shook the block in the time history (record.input).
@@ -75,7 +76,10 @@ COLUMNS = (
     Column("overturned", "overturned"),
     Column("max_force", "peak force", "kN", "{:.4g}"),
     Column("utilisation", "utilisation", "", "{:.3f}"),
+    Column("elongation", "elongation / can take", "mm"),
+    Column("overstrength", "γov·A·fy", "kN", "{:.4g}"),
     Column("ruptured", "ruptured"),
+    Column("why", "result", align="left"),
 )
 
 
@@ -89,7 +93,19 @@ def table_row(row: dict[str, Any]) -> dict[str, Any]:
         "strength": None if row["strength"] is None else row["strength"] / N_PER_KN,
         "code_uls": "not evaluated" if passed is None else ("pass" if passed else "fail"),
         "max_force": row["max_force"] / N_PER_KN,
+        "elongation": elongation_text(row.get("ductility")),
+        "overstrength": None
+        if not row.get("anchor")
+        else row["anchor"]["demand"] / N_PER_KN,
+        "why": "; ".join(failures(row)) or "passes",
     }
+
+
+def elongation_text(duct: dict[str, Any] | None) -> str | None:
+    """ "106 / 345": the rod's largest elongation and what it can take [mm] (None: no steel)."""
+    if not duct or duct["capacity"] is None:
+        return None
+    return f"{duct['demand'] * 1e3:.0f} / {duct['capacity'] * 1e3:.0f}"
 
 
 def retrofit_report(doc: dict[str, Any]) -> Report:
@@ -115,7 +131,8 @@ def retrofit_report(doc: dict[str, Any]) -> Report:
         notes=(
             f"{doc['count']} bar(s) of {doc['grade']} per diameter; code ULS ζ = capacity/"
             "demand on the record's spectrum; max θ/α, peak force and utilisation over both "
-            "polarities",
+            "polarities; the rod's largest elongation against ε_u·L/γ_ε, and γov·A·fy, the force "
+            "its anchorage must exceed (capacity design, NTC 2018 §7.5.1)",
             INPUTS[doc["record"]["input"]],
         ),
         warnings=tuple(doc["warnings"]),

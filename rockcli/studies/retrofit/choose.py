@@ -36,6 +36,17 @@ def failures(row: dict[str, Any]) -> list[str]:
     utilisation = row["utilisation"]
     if utilisation is not None and utilisation > UTILISATION_LIMIT + FORCE_RTOL:
         why.append(f"the rod's utilisation is {utilisation:.2f} > {UTILISATION_LIMIT:g}")
+    duct, anchor = row.get("ductility") or {}, row.get("anchor") or {}
+    if duct.get("passed") is False:
+        why.append(
+            f"the rod stretches {duct['demand'] * 1e3:.0f} mm, more than the "
+            f"{duct['capacity'] * 1e3:.0f} mm it can take"
+        )
+    if anchor.get("passed") is False:
+        why.append(
+            f"the anchor governs ({anchor['capacity'] / 1e3:.0f} kN < γov·A·fy = "
+            f"{anchor['demand'] / 1e3:.0f} kN)"
+        )
     return why
 
 
@@ -47,7 +58,8 @@ def choose(rows: Sequence[dict[str, Any]]) -> tuple[dict[str, Any] | None, str]:
         if not failures(row):
             return row, (
                 f"Ø{row['diameter_mm']:g} mm is the smallest diameter for which the code ULS "
-                "passes, the block survives and the rod neither ruptures nor exceeds its strength"
+                "passes, the block survives and the rod neither ruptures nor exceeds its strength, "
+                "its ductility or its anchor's capacity"
             )
     largest = rows[-1]
     return None, (

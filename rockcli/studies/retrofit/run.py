@@ -107,7 +107,7 @@ def rocking_columns(out: AssessmentOutput, index: int) -> dict[str, Any]:
         "max_ratio": float(result.max_ratio),
         "overturned": any(r.overturned for r in result.runs),
         "max_force": max(float(p.max_force) for p in peaks),
-        "utilisation": rod_utilisation(out, index),
+        **rod_check(out, index),
         "ruptured": any(p.t_fail is not None for p in peaks),
         "broken_runs": broken_runs(result),
     }
@@ -123,16 +123,17 @@ def broken_runs(result: Assessment) -> list[dict[str, Any]]:
     ]
 
 
-def rod_utilisation(out: AssessmentOutput, index: int) -> float | None:
-    """The rod's row of the assessment's restrainer checks: its force over its strength
-    (None: it has no strength). The checks list the restrainers with a strength, in order."""
+def rod_check(out: AssessmentOutput, index: int) -> dict[str, Any]:
+    """The rod's row of the assessment's restrainer checks (rockcli.studies.strength): its
+    utilisation (force over strength; None: no strength), its ductility and its anchorage
+    (each {demand, capacity, passed, rule}; None: not a bar of known steel)."""
     from rockcli.studies.strength import restrainer_checks
 
-    restrainers = out.block.restrainers
-    if not math.isfinite(restrainers[index].strength):
-        return None
-    row = sum(math.isfinite(r.strength) for r in restrainers[:index])
-    return float(restrainer_checks(out.block, out.result)[row]["utilisation"])
+    rows = [r for r in restrainer_checks(out.block, out.result) if r["index"] == index]
+    if not rows:
+        return {"utilisation": None, "ductility": None, "anchor": None}
+    row = rows[0]
+    return {k: row[k] for k in ("utilisation", "ductility", "anchor")}
 
 
 def _finite(value: float) -> float | None:
