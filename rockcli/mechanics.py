@@ -37,7 +37,12 @@ class Restrainer:
         r_pos, phi_pos: radius [m] and angle [rad] of the point about pivot O (θ > 0).
         r_neg, phi_neg: radius [m] and angle [rad] of the point about pivot O′ (θ < 0).
         fails_at: spring elongation at which it is lost for the rest of the run [m]
-            (``math.inf``: never).
+            (``math.inf``: never): as the model gives it (``fails_at``, or a tie-rod's
+            ``elongation_at_break``), in both analyses.
+        breaks_at: spring elongation at which a tie-rod of a standard grade breaks by its
+            steel's default elongation at break when the model gives neither [m] (``math.inf``:
+            none). The time history only (:attr:`lost_at`); the code check relies on
+            ``fails_at`` alone (docs/interpretations.md, "Restrainer laws").
         strength: the force the member can carry [N] (``math.inf``: not given): its design
             tension resistance and its anchorage's capacity. Checked against the force of the
             time history.
@@ -77,6 +82,7 @@ class Restrainer:
     anchor_capacity: float = math.inf
     code_action: str = "spring"
     code_force: float = 0.0
+    breaks_at: float = math.inf
     elongation_capacity: float = math.inf
     overstrength: float = 0.0
     ductility_rule: str = ""
@@ -91,6 +97,12 @@ class Restrainer:
     def can_fail(self) -> bool:
         """True when the restrainer has a finite failure elongation."""
         return math.isfinite(self.fails_at)
+
+    @property
+    def lost_at(self) -> float:
+        """Spring elongation at which the time history loses it [m]: the lower of ``fails_at``
+        and ``breaks_at`` (``math.inf``: never)."""
+        return min(self.fails_at, self.breaks_at)
 
     def yield_force(self, s: int) -> float:
         """Yield force of the side s = ±1 [N] (inf: elastic)."""

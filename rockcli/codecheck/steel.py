@@ -15,6 +15,17 @@ GRADES: dict[str, tuple[float, float]] = {
     "S275": (275e6, 430e6),
     "S355": (355e6, 510e6),
 }
+#: Minimum percentage elongation after fracture A of the product standard [-], as a fraction of
+#: the gauge length (EN 10025-2:2019, Table 7, longitudinal test pieces, nominal thickness 3 to
+#: 40 mm): the default elongation at break of a tie-rod of a standard grade in the time history
+#: (rockcli.model.derive.rupture_elongation; docs/interpretations.md, "Restrainer laws"). A is
+#: measured on a short proportional test piece and includes the local necking: the mean strain
+#: of a long bar at rupture is closer to its uniform elongation, which is smaller.
+ELONGATION_AT_BREAK: dict[str, float] = {
+    "S235": 0.26,
+    "S275": 0.23,
+    "S355": 0.22,
+}
 #: Partial factors of steel members in tension (NTC 2018 §4.2.4.1.1, Tab. 4.2.VII):
 #: γ_M0 for the resistance of the gross section, γ_M2 for the fracture of the net section.
 GAMMA_M0 = 1.05
@@ -46,6 +57,16 @@ class TensionResistance:
 def rod_area(diameter: float, count: int = 1) -> float:
     """Gross area of ``count`` round bars of ``diameter`` [m²]: count·π·d²/4."""
     return count * math.pi * diameter**2 / 4.0
+
+
+def elongation_at_break(grade: str) -> float:
+    """The default elongation at break of a bar of a standard grade [-] (fraction of its length).
+
+    Source: EN 10025-2:2019, Table 7 (minimum elongation after fracture A, longitudinal, 3 to
+    40 mm): :data:`ELONGATION_AT_BREAK`. A grade outside the table raises KeyError (the model
+    schema admits only the tabulated grades).
+    """
+    return ELONGATION_AT_BREAK[grade]
 
 
 def tension_resistance(

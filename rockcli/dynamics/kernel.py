@@ -62,12 +62,19 @@ register_jitable(rules.member_moment)
 register_jitable(rules.side_index)
 register_jitable(rules.spring_arm)
 # The member laws' state changes: called at events only.
-for _law_fn in (rules.rotation_at_elongation, rules.set_levels, rules.plateau_work):
+for _law_fn in (
+    rules.rotation_at_elongation,
+    rules.set_levels,
+    rules.plateau_slack_point,
+    rules.plateau_work,
+    rules.released_energy,
+    rules.idle_energy,
+):
     register_jitable(_law_fn)
 _cross_up = njit(cache=CACHE)(rules.cross_up)
 _cross_down = njit(cache=CACHE)(rules.cross_down)
 _unload = njit(cache=CACHE)(rules.unload)
-_released_energy = njit(cache=CACHE)(rules.released_energy)
+_lose = njit(cache=CACHE)(rules.lose)
 _any_plastic = njit(cache=CACHE)(rules.any_plastic)
 _rest_moment = njit(cache=CACHE)(rules.rest_moment)
 _member_force = njit(cache=CACHE, inline="always")(rules.member_force)
@@ -666,8 +673,7 @@ def _apply_law_event(kind, row, s, a, t, springs, alive, spring_out, lin):
         _cross_down(springs, row, s, lin)
         return False
     if springs[row, rules.COL_UP_KIND + rules.side_index(s)] == rules.UP_BREAK:
-        spring_out[row, L.S_ENERGY] += _released_energy(springs, row, s, a, lin)
-        alive[row] = 0
+        _lose(springs, alive, row, s, a, lin, spring_out, L.S_ENERGY)
         spring_out[row, L.S_T_FAIL] = t
         return True
     if _cross_up(springs, row, s, lin) == rules.UP_YIELD and math.isnan(
@@ -976,8 +982,7 @@ def integrate(
             break
         if kind == L.EV_FAIL:
             _update_peak(s * th_ev, s, out_f, spring_out, springs, alive, lin)
-            spring_out[row, L.S_ENERGY] += _released_energy(springs, row, s, s * th_ev, lin)
-            alive[row] = 0
+            _lose(springs, alive, row, s, s * th_ev, lin, spring_out, L.S_ENERGY)
             lowest, highest = _level_bounds(s, par, springs, alive)
             spring_out[row, L.S_T_FAIL] = t_ev
             th = th_ev

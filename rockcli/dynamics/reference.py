@@ -372,8 +372,7 @@ def _apply_restrainer_event(phase, t, y, kind, row, out_f, spring_out):
     elif kind == K_SLACK:
         rules.cross_down(springs, row, s, lin)
     elif kind == K_FAIL or springs[row, rules.COL_UP_KIND + rules.side_index(s)] == rules.UP_BREAK:
-        spring_out[row, L.S_ENERGY] += rules.released_energy(springs, row, s, a, lin)
-        phase.alive[row] = 0
+        rules.lose(springs, phase.alive, row, s, a, lin, spring_out, L.S_ENERGY)
         spring_out[row, L.S_T_FAIL] = t
     elif rules.cross_up(springs, row, s, lin) == rules.UP_YIELD and math.isnan(
         spring_out[row, L.S_T_YIELD]

@@ -231,13 +231,18 @@ def unload(springs, alive, s, a, linearized, energy, energy_col):
     col = side_index(s)
     for j in range(springs.shape[0]):
         if alive[j] != 0 and springs[j, COL_MODE + col] == MODE_PLASTIC:
-            k, r, phi, _ = spring_on_side(springs, j, s)
-            f_yield = springs[j, COL_YIELD + col]
-            c_new = spring_elongation(r, phi, a, linearized) - f_yield / k
-            energy[j, energy_col] += f_yield * (c_new - springs[j, COL_C + col])
+            c_new = plateau_slack_point(springs, j, s, a, linearized)
+            energy[j, energy_col] += springs[j, COL_YIELD + col] * (c_new - springs[j, COL_C + col])
             springs[j, COL_C + col] = c_new
             springs[j, COL_MODE + col] = MODE_ELASTIC
             set_levels(springs, j, s, linearized)
+
+
+def plateau_slack_point(springs, j, s, a, linearized):
+    """u(a) − F_y/K: the slack point of row j's member of side s on its yield plateau at
+    rotation a [m] (where it unloads elastically from F_y to zero)."""
+    k, r, phi, _ = spring_on_side(springs, j, s)
+    return spring_elongation(r, phi, a, linearized) - springs[j, COL_YIELD + side_index(s)] / k
 
 
 def plateau_work(springs, j, s, a, linearized):
@@ -245,10 +250,8 @@ def plateau_work(springs, j, s, a, linearized):
     col = side_index(s)
     if springs[j, COL_MODE + col] != MODE_PLASTIC:
         return 0.0
-    k, r, phi, _ = spring_on_side(springs, j, s)
-    f_yield = springs[j, COL_YIELD + col]
-    c_now = spring_elongation(r, phi, a, linearized) - f_yield / k
-    return f_yield * (c_now - springs[j, COL_C + col])
+    c_now = plateau_slack_point(springs, j, s, a, linearized)
+    return springs[j, COL_YIELD + col] * (c_now - springs[j, COL_C + col])
 
 
 def released_energy(springs, j, s, a, linearized):
@@ -259,6 +262,37 @@ def released_energy(springs, j, s, a, linearized):
         return 0.0
     force = member_force(springs, j, s, k, spring_elongation(r, phi, a, linearized))
     return plateau_work(springs, j, s, a, linearized) + 0.5 * force * force / k
+
+
+def idle_energy(springs, j, s):
+    """Elastic energy held by row j's member on side s at its rest, u = 0 [J]: ½·F²/K of a
+    pretension not yet lost to slack (0 for a slack member or without stiffness). While the
+    block turns about the other pivot this member is not stretched, and holds this."""
+    k, _, _, _ = spring_on_side(springs, j, s)
+    if k == 0.0:
+        return 0.0
+    force = member_force(springs, j, s, k, 0.0)
+    return 0.5 * force * force / k if force > 0.0 else 0.0
+
+
+def lose(springs, alive, j, s, a, linearized, energy, energy_col):
+    """Restrainer row j is lost at rotation a about pivot s: the device, both its members.
+
+    One restrainer is one device (a bar, a vault): when it breaks, or its anchor gives way, on
+    either side, it acts on neither side again (docs/physics.md, "Restrainers with strength").
+    ``energy[j, energy_col]`` gains what is released [J]: the plastic work of a plateau in
+    progress and the elastic energy of the member of side s (released_energy), and the elastic
+    energy the other side's member holds at rest (idle_energy). A plateau in progress ends where
+    the member broke (c = u − F_y/K), so the plastic elongation (c − c0) includes it.
+    """
+    energy[j, energy_col] += released_energy(springs, j, s, a, linearized) + idle_energy(
+        springs, j, -s
+    )
+    col = side_index(s)
+    if springs[j, COL_MODE + col] == MODE_PLASTIC:
+        springs[j, COL_C + col] = plateau_slack_point(springs, j, s, a, linearized)
+        springs[j, COL_MODE + col] = MODE_ELASTIC
+    alive[j] = 0
 
 
 def any_plastic(springs, alive, s):

@@ -187,12 +187,12 @@ def pack_springs(block: Block) -> np.ndarray:
         table[j, rules.COL_R_NEG] = sp.r_neg
         table[j, rules.COL_PHI_NEG] = sp.phi_neg
         table[j, rules.COL_A_FAIL_POS] = spring_failure_rotation(
-            sp.r_pos, sp.phi_pos, sp.fails_at, block.linearized
+            sp.r_pos, sp.phi_pos, sp.lost_at, block.linearized
         )
         table[j, rules.COL_A_FAIL_NEG] = spring_failure_rotation(
-            sp.r_neg, sp.phi_neg, sp.fails_at, block.linearized
+            sp.r_neg, sp.phi_neg, sp.lost_at, block.linearized
         )
-        table[j, rules.COL_FAILS_AT] = sp.fails_at
+        table[j, rules.COL_FAILS_AT] = sp.lost_at
         table[j, rules.COL_SIN_POS] = math.sin(sp.phi_pos)
         table[j, rules.COL_COS_POS] = math.cos(sp.phi_pos)
         table[j, rules.COL_SIN_NEG] = math.sin(sp.phi_neg)

@@ -17,6 +17,7 @@ from rockcli.codecheck.steel import (
     CLAUSE,
     GRADES,
     TensionResistance,
+    elongation_at_break,
     rod_area,
     tension_resistance,
 )
@@ -265,6 +266,7 @@ def to_restrainer(model: Model, index: int) -> Restrainer:
         r_neg=r_neg,
         phi_neg=phi_neg,
         fails_at=rupture_elongation(table, max(k_pos, k_neg)),
+        breaks_at=default_rupture_elongation(table, max(k_pos, k_neg)),
         strength=strength,
         strength_rule=rule,
         law=table.effective_law.value,
@@ -284,18 +286,41 @@ def confidence_factor(model: Model) -> float:
 
 
 def rupture_elongation(table: RestrainerTable, k: float) -> float:
-    """Elongation u of the spring, from rest, at which the member is lost [m] (inf: never).
+    """Elongation u of the spring, from rest, at which the model says the member is lost [m]
+    (inf: never); both analyses rely on it.
 
     ``fails_at`` as given; for a tie-rod with an elongation at break ε_u, the bar breaks when
-    its whole elongation, the pretension's P0/K included, reaches ε_u·L:
-    u = ε_u·L − P0/K (docs/interpretations.md).
+    its whole elongation, the pretension's P0/K included, reaches ε_u·L (bar_rupture).
     """
     if table.fails_at is not None:
         return table.fails_at
     if table.elongation_at_break is None:
         return math.inf
+    return bar_rupture(table, table.elongation_at_break, k)
+
+
+def default_rupture_elongation(table: RestrainerTable, k: float) -> float:
+    """Elongation u at which a tie-rod of a standard grade breaks when the model gives neither
+    ``fails_at`` nor ``elongation_at_break`` [m] (inf: no default); the time history only.
+
+    The grade's elongation after fracture A of EN 10025-2 Table 7
+    (codecheck.steel.elongation_at_break), through bar_rupture. A bar given by its measured
+    f_y, f_u has no grade, hence no default: it breaks only where the model says
+    (docs/interpretations.md, "Restrainer laws").
+    """
+    if table.fails_at is not None or table.elongation_at_break is not None:
+        return math.inf
+    if table.kind is not RestrainerKind.TIE_ROD or table.grade is None:
+        return math.inf
+    return bar_rupture(table, elongation_at_break(table.grade.value), k)
+
+
+def bar_rupture(table: RestrainerTable, strain: float, k: float) -> float:
+    """u = ε_u·L − P0/K [m]: the spring elongation from rest at which the bar's whole
+    elongation, the pretension's stretch P0/K included, reaches ε_u·L (docs/interpretations.md).
+    """
     assert table.length is not None
-    return table.elongation_at_break * table.length - (table.pretension or 0.0) / k
+    return strain * table.length - (table.pretension or 0.0) / k
 
 
 def code_force_of(table: RestrainerTable, strength: float, yields: tuple[float, float]) -> float:
