@@ -22,6 +22,8 @@ from dataclasses import dataclass
 #: Over-strength factor of the material for capacity design (NTC 2018 §7.5.1): 1.25 for the
 #: grades S235, S275 and S355, 1.15 for S420 and S460.
 GAMMA_OV = {"S235": 1.25, "S275": 1.25, "S355": 1.25, "S420": 1.15, "S460": 1.15}
+#: γ_ov of a bar of measured f_y (no grade): that of the grades up to S355.
+MEASURED_OV = 1.25
 #: The clause of γ_ov.
 OVERSTRENGTH_CLAUSE = "NTC 2018 §7.5.1"
 #: Partial factor on the elongation at break of a long bar (docs/interpretations.md): 0.9 of

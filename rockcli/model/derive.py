@@ -21,6 +21,14 @@ from rockcli.codecheck.steel import (
     rod_area,
     tension_resistance,
 )
+from rockcli.codecheck.tie import (
+    ELONGATION_CLAUSE,
+    GAMMA_ELONGATION,
+    GAMMA_OV,
+    MEASURED_OV,
+    elongation_capacity,
+    overstrength_force,
+)
 from rockcli.mechanics import (
     NEGATIVE,
     POSITIVE,
@@ -277,7 +285,41 @@ def to_restrainer(model: Model, index: int) -> Restrainer:
         anchor_capacity=math.inf if table.anchor_capacity is None else table.anchor_capacity,
         code_action=table.effective_code_action.value,
         code_force=code_force,
+        **bar_verification(table),
     )
+
+
+def bar_verification(table: RestrainerTable) -> dict[str, float | str]:
+    """A steel bar's ductility capacity ε_u·L/γ_ε [m] (with where ε_u comes from) and its
+    over-strength γ_ov·A·f_y [N] for its anchorage (codecheck.tie); nothing for another member.
+
+    ε_u: the model's ``elongation_at_break``, else the grade's A of EN 10025-2 Tab. 7; a bar of
+    measured f_y, f_u without it has no ductility capacity. f_y: the grade's nominal f_yk or the
+    measured value (not divided by FC: an upper value is wanted), γ_ov of NTC 2018 §7.5.1
+    (1.25 for a measured bar). docs/interpretations.md, "Tie-rods: ductility and anchorage".
+    """
+    if not table.has_steel:
+        return {}
+    assert table.diameter is not None and table.length is not None
+    grade = None if table.grade is None else table.grade.value
+    fy = GRADES[grade][0] if grade is not None else table.fy
+    assert fy is not None
+    out: dict[str, float | str] = {
+        "overstrength": overstrength_force(
+            rod_area(table.diameter, table.count or 1), fy, GAMMA_OV.get(grade or "", MEASURED_OV)
+        )
+    }
+    if table.elongation_at_break is not None:
+        eps, rule = table.elongation_at_break, "elongation_at_break of the model"
+    elif grade is not None:
+        eps, rule = elongation_at_break(grade), f"A of {grade} ({ELONGATION_CLAUSE})"
+    else:
+        return out
+    out["elongation_capacity"] = elongation_capacity(eps, table.length)
+    out["ductility_rule"] = (
+        f"ε_u·L/γ_ε = {100 * eps:.3g} % × {table.length:g} m / {GAMMA_ELONGATION:g}, ε_u: {rule}"
+    )
+    return out
 
 
 def confidence_factor(model: Model) -> float:
