@@ -9,6 +9,7 @@ displacement the check relies on. Tolerance 1e-12 relative: the same formula eva
 from __future__ import annotations
 
 import math
+from dataclasses import replace
 
 import pytest
 
@@ -18,6 +19,7 @@ from rockcli.codecheck.kinematic import Mechanism, capacity, rotation_at
 from rockcli.codecheck.position import Position
 from rockcli.codecheck.restrainer_check import (
     CONSTANT,
+    GIVEN_BASIS,
     NOT_ACTING,
     STRENGTH_CLAUSE,
     nonlinear_displacement_demand,
@@ -63,7 +65,13 @@ def test_force_is_its_own_demand() -> None:
     # A force gives α0 its code_force and the check relies on exactly that force.
     [a] = restrainer_actions(cap_of(member("force", 6e4)), 0.05, "du* = 0.05 m")
     assert (a.code_action, a.force, a.demand, a.demand_at) == ("force", 6e4, 6e4, CONSTANT)
-    assert a.utilisation == 1.0 and a.passed is True and a.clause == STRENGTH_CLAUSE
+    # A member whose strength is given in the model (no steel) cites no steel clause.
+    assert a.utilisation == 1.0 and a.passed is True and a.clause == GIVEN_BASIS
+    steel = replace(
+        member("force", 6e4), strength_rule=f"S275: N_pl,Rd governs ({STRENGTH_CLAUSE})"
+    )
+    [b] = restrainer_actions(cap_of(steel), 0.05, "du* = 0.05 m")
+    assert b.clause == STRENGTH_CLAUSE
 
 
 def test_spring_demand_at_the_rotation_of_the_displacement() -> None:
