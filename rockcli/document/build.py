@@ -464,6 +464,7 @@ def rocking_section(
                          w("figure.histories_caption")))  # fmt: skip
     if rocking["restrainer_checks"]:
         blocks.append(restrainer_checks_grid(rocking["restrainer_checks"], w))
+        blocks += restrainer_check_notes(rocking["restrainer_checks"], w)
     forces = restrainer_forces(rocking["model"], runs, w)
     if forces is not None:
         blocks.append(figure("forces", forces, w("figure.forces_caption")))
@@ -484,15 +485,38 @@ def restrainer_checks_grid(checks: Sequence[Mapping[str, Any]], w: Words) -> Gri
     n = w.number
     rows = tuple(
         (c["name"], w(f"law.{c['law']}"), n(_kn(c["demand"])), n(_kn(c["strength"])),
-         n(c["utilisation"], "{:.3f}"), w.yes_no(c["yielded"]), w.yes_no(c["ruptured"]),
-         w.passed(c["passed"]), c["clause"])
+         n(c["utilisation"], "{:.3f}"), n(_mm(c["ductility"]["demand"]), "{:.1f}"),
+         n(_mm(c["ductility"]["capacity"]), "{:.1f}"),
+         n(_kn((c["anchor"] or {}).get("demand"))), n(_kn((c["anchor"] or {}).get("capacity"))),
+         w.yes_no(c["ruptured"]), w.passed(c["passed"]))
         for c in checks
     )  # fmt: skip
     headers = (w("col.name"), w("col.law"), w("col.force_kn"), w("col.strength_kn"),
-               w("col.utilisation"), w("col.yielded"), w("col.ruptured"), w("col.outcome"),
-               w("col.clause"))  # fmt: skip
+               w("col.utilisation"), w("col.elongation_mm"), w("col.elongation_capacity_mm"),
+               w("col.overstrength_kn"), w("col.anchor_kn"), w("col.ruptured"),
+               w("col.outcome"))  # fmt: skip
     return Grid(w("rock.restrainers_caption"), headers, rows,
-                (False, False, True, True, True, False, False, False, False))  # fmt: skip
+                (False, False, *([True] * 7), False, False))  # fmt: skip
+
+
+def restrainer_check_notes(checks: Sequence[Mapping[str, Any]], w: Words) -> list[Paragraph]:
+    """What each restrainer check rests on: the strength's rule and clause, the elongation it
+    can take, the anchor's capacity design (or the force to design it for)."""
+    out = []
+    for c in checks:
+        duct, anchor = c["ductility"], c["anchor"]
+        parts = [w("rock.check_strength", name=c["name"], rule=c["rule"])]
+        if duct["capacity"] is not None and duct["rule"] != c["rule"]:
+            parts.append(w("rock.check_ductility", rule=duct["rule"]))
+        if anchor is not None:
+            key = "rock.check_anchor_missing" if anchor["capacity"] is None else "rock.check_anchor"
+            parts.append(w(key, force=w.number(anchor["demand"] / 1e3)))
+        out.append(Paragraph(" ".join(parts), "note"))
+    return out
+
+
+def _mm(length: float | None) -> float | None:
+    return None if length is None else length * 1e3
 
 
 # --- comparison -----------------------------------------------------------------------------
