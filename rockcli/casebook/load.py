@@ -145,7 +145,16 @@ def case_model(case: Case, file: str, where: str) -> Model | None:
     if case.model is None:
         return None
     if isinstance(case.model, str):
-        return load_model(Path(file).parent / case.model)
+        path = Path(file).parent / case.model
+        if not path.is_file():
+            raise InputError(
+                "no such model file",
+                file=file,
+                where=f"{where}.model",
+                value=case.model,
+                allowed="a model file path relative to the case file, or an inline model table",
+            )
+        return load_model(path)
     return validate_model(case.model, file=f"{file} {where}.model")
 
 

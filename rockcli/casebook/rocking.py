@@ -1,10 +1,12 @@
-"""The rocking cases: free rocking, the impulse and pulse thresholds, on the rocking engine.
+"""The rocking cases: free rocking, releases, uplifts, the impulse and pulse thresholds.
 
 Each case's block is its model's (``rockcli.model.derive.to_block``), run by
 ``rockcli.dynamics.simulate.simulate`` with the model's solver settings, as `rock assess` runs
-it; the pulses are `rock record pulse`'s (``rockcli.records.pulses.make_pulse``).
-Thresholds are bisected: the amplitude where the engine's verdict flips from survives to
-overturns, inside the case's bracket.
+it; the pulses are `rock record pulse`'s (``rockcli.records.pulses.make_pulse``); the ground
+motion of an uplift case reaches a block at height through its floor
+(``rockcli.studies.floor.block_input``, as in `rock assess`). Thresholds are bisected: the
+amplitude where the engine's verdict flips from survives to overturns, inside the case's
+bracket.
 """
 
 from __future__ import annotations
@@ -14,15 +16,25 @@ from dataclasses import replace
 
 import numpy as np
 
-from rockcli.casebook.schema import FreeRockingInput, ImpulseInput, PulseThresholdInput
-from rockcli.dynamics.result import RockingRun
+from rockcli.casebook.schema import (
+    FreeRockingInput,
+    ImpulseInput,
+    PulseThresholdInput,
+    ReleaseInput,
+    UpliftRampInput,
+    UpliftSineInput,
+)
+from rockcli.dynamics.result import RestrainerPeak, RockingRun
 from rockcli.dynamics.settings import SolverSettings
 from rockcli.dynamics.simulate import simulate
+from rockcli.errors import InputError
 from rockcli.mechanics import Block
 from rockcli.model.derive import solver_options, to_block
 from rockcli.model.schema import Model
 from rockcli.records.pulses import make_pulse
+from rockcli.records.record import Record
 from rockcli.studies.assess import settings_from
+from rockcli.studies.floor import block_input
 
 #: Bisection stops when the bracket is this narrow, relative to its upper end: 1e-6, ten
 #: times below the tightest tolerance of a threshold case.
@@ -94,6 +106,67 @@ def half_cycle_peaks(theta: np.ndarray) -> list[float]:
         y0, y1, y2 = a[k - 1], a[k], a[k + 1]
         peaks.append(float(y1 + (y0 - y2) ** 2 / (8.0 * (2.0 * y1 - y0 - y2))))
     return peaks
+
+
+def released(model: Model, inputs: ReleaseInput, quantity: str) -> float:
+    """A quantity of free rocking from (θ0, θ̇0) up to the case's impact: the largest |θ|
+    [rad], or its restrainer's peak elongation [m], peak force [N], plastic elongation [m] or
+    energy dissipated [J]."""
+    run = release(model, inputs.theta0, inputs.omega0, max_events=inputs.impacts)
+    if quantity == "max_rotation":
+        return max(run.theta_max, -run.theta_min)
+    peak = restrainer_peak(run, inputs.restrainer)
+    values = {
+        "max_elongation": peak.max_displacement,
+        "max_force": peak.max_force,
+        "plastic_elongation": peak.plastic_elongation,
+        "energy_dissipated": peak.energy_dissipated,
+    }
+    return values[quantity]
+
+
+def restrainer_peak(run: RockingRun, number: int) -> RestrainerPeak:
+    """The demand on restrainer ``number`` (1-based) of the run (InputError: no such one)."""
+    if number > len(run.restrainers):
+        raise InputError(
+            "no such restrainer in the model",
+            where="input.restrainer",
+            value=number,
+            allowed=f"1 to {len(run.restrainers)}" if run.restrainers else "a model with one",
+        )
+    return run.restrainers[number - 1]
+
+
+def ramp_uplift(model: Model, inputs: UpliftRampInput, quantity: str) -> float:
+    """The ground acceleration |üg| [g] at the first uplift under the ramp, or its time [s]."""
+    time = np.arange(0.0, inputs.duration + inputs.dt / 2, inputs.dt)
+    t_uplift = first_uplift(model, time, inputs.direction * inputs.slope * time, inputs.dt)
+    return t_uplift if quantity == "uplift_time" else inputs.slope * t_uplift
+
+
+def sine_uplift(model: Model, inputs: UpliftSineInput) -> float:
+    """The time [s] of the first uplift under the ground sine, from rest."""
+    dt = inputs.period / inputs.samples_per_period
+    time = np.arange(0.0, inputs.cycles * inputs.period + dt / 2, dt)
+    accel = inputs.direction * inputs.amplitude * np.sin(2.0 * np.pi * time / inputs.period)
+    return first_uplift(model, time, accel, dt)
+
+
+def first_uplift(model: Model, time: np.ndarray, accel: np.ndarray, dt: float) -> float:
+    """The first uplift [s] of the model's block under the ground motion, which reaches a block
+    at height through its floor as in `rock assess` (the run stops at the first impact).
+
+    Raises:
+        NotObtained: the block does not uplift.
+    """
+    ground = Record("casebook ground motion", "generated", "pulse", time, accel, dt)
+    motion, _ = block_input(model, ground)
+    block = to_block(model)
+    settings = model_settings(model, block, max_events=1)
+    run = simulate(block, motion.time, motion.accel, motion.dt, settings=settings)
+    if run.t_uplift is None:
+        raise NotObtained("the block does not uplift under this motion")
+    return run.t_uplift
 
 
 def impulse_threshold(model: Model, inputs: ImpulseInput) -> float:

@@ -159,6 +159,12 @@ def obtain_on_model(loaded: LoadedCase) -> float | None:
         return free(model, inputs)
     if isinstance(inputs, schema.ImpulseInput):
         return rocking.impulse_threshold(model, inputs)
+    if isinstance(inputs, schema.ReleaseInput):
+        return rocking.released(model, inputs, q)
+    if isinstance(inputs, schema.UpliftRampInput):
+        return rocking.ramp_uplift(model, inputs, q)
+    if isinstance(inputs, schema.UpliftSineInput):
+        return rocking.sine_uplift(model, inputs)
     assert isinstance(inputs, schema.PulseThresholdInput)
     return rocking.pulse_threshold(model, inputs)
 

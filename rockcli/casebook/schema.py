@@ -38,6 +38,9 @@ class Kind(StrEnum):
     RESPONSE_SPECTRUM = "response-spectrum"
     FLOOR = "floor"
     SUITE = "suite"
+    UPLIFT_RAMP = "uplift-ramp"
+    UPLIFT_SINE = "uplift-sine"
+    RELEASE = "release"
 
 
 class ToleranceType(StrEnum):
@@ -75,11 +78,29 @@ QUANTITIES: dict[Kind, dict[str, str]] = {
     Kind.RESPONSE_SPECTRUM: {"Sa": "g", "Sd": "m"},
     Kind.FLOOR: {"peak": "g"},
     Kind.SUITE: {"ratio": "-"},
+    Kind.UPLIFT_RAMP: {"uplift_acceleration": "g", "uplift_time": "s"},
+    Kind.UPLIFT_SINE: {"uplift_time": "s"},
+    Kind.RELEASE: {
+        "max_rotation": "rad",
+        "max_elongation": "m",
+        "max_force": "N",
+        "plastic_elongation": "m",
+        "energy_dissipated": "J",
+    },
 }
 
 #: The kinds that need a block (``model``).
 NEEDS_MODEL = frozenset(
-    {Kind.MODEL, Kind.KINEMATIC, Kind.FREE_ROCKING, Kind.IMPULSE, Kind.PULSE_THRESHOLD}
+    {
+        Kind.MODEL,
+        Kind.KINEMATIC,
+        Kind.FREE_ROCKING,
+        Kind.IMPULSE,
+        Kind.PULSE_THRESHOLD,
+        Kind.UPLIFT_RAMP,
+        Kind.UPLIFT_SINE,
+        Kind.RELEASE,
+    }
 )
 
 
@@ -204,6 +225,34 @@ class SuiteInput(Table):
     soil: Literal["A", "B", "C", "D", "E"] = "A"
 
 
+class UpliftRampInput(Table):
+    """``uplift-ramp``: the first uplift under a ground acceleration growing linearly from 0."""
+
+    slope: Positive = Field(le=10, description="d(üg)/dt [g/s]")
+    duration: Seconds = Field(description="the ramp's length [s]")
+    dt: SampleInterval = 1e-3
+    direction: Literal[1, -1] = Field(default=1, description="the ramp's sign")
+
+
+class UpliftSineInput(Table):
+    """``uplift-sine``: the first uplift under a ground sine, from rest."""
+
+    amplitude: Positive = Field(le=10, description="[g]")
+    period: Seconds = Field(description="[s]")
+    cycles: int = Field(ge=1, le=200)
+    samples_per_period: int = Field(default=400, ge=20, le=4000)
+    direction: Literal[1, -1] = Field(default=1, description="the sine's sign")
+
+
+class ReleaseInput(Table):
+    """``release``: free rocking from θ0 with θ̇0, no ground motion, up to the nth impact."""
+
+    theta0: float = Field(default=0.0, ge=-1.5, le=1.5, allow_inf_nan=False, description="[rad]")
+    omega0: float = Field(ge=-100, le=100, allow_inf_nan=False, description="θ̇0 [rad/s]")
+    impacts: int = Field(default=1, ge=1, le=20, description="the run ends at this impact")
+    restrainer: int = Field(default=1, ge=1, description="1-based, for its quantities")
+
+
 INPUTS: dict[Kind, type[Table]] = {
     Kind.MODEL: ModelInput,
     Kind.KINEMATIC: KinematicInput,
@@ -215,4 +264,7 @@ INPUTS: dict[Kind, type[Table]] = {
     Kind.RESPONSE_SPECTRUM: ResponseSpectrumInput,
     Kind.FLOOR: FloorInput,
     Kind.SUITE: SuiteInput,
+    Kind.UPLIFT_RAMP: UpliftRampInput,
+    Kind.UPLIFT_SINE: UpliftSineInput,
+    Kind.RELEASE: ReleaseInput,
 }

@@ -473,7 +473,9 @@ class Restrainer(Table):
     )
     elongation_at_break: float | None = number(
         "Tie-rod: elongation at break of the steel, a fraction of the length (0.2 = 20 %); "
-        "the bar ruptures there; default never [-]",
+        "the bar ruptures there; default: a grade's minimum elongation after fracture (EN "
+        "10025-2 Tab. 7: S235 0.26, S275 0.23, S355 0.22) in the time history only, none for "
+        "measured fy, fu [-]",
         gt=0,
         le=MAX_ELONGATION_AT_BREAK,
     )

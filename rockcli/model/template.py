@@ -166,7 +166,8 @@ TABLE_NOTES: dict[str, tuple[str, ...]] = {
         "Optional: fails_at = elongation [m] at which the spring is lost for good.",
         'Law: "elastic", or "elastic-plastic" (yields, goes slack, cannot push) with yield_pos, '
         "yield_neg [N]; a tie-rod with a grade or fy, fu is elastic-plastic, yields at A·fy and",
-        "breaks at elongation_at_break·length. pretension [N] acts until it goes slack. "
+        "breaks at elongation_at_break·length (default: its grade's, in the time history). "
+        "pretension [N] acts until it goes slack. "
         'code_action = "force" (its strength in α0) or "spring".',
     ),
     "building": (

@@ -26,8 +26,8 @@ from rockcli.mechanics import Restrainer
 from tests.dynamics.test_hysteresis import (
     ENERGY_RTOL,
     I0,
-    K,
     TIGHT,
+    K,
     block,
     free,
     potential,
@@ -119,4 +119,3 @@ def test_a_restrainer_lost_on_one_side_is_lost_on_both(engine) -> None:
     assert peak.energy_dissipated == pytest.approx(released, rel=EVENT_RTOL)
     balance = final + peak.energy_dissipated + run.impact_loss
     assert balance == pytest.approx(initial, rel=ENERGY_RTOL)
-
