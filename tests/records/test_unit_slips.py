@@ -20,6 +20,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+import tomli_w
 from click.testing import CliRunner
 
 from rockcli.cli.main import cli
@@ -215,3 +216,46 @@ def test_a_converted_slip_keeps_its_warning(elcentro_ms2: Path, tmp_path: Path) 
     assert record.unit_declared and record.warnings == tuple(slip_warnings(said))
     again = [line for line in format_plain(record).splitlines() if line.startswith("# warning")]
     assert len(again) == 1  # written again, read again: still one warning, not two
+
+
+# Suites and sweeps read records too -----------------------------------------------------------
+
+
+def test_suites_and_sweeps_carry_the_warning(
+    elcentro_ms2: Path, shared_records: Path, tmp_path: Path
+) -> None:
+    """`rock suite check`, `assess`/`compare --suite` and `rock sweep` show the record's
+    warning, named by the record, under their tables and in their JSON."""
+    suite = tmp_path / "suite.toml"
+    records = [("elc ms2", elcentro_ms2), ("elc", shared_records / "ELC180.AT2")]
+    records.append(("cpm", shared_records / "CPM000.AT2"))
+    suite.write_text(
+        tomli_w.dumps({
+            "name": "s",
+            "target": {"ag": 0.25, "F0": 2.5, "Tc_star": 0.3},
+            "records": [{"name": name, "path": str(path)} for name, path in records],
+        })
+    )  # fmt: skip
+    for args in (("suite", "check"), ("assess", ALTAR, "--suite"), ("compare", ALTAR, "--suite")):
+        code, out, err = run(*args, str(suite), "--format", "json")
+        assert code == 0, err
+        (warning,) = slip_warnings(json.loads(out)["warnings"])
+        assert warning.startswith("elc ms2: PGA 1.471 g") and "÷ 981" in warning
+        assert "warning: elc ms2: PGA 1.471 g" in run(*args, str(suite))[1]
+    study = tmp_path / "study.toml"
+    study.write_text(
+        tomli_w.dumps({
+            "name": "units",
+            "base": WALL,
+            "analyses": ["rocking"],
+            "axes": [{"path": "geometry.height", "name": "h", "values": [4.0]}],
+            "records": [{"name": "elcms2", "path": str(elcentro_ms2)}],
+        })
+    )  # fmt: skip
+    out_dir = tmp_path / "sweep"
+    code, out, err = run(
+        "sweep", str(study), "--out", str(out_dir), "-j", "1", "--allow-outside", "--format", "json"
+    )
+    assert code == 0, err
+    (warning,) = slip_warnings(json.loads(out)["warnings"])
+    assert warning.startswith("record elcms2: PGA 1.471 g")
