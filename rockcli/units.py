@@ -38,10 +38,14 @@ _ALIASES = {
     "m/s2": AccelUnit.M_S2,
     "m/s^2": AccelUnit.M_S2,
     "m/s**2": AccelUnit.M_S2,
+    "m/s²": AccelUnit.M_S2,
+    "m/s/s": AccelUnit.M_S2,
     "ms2": AccelUnit.M_S2,
     "cm/s2": AccelUnit.CM_S2,
     "cm/s^2": AccelUnit.CM_S2,
     "cm/s**2": AccelUnit.CM_S2,
+    "cm/s²": AccelUnit.CM_S2,
+    "cm/s/s": AccelUnit.CM_S2,
     "gal": AccelUnit.CM_S2,
 }
 

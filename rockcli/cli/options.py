@@ -26,7 +26,7 @@ plain_units = click.option(
     "--units",
     default=None,
     metavar="g|m/s2|cm/s2",
-    help="Acceleration unit of a plain-text record (default g).",
+    help="Acceleration unit of a plain-text record (default: its '# units:' line, else g).",
 )
 
 

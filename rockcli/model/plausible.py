@@ -12,7 +12,8 @@ from __future__ import annotations
 
 import math
 
-from rockcli.model.schema import Model, RestrainerKind
+from rockcli.model.derive import attachment, block_weight, steel_resistance, stiffness
+from rockcli.model.schema import Model, Restrainer, RestrainerKind
 
 #: Thickest plausible masonry element [m] (the thickest walls of fortresses are ~ 5 m).
 MAX_THICKNESS = 5.0
@@ -27,6 +28,13 @@ SQUAT_ALPHA = math.pi / 4
 MIN_UNIT_WEIGHT, MAX_UNIT_WEIGHT = 10.0, 30.0
 #: Thickest plausible tie-rod [m] (bars of 16–40 mm; 0.1 m is a slip of mm for m).
 MAX_TIE_ROD_DIAMETER = 0.1
+#: A restrainer's strength below this fraction of W·b/z (the force at its height whose moment
+#: equals the block's own stabilising moment W·b) adds under 2 % to that moment, so it cannot
+#: change a verdict; steel members on real blocks give 0.2 to 100 (docs/interpretations.md).
+MIN_STRENGTH_FRACTION = 0.02
+#: A stiffness whose c_K = K·r²/I0 is below this fraction of c_E = p² (paper §4.3) cannot
+#: matter; the paper's own softest springs (K = 1e3 N/m, §4.4) reach 0.0077.
+MIN_STIFFNESS_RATIO = 1e-3
 #: Standard gravity [m/s²] and the relative difference tolerated (g varies by 0.5 % on
 #: Earth; a laboratory may round it).
 STANDARD_GRAVITY, GRAVITY_RTOL = 9.80665, 0.02
@@ -94,13 +102,87 @@ def _mass_warnings(model: Model) -> list[str]:
 
 
 def _restrainer_warnings(model: Model) -> list[str]:
-    return [
+    found = [
         f"restrainers[{i}].diameter = {r.diameter:g} m, thicker than a tie-rod "
         f"(> {MAX_TIE_ROD_DIAMETER:g} m): a diameter in millimetres?"
         for i, r in enumerate(model.restrainers)
         if r.kind is RestrainerKind.TIE_ROD
         and r.diameter is not None
         and r.diameter > MAX_TIE_ROD_DIAMETER
+    ]
+    weight = block_weight(model)
+    if weight is None:
+        return found
+    for i, table in enumerate(model.restrainers):
+        found += _weak_strengths(model, i, table, weight)
+        found += _soft_stiffnesses(model, i, table, weight)
+    return found
+
+
+def _strengths(model: Model, table: Restrainer) -> list[tuple[str, float]]:
+    """(field, force [N]) of every strength the restrainer's table gives or implies."""
+    given = [
+        (key, value)
+        for key in ("yield_pos", "yield_neg", "anchor_capacity")
+        if (value := getattr(table, key)) is not None
+    ]
+    steel = steel_resistance(model, table)
+    if steel is not None:
+        given.append(("its design yield force N_pl,Rd", steel[0].plastic))
+    return given
+
+
+def _weak_strengths(model: Model, i: int, table: Restrainer, weight: float) -> list[str]:
+    """A warning when a strength is below MIN_STRENGTH_FRACTION · W·b/z (all such named).
+
+    W·b is the block's stabilising moment about either pivot at rest (paper Eq. 1: the weight
+    at the half-thickness b); a horizontal force F at height z adds F·z to it, so F·z/(W·b) is
+    the relative rise of the uplift acceleration, and of the code's α0, that the restrainer can
+    give (Circ. 7/2019 §C8.7.1.2: α0 from the balance of moments at the onset).
+    """
+    b = model.geometry.half_sizes[0]
+    (r, phi), _ = attachment(model, table)
+    z = r * math.cos(phi)
+    if z <= 0.0:
+        return []
+    reference = weight * b / z
+    weak = [
+        f"{key} = {force:.4g} N"
+        for key, force in _strengths(model, table)
+        if force < MIN_STRENGTH_FRACTION * reference
+    ]
+    if not weak:
+        return []
+    return [
+        f"restrainers[{i}]: {', '.join(weak)}, below {MIN_STRENGTH_FRACTION:.0%} of W·b/z = "
+        f"{reference:.4g} N (the force at its height z = {z:.3g} m whose moment equals the "
+        f"block's W·b, W = {weight / 1e3:.4g} kN, b = {b:.3g} m): too weak to change the "
+        "verdict; a force in kN where N is asked (1000 times too small)?"
+    ]
+
+
+def _soft_stiffnesses(model: Model, i: int, table: Restrainer, weight: float) -> list[str]:
+    """A warning when a side's c_K/c_E = K·r²/(W·R) is below MIN_STIFFNESS_RATIO.
+
+    c_K = K·r²/I0 and c_E = p² = m·g·R/I0 (paper §4.3; r = 2R at the top corner gives the
+    paper's 4KR²/I0), so c_K/c_E = K·r²/(W·R): a restrainer matters when it is 10 to 100.
+    A side without stiffness (K = 0: no spring there) is not a slip.
+    """
+    R = model.geometry.polar[0]
+    sides = {
+        side: (k, k * r * r / (weight * R))
+        for side, k, (r, _) in zip(
+            ("θ > 0", "θ < 0"), stiffness(table), attachment(model, table), strict=True
+        )
+    }
+    soft = {side: kr for side, kr in sides.items() if kr[0] > 0.0 and kr[1] < MIN_STIFFNESS_RATIO}
+    if len(soft) == 2 and len(set(soft.values())) == 1:
+        soft = {"both sides": next(iter(soft.values()))}
+    return [
+        f"restrainers[{i}]: stiffness K = {k:.4g} N/m ({side}) gives c_K/c_E = K·r²/(W·R) = "
+        f"{ratio:.3g}, below {MIN_STIFFNESS_RATIO:g} (paper §4.3: a restrainer matters at 10 "
+        "to 100): a stiffness in kN/m or N/mm where N/m is asked (1000 times too small)?"
+        for side, (k, ratio) in soft.items()
     ]
 
 

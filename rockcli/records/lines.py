@@ -42,8 +42,15 @@ Shape = tuple[int, int]
 #: Largest |a| a record may hold [g]; 100 g is ~25 times the largest ground acceleration ever
 #: recorded (about 4 g), so anything beyond is a damaged file or a unit slip, not a record.
 MAX_ABS_ACCEL_G = 100.0
-#: Above this PGA [g] a record is implausible (a unit slip is likelier): it gets a warning.
+#: Above this PGA [g] a record whose unit is declared is implausible (a unit slip is likelier
+#: than one of the handful of ground motions ever recorded above 3 g): it gets a warning.
 PLAUSIBLE_PGA_G = 3.0
+#: Above this PGA [g] a record whose unit nobody declared (a plain-text file read as g by
+#: default) gets a warning: values in m/s² read as g are 9.81 times too large, so an ordinary
+#: 0.1–0.4 g record becomes 1–4 g; records above 1 g are rare (docs/interpretations.md).
+UNDECLARED_PGA_G = 1.0
+#: What a value in m/s² or cm/s² read as g is too large by: g in those units (9.81, 981).
+SLIP_FACTORS = tuple(1.0 / unit.to_g for unit in (AccelUnit.M_S2, AccelUnit.CM_S2))
 #: Smallest time step [s] a record may declare (1 GHz): accelerographs sample at 50–1000 Hz,
 #: so a smaller step is a damaged header (DT = 1e-320 would pass "dt > 0"), not a record.
 MIN_DT = 1e-9
@@ -374,16 +381,44 @@ def check_accel(
         )
 
 
-def pga_warnings(accel: np.ndarray, *, unit: str, plain: bool) -> tuple[str, ...]:
-    """A warning when the PGA is above PLAUSIBLE_PGA_G (a unit slip is the likely cause)."""
+def pga_warnings(
+    accel: np.ndarray, *, unit: str, plain: bool, declared: bool = True
+) -> tuple[str, ...]:
+    """A warning when the PGA suggests a unit slip (none for a plausible PGA).
+
+    A record whose unit nothing declared (``declared`` False: a plain-text file read as g by
+    default) warns above UNDECLARED_PGA_G, naming both slips and their factors; a record whose
+    unit a header or the user declared warns above PLAUSIBLE_PGA_G only (real records exceed
+    1 g, docs/interpretations.md, "Records").
+    """
     pga = float(np.max(np.abs(accel))) if accel.size else 0.0
+    if not declared and pga > UNDECLARED_PGA_G:
+        return (undeclared_unit_warning(pga),)
     if pga <= PLAUSIBLE_PGA_G:
         return ()
-    fix = "check --units (a file in cm/s² read as g is 981 times too strong)"
-    if not plain:
-        fix = "check the unit the file's header declares"
+    fix = "check the unit the file's header declares"
+    if plain:
+        fix = "check --units and the file's '# units:' line"
     return (f"PGA {pga:.4g} g is above {PLAUSIBLE_PGA_G:g} g, implausible for a ground motion "
             f"(read as {unit}): {fix}",)  # fmt: skip
+
+
+def slips_text(pga: float) -> str:
+    """What the PGA would be if the values were in m/s² or in cm/s², with the factors."""
+    f_m, f_cm = SLIP_FACTORS
+    return (
+        f"in m/s² it would be {pga / f_m:.3g} g (÷ {f_m:.3g}), "
+        f"in cm/s² {pga / f_cm:.3g} g (÷ {f_cm:.3g})"
+    )
+
+
+def undeclared_unit_warning(pga: float) -> str:
+    """The warning of a record above UNDECLARED_PGA_G whose unit was assumed to be g."""
+    return (
+        f"PGA {pga:.4g} g is above {UNDECLARED_PGA_G:g} g and nothing declares the file's unit "
+        f"(read as g, the default): check the unit: {slips_text(pga)}. Real records can "
+        "exceed 1 g: declare the unit with --units or a '# units:' line in the file"
+    )
 
 
 def finish_record(record: Record) -> Record:
@@ -391,7 +426,9 @@ def finish_record(record: Record) -> Record:
     check_time_axis(record.time, file=record.source)
     plain = record.format == "plain"
     check_accel(record.accel, record.time, file=record.source, unit=record.unit, plain=plain)
-    warnings = pga_warnings(record.accel, unit=record.unit, plain=plain)
+    warnings = pga_warnings(
+        record.accel, unit=record.unit, plain=plain, declared=record.unit_declared
+    )
     return replace(record, warnings=(*record.warnings, *warnings)) if warnings else record
 
 
@@ -413,6 +450,7 @@ def uniform_record(
     source: str,
     notes: tuple[str, ...] = (),
     origin: Origin | None = None,
+    unit_declared: bool = True,
 ) -> Record:
     """A checked Record sampled at t = i·dt, with values converted from ``unit`` to g.
 
@@ -435,5 +473,6 @@ def uniform_record(
             event=origin.event,
             station=origin.station,
             component=origin.component,
+            unit_declared=unit_declared,
         )
     )

@@ -1,14 +1,17 @@
 """Plain-text records: numbers only, one column (acceleration) or two (time, acceleration).
 
 Layout (spec/records.md, table "What rock reads"): comment lines start with ``#``; values are
-blank-separated; the unit is given by the caller (``--units``, default g) and a one-column file
+blank-separated; the unit is declared by a ``# units: m/s2`` comment line before the data, or
+given by the caller (``--units``; the two must agree), else g is assumed; a one-column file
 needs the time step (``--dt``). The time column must increase strictly; a non-uniform step is
-allowed and noted. :func:`format_plain` writes the two-column form back with exact floats.
+allowed and noted. :func:`format_plain` writes the two-column form back with exact floats, its
+unit (``# units: g``) and its warnings (``# warning:``, read back as warnings).
 """
 
 from __future__ import annotations
 
 import re
+from dataclasses import replace
 from decimal import Decimal
 from typing import NamedTuple
 
@@ -36,7 +39,12 @@ COMMENT = "#"
 UNIFORM_RTOL = 1e-9
 #: The sample count in a comment line (``# npts: 1201``, written by ``rock record convert``).
 _NPTS_COMMENT = re.compile(r"#\s*npts\s*:\s*(\S+)\s*", re.IGNORECASE | re.ASCII)
-#: Longest comment line searched for ``# npts:`` [characters] (keeps the pattern linear).
+#: The unit in a comment line (``# units: m/s2``; ``unit``, ``=`` and any case accepted).
+_UNITS_COMMENT = re.compile(r"#\s*units?\s*[:=]\s*(.*?)\s*", re.IGNORECASE | re.ASCII)
+#: A warning in a comment line (``# warning: ...``, written by ``rock record convert``).
+WARNING_COMMENT = "# warning:"
+#: Longest comment line searched for ``# npts:`` or ``# units:`` [characters] (keeps the
+#: patterns linear).
 MAX_COMMENT_CHARS = 200
 #: Digits of time written by :func:`format_plain` beyond those of dt, never more than this.
 MAX_TIME_DECIMALS = 17
@@ -98,6 +106,84 @@ def declared_count(lines: list[str], *, file: str) -> int | None:
         if found:
             return parse_count(found.group(1), file=file, where=f"line {number} (# npts)")
     return None
+
+
+def _header(lines: list[str]) -> list[tuple[int, str]]:
+    """(line number, stripped text) of the comment lines before the first data line."""
+    found = []
+    for number, line in enumerate(lines, start=1):
+        if _is_data(line):
+            break
+        if line.strip():
+            found.append((number, line.strip()))
+    return found
+
+
+class DeclaredUnit(NamedTuple):
+    """The unit a ``# units:`` line declares, where, and as written."""
+
+    unit: AccelUnit
+    where: str
+    token: str
+
+
+def declared_unit(lines: list[str], *, file: str) -> DeclaredUnit | None:
+    """The unit of the ``# units:`` lines before the data, if any (they must agree).
+
+    The spelling is that of ``--units`` (:func:`rockcli.units.parse_unit`: g, m/s2, m/s^2,
+    m/s², cm/s2, cm/s^2, gal…, any case); an unknown unit is an error naming the line.
+    """
+    declared: DeclaredUnit | None = None
+    for number, text in _header(lines):
+        found = _UNITS_COMMENT.fullmatch(text[:MAX_COMMENT_CHARS])
+        if found is None:
+            continue
+        where = f"line {number} (# units)"
+        unit = DeclaredUnit(
+            parse_unit(found.group(1), file=file, where=where), where, found.group(1)
+        )
+        if declared is not None and unit.unit is not declared.unit:
+            raise InputError(
+                f"a second '# units:' line contradicts the {declared.where}",
+                file=file,
+                where=where,
+                value=unit.token,
+                allowed=f"one unit for the file ({declared.token}, as the first line says)",
+            )
+        declared = declared or unit
+    return declared
+
+
+def record_unit(
+    option: str | AccelUnit | None, declared: DeclaredUnit | None, *, file: str
+) -> tuple[AccelUnit, bool]:
+    """(the unit to read the values in, whether it was declared) from --units and the file.
+
+    A ``# units:`` line and ``--units`` must agree (a contradiction is an error naming both:
+    which of them is the slip cannot be told); without either, g is assumed (not declared).
+    """
+    given = parse_unit(str(option), file=file, where="units") if option else None
+    if declared is None:
+        return (given or AccelUnit.G), given is not None
+    if given is not None and given is not declared.unit:
+        raise InputError(
+            f"--units {given} contradicts the file's '# units: {declared.token}' line",
+            file=file,
+            where=declared.where,
+            value=str(option),
+            allowed=f"no --units (the file declares {declared.unit}), or --units {declared.unit}",
+        )
+    return declared.unit, True
+
+
+def header_warnings(lines: list[str]) -> tuple[str, ...]:
+    """The ``# warning:`` lines before the data (a file rock wrote keeps its warnings)."""
+    size = len(WARNING_COMMENT)
+    return tuple(
+        text[size:].strip()
+        for _, text in _header(lines)
+        if text[:size].lower() == WARNING_COMMENT and text[size:].strip()
+    )
 
 
 def _check_declared(rows: list[Row], declared: int | None, *, file: str) -> None:
@@ -185,7 +271,9 @@ def _time_step(time: np.ndarray) -> tuple[float, tuple[str, ...]]:
     return dt, (note,)
 
 
-def _two_column_record(rows: list[Row], unit: AccelUnit, *, name: str, source: str) -> Record:
+def _two_column_record(
+    rows: list[Row], unit: AccelUnit, *, declared: bool, name: str, source: str
+) -> Record:
     """A Record from (t, a) rows: time strictly increasing and re-zeroed, dt = median spacing."""
     if len(rows) < 2:
         raise InputError(
@@ -206,12 +294,13 @@ def _two_column_record(rows: list[Row], unit: AccelUnit, *, name: str, source: s
             dt=dt,
             unit=str(unit),
             notes=(*notes, *step_notes),
+            unit_declared=declared,
         )
     )
 
 
 def _one_column_record(
-    rows: list[Row], unit: AccelUnit, dt: float | None, *, name: str, source: str
+    rows: list[Row], unit: AccelUnit, dt: float | None, *, declared: bool, name: str, source: str
 ) -> Record:
     """A Record from one value a line, sampled at t = i·dt."""
     if dt is None:
@@ -224,7 +313,13 @@ def _one_column_record(
     values = np.array([row.values[0] for row in rows], dtype=float)
     dt = check_dt(dt, file=source, where="dt")
     return uniform_record(
-        values, dt=dt, unit=unit, fmt=RecordFormat.PLAIN, name=name, source=source
+        values,
+        dt=dt,
+        unit=unit,
+        fmt=RecordFormat.PLAIN,
+        name=name,
+        source=source,
+        unit_declared=declared,
     )
 
 
@@ -243,20 +338,22 @@ def parse_plain(
         name: label of the record (usually the file stem).
         source: the file as the user named it (used in every error).
         dt: time step [s]; required for one column, refused for two (the time column rules).
-        units: unit of the acceleration column ("g", "m/s2", "cm/s2"); default g.
+        units: unit of the acceleration column ("g", "m/s2", "cm/s2"); None: the file's
+            ``# units:`` line, else g (assumed, not declared: a PGA above 1 g warns).
 
     Raises:
         InputError: a token that is not a finite number, ragged columns, time not strictly
-            increasing, a missing or superfluous dt, an unknown unit, a count different from
-            the ``# npts:`` comment, a last number that may be cut.
+            increasing, a missing or superfluous dt, an unknown unit, ``units`` that
+            contradicts the file's ``# units:`` line, a count different from the ``# npts:``
+            comment, a last number that may be cut.
     """
-    unit = parse_unit(str(units or AccelUnit.G), file=source, where="units")
     lines = split_lines(text)
+    unit, declared = record_unit(units, declared_unit(lines, file=source), file=source)
     rows = read_rows(lines, file=source)
     _check_declared(rows, declared_count(lines, file=source), file=source)
     if len(rows[0].values) == 1:
-        return _one_column_record(rows, unit, dt, name=name, source=source)
-    if dt is not None:
+        record = _one_column_record(rows, unit, dt, declared=declared, name=name, source=source)
+    elif dt is not None:
         raise InputError(
             "dt is given by the time column of a two-column file",
             file=source,
@@ -264,7 +361,12 @@ def parse_plain(
             value=dt,
             allowed="no dt for a two-column file",
         )
-    return _two_column_record(rows, unit, name=name, source=source)
+    else:
+        record = _two_column_record(rows, unit, declared=declared, name=name, source=source)
+    carried = header_warnings(lines)
+    if not carried:
+        return record
+    return replace(record, warnings=tuple(dict.fromkeys((*carried, *record.warnings))))
 
 
 def _one_line(text: str) -> str:

@@ -27,6 +27,9 @@ class Record:
         event: the earthquake as the file's header names it ("" when the format has none).
         station: the recording station as the header names it ("" when absent).
         component: the component or stream as the header names it ("" when absent).
+        unit_declared: False when nothing declared the unit and g was assumed (a plain-text
+            file read without ``--units`` and without a ``# units:`` line); True when a header
+            or the user stated it, and for generated records.
     """
 
     name: str
@@ -41,6 +44,7 @@ class Record:
     event: str = ""
     station: str = ""
     component: str = ""
+    unit_declared: bool = True
 
     @property
     def npts(self) -> int:

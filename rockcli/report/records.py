@@ -31,6 +31,7 @@ def record_document(rec: Record) -> dict[str, Any]:
         "pga_g": rec.pga,
         "t_pga": rec.t_pga,
         "unit": rec.unit,
+        "unit_declared": rec.unit_declared,
         "event": rec.event,
         "station": rec.station,
         "component": rec.component,
@@ -55,7 +56,7 @@ def record_table(doc: dict[str, Any]) -> Table:
             ("source", doc["source"], "", ""),
             ("format", doc["format"], "", ""),
             *origin,
-            ("unit in file", SYMBOLS.get(doc["unit"], doc["unit"]), "", ""),
+            ("unit in file", unit_label(doc), "", ""),
             ("samples", doc["npts"], "", "{:d}"),
             ("dt", doc["dt"], "s", "{:.6g}"),
             ("duration", doc["duration"], "s", "{:.6g}"),
@@ -63,6 +64,12 @@ def record_table(doc: dict[str, Any]) -> Table:
             ("time of PGA", doc["t_pga"], "s", "{:.6g}"),
         ],
     )
+
+
+def unit_label(doc: dict[str, Any]) -> str:
+    """The unit the values were read in, "(assumed)" when nothing declared it."""
+    label = SYMBOLS.get(doc["unit"], doc["unit"])
+    return label if doc.get("unit_declared", True) else f"{label} (assumed)"
 
 
 def record_notes(doc: dict[str, Any], *, named: bool = False) -> tuple[str, ...]:

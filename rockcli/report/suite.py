@@ -127,6 +127,7 @@ def suite_report(doc: dict[str, Any]) -> Report:
         tables=(records_table(doc), target_table(doc), compatibility_table(doc)),
         notes=tuple(notes),
         verdict=verdict,
+        warnings=tuple(doc.get("warnings", ())),
     )
 
 
@@ -216,7 +217,7 @@ def suite_assessment_document(sa: SuiteAssessment) -> dict[str, Any]:
         "suite_name": sa.suite,
         "input": sa.rows[0].get("input", "ground") if sa.rows else "ground",
         "suite": history_document(sa.measure, sa.rows, sa.compatibility),
-        "warnings": [],
+        "warnings": list(sa.warnings),
     }
 
 

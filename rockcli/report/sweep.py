@@ -163,6 +163,7 @@ def sweep_report(doc: dict[str, Any]) -> Report:
         title=f"rock sweep — {doc['name']}",
         tables=tuple(tables),
         notes=tuple(n for n in notes if n),
+        warnings=tuple(doc.get("warnings", ())),
     )
 
 

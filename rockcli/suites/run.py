@@ -89,6 +89,15 @@ class SuiteCheck:
     scaled: Compatibility | None
     at_height: FloorCheck | None = None
 
+    @property
+    def warnings(self) -> tuple[str, ...]:
+        """Every record's warnings (a PGA that suggests a unit slip…), each after its name."""
+        return tuple(
+            f"{entry.name}: {warning}"
+            for entry, record in zip(self.settings.entries, self.records, strict=True)
+            for warning in record.warnings
+        )
+
 
 def run_suite_check(
     settings: SuiteSettings,
@@ -178,6 +187,7 @@ def suite_document(result: SuiteCheck) -> dict[str, Any]:
             for e, r, sa in zip(s.entries, result.records, result.spectra.tolist(), strict=True)
         ],
         "at_height": None,
+        "warnings": list(result.warnings),
     }
     if result.at_height is not None:
         h = result.at_height

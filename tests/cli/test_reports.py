@@ -179,4 +179,4 @@ def test_a_record_warning_reaches_the_assess_document(tmp_path: Path) -> None:
     rec = tmp_path / "ms2.txt"
     rec.write_text("".join(f"{0.01 * i:.2f} {24.5 if i == 5 else 0.0}\n" for i in range(20)))
     doc = as_json("assess", ALTAR, "--record", str(rec))
-    assert any("check --units" in w for w in doc["warnings"]), doc["warnings"]
+    assert any("check the unit" in w and "--units" in w for w in doc["warnings"]), doc["warnings"]

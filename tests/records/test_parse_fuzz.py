@@ -3,7 +3,9 @@
 * it returns a Record or raises one InputError (never a raw ValueError/IndexError);
 * a Record has finite, strictly increasing times, a finite duration and finite accelerations
   bounded by MAX_ABS_ACCEL_G;
-* a valid file cut anywhere never yields a Record with the declared count but other values.
+* a valid file cut anywhere never yields a Record with the declared count but other values;
+* a plain file's ``# units:`` line reads the values as ``--units`` would, and a ``--units``
+  that contradicts it is always an error.
 
 The alphabet holds the characters of the record headers, so hypothesis reaches deep into every
 reader. Bounded (max_examples, no deadline) so the module runs in a few seconds.
@@ -21,9 +23,15 @@ from rockcli.records.lines import MAX_ABS_ACCEL_G
 from rockcli.records.parse import parse_text
 from rockcli.records.record import Record
 
-ALPHABET = "0123456789 .-+eE:\n\r#NPTSDTUNITSOFGnaif,=()"
+ALPHABET = "0123456789 .-+eE:\n\r#NPTSDTUNITSOFGnaif,=()ms/c^²"
 HEADERS = st.sampled_from([
     "",
+    "# units: m/s2\n",
+    "# units: CM/S^2\n",
+    "#units=g\n# npts: 3\n",
+    "# units: m/s\n",
+    "# units:\n",
+    "# units: g\n# units: gal\n",
     "A\nB\nACCELERATION IN UNITS OF G\nNPTS= 3, DT= .01 SEC\n",
     "A\nB\nThe units are (g)\n3  0.01  NPTS, DT\n",
     "EVENT_NAME: X\nEVENT_ID: Y\nSAMPLING_INTERVAL_S: 0.01\nNDATA: 3\nUNITS: cm/s^2\n",
@@ -34,13 +42,48 @@ HEADERS = st.sampled_from([
 @settings(max_examples=300, deadline=None)
 @given(head=HEADERS, body=st.text(alphabet=ALPHABET, max_size=200),
        fmt=st.sampled_from([None, "at2", "esm", "coracc", "plain"]),
-       dt=st.sampled_from([None, 0.01, -1.0, float("nan")]))  # fmt: skip
-def test_readers_raise_only_input_error(head: str, body: str, fmt: str | None, dt: float) -> None:
+       dt=st.sampled_from([None, 0.01, -1.0, float("nan")]),
+       units=st.sampled_from([None, "g", "m/s2", "cm/s^2", "furlong"]))  # fmt: skip
+def test_readers_raise_only_input_error(
+    head: str, body: str, fmt: str | None, dt: float, units: str | None
+) -> None:
     try:
-        record = parse_text(head + body, fmt=fmt, dt=dt)
+        record = parse_text(head + body, fmt=fmt, dt=dt, units=units)
     except InputError:
         return
     check_invariants(record)
+
+
+UNITS = ["g", "m/s2", "cm/s2"]
+#: Spellings a ``# units:`` line may use for each unit (rockcli.units.parse_unit).
+SPELLINGS = {"g": ["g", "G"], "m/s2": ["m/s2", "M/S^2", "m/s²"], "cm/s2": ["cm/s^2", "gal"]}
+
+
+@settings(max_examples=200, deadline=None)
+@given(values=st.lists(st.floats(-50.0, 50.0, allow_nan=False), min_size=2, max_size=12),
+       declared=st.sampled_from(UNITS), spelling=st.integers(0, 2),
+       option=st.sampled_from([None, *UNITS]), comments=st.sampled_from(["", "# x\n"]))  # fmt: skip
+def test_the_units_line_reads_as_the_option_would(
+    values: list[float], declared: str, spelling: int, option: str | None, comments: str
+) -> None:
+    """A ``# units:`` line gives the record ``--units`` gives for the bare file (the same
+    floats: the same product); ``--units`` naming another unit is an error, never a read."""
+    body = "".join(f"{0.01 * i:.2f} {v!r}\n" for i, v in enumerate(values))
+    names = SPELLINGS[declared]
+    text = f"{comments}# units: {names[spelling % len(names)]}\n{body}"
+    try:
+        bare = parse_text(body, units=declared)
+    except InputError:  # beyond 100 g in this unit: the declared file must fail alike
+        with pytest.raises(InputError):
+            parse_text(text)
+        return
+    if option is not None and option != declared:
+        with pytest.raises(InputError, match="contradicts"):
+            parse_text(text, units=option)
+        return
+    record = parse_text(text, units=option)
+    assert record.unit == declared and record.unit_declared
+    assert np.array_equal(record.accel, bare.accel)
 
 
 def check_invariants(record: Record) -> None:

@@ -14,8 +14,8 @@ from rockcli.cli.main import cli
 
 #: Keys of each record of the `record info --format json` document (schema 2).
 INFO_KEYS = {
-    "name", "source", "format", "npts", "dt", "duration", "pga_g", "t_pga", "unit", "event",
-    "station", "component", "notes", "warnings",
+    "name", "source", "format", "npts", "dt", "duration", "pga_g", "t_pga", "unit",
+    "unit_declared", "event", "station", "component", "notes", "warnings",
 }  # fmt: skip
 
 
@@ -126,4 +126,4 @@ def test_info_shows_warnings_under_the_table(write_file: Callable[[str, str], Pa
     assert code == 0 and "warning: PGA 24.5 g" in out.replace("\n", " ")
     code, out, _ = run("record", "info", str(path), "--format", "json")
     (data,) = json.loads(out)["records"]
-    assert len(data["warnings"]) == 1 and "check --units" in data["warnings"][0]
+    assert len(data["warnings"]) == 1 and "check the unit" in data["warnings"][0]

@@ -278,10 +278,13 @@ def test_rock_plain_output_cut_at_a_line_boundary() -> None:
 
 
 def test_pga_above_3_g_warns_with_the_fix() -> None:
-    record = parse_text("0 24.5\n0.01 -12\n0.02 1.2\n")  # m/s² values read as g
+    """Declared g (--units g): a PGA above 3 g warns; undeclared, above 1 g (issue 19)."""
+    record = parse_text("0 24.5\n0.01 -12\n0.02 1.2\n", units="g")  # m/s² values read as g
     (warning,) = record.warnings
-    assert "PGA 24.5 g" in warning and "check --units" in warning
-    assert parse_text("0 2.45\n0.01 -1.2\n0.02 0.12\n").warnings == ()
+    assert "PGA 24.5 g is above 3 g" in warning and "check --units" in warning
+    assert parse_text("0 2.45\n0.01 -1.2\n0.02 0.12\n", units="g").warnings == ()
+    (warning,) = parse_text("0 24.5\n0.01 -12\n0.02 1.2\n").warnings
+    assert "PGA 24.5 g is above 1 g" in warning and "check the unit" in warning
 
 
 def test_cm_read_as_g_is_beyond_the_bound_and_names_the_fix() -> None:

@@ -8,11 +8,14 @@ likely slip. On main there was no such function, hence no warning at all.
 from __future__ import annotations
 
 import copy
+import json
 import math
+import tomllib
 from pathlib import Path
 from typing import Any
 
 import pytest
+import tomli_w
 
 from rockcli.errors import InputError
 from rockcli.model.load import load_model, validate_model
@@ -112,3 +115,112 @@ def test_tie_rod_diameter_in_millimetres() -> None:
 def test_gravity_in_other_units(g: float) -> None:
     (found,) = warnings_of(analysis={"g": g})
     assert found.startswith(f"analysis.g = {g:g} m/s²")
+
+
+# Issue 19, item 4: a restrainer typed in kN where N is asked ----------------------------------
+
+#: The issue's restrainer on the 108 kN wall (0.5 × 4 × 3 m at 18 kN/m³, WALL), typed in kN
+#: where N is asked: meant 80 kN yield, 60 kN anchor and 2.2e7 N/m (the paper's Ø 20 mm rod,
+#: Table 2), given as 80, 60 and 2.2e4.
+KN_SLIP: dict[str, Any] = {
+    "name": "tie",
+    "k": 2.2e4,
+    "yield_pos": 80.0,
+    "yield_neg": 80.0,
+    "anchor_capacity": 60.0,
+    "position": "top",
+}
+FACADE = ROOT / "examples" / "facade.toml"
+
+
+def facade_with(index: int, **changes: Any) -> tuple[str, ...]:
+    """The warnings of examples/facade.toml with restrainer ``index`` changed."""
+    table = tomllib.loads(FACADE.read_text(encoding="utf-8"))
+    table["restrainers"][index].update(changes)
+    return model_warnings(validate_model(table))
+
+
+def test_restrainer_forces_in_kn_warn_and_state_the_bound() -> None:
+    # At the top, z = 2h = 4 m: W·b/z = 108 kN · 0.25 m / 4 m = 6750 N, and 2 % of it 135 N.
+    (found,) = warnings_of(restrainers=[KN_SLIP])
+    assert found.startswith(
+        "restrainers[0]: yield_pos = 80 N, yield_neg = 80 N, anchor_capacity = 60 N, below 2% "
+        "of W·b/z = 6750 N"
+    )
+    assert "z = 4 m" in found and "W = 108 kN" in found and "in kN where N is asked" in found
+
+
+def test_the_same_restrainer_in_newtons_does_not_warn() -> None:
+    tie = {**KN_SLIP, "k": 2.2e7, "yield_pos": 80e3, "yield_neg": 80e3, "anchor_capacity": 60e3}
+    assert warnings_of(restrainers=[tie]) == ()
+
+
+@pytest.mark.parametrize(("height", "warned"), [(1.0, True), (4.0, False)])
+def test_the_strength_bound_follows_the_height(height: float, warned: bool) -> None:
+    # 500 N: below 2 % of 108 kN · 0.25 m / 1 m = 27 kN (540 N) at z = 1 m, above 2 % of
+    # 6.75 kN (135 N) at z = 4 m.
+    tie = {"k": 2.2e7, "anchor_capacity": 500.0, "height": height, "from_pivot": 0.25}
+    found = warnings_of(restrainers=[tie])
+    assert bool(found) is warned
+    if warned:
+        assert "anchor_capacity = 500 N, below 2% of W·b/z = 2.7e+04 N" in found[0]
+
+
+def test_a_tie_rod_too_thin_for_its_block_warns_with_its_design_strength() -> None:
+    # Ø 2 mm S275: N_pl,Rd = π·(0.001 m)²·275 MPa / 1.05 = 822.8 N (NTC 2018 §4.2.4.1.2);
+    # the façade (1755 kN, b = 5.04·sin 0.05 = 0.2519 m) at z = 7·cos 0.072 = 6.982 m:
+    # W·b/z = 1755 kN · 0.2519 m / 6.982 m = 63.32 kN, 2 % = 1266 N. Its stiffness, 2.2e5 N/m,
+    # still gives c_K/c_E = 2.2e5·7²/(1755e3·5.04) = 1.2.
+    (found,) = facade_with(1, diameter=0.002)
+    assert found.startswith("restrainers[1]: its design yield force N_pl,Rd = 822.8 N, below 2%")
+    assert "W·b/z = 6.332e+04 N" in found
+
+
+def test_a_stiffness_in_kn_per_mm_warns() -> None:
+    # The vault's 4e6 N/m typed in kN/mm (4): c_K/c_E = K·r²/(W·R) = 4·7²/(1755e3·5.04)
+    # = 2.22e-05, below 1e-3, the same on both sides (radius and angle fix r on both).
+    (found,) = facade_with(0, k=4.0)
+    assert found.startswith("restrainers[0]: stiffness K = 4 N/m (both sides) gives c_K/c_E")
+    assert "= 2.22e-05, below 0.001" in found
+
+
+def test_the_papers_softest_springs_do_not_warn() -> None:
+    """§4.4's grid (examples/studies/paper-4.4.toml): K = 1e3, 1e4, 1e6 N/m at the top of
+    walls 3 m wide at 18 kN/m³, R = 1.5–10 m, α = 0.05–0.25 rad. Its smallest c_K/c_E =
+    4KR/W is K = 1e3 on R = 10, α = 0.25: W = 18e3·(2R sin α)(2R cos α)·3 = 5.18e6 N, so
+    0.0077, above the 1e-3 bound."""
+    W = 18e3 * (2 * 10 * math.sin(0.25)) * (2 * 10 * math.cos(0.25)) * 3
+    assert 4 * 1e3 * 10 / W == pytest.approx(0.0077, abs=5e-5)
+    for R in (1.5, 2.0, 2.5, 3.0, 3.5, 7.0, 10.0):
+        for alpha in (0.05, 0.10, 0.15, 0.25):
+            for k in (1e3, 1e4, 1e6):
+                spring = {"position": "top", "k_pos": k, "k_neg": k}
+                geometry = {"R": R, "alpha": alpha, "width": 3.0}
+                assert warnings_of(geometry=geometry, restrainers=[spring]) == (), (R, alpha, k)
+
+
+MODELS = sorted(
+    [*(ROOT / "examples" / "validation" / "models").glob("*.toml"),
+     *(ROOT / "examples" / "studies").glob("*-wall.toml")]
+)  # fmt: skip
+
+
+@pytest.mark.parametrize("path", MODELS, ids=[p.name for p in MODELS])
+def test_study_and_validation_models_give_no_warning(path: Path) -> None:
+    assert model_warnings(load_model(path)) == ()
+
+
+def test_the_restrainer_warning_reaches_the_assess_table_and_json(tmp_path: Path) -> None:
+    from click.testing import CliRunner
+
+    from rockcli.cli.main import cli
+
+    model = tmp_path / "kn.toml"
+    model.write_text(tomli_w.dumps({**copy.deepcopy(WALL), "restrainers": [KN_SLIP]}))
+    pulse = str(next((ROOT / "records").glob("*.txt")))
+    args = ["assess", str(model), "--record", pulse]
+    result = CliRunner().invoke(cli, [*args, "--format", "json"])
+    assert result.exit_code == 0, result.stderr
+    assert any("anchor_capacity = 60 N" in w for w in json.loads(result.stdout)["warnings"])
+    result = CliRunner().invoke(cli, args)
+    assert "warning: restrainers[0]: yield_pos = 80 N" in result.stdout

@@ -19,7 +19,8 @@ if TYPE_CHECKING:
 @dataclass(frozen=True)
 class SuiteAssessment:
     """The model's name and kind, the suite's name, every record's row (run.record_row), the
-    code's rule over them, and the compatibility of the suite (passed, range, ratios)."""
+    code's rule over them, the compatibility of the suite (passed, range, ratios), and the
+    warnings of the model and of the records (a unit slip)."""
 
     name: str
     kind: str
@@ -27,6 +28,7 @@ class SuiteAssessment:
     rows: list[dict[str, Any]]
     measure: SuiteMeasure
     compatibility: dict[str, Any]
+    warnings: tuple[str, ...] = ()
 
 
 @dataclass(frozen=True)
@@ -91,6 +93,7 @@ def assess_loaded(
     progress: Callable[[int, int], None] | None = None,
 ) -> SuiteAssessment:
     """:func:`assess_suite` on a model and suite already read."""
+    from rockcli.model.plausible import model_warnings
     from rockcli.studies.sweep.executor import local_executor
     from rockcli.suites.run import check_numbers
 
@@ -113,7 +116,10 @@ def assess_loaded(
         "min_ratio": numbers["min_ratio"],
         "max_ratio": numbers["max_ratio"],
     }
-    return SuiteAssessment(model.name, str(model.kind), settings.name, rows, measure, compatibility)
+    warnings = (*model_warnings(model), *loaded.check.warnings)
+    return SuiteAssessment(
+        model.name, str(model.kind), settings.name, rows, measure, compatibility, warnings
+    )
 
 
 def limit_for(model: Any, limit_state: str) -> float:

@@ -227,6 +227,7 @@ def record_facts(plan: StudyPlan) -> tuple[list[int], dict[str, dict[str, Any]]]
             "pga_g": record.pga,
             "npts": record.npts,
             "duration_s": record.duration,
+            "warnings": list(record.warnings),
         }
     return npts, facts
 

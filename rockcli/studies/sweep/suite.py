@@ -76,6 +76,7 @@ def suite_facts(source: RecordSource, grid_file: str | None) -> tuple[int, dict[
         "min_ratio": numbers["min_ratio"],
         "max_ratio": numbers["max_ratio"],
         "npts": suite.npts,
+        "warnings": list(check.warnings),
     }
 
 

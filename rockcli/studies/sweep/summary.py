@@ -154,7 +154,7 @@ def summarize(
 
     Args:
         plan: the study. rows: every case with its typed result columns.
-        records: per record name, its pga_g, npts, duration_s, path.
+        records: per record name, its pga_g, npts, duration_s, path, warnings.
         run: facts of this run (out, wall_time_s, computed, resumed, jobs, scheduler).
     """
     analyses = plan.analyses
@@ -214,6 +214,11 @@ def summarize(
         "by_record_alpha": alpha_rows,
         "by_axis_alpha": axis_rows,
         **run,
+        "warnings": [
+            f"record {name}: {warning}"
+            for name, fact in records.items()
+            for warning in fact.get("warnings", ())
+        ],
     }
 
 
