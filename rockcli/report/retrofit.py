@@ -19,6 +19,10 @@ INPUTS = {
 }
 #: Newtons per kilonewton (the tables show kN, the JSON N).
 N_PER_KN = 1000.0
+#: What the max θ/α cell says for a block that overturns: its ratio is then the overturning
+#: angle over α (π/2/α by default), a number that says nothing about the retrofit. The JSON
+#: keeps the number and the "overturned" flag.
+OVERTURNED = "overturned"
 
 
 def retrofit_document(
@@ -72,7 +76,6 @@ COLUMNS = (
     Column("code_zeta", "code ULS ζ", "", "{:.3f}"),
     Column("code_uls", "code ULS"),
     Column("max_ratio", "max θ/α", "", "{:.4f}"),
-    Column("overturned", "overturned"),
     Column("max_force", "peak force", "kN", "{:.4g}"),
     Column("utilisation", "utilisation", "", "{:.3f}"),
     Column("ruptured", "ruptured"),
@@ -80,7 +83,8 @@ COLUMNS = (
 
 
 def table_row(row: dict[str, Any]) -> dict[str, Any]:
-    """One candidate in the table's units (mm, kN/m, kN)."""
+    """One candidate in the table's units (mm, kN/m, kN); "overturned" for the max θ/α of
+    a block that overturns."""
     passed = row["code_uls_passed"]
     return {
         **row,
@@ -88,6 +92,7 @@ def table_row(row: dict[str, Any]) -> dict[str, Any]:
         "K": row["K"] / N_PER_KN,
         "strength": None if row["strength"] is None else row["strength"] / N_PER_KN,
         "code_uls": "not evaluated" if passed is None else ("pass" if passed else "fail"),
+        "max_ratio": OVERTURNED if row["overturned"] else row["max_ratio"],
         "max_force": row["max_force"] / N_PER_KN,
     }
 
