@@ -234,19 +234,21 @@ def wrap_text(text: str, width: int, *, indent: int = 0) -> str:
     ``indent`` blanks; a longer word broken after ``.-/_`` where it can be, else at the
     width. A word that reads as a number is never broken (a table's caller gives a width of
     at least its length; a line of text is wider than any number)."""
+    room = max(width - indent, 1)  # of a later line, after its indent
     lines: list[str] = []
     for paragraph in text.splitlines() or [""]:
-        line, limit = "", width
+        done: list[str] = []
+        line = ""
         for word in paragraph.split():
-            whole = NUMBER_WORD.fullmatch(word) or cell_len(word) <= limit
-            for piece in [word] if whole else break_word(word, max(limit, 1)):
+            whole = NUMBER_WORD.fullmatch(word) or cell_len(word) <= room
+            for piece in [word] if whole else break_word(word, room):
                 joined = f"{line} {piece}" if line else piece
-                if cell_len(joined) <= limit or not line:
-                    line = joined
-                    continue
-                lines.append(line if limit == width else " " * indent + line)
-                line, limit = piece, max(width - indent, 1)
-        lines.append(line if limit == width else " " * indent + line)
+                if line and cell_len(joined) > (room if done else width):
+                    done.append(line)
+                    joined = piece
+                line = joined
+        done.append(line)
+        lines += [done[0], *(" " * indent + later for later in done[1:])]
     return "\n".join(lines)
 
 

@@ -73,12 +73,12 @@ COLUMNS = (
     Column("d", "d", "mm", "{:g}"),
     Column("K", "K", "kN/m", "{:.0f}"),
     Column("strength", "strength", "kN", "{:.4g}"),
-    Column("code_zeta", "code ULS ζ", "", "{:.3f}"),
+    Column("code_zeta", "code ULS ζ", "", "{:.3f}", short="ζ"),
     Column("code_uls", "code ULS"),
     Column("max_ratio", "max θ/α", "", "{:.4f}"),
     Column("max_force", "peak force", "kN", "{:.4g}"),
-    Column("utilisation", "utilisation", "", "{:.3f}"),
-    Column("ruptured", "ruptured"),
+    Column("utilisation", "utilisation", "", "{:.3f}", short="use"),
+    Column("ruptured", "ruptured", short="rupt."),
 )
 
 
