@@ -5,6 +5,7 @@ from __future__ import annotations
 import click
 
 from rockcli.cli.exits import EXIT_GATE
+from rockcli.cli.inputs import InputPath, RockCommand
 from rockcli.cli.options import (
     announce_written,
     check_outputs,
@@ -27,8 +28,8 @@ from rockcli.cli.plot_option import plot_option
 EXIT_OVERTURNS = EXIT_GATE
 
 
-@click.command()
-@click.argument("model_path", metavar="MODEL", type=click.Path(dir_okay=False))
+@click.command(cls=RockCommand, short_help="Rocking time history of MODEL on a record or a suite.")
+@click.argument("model_path", metavar="MODEL", type=InputPath())
 @with_record_options(required=False)
 @suite_option(
     "A record suite file (TOML; rock suite check), or a folder of records with --target: "

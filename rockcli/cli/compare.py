@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import click
 
+from rockcli.cli.inputs import InputPath, RockCommand
 from rockcli.cli.options import (
     announce_written,
     check_hazard_grid,
@@ -53,8 +54,10 @@ def refuse_record_demand(record_demand: bool) -> None:
         )
 
 
-@click.command()
-@click.argument("model_path", metavar="MODEL", type=click.Path(dir_okay=False))
+@click.command(
+    cls=RockCommand, short_help="Code check and rocking time history of MODEL, side by side."
+)
+@click.argument("model_path", metavar="MODEL", type=InputPath())
 @with_record_options(required=False)
 @suite_option(
     "A record suite file (TOML; rock suite check), or a folder of records with --target: "

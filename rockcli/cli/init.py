@@ -6,11 +6,16 @@ from pathlib import Path
 
 import click
 
+from rockcli.cli.inputs import RockCommand
 from rockcli.cli.options import announce_written, force_option
 from rockcli.model.schema import Kind
 
 
-@click.command("init")
+@click.command(
+    "init",
+    cls=RockCommand,
+    short_help="Write a commented model-file template (wall, altar, facade).",
+)
 @click.argument("kind", type=click.Choice([k.value for k in Kind]))
 @click.option(
     "-o",

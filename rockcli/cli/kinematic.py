@@ -5,6 +5,7 @@ from __future__ import annotations
 import click
 
 from rockcli.cli.exits import EXIT_GATE
+from rockcli.cli.inputs import InputPath, RockCommand
 from rockcli.cli.options import (
     announce_written,
     check_hazard_grid,
@@ -44,8 +45,10 @@ def _site(value: str | None, record_path: str | None) -> tuple[float, float] | N
     return lon, lat
 
 
-@click.command()
-@click.argument("model_path", metavar="MODEL", type=click.Path(dir_okay=False))
+@click.command(
+    cls=RockCommand, short_help="NTC kinematic check of MODEL: α0, a0*, capacity curve, DLS, ULS."
+)
+@click.argument("model_path", metavar="MODEL", type=InputPath())
 @edition_option
 @with_record_options(required=False)
 @click.option(

@@ -11,6 +11,7 @@ Command modules keep numpy, scipy and numba imports inside their functions, so t
 from __future__ import annotations
 
 import os
+import re
 import sys
 import traceback
 
@@ -57,6 +58,38 @@ def quiet_broken_pipe() -> None:
 INVOKED: tuple[str, ...] = ("rock",)
 
 
+class UsageLine(click.UsageError):
+    """click's own usage error (a missing argument, an unknown option, a value outside a
+    choice), shown as rock's errors are: one ``error:`` line, exit 2."""
+
+    def __init__(self, error: click.UsageError) -> None:
+        super().__init__(usage_line(error), error.ctx)
+
+    def show(self, file=None) -> None:
+        click.echo(self.message, err=True)
+
+
+def usage_line(error: click.UsageError) -> str:
+    """``error: what is wrong (usage: rock CMD [OPTIONS] ARGS)``: click's message, lower case
+    and without its final stop as rock's lines, then the command's usage."""
+    message = " ".join(error.format_message().split()).rstrip(".")
+    # One sentence: "No such option '--recrd'. Did you mean '--record'?" → "…'; did you …".
+    message = re.sub(r"\. ([A-Z])(?=[a-z])", lambda m: f"; {m[1].lower()}", message)
+    if message[1:2].islower():
+        message = message[0].lower() + message[1:]
+    if error.ctx is not None:
+        usage = " ".join(error.ctx.get_usage().split()).removeprefix("Usage: ")
+        message += f" (usage: {usage})"
+    return f"error: {printable(message)}"
+
+
+def _restyled(error: click.UsageError) -> click.UsageError:
+    """The usage error as a rock ``error:`` line; click's help on a bare group as it is."""
+    if isinstance(error, UsageLine | click.exceptions.NoArgsIsHelpError):
+        return error
+    return UsageLine(error)
+
+
 class RockGroup(click.Group):
     """click group that turns every exception into one line on stderr and its exit code."""
 
@@ -70,11 +103,19 @@ class RockGroup(click.Group):
         announce_compiling()
         return super().main(args, *rest, **kwargs)
 
+    def make_context(self, info_name, args, parent=None, **extra) -> click.Context:
+        try:
+            return super().make_context(info_name, args, parent, **extra)
+        except click.UsageError as exc:  # `rock --bogus`
+            raise _restyled(exc) from None
+
     def invoke(self, ctx: click.Context) -> object:
         try:
             result = super().invoke(ctx)
             sys.stdout.flush()  # a closed pipe shows here, inside the handler, not at exit
             return result
+        except click.UsageError as exc:  # a command's arguments: click's parser
+            raise _restyled(exc) from None
         except RockError as exc:
             # Several problems of one file (rockcli.model.load.InputErrors): one line each.
             for line in getattr(exc, "lines", None) or (str(exc),):

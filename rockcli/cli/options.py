@@ -4,6 +4,8 @@ from __future__ import annotations
 
 import click
 
+from rockcli.cli.inputs import InputPath
+
 output_format = click.option(
     "--format",
     "output",
@@ -38,19 +40,32 @@ engine_option = click.option(
     help="Rocking engine. fast: compiled DP5(4); reference: scipy DOP853 at rtol 1e-10 "
     "(slow, for checks).",
 )
+
+
+def _circular_year(ctx: click.Context, param: click.Parameter, value: str | None) -> str | None:
+    """--edition as the model file takes it: the code's year names its circular's (2008 →
+    2009, 2018 → 2019; rockcli.model.ntc.EDITION_ALIASES)."""
+    if value is None:
+        return None
+    from rockcli.model.ntc import EDITION_ALIASES
+
+    return EDITION_ALIASES.get(value, value)
+
+
 edition_option = click.option(
     "--edition",
-    type=click.Choice(["2009", "2019"]),
+    type=click.Choice(["2009", "2019", "2008", "2018"]),
     default=None,
+    callback=_circular_year,
     help="Override [ntc].edition: 2009 (NTC 2008 + Circ. 617/2009) or 2019 (NTC 2018 + "
-    "Circ. 7/2019).",
+    "Circ. 7/2019); 2008 and 2018, the code's years, mean the same as in the model file.",
 )
 
 
 def hazard_grid(help_text: str):
     """``--hazard-grid FILE``: the NTC Allegato B grid, with what it serves in the command."""
     return click.option(
-        "--hazard-grid", "grid_file", default=None, type=click.Path(dir_okay=False),
+        "--hazard-grid", "grid_file", default=None, type=InputPath(),
         help=help_text,
     )  # fmt: skip
 
@@ -62,7 +77,13 @@ hazard_grid_option = hazard_grid(
 
 def suite_option(help_text: str):
     """``--suite SUITE``: a suite file, or a folder of records (with --target)."""
-    return click.option("--suite", "suite_path", type=click.Path(), default=None, help=help_text)
+    return click.option(
+        "--suite",
+        "suite_path",
+        type=InputPath("either", folder_with="target"),
+        default=None,
+        help=help_text,
+    )
 
 
 target_option = click.option(
@@ -89,7 +110,7 @@ def record_options(required: bool) -> list:
             "--record",
             "record_path",
             required=required,
-            type=click.Path(dir_okay=False),
+            type=InputPath(),
             help="Accelerogram: PEER AT2, ESM ASCII, ITACA cor.acc or plain text"
             + ("." if required else " (its response spectrum becomes the demand)."),
         ),

@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import click
 
+from rockcli.cli.inputs import InputPath, RockCommands
 from rockcli.cli.options import (
     announce_written,
     force_option,
@@ -43,14 +44,16 @@ def _write_record(rec, output: str, detail: str) -> None:
     announce_written(output, detail)
 
 
-@click.group()
+@click.group(
+    cls=RockCommands, short_help="Records: inspect, convert, pulses, floor motion, spectra."
+)
 def record() -> None:
     """Ground-motion records: inspect, convert, generate a pulse, compute a floor motion or
     response spectra."""
 
 
-@record.command("info")
-@click.argument("files", nargs=-1, required=True, type=click.Path())
+@record.command("info", short_help="Format, header, samples, dt, duration and PGA of records.")
+@click.argument("files", nargs=-1, required=True, type=InputPath())
 @record_format
 @plain_dt
 @plain_units
@@ -92,8 +95,8 @@ def _window(value: str | None) -> tuple[float, float] | None:
     return t0, t1
 
 
-@record.command("convert")
-@click.argument("file", type=click.Path())
+@record.command("convert", short_help="Trim, resample, scale or flip a record into plain text.")
+@click.argument("file", type=InputPath())
 @record_format
 @plain_dt
 @plain_units
@@ -167,7 +170,7 @@ def _resample(rec, new_dt: float):
         ) from None
 
 
-@record.command("pulse")
+@record.command("pulse", short_help="Write a synthetic pulse KIND as a plain-text record.")
 @click.argument("kind", type=click.Choice([str(k) for k in PulseKind]))
 @click.option("--amplitude", type=float, required=True, help="Peak acceleration ap [g].")
 @click.option(
@@ -208,8 +211,10 @@ def pulse(
 MAX_PSI = 1.5
 
 
-@record.command("floor")
-@click.argument("file", type=click.Path())
+@record.command(
+    "floor", short_help="The floor acceleration at a height of a building, as plain text."
+)
+@click.argument("file", type=InputPath())
 @record_format
 @plain_dt
 @plain_units

@@ -7,6 +7,7 @@ import shlex
 
 import click
 
+from rockcli.cli.inputs import InputPath, RockCommand
 from rockcli.cli.options import (
     announce_written,
     check_outputs,
@@ -30,8 +31,8 @@ NEEDS = {"html": ("jinja2", "matplotlib"), "pdf": ("jinja2", "matplotlib", "typs
 EXTRA = "pip install 'rockcli[report]'"
 
 
-@click.command()
-@click.argument("model_path", metavar="MODEL", type=click.Path(dir_okay=False))
+@click.command(cls=RockCommand, short_help="The calculation report of MODEL, as HTML (and PDF).")
+@click.argument("model_path", metavar="MODEL", type=InputPath())
 @with_record_options(required=False)
 @suite_option(
     "A record suite file (TOML; rock suite check), or a folder of records with --target: the "

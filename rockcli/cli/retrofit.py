@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import click
 
+from rockcli.cli.inputs import InputPath, RockCommand
 from rockcli.cli.options import (
     announce_written,
     check_outputs,
@@ -23,8 +24,10 @@ from rockcli.cli.plot_option import plot_option
 EXIT_NONE = 1
 
 
-@click.command()
-@click.argument("model_path", metavar="MODEL", type=click.Path(dir_okay=False))
+@click.command(
+    cls=RockCommand, short_help="Size a tie-rod of MODEL by the code check and the time history."
+)
+@click.argument("model_path", metavar="MODEL", type=InputPath())
 @with_record_options()
 @click.option("--name", default=None, help="The model's tie-rod to size, when it has several.")
 @click.option(

@@ -10,6 +10,7 @@ import math
 
 import click
 
+from rockcli.cli.inputs import InputPath, RockCommand
 from rockcli.cli.options import (
     announce_written,
     check_outputs,
@@ -24,8 +25,10 @@ from rockcli.records.periods import GRID_COUNT, GRID_FIRST, GRID_LAST
 DAMPING_ALLOWED = "a fraction of critical, 0 < ζ < 1 (0.05 = 5 %)"
 
 
-@click.command("spectrum")
-@click.argument("files", nargs=-1, required=True, type=click.Path())
+@click.command(
+    "spectrum", cls=RockCommand, short_help="Elastic response spectra (Sa, Sd) of record FILES."
+)
+@click.argument("files", nargs=-1, required=True, type=InputPath())
 @record_format
 @plain_dt
 @plain_units

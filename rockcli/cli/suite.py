@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import click
 
+from rockcli.cli.inputs import InputPath, RockCommands
 from rockcli.cli.options import (
     announce_written,
     check_outputs,
@@ -15,13 +16,13 @@ from rockcli.cli.options import (
 from rockcli.cli.plot_option import plot_option
 
 
-@click.group()
+@click.group(cls=RockCommands, short_help="Record suites against the code's target spectrum.")
 def suite() -> None:
     """Record suites: a set of scaled records and their target spectrum (a TOML suite file)."""
 
 
-@suite.command()
-@click.argument("suite_path", metavar="SUITE", type=click.Path())
+@suite.command(short_help="Check a suite's mean spectrum against its target (NTC §3.2.3.6).")
+@click.argument("suite_path", metavar="SUITE", type=InputPath("either", folder_with="target"))
 @target_option
 @click.option(
     "--period",
@@ -42,7 +43,7 @@ def suite() -> None:
 @click.option(
     "--model",
     "model_path",
-    type=click.Path(dir_okay=False),
+    type=InputPath(),
     default=None,
     help="A model at height ([building] Z > 0): check the records' floor motions at its "
     "height against the code's floor spectrum there (what its rocking analysis runs on).",

@@ -10,6 +10,7 @@ from contextlib import contextmanager
 
 import click
 
+from rockcli.cli.inputs import InputPath, RockCommand
 from rockcli.cli.options import announce_written, hazard_grid_option, output_format
 from rockcli.cli.plot_option import plot_option
 
@@ -91,8 +92,10 @@ def terminate_as_interrupt() -> Iterator[None]:
         signal.signal(signal.SIGTERM, previous)
 
 
-@click.command()
-@click.argument("study_path", metavar="STUDY", type=click.Path(dir_okay=False))
+@click.command(
+    cls=RockCommand, short_help="Run a systemic study STUDY.toml in parallel, with its summary."
+)
+@click.argument("study_path", metavar="STUDY", type=InputPath())
 @click.option(
     "--out",
     "out",
@@ -134,7 +137,7 @@ def terminate_as_interrupt() -> Iterator[None]:
     default=None,
     envvar="ROCK_RECORDS_DIR",
     show_envvar=True,
-    type=click.Path(file_okay=False),
+    type=InputPath("folder"),
     help="Folder the study's record paths are relative to (replaces records_dir).",
 )
 @click.option(

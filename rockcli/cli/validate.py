@@ -5,18 +5,21 @@ from __future__ import annotations
 import click
 
 from rockcli.cli.exits import EXIT_GATE
+from rockcli.cli.inputs import InputPath, RockCommand
 from rockcli.cli.options import hazard_grid, output_format
 
 #: Exit code when a case is outside its tolerance (README, exit codes).
 EXIT_CASE_FAILED = EXIT_GATE
 
 
-@click.command()
+@click.command(
+    cls=RockCommand, short_help="Run the validation casebook: each case against its source."
+)
 @click.option(
     "--casebook",
     "folder",
     default=None,
-    type=click.Path(file_okay=False),
+    type=InputPath("folder"),
     help="A folder of case files to run instead of the bundled casebook (examples/validation).",
 )
 @hazard_grid(

@@ -4,8 +4,10 @@ from __future__ import annotations
 
 import click
 
+from rockcli.cli.inputs import RockCommand
 
-@click.command()
+
+@click.command(cls=RockCommand, short_help="Compile the rocking engine ahead of the first run.")
 def warmup() -> None:
     """Compile the rocking engine and the response-spectrum kernel now (CI images, workers)."""
     from rockcli.dynamics.warmup import compile_engine

@@ -95,7 +95,7 @@ CHECK_COLUMNS = (
     Column("demand", "demand", "", "{:.5g}"),
     Column("capacity", "capacity", "", "{:.5g}"),
     Column("unit", "unit"),
-    Column("ratio", "ζ = C/D", "", "{:.3f}"),
+    Column("ratio", "ζ = C/D", "", "{:.3f}", short="ζ"),
     Column("passed", "ok"),
     Column("clause_short", "clause"),
 )

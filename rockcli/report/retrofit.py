@@ -20,6 +20,10 @@ INPUTS = {
 }
 #: Newtons per kilonewton (the tables show kN, the JSON N).
 N_PER_KN = 1000.0
+#: What the max θ/α cell says for a block that overturns: its ratio is then the overturning
+#: angle over α (π/2/α by default), a number that says nothing about the retrofit. The JSON
+#: keeps the number and the "overturned" flag.
+OVERTURNED = "overturned"
 
 
 def retrofit_document(
@@ -70,21 +74,21 @@ COLUMNS = (
     Column("d", "d", "mm", "{:g}"),
     Column("K", "K", "kN/m", "{:.0f}"),
     Column("strength", "strength", "kN", "{:.4g}"),
-    Column("code_zeta", "code ULS ζ", "", "{:.3f}"),
+    Column("code_zeta", "code ULS ζ", "", "{:.3f}", short="ζ"),
     Column("code_uls", "code ULS"),
     Column("max_ratio", "max θ/α", "", "{:.4f}"),
-    Column("overturned", "overturned"),
     Column("max_force", "peak force", "kN", "{:.4g}"),
-    Column("utilisation", "utilisation", "", "{:.3f}"),
-    Column("elongation", "elongation / can take", "mm"),
+    Column("utilisation", "utilisation", "", "{:.3f}", short="use"),
+    Column("elongation", "elongation / can take", "mm", short="elong."),
     Column("overstrength", "γov·A·fy", "kN", "{:.4g}"),
-    Column("ruptured", "ruptured"),
+    Column("ruptured", "ruptured", short="rupt."),
     Column("why", "result", align="left"),
 )
 
 
 def table_row(row: dict[str, Any]) -> dict[str, Any]:
-    """One candidate in the table's units (mm, kN/m, kN)."""
+    """One candidate in the table's units (mm, kN/m, kN); "overturned" for the max θ/α of
+    a block that overturns."""
     passed = row["code_uls_passed"]
     return {
         **row,
@@ -92,6 +96,7 @@ def table_row(row: dict[str, Any]) -> dict[str, Any]:
         "K": row["K"] / N_PER_KN,
         "strength": None if row["strength"] is None else row["strength"] / N_PER_KN,
         "code_uls": "not evaluated" if passed is None else ("pass" if passed else "fail"),
+        "max_ratio": OVERTURNED if row["overturned"] else row["max_ratio"],
         "max_force": row["max_force"] / N_PER_KN,
         "elongation": elongation_text(row.get("ductility")),
         "overstrength": None

@@ -67,8 +67,8 @@ def compatibility_table(doc: dict[str, Any]) -> Table:
         Column("T", "period", "s", "{:.3g}"),
         Column("target", "target Se", "g", "{:.4g}"),
         Column("mean", "mean Sa", "g", "{:.4g}"),
-        Column("ratio", "mean/target", "-", "{:.3f}"),
-        Column("within", "within band"),
+        Column("ratio", "mean/target", "-", "{:.3f}", short="ratio"),
+        Column("within", "within band", short="within"),
     )
     return Table("Compatibility (5 % damping)", columns, rows)
 

@@ -18,8 +18,8 @@ COUNT_COLUMNS = (
     Column("code_collapses", "code", "", "{:d}"),
     Column("rocking_collapses", "rocking", "", "{:d}"),
     Column("code_conservative", "code cons.", "", "{:d}"),
-    Column("code_unconservative", "code uncons.", "", "{:d}"),
-    Column("undetermined", "undetermined", "", "{:d}"),
+    Column("code_unconservative", "code uncons.", "", "{:d}", short="uncons."),
+    Column("undetermined", "undetermined", "", "{:d}", short="undet."),
     Column("errors", "errors", "", "{:d}"),
 )
 

@@ -14,12 +14,13 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import Any, TextIO
 
-from rich.cells import cell_len
 from rich.console import Console
-from rich.markup import escape
+from rich.segment import Segment, Segments
 from rich.table import Table as RichTable
+from rich.text import Text
 
 from rockcli.errors import printable
+from rockcli.report.layout import ColumnText, Layout, fit, wrap_text
 from rockcli.report.text import encodable
 
 
@@ -32,6 +33,8 @@ class Column:
     unit: str = ""
     fmt: str = "{:.4g}"
     align: str = ""  # "left" or "right"; default: left for labels and names, right otherwise
+    #: A shorter label, shown (with the unit) when the full header does not fit the width.
+    short: str = ""
 
 
 @dataclass(frozen=True)
@@ -79,19 +82,20 @@ def render(report: Report, console: Console) -> None:
     """Print a Report: its tables, then the notes and warnings, then the verdict line.
 
     Every text is made safe for the terminal first (control characters escaped, symbols the
-    console's encoding cannot carry spelled in ASCII); numbers are never cut (see
-    :func:`column_widths`).
+    console's encoding cannot carry spelled in ASCII); every table fits the console's width
+    with no number cut (:mod:`rockcli.report.layout`), and the notes, warnings and verdict
+    wrap at spaces, their later lines indented under the first.
     """
     text = _terminal_text(console)
-    console.print(f"[bold]{escape(text(report.title))}[/bold]")
+    _print_wrapped(console, text(report.title), "bold")
     for table in report.tables:
         _print_table(console, table, text)
     for note in report.notes:
-        console.print(f"[yellow]note:[/yellow] {escape(text(note))}")
+        _print_labelled(console, "note:", "yellow", text(note))
     for warning in report.warnings:
-        console.print(f"[bold red]warning:[/bold red] {escape(text(warning))}")
+        _print_labelled(console, "warning:", "bold red", text(warning))
     if report.verdict:
-        console.print(f"[bold]verdict:[/bold] {escape(text(report.verdict))}")
+        _print_labelled(console, "verdict:", "bold", text(report.verdict))
 
 
 def _terminal_text(console: Console) -> Callable[[str], str]:
@@ -101,72 +105,83 @@ def _terminal_text(console: Console) -> Callable[[str], str]:
     return lambda value: encodable(printable(value), encoding)
 
 
+#: Blanks before the later lines of a note, a warning or the verdict.
+HANGING_INDENT = 2
+
+
+def _print_wrapped(console: Console, line: str, style: str) -> None:
+    """A title, wrapped at the console's width (no trailing blank at the break)."""
+    for part in wrap_text(line, console.width, indent=HANGING_INDENT).split("\n"):
+        console.print(Text(part, style=style), soft_wrap=True)
+
+
+def _print_labelled(console: Console, label: str, style: str, body: str) -> None:
+    """``label body`` wrapped at the console's width, the later lines indented."""
+    lines = wrap_text(f"{label} {body}", console.width, indent=HANGING_INDENT).split("\n")
+    console.print(Text(label, style=style) + Text(lines[0][len(label) :]), soft_wrap=True)
+    for line in lines[1:]:
+        console.print(Text(line), soft_wrap=True)
+
+
 def _print_table(console: Console, table: Table, text: Callable[[str], str]) -> None:
-    """One table; wider than the console only when a column's longest word demands it."""
-    labels = [text(f"{c.label} [{c.unit}]" if c.unit else c.label) for c in table.columns]
-    cells = [
-        [text(format_value(row.get(c.key), c.fmt)) for c in table.columns] for row in table.rows
-    ]
-    columns = [[label, *(row[i] for row in cells)] for i, label in enumerate(labels)]
-    extra = TABLE_FRAME + len(columns) * (CELL_PADDING + 1)
-    widths = column_widths(columns, console.width - extra)
+    """One table fitted to the console's width (:func:`rockcli.report.layout.fit`): wider
+    only when its numbers alone are, and then the terminal wraps, no digit is lost."""
+    columns = [_column_text(column, table.rows, text) for column in table.columns]
+    layout = fit(columns, console.width)
     # The title is its own line (a rich table title is padded to the table's width, which
     # leaves trailing blanks in a file).
-    console.print(escape(text(table.title)), style="italic")
-    out = RichTable()
+    _print_wrapped(console, text(table.title), "italic")
+    out = RichTable(
+        box=layout.frame.box,
+        show_edge=layout.frame.show_edge,
+        pad_edge=layout.frame.pad_edge,
+        padding=(0, layout.frame.right, 0, layout.frame.left),
+    )
     for i, col in enumerate(table.columns):
         default = "left" if col.key in ("label", "unit", "name") else "right"
-        width = None if widths is None else widths[i]
-        out.add_column(escape(labels[i]), justify=col.align or default, width=width)  # type: ignore[arg-type]
-    for row in cells:
-        out.add_row(*(escape(cell) for cell in row))
-    needed = extra + sum(widths) if widths is not None else 0
-    if needed <= console.width:
-        console.print(out)
-        return
-    saved = console.width
-    console.width = needed  # wider than the terminal: the terminal wraps, no digit is lost
-    try:
-        console.print(out)
-    finally:
-        console.width = saved
+        width = None if layout.widths is None else layout.widths[i]
+        header = layout.headers[i] if width is None else wrap_text(layout.headers[i], width)
+        out.add_column(Text(header), justify=col.align or default, width=width, no_wrap=True)  # type: ignore[arg-type]
+    for row in zip(*(c.cells for c in columns), strict=True):
+        out.add_row(*(_cell(cell, columns[i], layout, i) for i, cell in enumerate(row)))
+    options = console.options.update(width=max(console.width, layout.total()))
+    lines = console.render_lines(out, options, pad=False)
+    segments = [s for line in lines for s in (*_without_trailing_blanks(line), Segment.line())]
+    console.print(Segments(segments), soft_wrap=True)
 
 
-#: Characters of a table's frame outside its columns (the outer borders, rich's default box).
-TABLE_FRAME = 1
-#: Padding of a rich table cell (one space either side).
-CELL_PADDING = 2
+def _column_text(column: Column, rows: tuple[dict[str, Any], ...], text) -> ColumnText:
+    """A column's headers (full, short) and cells as shown."""
+    unit = f" [{column.unit}]" if column.unit else ""
+    headers: tuple[str, ...] = (text(f"{column.label}{unit}"),)
+    if column.short:
+        headers += (text(f"{column.short}{unit}"),)
+    values = [row.get(column.key) for row in rows]
+    numeric = all(_is_number(v) for v in values)
+    return ColumnText(headers, tuple(text(format_value(v, column.fmt)) for v in values), numeric)
 
 
-def column_widths(columns: list[list[str]], available: int) -> list[int] | None:
-    """Content widths that wrap text at spaces and never cut a word or a number.
-
-    Args:
-        columns: every column's header and cells, as shown.
-        available: the width the columns' content may take (console width minus the frame).
-
-    Returns:
-        None when every cell fits on one line (rich's natural layout); else each column at
-        least its longest word, the remaining width shared in proportion to what each column
-        would still use.
-    """
-    longest = [max(_line_width(cell) for cell in col) for col in columns]
-    if sum(longest) <= available:
-        return None
-    words = [max(_word_width(cell) for cell in col) for col in columns]
-    spare = available - sum(words)
-    slack = [full - word for full, word in zip(longest, words, strict=True)]
-    if spare <= 0 or not sum(slack):
-        return words
-    return [word + spare * s // sum(slack) for word, s in zip(words, slack, strict=True)]
+def _is_number(value: Any) -> bool:
+    """A numeric cell (its format makes it a number, or the dash of a missing one)."""
+    return value is None or (isinstance(value, int | float) and not isinstance(value, bool))
 
 
-def _line_width(cell: str) -> int:
-    return max((cell_len(line) for line in cell.splitlines()), default=0)
+def _cell(cell: str, column: ColumnText, layout: Layout, index: int) -> Text:
+    """A cell, its text wrapped to the column's width (a number as it is)."""
+    if layout.widths is None or column.numeric:
+        return Text(cell)
+    return Text(wrap_text(cell, layout.widths[index]))
 
 
-def _word_width(cell: str) -> int:
-    return max((cell_len(word) for word in cell.split()), default=0)
+def _without_trailing_blanks(line: list[Segment]) -> list[Segment]:
+    """A rendered line without the blanks after its last character (a file is diffed)."""
+    segments = list(line)
+    while segments and not segments[-1].text.rstrip():
+        segments.pop()
+    if segments:
+        last = segments[-1]
+        segments[-1] = Segment(last.text.rstrip(), last.style, last.control)
+    return segments
 
 
 class _Console(Console):
@@ -177,15 +192,21 @@ class _Console(Console):
         raise BrokenPipeError
 
 
-#: Width of a report written to a file or a pipe: no terminal to fit, so no line is wrapped.
-FILE_WIDTH = 10_000
+#: Width of a report written to a file or a pipe [characters]: no terminal to fit, a bound
+#: that a reader's editor and a diff show whole (JSON and CSV are the machines' formats).
+FILE_WIDTH = 100
 
 
 def console_for(file: TextIO | None = None) -> Console:
-    """The console of a report: the terminal's width, or no width limit for a file or pipe."""
+    """The console of a report: the terminal's width, or FILE_WIDTH for a file or a pipe."""
     stream = file if file is not None else sys.stdout
-    terminal = hasattr(stream, "isatty") and stream.isatty()
-    return _Console(file=stream, highlight=False, width=None if terminal else FILE_WIDTH)
+    width = None if is_terminal(stream) else FILE_WIDTH
+    return _Console(file=stream, highlight=False, width=width)
+
+
+def is_terminal(stream: TextIO) -> bool:
+    """Whether a report goes to a terminal (rich then takes its width, or $COLUMNS)."""
+    return hasattr(stream, "isatty") and stream.isatty()
 
 
 def show(doc: dict[str, Any], output: str, to_report: Callable[[dict[str, Any]], Report]) -> None:

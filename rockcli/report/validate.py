@@ -63,18 +63,21 @@ def _finite(value: float | None) -> float | None:
 
 COLUMNS = (
     Column("id", "case", align="left"),
-    Column("source", "source", align="left"),
     Column("quantity", "quantity", align="left"),
     Column("expected", "expected", fmt="{:.7g}"),
     Column("obtained", "obtained", fmt="{:.7g}"),
     Column("error", "error", fmt="{:.2g}"),
-    Column("tolerance", "tolerance", align="right"),
+    Column("tolerance", "tolerance", align="right", short="tol."),
     Column("result", "result", align="left"),
 )
+#: Each case's published source: a table of its own, so that the results' table fits a
+#: terminal (a source is a sentence, the other cells a word or a number).
+SOURCE_COLUMNS = (Column("id", "case", align="left"), Column("source", "source", align="left"))
 
 
 def validate_report(doc: dict[str, Any]) -> Report:
-    """The Report: one row per case, then why cases failed or were skipped, then the count."""
+    """The Report: one row per case, each case's source, then why cases failed or were
+    skipped, then the count."""
     rows = tuple(_row(case) for case in doc["cases"])
     notes = tuple(
         dict.fromkeys(
@@ -85,7 +88,10 @@ def validate_report(doc: dict[str, Any]) -> Report:
     )
     return Report(
         title=f"rock validate — {doc['casebook']}",
-        tables=(Table("Validation casebook", COLUMNS, rows),),
+        tables=(
+            Table("Validation casebook", COLUMNS, rows),
+            Table("Sources", SOURCE_COLUMNS, rows),
+        ),
         notes=notes,
         verdict=summary(doc),
     )

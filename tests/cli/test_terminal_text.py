@@ -20,7 +20,8 @@ from rockcli.errors import printable
 from rockcli.report.assess import assessment_report
 from rockcli.report.compare import comparison_report
 from rockcli.report.kinematic import kinematic_report
-from rockcli.report.table import Report, column_widths, console_for, format_value, render
+from rockcli.report.layout import ColumnText, fit
+from rockcli.report.table import FILE_WIDTH, Report, console_for, format_value, render
 from rockcli.report.text import encodable
 from tests.cli.conftest import EXAMPLES, PULSES, ROOT
 
@@ -95,15 +96,19 @@ def test_the_kinematic_json_numbers_are_in_the_piped_table(reports) -> None:
                 assert format_value(check[key], fmt) in text, (name, key)
 
 
-def test_a_redirected_report_is_not_wrapped_at_80_columns() -> None:
-    # CliRunner's stdout is not a terminal, like `> k.txt`: no 80-column cap, so the longest
-    # note stays on one line.
+def test_a_redirected_report_is_bounded_at_100_columns() -> None:
+    # CliRunner's stdout is not a terminal, like `> k.txt`. Issue 19: a redirected report had
+    # no width bound (303 characters a line for this one); now FILE_WIDTH (100) columns, wider
+    # than a terminal's 80, and a note longer than that wraps, its later lines indented.
     result = CliRunner().invoke(cli, ["kinematic", str(ALTAR)])
     assert result.exit_code == 0
-    assert max(len(line) for line in result.stdout.splitlines()) > NARROW
+    lines = result.stdout.splitlines()
+    assert max(len(line) for line in lines) <= FILE_WIDTH
+    assert max(len(line) for line in lines) > NARROW  # the Demand table, on one line a row
+    assert any("SLD" in line and "[ntc.demand.SLD]" in line for line in lines)
     assert any(
         line.startswith("note: ULS nonlinear height: demand") and line.endswith("]")
-        for line in result.stdout.splitlines()
+        for line in lines
     )
 
 
@@ -115,15 +120,20 @@ def test_a_redirected_report_has_no_trailing_blanks() -> None:
 
 
 def test_column_widths_keep_every_word_whole() -> None:
-    # Two columns (a long text, a number) in 20 characters: the text wraps at spaces, the
-    # number keeps its 10 characters.
-    columns = [["label", "a long label that wraps"], ["value", "1.23456789"]]
-    assert column_widths(columns, 40) is None  # fits: rich's natural layout
-    widths = column_widths(columns, 20)
-    assert widths is not None and widths[1] >= len("1.23456789")
-    assert widths[0] >= len("label") and sum(widths) <= 20
-    # Narrower than the longest words: the words' widths (the table overflows, nothing is cut).
-    assert column_widths(columns, 5) == [len("label"), len("1.23456789")]
+    # Two columns (a long text, a number): the text wraps at spaces, the number keeps its 10
+    # characters. The boxed frame of two columns takes 7 characters besides their content.
+    columns = [
+        ColumnText(("label",), ("a long label that wraps",), numeric=False),
+        ColumnText(("value",), ("1.23456789",), numeric=True),
+    ]
+    assert fit(columns, 40).widths is None  # fits: rich's natural layout
+    layout = fit(columns, 27)
+    assert layout.frame.name == "boxed" and layout.widths is not None
+    assert layout.widths[1] == len("1.23456789") and sum(layout.widths) <= 20
+    assert layout.widths[0] >= len("label")
+    # Narrower than the number alone: the number whole, the table wider than asked.
+    narrow = fit(columns, 5)
+    assert narrow.widths is not None and narrow.widths[1] == len("1.23456789")
 
 
 @pytest.mark.parametrize("encoding", ["cp1252", "ascii"])

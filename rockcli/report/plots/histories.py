@@ -35,7 +35,9 @@ def _history(run: RockingRun) -> History:
 def _run_label(run: RockingRun, say: Say) -> str:
     sign = "+" if run.polarity > 0 else "−"
     if run.t_overturn is not None:
-        return say("run_overturns", sign=sign, ratio=run.max_ratio, t=run.t_overturn)
+        # Not its max θ/α: an overturned run's is the overturning angle over α, a number
+        # that says nothing (issue 19).
+        return say("run_overturns", sign=sign, t=run.t_overturn)
     return say("run", sign=sign, ratio=run.max_ratio)
 
 

@@ -39,7 +39,7 @@ ENGLISH = {
     "off_frame": "the curve leaves the frame: a* = {a:.3g} m/s² at d* = {d:.3g} m",
     "verdict_item": "{state} {word}",
     "run": "polarity {sign}1: max θ/α = {ratio:.3f}",
-    "run_overturns": "polarity {sign}1: max θ/α = {ratio:.3f}, overturns at {t:.2f} s",
+    "run_overturns": "polarity {sign}1: overturns at {t:.2f} s",
     "alpha_level": "θ = ±α",
     "overturn_level": "overturning, |θ| = {angle:.3g} rad",
     "off_scale": "overturning at |θ|/α = {level:.3g} (off scale)",
