@@ -204,7 +204,12 @@ def test_bad_inline_model_names_the_case(tmp_path: Path) -> None:
 def test_not_a_folder_exits_2(tmp_path: Path) -> None:
     code, _, err = invoke("--casebook", str(tmp_path / "absent"))
     assert code == 2
-    assert "--casebook: not a folder of case files" in err
+    assert "--casebook: the folder does not exist" in err
+    a_file = tmp_path / "a-file.toml"
+    a_file.write_text("", encoding="utf-8")
+    code, _, err = invoke("--casebook", str(a_file))
+    assert code == 2
+    assert "--casebook" in err and "folder" in err
 
 
 # --- the hazard-grid cases ----------------------------------------------------------------------
