@@ -4,15 +4,17 @@ result moved.
 Rocking with many small impacts can be chaotic: the impact times depend on the last digits of
 the integration, so the peak after dozens of impacts depends on the tolerance
 (spec/engine.md, "Sensitivity": small-amplitude, chattering rocking is ill-conditioned,
-physically and numerically). A run whose max θ/α moves by more than :data:`SENSITIVE_CHANGE` (relative), or
-whose overturning verdict changes, when the tolerances are divided by :data:`TIGHT_FACTOR`
-is *tolerance-sensitive*: neither number is exact, and the reader must know.
+physically and numerically). A run whose max θ/α moves by more than
+:data:`SENSITIVE_CHANGE` (relative), or whose overturning verdict changes, when the
+tolerances are divided by :data:`TIGHT_FACTOR` is *tolerance-sensitive*: neither number is
+exact, and the reader must know.
 
 Pure and silent: results in, results out.
 """
 
 from __future__ import annotations
 
+from collections.abc import Iterable, Sequence
 from dataclasses import dataclass, replace
 
 import numpy as np
@@ -110,6 +112,20 @@ def checked(run: RockingRun, tight: RockingRun) -> RockingRun:
         sensitive=is_sensitive(run, tight),
     )
     return replace(run, tolerance=check)
+
+
+def sensitive(runs: Sequence[RockingRun]) -> bool | None:
+    """Whether a result depends on the tolerance (:func:`any_sensitive` of its runs' flags; a
+    run not checked counts as not known)."""
+    return any_sensitive(r.tolerance.sensitive if r.tolerance is not None else None for r in runs)
+
+
+def any_sensitive(flags: Iterable[bool | None]) -> bool | None:
+    """True when any flag is True; else None when any is not known (None); else False."""
+    seen = list(flags)
+    if any(f is True for f in seen):
+        return True
+    return None if any(f is None for f in seen) else False
 
 
 def check_tolerance(

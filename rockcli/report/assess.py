@@ -11,6 +11,7 @@ import numpy as np
 
 from rockcli import __version__
 from rockcli.dynamics.result import Assessment, RockingRun
+from rockcli.dynamics.tolerance import sensitive
 from rockcli.mechanics import (
     Block,
     linear_global_stiffness,
@@ -21,7 +22,6 @@ from rockcli.records.record import Record
 from rockcli.report.records import record_document, record_report
 from rockcli.report.table import Column, Report, Table, format_value, key_value
 from rockcli.report.tolerance import (
-    any_sensitive,
     check_document,
     engine_document,
     table_rows,
@@ -263,7 +263,7 @@ def assessment_document(
         "max_ratio": result.max_ratio,
         # max_ratio of an overturned run is the overturn angle over α, not an amplitude
         "max_ratio_overturned": any(r.overturned for r in result.runs),
-        "sensitive": any_sensitive(runs),
+        "sensitive": sensitive(result.runs),
         "warnings": [
             *warnings,
             *(w for r in result.runs for w in r.warnings),

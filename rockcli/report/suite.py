@@ -170,15 +170,36 @@ def history_document(
         "verdict": "passes" if measure.passed else "fails",
         "overturned_records": measure.overturned_records,
         "records": [
-            {k: r[k] for k in ("name", "scale", "pga_g", "max_ratio", "overturned")} for r in rows
+            {
+                **{k: r[k] for k in ("name", "scale", "pga_g", "max_ratio", "overturned")},
+                "sensitive": r.get("sensitive"),
+            }
+            for r in rows
         ],
         "compatibility": None if compatibility is None else dict(compatibility),
     }
 
 
 def history_records_table(doc: Mapping[str, Any]) -> Table:
-    """One row per record: its scale, PGA, max θ/α over both polarities, overturned."""
-    return Table("Records of the suite, both polarities", HISTORY_COLUMNS, tuple(doc["records"]))
+    """One row per record: its scale, PGA, max θ/α over both polarities, overturned (and
+    whether it is tolerance-sensitive, when one is)."""
+    columns: tuple[Column, ...] = HISTORY_COLUMNS
+    if any(r.get("sensitive") for r in doc["records"]):
+        columns += (Column("sensitive", "tolerance-sensitive", ""),)
+    return Table("Records of the suite, both polarities", columns, tuple(doc["records"]))
+
+
+def suite_tolerance_warnings(rows: Sequence[Mapping[str, Any]]) -> list[str]:
+    """The tolerance check's warning of every record whose result depends on it, named."""
+    from rockcli.report.tolerance import sensitive_warning
+
+    found = []
+    for row in rows:
+        for run in row.get("tolerance", ()):
+            text = sensitive_warning(run, run["rtol"])
+            if text is not None:
+                found.append(f"record {row['name']}, {text}")
+    return found
 
 
 def history_verdict(doc: Mapping[str, Any]) -> str:
@@ -208,6 +229,7 @@ RULE_TEXT = {"mean": "the mean over 7 or more records", "worst": "the worst of 3
 def suite_assessment_document(sa: SuiteAssessment) -> dict[str, Any]:
     """The whole `rock assess MODEL --suite SUITE --format json` document."""
     from rockcli import __version__
+    from rockcli.dynamics.tolerance import any_sensitive
 
     return {
         "schema": 1,
@@ -216,7 +238,8 @@ def suite_assessment_document(sa: SuiteAssessment) -> dict[str, Any]:
         "suite_name": sa.suite,
         "input": sa.rows[0].get("input", "ground") if sa.rows else "ground",
         "suite": history_document(sa.measure, sa.rows, sa.compatibility),
-        "warnings": [],
+        "sensitive": any_sensitive(r.get("sensitive") for r in sa.rows),
+        "warnings": suite_tolerance_warnings(sa.rows),
     }
 
 

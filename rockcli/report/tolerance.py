@@ -45,16 +45,6 @@ def engine_document(runs: Sequence[RockingRun]) -> dict[str, Any] | None:
     }
 
 
-def any_sensitive(runs: Sequence[Mapping[str, Any]]) -> bool | None:
-    """The document's ``sensitive``: True when any run is tolerance-sensitive; else None when
-    a run was not checked or its check is not known; else False."""
-    flags = [r["tolerance_check"]["sensitive"] if r.get("tolerance_check") else None
-             for r in runs]  # fmt: skip
-    if any(f is True for f in flags):
-        return True
-    return None if any(f is None for f in flags) else False
-
-
 def tol(x: float) -> str:
     """A tolerance as written in the text: 1e-8, 2.5e-9 (no zero-padded exponent)."""
     return re.sub(r"e([+-])0*(\d)", r"e\1\2", f"{x:g}").replace("e+", "e")
@@ -124,6 +114,23 @@ def table_rows(runs: Sequence[Mapping[str, Any]]) -> list[tuple[str, dict[str, s
         ("tolerance-sensitive",
          cells(lambda c: {True: "yes", False: "no", None: "not known"}[c["sensitive"]])),
     ]  # fmt: skip
+
+
+def compare_rows(rocking: Mapping[str, Any]) -> list[dict[str, str]]:
+    """The comparison table's row of each tolerance-sensitive run (the rocking side: both
+    values and impact counts); none when no run is sensitive."""
+    rows = []
+    for run in rocking["runs"]:
+        check = run.get("tolerance_check")
+        if not check or not check["sensitive"]:
+            continue
+        rows.append({
+            "label": f"tolerance ({run['polarity']:+d})",
+            "code": "—",
+            "rocking": f"sensitive: {ratio_text(run, ' impacts')} at rtol "
+            f"{tol(rocking['engine']['rtol'])}, {ratio_text(check, '')} at {tol(check['rtol'])}",
+        })  # fmt: skip
+    return rows
 
 
 def tolerance_note(doc: Mapping[str, Any]) -> str:

@@ -86,9 +86,7 @@ def assess_model_output(
     if tolerance_check and Engine(engine) is Engine.FAST:
         from rockcli.dynamics.tolerance import check_tolerance
 
-        result = check_tolerance(
-            block, shaking.time, shaking.accel, shaking.dt, settings, result
-        )
+        result = check_tolerance(block, shaking.time, shaking.accel, shaking.dt, settings, result)
     return AssessmentOutput(
         model.name,
         str(model.kind),
