@@ -67,11 +67,13 @@ class ToleranceCheck:
 
 def tight_settings(settings: SolverSettings) -> SolverSettings:
     """The settings of the tight run: rtol and atol over TIGHT_FACTOR, at least TIGHTEST."""
-    return replace(
-        settings,
-        rtol=max(settings.rtol / TIGHT_FACTOR, TIGHTEST),
-        atol=max(settings.atol / TIGHT_FACTOR, TIGHTEST),
-    )
+    return replace(settings, rtol=tighter(settings.rtol), atol=tighter(settings.atol))
+
+
+def tighter(tolerance: float) -> float:
+    """A tolerance over TIGHT_FACTOR, at least TIGHTEST, rounded to 12 digits (1e-8 gives
+    1e-11, not the quotient's 1.0000000000000001e-11)."""
+    return max(float(f"{tolerance / TIGHT_FACTOR:.12g}"), TIGHTEST)
 
 
 def can_tighten(settings: SolverSettings) -> bool:

@@ -4,7 +4,10 @@ verdict) and the suite's time history (the records' max θ/α, the code's rule, 
 The time history's JSON contract (issue 10): ``suite`` = {"n", "rule": "mean" | "worst",
 "measure", "limit_ratio", "verdict", "overturned_records", "records": [{"name", "scale",
 "pga_g", "max_ratio", "overturned"}], "compatibility": {"passed", "period_range": [a, b],
-"min_ratio", "max_ratio"} or null}.
+"min_ratio", "max_ratio"} or null}. Beside it, the tolerance check (rockcli.dynamics.tolerance)
+of every record: ``sensitive`` (true when a record's result depends on the integration
+tolerance, null when one's is not known) and ``sensitive_records`` (their names), each with its
+warning in words.
 """
 
 from __future__ import annotations
@@ -170,23 +173,15 @@ def history_document(
         "verdict": "passes" if measure.passed else "fails",
         "overturned_records": measure.overturned_records,
         "records": [
-            {
-                **{k: r[k] for k in ("name", "scale", "pga_g", "max_ratio", "overturned")},
-                "sensitive": r.get("sensitive"),
-            }
-            for r in rows
+            {k: r[k] for k in ("name", "scale", "pga_g", "max_ratio", "overturned")} for r in rows
         ],
         "compatibility": None if compatibility is None else dict(compatibility),
     }
 
 
 def history_records_table(doc: Mapping[str, Any]) -> Table:
-    """One row per record: its scale, PGA, max θ/α over both polarities, overturned (and
-    whether it is tolerance-sensitive, when one is)."""
-    columns: tuple[Column, ...] = HISTORY_COLUMNS
-    if any(r.get("sensitive") for r in doc["records"]):
-        columns += (Column("sensitive", "tolerance-sensitive", ""),)
-    return Table("Records of the suite, both polarities", columns, tuple(doc["records"]))
+    """One row per record: its scale, PGA, max θ/α over both polarities, overturned."""
+    return Table("Records of the suite, both polarities", HISTORY_COLUMNS, tuple(doc["records"]))
 
 
 def suite_tolerance_warnings(rows: Sequence[Mapping[str, Any]]) -> list[str]:
@@ -239,6 +234,7 @@ def suite_assessment_document(sa: SuiteAssessment) -> dict[str, Any]:
         "input": sa.rows[0].get("input", "ground") if sa.rows else "ground",
         "suite": history_document(sa.measure, sa.rows, sa.compatibility),
         "sensitive": any_sensitive(r.get("sensitive") for r in sa.rows),
+        "sensitive_records": [r["name"] for r in sa.rows if r.get("sensitive")],
         "warnings": suite_tolerance_warnings(sa.rows),
     }
 
