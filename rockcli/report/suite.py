@@ -224,18 +224,30 @@ RULE_TEXT = {"mean": "the mean over 7 or more records", "worst": "the worst of 3
 def suite_assessment_document(sa: SuiteAssessment) -> dict[str, Any]:
     """The whole `rock assess MODEL --suite SUITE --format json` document."""
     from rockcli import __version__
-    from rockcli.dynamics.tolerance import any_sensitive
 
-    return {
+    doc: dict[str, Any] = {
         "schema": 1,
         "rock_version": __version__,
         "model": {"name": sa.name, "kind": sa.kind},
         "suite_name": sa.suite,
         "input": sa.rows[0].get("input", "ground") if sa.rows else "ground",
         "suite": history_document(sa.measure, sa.rows, sa.compatibility),
-        "sensitive": any_sensitive(r.get("sensitive") for r in sa.rows),
-        "sensitive_records": [r["name"] for r in sa.rows if r.get("sensitive")],
-        "warnings": suite_tolerance_warnings(sa.rows),
+        "warnings": [],
+    }
+
+    return with_tolerance_check(doc, sa.rows)
+
+
+def with_tolerance_check(doc: dict[str, Any], rows: Sequence[Mapping[str, Any]]) -> dict[str, Any]:
+    """The suite document with its records' tolerance check: ``sensitive`` (any record's),
+    ``sensitive_records`` (their names) and the warning of each, after the others."""
+    from rockcli.dynamics.tolerance import any_sensitive
+
+    return {
+        **doc,
+        "sensitive": any_sensitive(r.get("sensitive") for r in rows),
+        "sensitive_records": [r["name"] for r in rows if r.get("sensitive")],
+        "warnings": [*doc["warnings"], *suite_tolerance_warnings(rows)],
     }
 
 
