@@ -16,6 +16,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from rockcli.document.content import Block, Document, Figure, Grid, Paragraph, Section
+from rockcli.document.tolerance import other_warnings, tolerance_paragraphs
 from rockcli.document.words import Words
 
 #: The limit states of the code's verdict per edition (2019's verdict also sums them up as
@@ -457,6 +458,7 @@ def rocking_section(
                w("col.t_overturn"), w("col.impacts"), w("col.energy_kj"))  # fmt: skip
     blocks.append(Grid(w("rock.runs_caption"), headers, rows,
                        (False, False, True, True, True, True, True)))  # fmt: skip
+    blocks += tolerance_paragraphs(rocking, w)
     result = out.rocking
     runs = result.result.runs
     shaken = result.shaking or record  # a block at height rocks on the floor's motion
@@ -468,7 +470,8 @@ def rocking_section(
     forces = restrainer_forces(rocking["model"], runs, w)
     if forces is not None:
         blocks.append(figure("forces", forces, w("figure.forces_caption")))
-    blocks += [Paragraph(text, "warning") for text in rocking.get("warnings", [])]
+    warnings = other_warnings(rocking.get("warnings", []), rocking)
+    blocks += [Paragraph(text, "warning") for text in warnings]
     blocks.append(Paragraph(w(f"rock.verdict_{rocking['verdict']}",
                               ratio=n(rocking["max_ratio"])), "verdict"))  # fmt: skip
     return Section("rocking", w("section.rocking"), tuple(blocks))
@@ -538,7 +541,8 @@ def comparison_section(doc: Mapping[str, Any], w: Words) -> Section:
     if act.get("t_uplift") is not None:
         blocks.insert(2, Paragraph(w("cmp.uplift_at", t=n(act["t_uplift"], "{:.2f}"))))
     blocks.append(Paragraph(w("cmp.unlike")))
-    blocks += [Paragraph(text, "warning") for text in doc.get("warnings", [])]
+    warnings = other_warnings(doc.get("warnings", []), doc["rocking"])
+    blocks += [Paragraph(text, "warning") for text in warnings]
     return Section("comparison", w("section.comparison"), tuple(blocks))
 
 

@@ -22,6 +22,7 @@ from rockcli.document.build import (
     software_section,
 )
 from rockcli.document.content import Block, Document, Grid, Paragraph, Section
+from rockcli.document.tolerance import other_suite_warnings, suite_paragraphs
 from rockcli.document.words import Words
 
 if TYPE_CHECKING:
@@ -56,7 +57,7 @@ def build_suite_document(
         suite_demand_section(inputs, doc, check, w),
         kinematic_section(inputs, doc["kinematic"], w),
         suite_rocking_section(doc, records, w),
-        suite_comparison_section(doc, w),
+        suite_comparison_section(doc, w, named(doc, records)),
         software_section(inputs.casebook, w),
     )
     name = doc["model"]["name"]
@@ -120,6 +121,7 @@ def suite_rocking_section(
               for r in suite["records"]),
         (False, True, True, False),
     ))  # fmt: skip
+    blocks += suite_paragraphs(named(doc, records), w)
     blocks.append(Paragraph(w(
         "suite.measure", measure=n(suite["measure"]), limit=n(suite["limit_ratio"]),
         verdict=w(f"suite.verdict_{suite['verdict']}"), overturned=suite["overturned_records"],
@@ -134,7 +136,17 @@ def suite_rocking_section(
     return Section("rocking", w("section.rocking"), tuple(blocks))
 
 
-def suite_comparison_section(doc: Mapping[str, Any], w: Words) -> Section:
+def named(
+    doc: Mapping[str, Any], records: Sequence[tuple[AssessmentOutput, Mapping[str, Any], Record]]
+) -> list[tuple[str, Mapping[str, Any]]]:
+    """Each record's name and its `rock assess` document, in the suite's order."""
+    return [(r["name"], rocking) for r, (_, rocking, _) in
+            zip(doc["suite"]["records"], records, strict=True)]  # fmt: skip
+
+
+def suite_comparison_section(
+    doc: Mapping[str, Any], w: Words, records: Sequence[tuple[str, Mapping[str, Any]]] = ()
+) -> Section:
     collapse = doc["collapse"]
     rows = ((w("cmp.collapse"), w.yes_no(collapse["code"]), w.yes_no(collapse["rocking"])),)
     blocks: list[Block] = [
@@ -143,5 +155,6 @@ def suite_comparison_section(doc: Mapping[str, Any], w: Words) -> Section:
         Paragraph(w(f"class.{doc['classification']}"), "verdict"),
         Paragraph(w("cmp.unlike")),
     ]
-    blocks += [Paragraph(text, "warning") for text in doc.get("warnings", [])]
+    blocks += [Paragraph(text, "warning")
+               for text in other_suite_warnings(doc.get("warnings", []), records)]  # fmt: skip
     return Section("comparison", w("section.comparison"), tuple(blocks))

@@ -4,8 +4,12 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 from enum import StrEnum
+from typing import TYPE_CHECKING
 
 import numpy as np
+
+if TYPE_CHECKING:
+    from rockcli.dynamics.tolerance import ToleranceCheck
 
 #: Runs whose peak amplitude ratio stays below this while impacts happen are flagged as
 #: chattering-dominated (engine.md, "Sensitivity": small-amplitude rocking is ill-conditioned).
@@ -97,6 +101,8 @@ class RockingRun:
         impact_loss: kinetic energy lost in impacts and at rest [J] (0 without a mass).
         mirror_of: the polarity this run is the mirror image of (a mirror-symmetric block:
             not integrated, θ → −θ of that run), None when it was integrated.
+        tolerance: the same run at tighter tolerances (dynamics.tolerance), None when not
+            checked.
     """
 
     polarity: int
@@ -122,6 +128,7 @@ class RockingRun:
     history: History | None = field(default=None, compare=False, repr=False)
     impact_loss: float = 0.0
     mirror_of: int | None = None
+    tolerance: ToleranceCheck | None = None
 
     @property
     def overturned(self) -> bool:

@@ -11,6 +11,7 @@ import numpy as np
 
 from rockcli import __version__
 from rockcli.dynamics.result import Assessment, RockingRun
+from rockcli.dynamics.tolerance import sensitive
 from rockcli.mechanics import (
     Block,
     linear_global_stiffness,
@@ -20,6 +21,14 @@ from rockcli.mechanics import (
 from rockcli.records.record import Record
 from rockcli.report.records import record_document, record_report
 from rockcli.report.table import Column, Report, Table, format_value, key_value
+from rockcli.report.tolerance import (
+    check_document,
+    engine_document,
+    table_rows,
+    tolerance_note,
+    tolerance_warnings,
+    verdict_caveat,
+)
 from rockcli.studies.strength import restrainer_checks
 
 if TYPE_CHECKING:
@@ -196,6 +205,7 @@ def run_document(run: RockingRun) -> dict[str, Any]:
         ],
         "impact_energy_loss": run.impact_loss,
         "mirror_of": run.mirror_of,
+        "tolerance_check": check_document(run),
     }
 
 
@@ -298,6 +308,7 @@ def assessment_document(
     (model and record magnitudes that look like unit slips), before the runs' own."""
     first = result.runs[0]
     checks = restrainer_checks(block, result)
+    runs = [run_document(r) for r in result.runs]
     return {
         "schema": SCHEMA,
         "rock_version": __version__,
@@ -308,18 +319,21 @@ def assessment_document(
             "rtol": first.rtol,
             "atol": first.atol,
             "rest_velocity": first.rest_velocity,
+            "tolerance_check": engine_document(result.runs),
         },
-        "runs": [run_document(r) for r in result.runs],
+        "runs": runs,
         "restrainer_checks": checks,
         "effectiveness": effectiveness(block),
         "verdict": str(result.verdict),
         "max_ratio": result.max_ratio,
         # max_ratio of an overturned run is the overturn angle over α, not an amplitude
         "max_ratio_overturned": any(r.overturned for r in result.runs),
+        "sensitive": sensitive(result.runs),
         "warnings": [
             *warnings,
             *(w for r in result.runs for w in r.warnings),
             *strength_warnings(checks),
+            *tolerance_warnings(runs, first.rtol),
         ],
     }
 
@@ -413,7 +427,7 @@ def runs_table(runs: list[dict[str, Any]]) -> Table:
             **{f"p{r['polarity']}": _run_cell(r, key, fmt) for r in runs},
         }
         for key, label, unit, fmt in RUN_ROWS
-    )
+    ) + tuple({"label": label, "unit": "", **cells} for label, cells in table_rows(runs))
     return Table("Rocking time history, both polarities", cols, rows)
 
 
@@ -493,6 +507,7 @@ def assessment_report(doc: dict[str, Any]) -> Report:
         *rec.get("floor_notes", ()),
         f"engine {eng['name']}, rtol {eng['rtol']:g}, atol {eng['atol']:g}, "
         f"rest threshold {eng['rest_velocity']:g} rad/s",
+        tolerance_note(doc),
         *rec["notes"],
         *yield_notes(doc.get("restrainer_checks", [])),
         *check_notes(doc.get("restrainer_checks", [])),
@@ -550,7 +565,7 @@ def _loads_tables(m: dict[str, Any]) -> list[Table]:
 
 
 def _verdict_line(doc: dict[str, Any]) -> str:
-    caveat = strength_caveat(doc.get("restrainer_checks", ()))
+    caveat = strength_caveat(doc.get("restrainer_checks", ())) + verdict_caveat(doc)
     if doc["verdict"] == "overturns":
         return "overturns" + caveat
     return f"{doc['verdict']} (max θ/α = {doc['max_ratio']:.4f} over both polarities){caveat}"

@@ -9,6 +9,8 @@ from rockcli.records.record import Record
 from rockcli.report.assess import strength_caveat
 from rockcli.report.kinematic import EDITION_TEXT, ULTIMATE_FIX, actions_table, demand_line
 from rockcli.report.table import Column, Report, Table, format_value
+from rockcli.report.tolerance import compare_rows as tolerance_rows
+from rockcli.report.tolerance import verdict_caveat
 
 if TYPE_CHECKING:
     from rockcli.studies.compare import ComparisonOutput
@@ -140,6 +142,7 @@ def comparison_rows(doc: dict[str, Any]) -> tuple[dict[str, str], ...]:
                     f"{p['max_force'] / 1e3:.2f} kN" + member_events(p),
                 }
             )
+    rows += tolerance_rows(roc)
     rows.append({"label": "classification", "code": doc["classification"], "rocking": ""})
     return tuple(rows)
 
@@ -185,7 +188,8 @@ def comparison_verdict(doc: dict[str, Any]) -> str:
     line = str(doc["classification"])
     if doc.get("code_demand") == "model":
         line += f" — {DIFFERENT_EARTHQUAKES}"
-    return line + strength_caveat(doc["rocking"].get("restrainer_checks", ()))
+    rocking = doc["rocking"]
+    return line + strength_caveat(rocking.get("restrainer_checks", ())) + verdict_caveat(rocking)
 
 
 def comparison_warnings(doc: dict[str, Any]) -> list[str]:

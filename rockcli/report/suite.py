@@ -4,7 +4,10 @@ verdict) and the suite's time history (the records' max θ/α, the code's rule, 
 The time history's JSON contract (issue 10): ``suite`` = {"n", "rule": "mean" | "worst",
 "measure", "limit_ratio", "verdict", "overturned_records", "records": [{"name", "scale",
 "pga_g", "max_ratio", "overturned"}], "compatibility": {"passed", "period_range": [a, b],
-"min_ratio", "max_ratio"} or null}.
+"min_ratio", "max_ratio"} or null}. Beside it, the tolerance check (rockcli.dynamics.tolerance)
+of every record: ``sensitive`` (true when a record's result depends on the integration
+tolerance, null when one's is not known) and ``sensitive_records`` (their names), each with its
+warning in words.
 """
 
 from __future__ import annotations
@@ -182,6 +185,19 @@ def history_records_table(doc: Mapping[str, Any]) -> Table:
     return Table("Records of the suite, both polarities", HISTORY_COLUMNS, tuple(doc["records"]))
 
 
+def suite_tolerance_warnings(rows: Sequence[Mapping[str, Any]]) -> list[str]:
+    """The tolerance check's warning of every record whose result depends on it, named."""
+    from rockcli.report.tolerance import sensitive_warning
+
+    found = []
+    for row in rows:
+        for run in row.get("tolerance", ()):
+            text = sensitive_warning(run, run["rtol"])
+            if text is not None:
+                found.append(f"record {row['name']}, {text}")
+    return found
+
+
 def history_verdict(doc: Mapping[str, Any]) -> str:
     """The verdict line: the rule, the measure against its limit, the overturns, and whether
     the suite is compatible with its target spectrum."""
@@ -210,7 +226,7 @@ def suite_assessment_document(sa: SuiteAssessment) -> dict[str, Any]:
     """The whole `rock assess MODEL --suite SUITE --format json` document."""
     from rockcli import __version__
 
-    return {
+    doc: dict[str, Any] = {
         "schema": 1,
         "rock_version": __version__,
         "model": {"name": sa.name, "kind": sa.kind},
@@ -218,6 +234,21 @@ def suite_assessment_document(sa: SuiteAssessment) -> dict[str, Any]:
         "input": sa.rows[0].get("input", "ground") if sa.rows else "ground",
         "suite": history_document(sa.measure, sa.rows, sa.compatibility),
         "warnings": list(sa.warnings),
+    }
+
+    return with_tolerance_check(doc, sa.rows)
+
+
+def with_tolerance_check(doc: dict[str, Any], rows: Sequence[Mapping[str, Any]]) -> dict[str, Any]:
+    """The suite document with its records' tolerance check: ``sensitive`` (any record's),
+    ``sensitive_records`` (their names) and the warning of each, after the others."""
+    from rockcli.dynamics.tolerance import any_sensitive
+
+    return {
+        **doc,
+        "sensitive": any_sensitive(r.get("sensitive") for r in rows),
+        "sensitive_records": [r["name"] for r in rows if r.get("sensitive")],
+        "warnings": [*doc["warnings"], *suite_tolerance_warnings(rows)],
     }
 
 

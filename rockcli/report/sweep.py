@@ -21,6 +21,7 @@ COUNT_COLUMNS = (
     Column("code_unconservative", "code uncons.", "", "{:d}", short="uncons."),
     Column("undetermined", "undetermined", "", "{:d}", short="undet."),
     Column("errors", "errors", "", "{:d}"),
+    Column("sensitive_cases", "tol.-sensitive", "", "{:d}"),
 )
 
 
@@ -58,7 +59,7 @@ def pivot(
 def totals_table(doc: dict[str, Any]) -> Table:
     """Per record and in all: PGA, cases and the counts (of the analyses that ran)."""
     rows = [{"name": r["record"] or "(code demand)", **r} for r in doc["records"]]
-    counts = tuple(c for c in COUNT_COLUMNS if doc[c.key] is not None)
+    counts = tuple(c for c in COUNT_COLUMNS if doc.get(c.key) is not None)
     rows.append({"name": "all", **{c.key: doc[c.key] for c in counts}})
     cols = (Column("name", "record"), Column("pga_g", "PGA", "g", "{:.3f}"), *counts)
     return Table("Totals: collapses and inconsistencies", cols, tuple(rows))
@@ -149,6 +150,7 @@ def sweep_report(doc: dict[str, Any]) -> Report:
             if doc.get("errors")
             else []
         ),
+        sensitive_note(doc),
         f"{doc['cases']} cases ({doc['computed_cases']} run now, {doc['resumed_cases']} from an "
         f"earlier run) in {doc['wall_time_s']:.2f} s; every case in {doc['out']}/cases.csv",
         *(suite_note(r) for r in doc["records"] if r.get("suite_records")),
@@ -164,6 +166,21 @@ def sweep_report(doc: dict[str, Any]) -> Report:
         tables=tuple(tables),
         notes=tuple(n for n in notes if n),
         warnings=tuple(doc.get("warnings", ())),
+    )
+
+
+def sensitive_note(doc: dict[str, Any]) -> str | None:
+    """What the tolerance check found (--check-tolerance), in words."""
+    count = doc.get("sensitive_cases")
+    if count is None:
+        return None
+    from rockcli.dynamics.tolerance import SENSITIVE_CHANGE, TIGHT_FACTOR
+
+    return (
+        f"tolerance check: each rocking case again at its tolerances over {TIGHT_FACTOR:g}; "
+        f"{count} of {doc['cases']} cases tolerance-sensitive (max θ/α moved by more than "
+        f"{100 * SENSITIVE_CHANGE:g} % or the overturning verdict changed: read their values "
+        "as uncertain by that much; the sensitive column of cases.csv names them)"
     )
 
 

@@ -57,9 +57,15 @@ def assess_model_output(
     history: bool = False,
     ground: bool = False,
     file: str | None = None,
+    tolerance_check: bool = True,
 ) -> AssessmentOutput:
     """Both polarities of a validated model under a record: the record itself for a block on
-    the ground (or with ``ground``), its floor motion for a block at height (studies.floor)."""
+    the ground (or with ``ground``), its floor motion for a block at height (studies.floor).
+
+    tolerance_check: run each polarity again at tighter tolerances and attach the check to
+    its run (dynamics.tolerance; the fast engine only: the reference engine is the accuracy
+    reference, its tolerances fixed).
+    """
     from rockcli.dynamics.simulate import assess
     from rockcli.model.derive import describe, solver_options, to_block
     from rockcli.model.plausible import model_warnings
@@ -77,6 +83,10 @@ def assess_model_output(
         engine=Engine(engine),
         history=history,
     )
+    if tolerance_check and Engine(engine) is Engine.FAST:
+        from rockcli.dynamics.tolerance import check_tolerance
+
+        result = check_tolerance(block, shaking.time, shaking.accel, shaking.dt, settings, result)
     return AssessmentOutput(
         model.name,
         str(model.kind),

@@ -47,6 +47,7 @@ class SuiteChunk:
         file: the model file's path, for messages. engine: "fast" or "reference".
         ground: a block at height rocks on the record itself, not its floor motion.
         cases: the records, each with its place in the suite.
+        tolerance_check: run each record's polarities again at tighter tolerances.
     """
 
     table: Mapping[str, Any]
@@ -54,6 +55,7 @@ class SuiteChunk:
     engine: str
     ground: bool
     cases: tuple[SuiteCase, ...]
+    tolerance_check: bool = True
 
 
 def run_suite_chunk(chunk: SuiteChunk) -> list[dict[str, Any]]:
@@ -61,18 +63,35 @@ def run_suite_chunk(chunk: SuiteChunk) -> list[dict[str, Any]]:
     from rockcli.model.load import validate_model
 
     model = validate_model(dict(chunk.table), file=chunk.file)
+    engine, ground, check = chunk.engine, chunk.ground, chunk.tolerance_check
     return [
-        {"case": c.id, **record_row(model, c.item, chunk.engine, chunk.ground, chunk.file)}
+        {
+            "case": c.id,
+            **record_row(model, c.item, engine, ground, chunk.file, tolerance_check=check),
+        }
         for c in chunk.cases
     ]
 
 
-def record_row(model: Any, item: SuiteRecord, engine: str, ground: bool, file: str | None) -> dict:
+def record_row(
+    model: Any,
+    item: SuiteRecord,
+    engine: str,
+    ground: bool,
+    file: str | None,
+    *,
+    tolerance_check: bool = True,
+) -> dict:
     """Both polarities of the model under one record: max θ/α (overturn angle/α when it
-    overturned), whether it overturned, the status of each run."""
+    overturned), whether it overturned, the status of each run; with ``tolerance_check``,
+    whether it is tolerance-sensitive (``sensitive``, rockcli.dynamics.tolerance) and each
+    polarity's check (``tolerance``)."""
+    from rockcli.dynamics.tolerance import sensitive
     from rockcli.studies.assess import assess_model_output
 
-    out = assess_model_output(model, item.record, engine, ground=ground, file=file)
+    out = assess_model_output(
+        model, item.record, engine, ground=ground, file=file, tolerance_check=tolerance_check
+    )
     result = out.result
     return {
         "name": item.name,
@@ -83,7 +102,25 @@ def record_row(model: Any, item: SuiteRecord, engine: str, ground: bool, file: s
         "verdict": str(result.verdict),
         "input": "ground" if out.floor is None else "floor",
         "statuses": [str(r.status) for r in result.runs],
+        "sensitive": sensitive(result.runs),
+        "tolerance": [run_check(r) for r in result.runs],
     }
+
+
+def run_check(run: Any) -> dict[str, Any]:
+    """A run and its tolerance check as plain data: what the reports need to say it."""
+    check = run.tolerance
+    return {
+        "polarity": run.polarity,
+        "max_ratio": float(run.max_ratio),
+        "impacts": run.impacts,
+        "overturned": run.overturned,
+        "rtol": run.rtol,
+        "tolerance_check": None if check is None else {
+            "rtol": check.rtol, "max_ratio": float(check.max_ratio), "impacts": check.impacts,
+            "overturned": check.overturned, "sensitive": check.sensitive,
+        },
+    }  # fmt: skip
 
 
 def run_suite(
@@ -95,13 +132,14 @@ def run_suite(
     ground: bool = False,
     file: str | None = None,
     progress: Callable[[int, int], None] | None = None,
+    tolerance_check: bool = True,
 ) -> list[dict[str, Any]]:
     """Every record's row in the suite's order, each record a chunk on the lanes. A record
     whose worker died twice is a row with an ``error`` (rockcli.studies.sweep.run)."""
     from rockcli.studies.sweep.run import run_chunks
 
     chunks = [
-        SuiteChunk(table, file, engine, ground, (SuiteCase(k, item),))
+        SuiteChunk(table, file, engine, ground, (SuiteCase(k, item),), tolerance_check)
         for k, item in enumerate(records)
     ]
     rows: list[dict[str, Any]] = []

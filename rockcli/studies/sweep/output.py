@@ -64,9 +64,22 @@ RESULT_COLUMNS: dict[str, type] = {
 }
 
 
+#: Result columns of a study run with --check-tolerance, after RESULT_COLUMNS (a study without
+#: it writes the header it always did, so its cases.csv resumes as before).
+TOLERANCE_COLUMNS: dict[str, type] = {"sensitive": bool}
+
+
 def columns(plan: StudyPlan) -> list[str]:
     """The header of cases.csv."""
-    return ["case", "record", *(a.name for a in plan.axes), *RESULT_COLUMNS]
+    extra = TOLERANCE_COLUMNS if plan.check_tolerance else {}
+    return ["case", "record", *(a.name for a in plan.axes), *RESULT_COLUMNS, *extra]
+
+
+def result_kinds(header: Sequence[str]) -> dict[str, type]:
+    """The result columns of a header and their types (RESULT_COLUMNS, and the tolerance
+    check's when the header has them)."""
+    extra = {k: v for k, v in TOLERANCE_COLUMNS.items() if k in header}
+    return {**RESULT_COLUMNS, **extra}
 
 
 #: First characters that make a spreadsheet read a cell as a formula (OWASP, CSV injection).
@@ -172,6 +185,8 @@ def fingerprint(plan: StudyPlan) -> str:
         "base": plan.base,
         "records": records,
     }
+    if plan.check_tolerance:  # only then: a study without it keeps its fingerprint
+        data["check_tolerance"] = True
     text = json.dumps(data, sort_keys=True, default=str)
     return hashlib.sha256(text.encode()).hexdigest()
 
@@ -248,8 +263,8 @@ class Output:
             return
         if not same:
             self._refuse(
-                "holds the results of another study (or the base model, the records or rock "
-                "changed since)",
+                "holds the results of another study (or the base model, the records, rock or "
+                "--check-tolerance changed since)",
                 "--force to start over, or another --out",
             )
         if not resume and not state.get("complete"):
@@ -321,7 +336,7 @@ class Output:
         if expected is not None and list(row[: len(expected)]) != list(expected):
             return "the record or axis values are not those of its case"
         cells = dict(zip(self.header, row, strict=True))
-        for name, kind in RESULT_COLUMNS.items():
+        for name, kind in result_kinds(self.header).items():
             try:
                 parse_cell(unescape(cells[name]), kind)
             except ValueError:
@@ -408,13 +423,15 @@ def typed_rows(path: Path) -> Iterator[tuple[int, dict[str, Any]]]:
         header = next(reader, None)
         if header is None:
             return
+        kinds = result_kinds(header)
         for row in reader:
-            yield int(row[0]), typed(dict(zip(header, row, strict=True)))
+            yield int(row[0]), typed(dict(zip(header, row, strict=True)), kinds)
 
 
-def typed(row: Mapping[str, str]) -> dict[str, Any]:
-    """The result cells of a row as values (floats, booleans, text, None)."""
-    return {k: parse_cell(unescape(row[k]), kind) for k, kind in RESULT_COLUMNS.items()}
+def typed(row: Mapping[str, str], kinds: Mapping[str, type] = RESULT_COLUMNS) -> dict[str, Any]:
+    """The result cells of a row as values (floats, booleans, text, None); ``kinds``: the
+    result columns and their types (:func:`result_kinds` of the file's header)."""
+    return {k: parse_cell(unescape(row[k]), kind) for k, kind in kinds.items()}
 
 
 def parquet_available() -> bool:
@@ -439,7 +456,8 @@ def write_parquet(csv_path: Path, parquet_path: Path, header: Sequence[str]) -> 
     import pyarrow.parquet as pq
 
     types = {"case": pa.int64(), "record": pa.string()}
-    types |= {k: pa.type_for_alias(_ARROW_TYPES[v]) for k, v in RESULT_COLUMNS.items()}
+    kinds = result_kinds(header)
+    types |= {k: pa.type_for_alias(_ARROW_TYPES[v]) for k, v in kinds.items()}
     convert = pacsv.ConvertOptions(
         column_types=types,
         true_values=["true"],

@@ -90,7 +90,8 @@ def case_cost(plan: StudyPlan, npts: int) -> float:
     """The estimated seconds of one case on a record of npts samples."""
     cost = KINEMATIC_COST if "kinematic" in plan.analyses else 0.0
     if "rocking" in plan.analyses:
-        cost += ROCKING_COST + ROCKING_COST_PER_SAMPLE * npts
+        runs = 2 if plan.check_tolerance else 1  # the tolerance check runs each case again
+        cost += runs * (ROCKING_COST + ROCKING_COST_PER_SAMPLE * npts)
     return cost
 
 

@@ -237,6 +237,9 @@ class StudyPlan:
     skipped: tuple[SkippedRecord, ...]
     ground: bool = False
     grid_file: str | None = None
+    #: Run each rocking case again at tighter tolerances (--check-tolerance): a ``sensitive``
+    #: column and a count of sensitive cases (rockcli.dynamics.tolerance).
+    check_tolerance: bool = False
 
 
 def parse_path(text: str) -> KeyPath | None:

@@ -109,16 +109,21 @@ def run_suite_case(plan: StudyPlan, model: Model, suite: SuiteInput) -> dict[str
 def suite_rocking_columns(plan: StudyPlan, model: Model, suite: SuiteInput) -> dict[str, Any]:
     """Every record of the suite, both polarities, and the code's rule against the model's
     limit for the target's limit state."""
+    from rockcli.dynamics.tolerance import any_sensitive
     from rockcli.studies.floor import model_floor
     from rockcli.studies.suite.assess import limit_for
     from rockcli.studies.suite.rule import suite_measure
     from rockcli.studies.suite.run import outcomes, record_row
 
     ground = plan.ground and model_floor(model) is not None
-    rows = [record_row(model, item, plan.engine, ground, plan.base_file) for item in suite.items]
+    check = plan.check_tolerance
+    rows = [record_row(model, item, plan.engine, ground, plan.base_file, tolerance_check=check)
+            for item in suite.items]  # fmt: skip
     limit = limit_for(model, suite.settings.target.limit_state.value)
     measure = suite_measure(outcomes(rows), limit)
+    extra = {"sensitive": any_sensitive(r.get("sensitive") for r in rows)} if check else {}
     return {
+        **extra,
         "max_ratio": float(measure.measure),
         "overturned": measure.overturned_records > 0,
         "rocking": "passes" if measure.passed else "fails",

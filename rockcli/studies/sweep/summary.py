@@ -76,6 +76,7 @@ COUNT_KEYS = (
     "consistent_unsafe",
     "undetermined",
     "errors",
+    "sensitive_cases",
 )
 
 
@@ -86,6 +87,7 @@ class Counts:
     def __init__(self, analyses: Iterable[str]) -> None:
         self.ran = set(analyses)
         self.counts = dict.fromkeys(COUNT_KEYS, 0)
+        self.checked = False  # a row carried the tolerance check's column
 
     def add(self, row: Mapping[str, Any]) -> None:
         """Count one case."""
@@ -98,10 +100,19 @@ class Counts:
             out[kind.replace("-", "_")] += 1
         out["undetermined"] += undetermined(row, self.ran)
         out["errors"] += bool(row.get("error"))
+        if "sensitive" in row:  # --check-tolerance (output.TOLERANCE_COLUMNS)
+            self.checked = True
+            out["sensitive_cases"] += row["sensitive"] is True
 
     def result(self) -> dict[str, int | None]:
-        """The counts (None: the analyses behind a count did not run)."""
-        return {k: v if NEEDS.get(k, set()) <= self.ran else None for k, v in self.counts.items()}
+        """The counts (None: the analyses behind a count did not run; sensitive_cases: the
+        study was not run with --check-tolerance)."""
+        return {
+            k: v
+            if NEEDS.get(k, set()) <= self.ran and (k != "sensitive_cases" or self.checked)
+            else None
+            for k, v in self.counts.items()
+        }
 
 
 def tally(rows: Iterable[Mapping[str, Any]], analyses: Iterable[str]) -> dict[str, int | None]:
@@ -197,6 +208,7 @@ def summarize(
         "analyses": list(analyses),
         **counts,
         "runs": runs if "rocking" in analyses else 0,
+        "check_tolerance": plan.check_tolerance,
         "inconsistency_share": share(counts["code_conservative"], counts["code_collapses"]),
         "unconservative_share": share(counts["code_unconservative"], counts["rocking_collapses"]),
         "axes": [

@@ -208,10 +208,16 @@ def run_case(
         from rockcli.studies.floor import model_floor
 
         ground = plan.ground and model_floor(model) is not None
-        out = assess_model_output(model, record, plan.engine, ground=ground)
+        out = assess_model_output(
+            model, record, plan.engine, ground=ground, tolerance_check=plan.check_tolerance
+        )
         roc = out.result
         row["input"] = "ground" if out.floor is None else "floor"
         row.update(rocking_columns(roc))
+        if plan.check_tolerance:
+            from rockcli.dynamics.tolerance import sensitive
+
+            row["sensitive"] = sensitive(roc.runs)
         row["utilisation"] = max_utilisation(out.block, roc)
     if "kinematic" in plan.analyses:
         from rockcli.studies.kinematic import kinematic_model
