@@ -487,19 +487,19 @@ def polarity_label(run: Mapping[str, Any], w: Words) -> str:
 def restrainer_checks_grid(checks: Sequence[Mapping[str, Any]], w: Words) -> Grid:
     n = w.number
     rows = tuple(
-        (c["name"], w(f"law.{c['law']}"), n(_kn(c["demand"])), n(_kn(c["strength"])),
+        (c["name"], n(_kn(c["demand"])), n(_kn(c["strength"])),
          n(c["utilisation"], "{:.3f}"), n(_mm(c["ductility"]["demand"]), "{:.1f}"),
          n(_mm(c["ductility"]["capacity"]), "{:.1f}"),
          n(_kn((c["anchor"] or {}).get("demand"))), n(_kn((c["anchor"] or {}).get("capacity"))),
          w.yes_no(c["ruptured"]), w.passed(c["passed"]))
         for c in checks
     )  # fmt: skip
-    headers = (w("col.name"), w("col.law"), w("col.force_kn"), w("col.strength_kn"),
+    headers = (w("col.name"), w("col.force_kn"), w("col.strength_kn"),
                w("col.utilisation"), w("col.elongation_mm"), w("col.elongation_capacity_mm"),
                w("col.overstrength_kn"), w("col.anchor_kn"), w("col.ruptured"),
                w("col.outcome"))  # fmt: skip
     return Grid(w("rock.restrainers_caption"), headers, rows,
-                (False, False, *([True] * 7), False, False))  # fmt: skip
+                (False, *([True] * 7), False, False))  # fmt: skip
 
 
 def restrainer_check_notes(checks: Sequence[Mapping[str, Any]], w: Words) -> list[Paragraph]:
@@ -508,7 +508,8 @@ def restrainer_check_notes(checks: Sequence[Mapping[str, Any]], w: Words) -> lis
     out = []
     for c in checks:
         duct, anchor = c["ductility"], c["anchor"]
-        parts = [w("rock.check_strength", name=c["name"], rule=c["rule"])]
+        key = "rock.check_strength" if c["strength"] is not None else "rock.check_displacement"
+        parts = [w(key, name=c["name"], rule=c["rule"])]
         if duct["capacity"] is not None and duct["rule"] != c["rule"]:
             parts.append(w("rock.check_ductility", rule=duct["rule"]))
         if anchor is not None:

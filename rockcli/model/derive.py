@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, replace
+from typing import Any
 
 from rockcli.codecheck.steel import (
     CLAUSE,
@@ -289,7 +290,7 @@ def to_restrainer(model: Model, index: int) -> Restrainer:
     )
 
 
-def bar_verification(table: RestrainerTable) -> dict[str, float | str]:
+def bar_verification(table: RestrainerTable) -> dict[str, Any]:
     """A steel bar's ductility capacity ε_u·L/γ_ε [m] (with where ε_u comes from) and its
     over-strength γ_ov·A·f_y [N] for its anchorage (codecheck.tie); nothing for another member.
 
@@ -304,7 +305,7 @@ def bar_verification(table: RestrainerTable) -> dict[str, float | str]:
     grade = None if table.grade is None else table.grade.value
     fy = GRADES[grade][0] if grade is not None else table.fy
     assert fy is not None
-    out: dict[str, float | str] = {
+    out: dict[str, Any] = {
         "overstrength": overstrength_force(
             rod_area(table.diameter, table.count or 1), fy, GAMMA_OV.get(grade or "", MEASURED_OV)
         )

@@ -93,7 +93,11 @@ def check_notes(checks: list[dict[str, Any]]) -> list[str]:
     """Where each restrainer check's capacities come from, and an anchorage to be designed."""
     out = [
         f"restrainer {c['name']!r}: "
-        + (f"strength from {c['rule']}" if c["strength"] is not None else f"verified on {c['rule']}")
+        + (
+            f"strength from {c['rule']}"
+            if c["strength"] is not None
+            else f"verified on displacement: {c['rule']}"
+        )
         for c in checks
     ]
     out += [

@@ -37,7 +37,8 @@ def check_document(c: Check, edition: str) -> dict[str, Any]:
         "note": c.note,
         "demand_damping": None if sp is None else sp.damping,
         "demand_period": None if sp is None else sp.period,
-        "demand_period_range": None if sp is None or sp.period_range is None
+        "demand_period_range": None
+        if sp is None or sp.period_range is None
         else list(sp.period_range),
         "demand_spectral": None if sp is None else sp.value,
         "demand_rule": None if sp is None else sp.rule,

@@ -99,9 +99,7 @@ def table_row(row: dict[str, Any]) -> dict[str, Any]:
         "max_ratio": OVERTURNED if row["overturned"] else row["max_ratio"],
         "max_force": row["max_force"] / N_PER_KN,
         "elongation": elongation_text(row.get("ductility")),
-        "overstrength": None
-        if not row.get("anchor")
-        else row["anchor"]["demand"] / N_PER_KN,
+        "overstrength": None if not row.get("anchor") else row["anchor"]["demand"] / N_PER_KN,
         "why": "; ".join(failures(row)) or "passes",
     }
 

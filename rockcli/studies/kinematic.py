@@ -128,9 +128,7 @@ def with_spectral_values(
         return numbers
     building = 100.0 * pos.damping
     periods = [("T1", pos.T1, building)] if pos.at_height else []
-    periods += [
-        (name, values.get(name), xi) for name, xi in CHECK_PERIODS.get(limit_state, ())
-    ]
+    periods += [(name, values.get(name), xi) for name, xi in CHECK_PERIODS.get(limit_state, ())]
     periods += [
         (f"max over [{c.spectral.period_range[0]:g}, {c.spectral.period_range[1]:.4g}] s",
          c.spectral.period, c.spectral.damping)

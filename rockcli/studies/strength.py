@@ -30,7 +30,7 @@ FORCE_RTOL = 1e-9
 
 
 #: How a member with only a failure elongation is verified (no steel clause applies).
-DISPLACEMENT_RULE = "displacement: its failure elongation fails_at (the paper's §4.2, Eq. 9–10)"
+DISPLACEMENT_RULE = "its failure elongation fails_at (the paper's §4.2, Eq. 9–10)"
 
 
 def restrainer_checks(block: Block, result: Assessment) -> list[dict[str, Any]]:

@@ -90,9 +90,10 @@ def newmark_peak(
     tail: float,
     damping: float = 0.05,
 ) -> np.ndarray:
-    """Sa(T) = ω²·max|u| [g] at 5 % damping (or ``damping``, a fraction) by Newmark's average acceleration (γ = 1/2,
-    β = 1/4; Chopra §5.4), the ground motion interpolated linearly onto steps of ``dt`` (an
-    integer fraction of the record's uniform step) and followed by ``tail`` seconds at rest.
+    """Sa(T) = ω²·max|u| [g] at 5 % damping (or ``damping``, a fraction) by Newmark's average
+    acceleration (γ = 1/2, β = 1/4; Chopra §5.4), the ground motion interpolated linearly
+    onto steps of ``dt`` (an integer fraction of the record's uniform step) and followed by
+    ``tail`` seconds at rest.
 
     An independent reference for rock's exact (Nigam & Jennings) recurrence: a different
     integrator, a finer step, explicit padding instead of a closed-form tail. Like rock (and
