@@ -75,7 +75,8 @@ def test_the_pdf_has_the_reports_pages_and_text(facade: tuple[str, bytes]) -> No
     pdfium = pytest.importorskip("pypdfium2", reason="pypdfium2 (test extra) is not installed")
     _, data = facade
     pdf = pdfium.PdfDocument(data)
-    assert 5 <= len(pdf) <= 12
+    # 13 pages with the 55 cases of the casebook's §10.2 table (which grows with the casebook)
+    assert 5 <= len(pdf) <= 15
     text = " ".join(pdf[i].get_textpage().get_text_range() for i in range(len(pdf)))
     for title in ("Identificazione", "Il modello", "Sito e azione sismica", "Analisi cinematica",
                   "Analisi del rocking", "Confronto dei due esiti", "NTC 2018 §10.2"):  # fmt: skip
