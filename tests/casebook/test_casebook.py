@@ -169,9 +169,15 @@ def test_bad_inline_model_names_the_case(tmp_path: Path) -> None:
 
 
 def test_not_a_folder_exits_2(tmp_path: Path) -> None:
+    # A missing folder is named before the command runs (issue 19), a file is refused by
+    # the option's type: each one `error:` line.
     code, _, err = invoke("--casebook", str(tmp_path / "absent"))
     assert code == 2
-    assert "--casebook: not a folder of case files" in err
+    assert err == f"error: {tmp_path / 'absent'}: --casebook: the folder does not exist\n"
+    (tmp_path / "file").write_text("", encoding="utf-8")
+    code, _, err = invoke("--casebook", str(tmp_path / "file"))
+    assert code == 2 and err.startswith("error: invalid value for '--casebook'")
+    assert "is a file" in err and err.count("\n") == 1
 
 
 # --- the hazard-grid cases ----------------------------------------------------------------------
