@@ -3,4 +3,4 @@
 from rockcli.cli.main import cli
 
 if __name__ == "__main__":
-    cli()
+    cli(prog_name="rock")  # the usage lines say "rock", as the installed command

@@ -31,6 +31,13 @@ def _escaped(char: str) -> str:
     return f"\\x{code:02x}" if code < 0x100 else f"\\u{code:04x}"
 
 
+def install_hint(extra: str) -> str:
+    """The command that installs an optional extra (``plot``, ``report``, ``dask``,
+    ``parquet``): rock installs from a clone of its repository, its distribution ``rockcli``
+    is not published on a package index: a hint that names it sends pip looking for nothing."""
+    return f"pip install '.[{extra}]' from the repository's folder"
+
+
 class RockError(Exception):
     """Base of every error rock raises on purpose."""
 

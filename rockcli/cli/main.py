@@ -163,7 +163,7 @@ def show_cache_note() -> None:
         click.echo(f"note: {jitcache.NOTE}", err=True)
 
 
-@click.group(cls=RockGroup, context_settings={"help_option_names": ["-h", "--help"]})
+@click.group("rock", cls=RockGroup, context_settings={"help_option_names": ["-h", "--help"]})
 @click.version_option(__version__, prog_name="rock")
 def cli() -> None:
     """Out-of-plane seismic assessment of masonry walls, altars and façades.

@@ -65,7 +65,7 @@ edition_option = click.option(
 def hazard_grid(help_text: str):
     """``--hazard-grid FILE``: the NTC Allegato B grid, with what it serves in the command."""
     return click.option(
-        "--hazard-grid", "grid_file", default=None, type=InputPath(),
+        "--hazard-grid", "grid_file", default=None, type=click.Path(dir_okay=False),
         help=help_text,
     )  # fmt: skip
 

@@ -22,5 +22,5 @@ plot_option = click.option(
     metavar="FILE",
     callback=_check,
     help="Also draw the result to FILE: .png or .svg "
-    "(needs matplotlib: pip install 'rockcli[plot]').",
+    "(needs matplotlib: pip install '.[plot]' from the repository's folder).",
 )

@@ -22,13 +22,14 @@ from rockcli.cli.options import (
     target_option,
     with_record_options,
 )
+from rockcli.errors import install_hint
 
 #: The report's languages (rockcli.document.words.LANGUAGES, kept here so that `rock --help`
 #: imports nothing of the report), the filing language first.
 LANGUAGES = ("it", "en")
 #: What each output needs, and the extra that installs it.
 NEEDS = {"html": ("jinja2", "matplotlib"), "pdf": ("jinja2", "matplotlib", "typst")}
-EXTRA = "pip install 'rockcli[report]'"
+EXTRA = install_hint("report")
 
 
 @click.command(cls=RockCommand, short_help="The calculation report of MODEL, as HTML (and PDF).")

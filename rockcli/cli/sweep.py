@@ -130,7 +130,8 @@ def terminate_as_interrupt() -> Iterator[None]:
     envvar="DASK_SCHEDULER_ADDRESS",
     show_envvar=True,
     metavar="ADDRESS",
-    help="Run on a dask cluster, e.g. tcp://host:8786 (needs rockcli[dask]).",
+    help="Run on a dask cluster, e.g. tcp://host:8786 (needs the dask extra: pip install "
+    "'.[dask]' from the repository's folder).",
 )
 @click.option(
     "--records-dir",
@@ -158,7 +159,7 @@ def terminate_as_interrupt() -> Iterator[None]:
     default="csv",
     show_default=True,
     help="The cases' file: cases.csv, or also cases.parquet (typed columns, for pandas and "
-    "polars; needs rockcli[parquet]).",
+    "polars; needs the parquet extra: pip install '.[parquet]').",
 )
 @click.option(
     "--check-tolerance",

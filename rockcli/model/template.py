@@ -5,9 +5,10 @@ are added afterwards, line by line: a note above each table, and above each key 
 own description from the schema (one source for the units and the allowed values). The text
 loads unchanged through :func:`rockcli.model.load.load_model` (tested).
 
-Values: the altar and the façade are the source paper's cases (§3.2 and §4.2,
-spec/paper-cases.md); the wall is a generic free-standing wall with the paper's systemic-study
-settings (§3.3: 0.9 × Housner's e; §4.4: width 3 m, unit weight 18 kN/m³).
+Values: the altar and the façade are the source paper's cases (§3.2 and §4.2), the same
+elements as examples/altar.toml and examples/facade.toml (tested); the wall is a generic
+free-standing wall with the paper's systemic-study settings (§3.3: 0.9 × Housner's e; §4.4:
+width 3 m, unit weight 18 kN/m³).
 """
 
 from __future__ import annotations
@@ -64,6 +65,25 @@ _NTC = {
 #: The [building] table: an element on the ground (Z = 0 needs no other key).
 _BUILDING = {"Z": 0.0}
 
+#: The altar's code check, as the paper's (§3.2, Fig. 6; examples/altar.toml): Circolare
+#: 617/2009, FC = 1.05, soil C, and the demand of Allegato B (DM 14/01/2008) at Reggiolo
+#: (10.807 E, 44.918 N) for TR = 50, 475 and 975 years.
+_ALTAR_NTC = {
+    "edition": "2009",
+    "FC": 1.05,
+    "q": 2.0,
+    "soil": "C",
+    "topography": "T1",
+    "VN": 50.0,
+    "CU": 1.0,
+    "mass_distribution": "lumped",
+    "demand": {
+        "SLD": {"ag": 0.0443, "F0": 2.568, "Tc_star": 0.262},
+        "SLV": {"ag": 0.1181, "F0": 2.574, "Tc_star": 0.278},
+        "SLC": {"ag": 0.1586, "F0": 2.556, "Tc_star": 0.284},
+    },
+}
+
 TEMPLATES: dict[Kind, dict[str, Any]] = {
     Kind.WALL: {
         "name": "Wall with a tie-rod",
@@ -95,20 +115,23 @@ TEMPLATES: dict[Kind, dict[str, Any]] = {
         "name": "Altar, B.V. Annunziata",
         "kind": "altar",
         "notes": "Equivalent prism of the altar (paper section 3.2): base length 2.40 m, "
-        "height 2.96 m from the top to the crack, thickness 0.487 m.",
+        "height 2.96 m from the top to the crack, thickness 0.487 m; its base 3.04 m up the "
+        "6.00 m altar, T1 = Ts = 1.09 s, as in the paper's code check (examples/altar.toml).",
         "geometry": {"R": 1.499, "alpha": 0.163, "width": 2.40},
         "mass": {"unit_weight": 18.0},
-        "restitution": {"model": "housner", "factor": 1.0},
+        "restitution": {"model": "housner"},
         "motion": {"sides": "two"},
         "analysis": _ANALYSIS,
-        "building": _BUILDING,
-        "ntc": _NTC,
+        "building": {"Z": 3.04, "H": 6.00, "gamma": 1.0, "psi": 0.51, "T1": 1.09},
+        "ntc": _ALTAR_NTC,
     },
     Kind.FACADE: {
-        "name": "Church facade with vault and tie-rod",
+        "name": "Façade, B.V. Annunziata",
         "kind": "facade",
         "notes": "Facade of B.V. Annunziata (paper section 4.2): transverse walls stop the "
-        "inward (negative) rotation; the facade rocks outward only.",
+        "inward (negative) rotation, the facade rocks outward only; the groin vault gives way "
+        "at 1 mm of support displacement, the S275 tie-rod yields at its design strength "
+        "(examples/facade.toml).",
         "geometry": {"R": 5.04, "alpha": 0.05},
         "mass": {"weight": 1755.0},
         "restitution": {"model": "housner"},
@@ -117,13 +140,12 @@ TEMPLATES: dict[Kind, dict[str, Any]] = {
         "building": _BUILDING,
         "ntc": _NTC,
         "restrainers": [
-            {"name": "groin vault", "k": 4e6, "radius": 7.0, "angle": 0.072},
+            {"name": "groin vault", "k": 4e6, "radius": 7.0, "angle": 0.072, "fails_at": 0.001},
             {
                 "name": "tie-rod",
                 "kind": "tie-rod",
                 "diameter": 0.02,
                 "length": 3.0,
-                "acts": "both",
                 "grade": "S275",
                 "radius": 7.0,
                 "angle": 0.072,

@@ -54,9 +54,7 @@ def test_at_least_twenty_cases_over_every_topic() -> None:
                    "zhang-makris.", "makris-konstantinidis.", "paper.altar-a0", "paper.altar-d0",
                    "paper.altar-du", "paper.altar-Ts", "paper.eq18", "paper.table2", "ntc.",
                    "hazard.", "chopra.", "alpha0.roof", "alpha0.pretensioned", "floor.",
-                   "suite.", "loads.period", "loads.e-", "loads.rebound", "loads.uplift",
-                   "thrust.uplift", "thrust.impulse", "tie.pretension", "tie.plastic",
-                   "tie.energy", "tie.break", "floor.uplift"):  # fmt: skip
+                   "suite."):  # fmt: skip
         assert any(i.startswith(prefix) for i in ids), prefix
 
 
@@ -161,37 +159,6 @@ def test_bad_case_file_exits_2_with_one_line(tmp_path: Path, text: str, where: s
     assert "Traceback" not in err + out
 
 
-def one_case(file: str, case_id: str) -> str:
-    """The text of one case of a bundled case file, its model path made absolute."""
-    text = (CASEBOOK / file).read_text(encoding="utf-8")
-    start = text.index(f'id = "{case_id}"')
-    start = text.rindex("[[cases]]", 0, start)
-    end = text.find("[[cases]]", start + 1)
-    case = text[start:] if end < 0 else text[start:end]
-    return case.replace('model = "models/', f'model = "{CASEBOOK / "models"}/')
-
-
-def test_a_release_of_a_restrainer_the_model_lacks_exits_2(tmp_path: Path) -> None:
-    """input.restrainer past the model's restrainers: one line naming the case and the field."""
-    case = one_case("ties.toml", "tie.plastic-elongation")
-    bad = case.replace("[cases.input]", "[cases.input]\nrestrainer = 2")
-    code, out, err = invoke("--casebook", str(write_casebook(tmp_path, bad)))
-    assert code == 2, out + err
-    assert err.count("\n") == 1 and "(case tie.plastic-elongation)" in err
-    assert "input.restrainer" in err and "1 to 1" in err
-
-
-def test_a_motion_that_does_not_uplift_fails_the_case(tmp_path: Path) -> None:
-    """A ramp too short to reach the uplift: nothing obtained, the case fails and says why."""
-    slow = one_case("thrusts.toml", "thrust.uplift-against").replace(
-        "duration = 5.0", "duration = 1.0"
-    )
-    code, out, _ = invoke("--casebook", str(write_casebook(tmp_path, slow)), "--format", "json")
-    assert code == 1
-    case = json.loads(out)["cases"][0]
-    assert case["obtained"] is None and "does not uplift" in case["note"]
-
-
 def test_bad_inline_model_names_the_case(tmp_path: Path) -> None:
     text = (CASEBOOK / "free-rocking.toml").read_text(encoding="utf-8")
     bad = text.replace("{ R = 1.0, alpha = 0.2 }", "{ R = -1.0, alpha = 0.2 }", 1)
@@ -202,14 +169,15 @@ def test_bad_inline_model_names_the_case(tmp_path: Path) -> None:
 
 
 def test_not_a_folder_exits_2(tmp_path: Path) -> None:
+    # A missing folder is named before the command runs (issue 19), a file is refused by
+    # the option's type: each one `error:` line.
     code, _, err = invoke("--casebook", str(tmp_path / "absent"))
     assert code == 2
-    assert "--casebook: the folder does not exist" in err
-    a_file = tmp_path / "a-file.toml"
-    a_file.write_text("", encoding="utf-8")
-    code, _, err = invoke("--casebook", str(a_file))
-    assert code == 2
-    assert "--casebook" in err and "folder" in err
+    assert err == f"error: {tmp_path / 'absent'}: --casebook: the folder does not exist\n"
+    (tmp_path / "file").write_text("", encoding="utf-8")
+    code, _, err = invoke("--casebook", str(tmp_path / "file"))
+    assert code == 2 and err.startswith("error: invalid value for '--casebook'")
+    assert "is a file" in err and err.count("\n") == 1
 
 
 # --- the hazard-grid cases ----------------------------------------------------------------------

@@ -128,7 +128,7 @@ def test_pdf_without_the_extra_names_it(tmp_path: Path, monkeypatch: pytest.Monk
     assert code == 2
     assert err.strip().splitlines() == [
         "error: --pdf: the PDF report needs typst, not installed (allowed: "
-        "pip install 'rockcli[report]')"
+        "pip install '.[report]' from the repository's folder)"
     ]
     assert not (tmp_path / "r.html").exists()
 

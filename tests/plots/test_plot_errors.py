@@ -58,14 +58,17 @@ def test_missing_matplotlib_is_refused_before_the_run(
 
     monkeypatch.setattr(importlib.util, "find_spec", find_spec)
     code, stdout, err = run(*COMMANDS["assess"], "--plot", str(tmp_path / "f.png"))
-    assert err == "error: plots need matplotlib: pip install 'rockcli[plot]'\n"
+    assert err == (
+        "error: plots need matplotlib: pip install '.[plot]' from the repository's folder\n"
+    )
     assert code == 2 and stdout == ""
 
 
 def test_plot_function_without_matplotlib(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
     # A None entry in sys.modules makes the import raise ImportError, as if not installed.
     monkeypatch.setitem(sys.modules, "matplotlib.figure", None)
-    with pytest.raises(InputError, match=r"^plots need matplotlib: pip install 'rockcli\[plot\]'$"):
+    hint = r"pip install '\.\[plot\]' from the repository's folder"
+    with pytest.raises(InputError, match=rf"^plots need matplotlib: {hint}$"):
         plots.plot_sweep(
             [{"R": 1.5, "alpha": 0.1, "record": "r", "code_collapse": True,
               "rocking_collapse": False}],

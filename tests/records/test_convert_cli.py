@@ -75,11 +75,18 @@ def test_scale_and_pga_together_are_refused(tmp_path: Path) -> None:
 
 
 def test_output_is_checked_before_reading(tmp_path: Path) -> None:
-    """An existing output without --force is refused before the (missing) input is read."""
+    """An existing output without --force is refused before the input is read: the input is
+    not a record, and the error is the output's. (A missing input is named first, with every
+    missing input, before the command runs: issue 19.)"""
     out = tmp_path / "exists.txt"
     out.write_text("keep me\n")
-    code, _, err = run("record", "convert", str(tmp_path / "missing.AT2"), "-o", str(out))
+    garbage = tmp_path / "garbage.AT2"
+    garbage.write_text("not a record\n")
+    code, _, err = run("record", "convert", str(garbage), "-o", str(out))
     assert code == 2 and "file exists" in err and "--force" in err
+    assert out.read_text() == "keep me\n"
+    code, _, err = run("record", "convert", str(tmp_path / "missing.AT2"), "-o", str(out))
+    assert (code, err) == (2, f"error: {tmp_path / 'missing.AT2'}: FILE: the file does not exist\n")
     assert out.read_text() == "keep me\n"
 
 

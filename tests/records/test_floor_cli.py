@@ -79,9 +79,10 @@ def test_plain_record_options_are_read(tmp_path: Path) -> None:
 def test_output_is_checked_before_reading(tmp_path: Path) -> None:
     out = tmp_path / "exists.txt"
     out.write_text("keep me\n")
-    code, _, err = run(
-        "record", "floor", str(tmp_path / "missing.AT2"), *PARAMETERS, "-o", str(out)
-    )
+    # The input is not a record: the error is the output's, so it was checked first.
+    garbage = tmp_path / "garbage.AT2"
+    garbage.write_text("not a record\n")
+    code, _, err = run("record", "floor", str(garbage), *PARAMETERS, "-o", str(out))
     assert code == 2 and "file exists" in err and "--force" in err
     assert out.read_text() == "keep me\n"
 

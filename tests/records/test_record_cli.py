@@ -84,10 +84,8 @@ def test_bad_file_is_one_error_line_and_exit_2(write_file: Callable[[str, str], 
 def test_missing_file_exit_2() -> None:
     code, _, err = run("record", "info", "nowhere.AT2")
     assert code == 2
-    assert err == (
-        "error: nowhere.AT2: cannot read the record file "
-        "(got 'No such file or directory'; allowed: an existing, readable file)\n"
-    )
+    # Named before the command runs, with every other missing input (issue 19).
+    assert err == "error: nowhere.AT2: FILES: the file does not exist\n"
 
 
 def test_bad_pulse_argument_exit_2(tmp_path: Path) -> None:

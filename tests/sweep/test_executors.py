@@ -37,9 +37,7 @@ def test_local_lanes() -> None:
         assert lanes[1].executor.submit(sum, [1, 2]).result() == 3
 
 
-@pytest.mark.skipif(
-    not HAS_DISTRIBUTED, reason="distributed not installed: pip install 'rockcli[dask]'"
-)
+@pytest.mark.skipif(not HAS_DISTRIBUTED, reason="distributed not installed: pip install '.[dask]'")
 def test_a_dask_cluster_gives_the_same_csv(write_study: WriteStudy, tmp_path: Path) -> None:
     from distributed import LocalCluster
 
@@ -60,9 +58,7 @@ def test_a_dask_cluster_gives_the_same_csv(write_study: WriteStudy, tmp_path: Pa
     assert (tmp_path / "dask" / "cases.csv").read_text() == local
 
 
-@pytest.mark.skipif(
-    not HAS_DISTRIBUTED, reason="distributed not installed: pip install 'rockcli[dask]'"
-)
+@pytest.mark.skipif(not HAS_DISTRIBUTED, reason="distributed not installed: pip install '.[dask]'")
 def test_an_unreachable_scheduler_is_one_error_line(
     write_study: WriteStudy, monkeypatch: pytest.MonkeyPatch
 ) -> None:

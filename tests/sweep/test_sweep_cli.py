@@ -79,9 +79,7 @@ def test_help_imports_no_numeric_stack() -> None:
 
 
 def test_the_collapse_map(tmp_path: Path, write_study: WriteStudy) -> None:
-    pytest.importorskip(
-        "matplotlib", reason="matplotlib not installed: pip install 'rockcli[plot]'"
-    )
+    pytest.importorskip("matplotlib", reason="matplotlib not installed: pip install '.[plot]'")
     png = tmp_path / "map.png"
     code, stdout, _ = sweep(str(write_study()), "--out", str(tmp_path / "o"), "--plot", str(png))
     assert code == 0, stdout

@@ -1,8 +1,8 @@
 """Plots of the results (PNG or SVG, chosen by the file suffix): output, like the tables.
 
-matplotlib is an optional dependency (``pip install 'rockcli[plot]'``), imported inside the
-functions (:mod:`.files`), so that ``rock --help`` and the numeric core never load it; the
-modules here import only the standard library at their top.
+matplotlib is an optional dependency (``pip install '.[plot]'`` from the repository's
+folder), imported inside the functions (:mod:`.files`), so that ``rock --help`` and the
+numeric core never load it; the modules here import only the standard library at their top.
 
 - :func:`plot_assessment`: θ/α of both polarities against time, over the record.
 - :func:`plot_kinematic`: the capacity curve a*–d* with the checks' demands.

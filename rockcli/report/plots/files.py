@@ -13,7 +13,7 @@ import importlib.util
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-from rockcli.errors import InputError
+from rockcli.errors import InputError, install_hint
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
@@ -22,7 +22,7 @@ if TYPE_CHECKING:
 FORMATS = {".png": "png", ".svg": "svg"}
 #: The option the path comes from, named in the error lines.
 OPTION = "--plot"
-MISSING = "plots need matplotlib: pip install 'rockcli[plot]'"
+MISSING = f"plots need matplotlib: {install_hint('plot')}"
 #: Resolution of PNG files [dots per inch].
 DPI = 150
 

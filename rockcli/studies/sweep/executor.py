@@ -10,8 +10,9 @@ scale"):
   once (``spawn`` where there is no fork server; never ``fork``: numba and threads), each
   with one thread (:func:`rockcli.studies.sweep.worker.init_worker`);
 - ``--scheduler tcp://host:8786`` (or DASK_SCHEDULER_ADDRESS): ``distributed.Client(addr)
-  .get_executor()``, from the ``dask`` extra (``pip install 'rockcli[dask]'``). The workers need
-  rock installed and the record files at the same paths (a shared file system).
+  .get_executor()``, from the ``dask`` extra (``pip install '.[dask]'`` from the
+  repository's folder). The workers need rock installed and the record files at the same
+  paths (a shared file system).
 """
 
 from __future__ import annotations
@@ -24,7 +25,7 @@ from concurrent.futures import Executor, ProcessPoolExecutor, ThreadPoolExecutor
 from contextlib import contextmanager, suppress
 from typing import NamedTuple
 
-from rockcli.errors import InputError
+from rockcli.errors import InputError, install_hint
 
 #: Start methods of the local worker processes, in order of preference (never fork: numba).
 START_METHODS = ("forkserver", "spawn")
@@ -173,7 +174,7 @@ def dask_executor(address: str) -> Iterator[list[Lane]]:
             "--scheduler needs dask.distributed",
             where="--scheduler",
             value=address,
-            allowed="pip install 'rockcli[dask]', or run locally with --jobs",
+            allowed=f"{install_hint('dask')}, or run locally with --jobs",
         ) from None
     try:
         client = Client(address, timeout=CONNECT_TIMEOUT)

@@ -23,14 +23,14 @@ from pathlib import Path
 from typing import Any, NoReturn
 
 from rockcli import __version__
-from rockcli.errors import InputError
+from rockcli.errors import InputError, install_hint
 from rockcli.outfile import write_text
 from rockcli.studies.sweep.study import RecordSource, StudyPlan
 
 CASES_FILE = "cases.csv"
 PARQUET_FILE = "cases.parquet"
 #: What --output parquet needs, and how to get it.
-PARQUET_EXTRA = "pip install 'rockcli[parquet]' (pyarrow)"
+PARQUET_EXTRA = f"{install_hint('parquet')} (pyarrow)"
 STATE_FILE = "sweep.json"
 SUMMARY_FILE = "summary.json"
 STATE_SCHEMA = 1
