@@ -86,6 +86,8 @@ def restrainer_action(
 DISPLACEMENT_BASIS = "its failure elongation fails_at (the paper's §4.2, Eq. 9–10)"
 #: The basis of a member's given strength (yield forces, anchor capacity), not a steel's.
 GIVEN_BASIS = "its strength as given in the model (yield_pos/yield_neg, anchor_capacity)"
+#: A member with neither a strength nor a failure elongation: nothing to verify it against.
+NO_BASIS = "no strength and no failure elongation in the model: not verified"
 
 
 def member_clause(sp: Restrainer) -> str:
@@ -93,7 +95,9 @@ def member_clause(sp: Restrainer) -> str:
     strength rule names it), the model's own values for any other member."""
     if sp.strength_rule.endswith(f"({STRENGTH_CLAUSE})"):
         return STRENGTH_CLAUSE
-    return GIVEN_BASIS if math.isfinite(sp.strength) else DISPLACEMENT_BASIS
+    if math.isfinite(sp.strength):
+        return GIVEN_BASIS
+    return DISPLACEMENT_BASIS if sp.can_fail else NO_BASIS
 
 
 def restrainer_actions(

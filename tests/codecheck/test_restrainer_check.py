@@ -19,7 +19,9 @@ from rockcli.codecheck.kinematic import Mechanism, capacity, rotation_at
 from rockcli.codecheck.position import Position
 from rockcli.codecheck.restrainer_check import (
     CONSTANT,
+    DISPLACEMENT_BASIS,
     GIVEN_BASIS,
+    NO_BASIS,
     NOT_ACTING,
     STRENGTH_CLAUSE,
     nonlinear_displacement_demand,
@@ -72,6 +74,11 @@ def test_force_is_its_own_demand() -> None:
     )
     [b] = restrainer_actions(cap_of(steel), 0.05, "du* = 0.05 m")
     assert b.clause == STRENGTH_CLAUSE
+    # Neither a strength nor a failure elongation: no basis is claimed.
+    [c] = restrainer_actions(cap_of(member("spring", math.inf)), 0.05, "du* = 0.05 m")
+    assert c.clause == NO_BASIS
+    [d] = restrainer_actions(cap_of(member("spring", math.inf, fails_at=0.01)), 0.05, "du*")
+    assert d.clause == DISPLACEMENT_BASIS
 
 
 def test_spring_demand_at_the_rotation_of_the_displacement() -> None:
