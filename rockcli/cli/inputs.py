@@ -11,14 +11,16 @@ from __future__ import annotations
 
 import os
 from collections.abc import Iterator
-from typing import Any
+from typing import Any, Literal
 
 import click
 
 from rockcli.errors import InputError
 
+#: What an input path may be.
+Takes = Literal["file", "folder", "either"]
 #: What a path that does not exist is called, by what the parameter takes.
-MISSING = {
+MISSING: dict[str, str] = {
     "file": "the file does not exist",
     "folder": "the folder does not exist",
     "either": "no file or folder of that name",
@@ -36,7 +38,7 @@ class InputPath(click.Path):
             a folder when it is given (``target``: a folder of records with --target).
     """
 
-    def __init__(self, takes: str = "file", *, folder_with: str | None = None) -> None:
+    def __init__(self, takes: Takes = "file", *, folder_with: str | None = None) -> None:
         super().__init__(dir_okay=takes != "file", file_okay=takes != "folder")
         self.takes = takes
         self.folder_with = folder_with
@@ -46,7 +48,7 @@ class InputPath(click.Path):
         if os.path.exists(path):
             return None
         folder = self.folder_with is not None and params.get(self.folder_with) is not None
-        takes = "folder" if folder else self.takes
+        takes: Takes = "folder" if folder else self.takes
         allowed = f"an existing folder of records with --{self.folder_with}" if folder else None
         return InputError(MISSING[takes], file=path, where=where, allowed=allowed)
 
@@ -54,21 +56,19 @@ class InputPath(click.Path):
 def missing_inputs(ctx: click.Context) -> list[InputError]:
     """Every path of the command's InputPath parameters that does not exist, in the order of
     the command's parameters."""
-    return [
-        error
-        for param, path in _input_paths(ctx)
-        if (error := param.type.missing(path, _label(param), ctx.params)) is not None  # type: ignore[attr-defined]
-    ]
+    checked = (kind.missing(path, label, ctx.params) for kind, label, path in _input_paths(ctx))
+    return [error for error in checked if error is not None]
 
 
-def _input_paths(ctx: click.Context) -> Iterator[tuple[click.Parameter, str]]:
+def _input_paths(ctx: click.Context) -> Iterator[tuple[InputPath, str, str]]:
+    """(its type, how the user names it, the path) of each path an InputPath parameter got."""
     for param in ctx.command.params:
         if not isinstance(param.type, InputPath) or param.name is None:
             continue
         value = ctx.params.get(param.name)
         for path in value if isinstance(value, tuple | list) else (value,):
             if path is not None:
-                yield param, os.fspath(path)
+                yield param.type, _label(param), os.fspath(path)
 
 
 def _label(param: click.Parameter) -> str:

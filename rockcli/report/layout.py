@@ -109,7 +109,7 @@ def fit(columns: Sequence[ColumnText], width: int) -> Layout:
     """The first layout of the module's steps that fits ``width`` (the last one otherwise)."""
     for frame in FRAMES:
         available = width - frame.overhead(len(columns))
-        for headers in header_choices(columns, available):
+        for headers in header_choices(columns):
             layout = _wrapped(columns, headers, available, frame, fold=False)
             if layout is not None:
                 return layout
@@ -141,7 +141,7 @@ def _wrapped(
     full = [_longest(c, h) for c, h in zip(columns, headers, strict=True)]
     if not fold and sum(full) <= available:
         return Layout(frame, headers, None)
-    caps = range(max(full), MIN_FOLDED - 1, -1) if fold else (None,)
+    caps = _caps(columns) if fold else (None,)
     best: Layout | None = None
     for cap in caps:
         least = [_least(c, h, cap=cap) for c, h in zip(columns, headers, strict=True)]
@@ -151,6 +151,18 @@ def _wrapped(
         if best is None or height(columns, layout) < height(columns, best):
             best = layout
     return best
+
+
+def _caps(columns: Sequence[ColumnText]) -> list[int]:
+    """The caps worth trying, widest first: each width of a text word down to MIN_FOLDED."""
+    words = {
+        word_width(word)
+        for column in columns
+        if not column.numeric
+        for cell in column.cells
+        for word in cell.split()
+    }
+    return sorted({w for w in words if w > MIN_FOLDED} | {MIN_FOLDED}, reverse=True)
 
 
 def height(columns: Sequence[ColumnText], layout: Layout) -> int:
@@ -164,7 +176,7 @@ def height(columns: Sequence[ColumnText], layout: Layout) -> int:
     )
 
 
-def header_choices(columns: Sequence[ColumnText], available: int) -> Iterator[tuple[str, ...]]:
+def header_choices(columns: Sequence[ColumnText]) -> Iterator[tuple[str, ...]]:
     """The full headers, then one more column with its short header at a time: the column
     whose short header narrows it most first."""
     headers = [c.headers[0] for c in columns]
