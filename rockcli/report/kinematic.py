@@ -22,7 +22,8 @@ def check_document(c: Check, edition: str) -> dict[str, Any]:
     """One check, full precision; a displacement check also says where it read the spectrum:
     ``demand_damping`` [%], ``demand_period`` [s] (the maximum's, over a range),
     ``demand_period_range`` [T_lo, T_hi] [s] (None: read at one period), ``demand_spectral``
-    [m] (the spectral displacement there at the limit state's own ag), ``demand_rule``."""
+    [m] (the spectral displacement there at the limit state's own ag), ``demand_at_secant``
+    [m] (the same at the secant period itself), ``demand_rule``."""
     sp = c.spectral
     return {
         "limit_state": c.limit_state,
@@ -41,6 +42,7 @@ def check_document(c: Check, edition: str) -> dict[str, Any]:
         if sp is None or sp.period_range is None
         else list(sp.period_range),
         "demand_spectral": None if sp is None else sp.value,
+        "demand_at_secant": None if sp is None else sp.at_secant,
         "demand_rule": None if sp is None else sp.rule,
     }
 
