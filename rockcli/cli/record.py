@@ -29,19 +29,37 @@ plain_output = click.option(
 )
 
 
-def _write_record(rec, output: str, detail: str) -> None:
-    """Write the record to ``output`` (or stdout for ``-``); warnings and "wrote" on stderr."""
+def _write_record(rec, output: str, detail: str, made_by: str) -> None:
+    """Write the record to ``output`` (or stdout for ``-``); warnings and "wrote" on stderr.
+
+    The record is first checked as every reader checks a record (InputError naming the
+    options ``made_by`` when it fails): nothing is written that ``rock record info`` refuses.
+    """
     from rockcli import outfile
-    from rockcli.records.files import write_plain
+    from rockcli.records.files import check_to_write, write_plain
     from rockcli.records.plain import format_plain
 
+    check_to_write(rec, made_by=made_by)
     for warning in rec.warnings:
         click.echo(f"warning: {warning}", err=True)
     if outfile.is_stdout(output):
         click.echo(format_plain(rec), nl=False)
         return
-    write_plain(rec, output, where="--output")
+    write_plain(rec, output, where="--output", made_by=made_by)
     announce_written(output, detail)
+
+
+def _named_options(call, options: dict[str, str]):
+    """``call()``, its InputError naming the option (``--dt``) where it names the argument."""
+    from rockcli.errors import InputError
+
+    try:
+        return call()
+    except InputError as exc:
+        where = options.get(exc.where or "", exc.where)
+        raise InputError(
+            exc.problem, file=exc.file, where=where, value=exc.value, allowed=exc.allowed
+        ) from None
 
 
 @click.group(
@@ -149,25 +167,15 @@ def convert(
     if span is not None:
         rec = transform.trim(rec, *span)
     if new_dt is not None:
-        rec = _resample(rec, new_dt)
+        rec = _named_options(lambda: transform.resample(rec, new_dt), {"dt": "--resample"})
     if scale is not None or pga is not None:
         rec = scale_record(rec, scale, pga)
     if flip:
         rec = transform.flip(rec)
-    _write_record(rec, output, f"{rec.npts} samples, dt = {rec.dt:g} s, PGA {rec.pga:.4g} g")
-
-
-def _resample(rec, new_dt: float):
-    """transform.resample, its errors naming --resample."""
-    from rockcli.errors import InputError
-    from rockcli.records import transform
-
-    try:
-        return transform.resample(rec, new_dt)
-    except InputError as exc:
-        raise InputError(
-            exc.problem, file=exc.file, where="--resample", value=exc.value, allowed=exc.allowed
-        ) from None
+    given = {"--trim": window, "--resample": new_dt, "--scale": scale, "--pga": pga}
+    made_by = ", ".join(option for option, value in given.items() if value is not None)
+    detail = f"{rec.npts} samples, dt = {rec.dt:g} s, PGA {rec.pga:.4g} g"
+    _write_record(rec, output, detail, made_by or "FILE")
 
 
 @record.command("pulse", short_help="Write a synthetic pulse KIND as a plain-text record.")
@@ -203,8 +211,13 @@ def pulse(
     from rockcli.records.pulses import make_pulse
 
     outfile.check_writable(output, force=force, where="--output")
-    rec = make_pulse(kind, amplitude, period, dt=dt, total=duration)
-    _write_record(rec, output, f"{rec.name}, {rec.npts} samples, dt = {rec.dt:g} s")
+    options = {"amplitude": "--amplitude", "period": "--period", "dt": "--dt",
+               "duration": "--duration"}  # fmt: skip
+    rec = _named_options(
+        lambda: make_pulse(kind, amplitude, period, dt=dt, total=duration), options
+    )
+    detail = f"{rec.name}, {rec.npts} samples, dt = {rec.dt:g} s"
+    _write_record(rec, output, detail, ", ".join(options.values()))
 
 
 #: ψ(Z) above this is refused: the mode shapes of the code's formulas stay below it.
@@ -218,11 +231,15 @@ MAX_PSI = 1.5
 @record_format
 @plain_dt
 @plain_units
-@click.option("--T1", "t1", type=float, required=True, help="First-mode period T1 [s], > 0.")
+@click.option(
+    "--T1", "t1", type=float, required=True, help="First-mode period T1 [s], 0.01 to 10."
+)
 @click.option(
     "--psi", type=float, required=True, help="Mode shape ψ at the element's height, 0 to 1.5."
 )
-@click.option("--gamma", type=float, required=True, help="Participation factor γ, > 0.")
+@click.option(
+    "--gamma", type=float, required=True, help="Participation factor γ, 0.001 to 3."
+)
 @click.option(
     "--xi",
     type=float,
@@ -257,21 +274,28 @@ def floor(
     _check_floor_parameters(t1, psi, gamma, xi)
     outfile.check_writable(output, force=force, where="--output")
     rec = _floor_record(load_record(file, record_format, dt, units, None, None), t1, psi, gamma, xi)
-    _write_record(rec, output, f"{rec.npts} samples, dt = {rec.dt:g} s, PGA {rec.pga:.4g} g")
+    detail = f"{rec.npts} samples, dt = {rec.dt:g} s, PGA {rec.pga:.4g} g"
+    _write_record(rec, output, detail, "--T1, --psi, --gamma, --xi")
 
 
 def _check_floor_parameters(t1: float, psi: float, gamma: float, xi: float) -> None:
-    """One InputError naming the option for each value out of range (NaN included)."""
-    import math
+    """One InputError naming the option for each value out of range (NaN included).
 
+    T1 and γ take the bounds of the model's building.T1 and building.gamma
+    (rockcli.model.bounds): the amplification γ·ψ·ẍ₁ of a γ = 1000 made a 900 g "floor
+    motion", and a T1 of 1e300 s or 1e-300 s NaN samples or an overflow.
+    """
     from rockcli.errors import InputError
+    from rockcli.model.bounds import MAX_PARTICIPATION, MAX_PERIOD, MIN_MODAL, MIN_PERIOD
 
     checks = (
-        ("--T1", t1, math.isfinite(t1) and t1 > 0, "a period > 0 [s]"),
+        ("--T1", t1, MIN_PERIOD <= t1 <= MAX_PERIOD,
+         f"a period {MIN_PERIOD:g} s ≤ T1 ≤ {MAX_PERIOD:g} s, as the model's building.T1"),
         ("--psi", psi, 0 <= psi <= MAX_PSI, f"0 ≤ ψ ≤ {MAX_PSI:g}"),
-        ("--gamma", gamma, math.isfinite(gamma) and gamma > 0, "a number > 0"),
+        ("--gamma", gamma, MIN_MODAL <= gamma <= MAX_PARTICIPATION,
+         f"{MIN_MODAL:g} ≤ γ ≤ {MAX_PARTICIPATION:g}, as the model's building.gamma"),
         ("--xi", xi, 0 <= xi < 1, "a fraction of critical, 0 ≤ ξ < 1 (0.05 = 5 %)"),
-    )
+    )  # fmt: skip
     for option, value, ok, allowed in checks:
         if not ok:
             raise InputError("out of range", where=option, value=value, allowed=allowed)

@@ -132,11 +132,33 @@ def retrofit_plan(model_path, name, at, length, diameters, grade, count):
             allowed="--at HEIGHT,FROM_PIVOT "
             "with --length L [m] for a new rod, or neither for the model's tie-rod",
         )
-    if length is not None and not length > 0:
-        raise InputError("not a length", where="--length", value=length, allowed="a number > 0 [m]")
+    _check_rod_options(length, count)
     placement = None if at is None else Placement(*parse_at(at), length)
     table = read_toml(model_path)
     model = validate_model(table, file=model_path)
     plan = make_plan(table, model, file=model_path, diameters_mm=sizes, name=name,
                      placement=placement, grade=grade, count=count)  # fmt: skip
     return plan, model
+
+
+def _check_rod_options(length: float | None, count: int | None) -> None:
+    """--length and --count within the bounds of the model's tie-rod length and count (an
+    out-of-range value named the first diameter tried, not the option)."""
+    from rockcli.errors import InputError
+    from rockcli.model.bounds import MAX_LENGTH, MIN_LENGTH
+    from rockcli.model.schema import MAX_BARS
+
+    if length is not None and not MIN_LENGTH <= length <= MAX_LENGTH:
+        raise InputError(
+            "not a length",
+            where="--length",
+            value=length,
+            allowed=f"{MIN_LENGTH:g} m ≤ L ≤ {MAX_LENGTH:g} m, as a tie-rod's length",
+        )
+    if count is not None and count > MAX_BARS:
+        raise InputError(
+            "too many bars",
+            where="--count",
+            value=count,
+            allowed=f"1 to {MAX_BARS} bars, as a tie-rod's count",
+        )

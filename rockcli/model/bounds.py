@@ -64,3 +64,9 @@ MAX_PERIOD = 10.0
 MAX_PARTICIPATION = 3.0
 #: Largest mode-shape ordinate ψ(Z) [-] (normalised to 1 at the top, NTC C8.7.1.2.1).
 MAX_MODE_SHAPE = 1.0
+#: Smallest and largest gravity g [m/s²]: the Earth's surface gravity lies between 9.76 m/s²
+#: (the summit of Nevado Huascarán) and 9.83 m/s² (the poles); engineers use 9.81, 9.80665
+#: or the round 10, all inside. Every unit slip is far outside (g in g: 1; in ft/s²: 32.2;
+#: in cm/s²: 981), and so are the values that made m = W/g, p² = 3g/(4R) and the code
+#: check's a0* = α0·g/(e*·FC) overflow or vanish (1e300, 1e-300).
+MIN_GRAVITY, MAX_GRAVITY = 9.0, 10.0

@@ -36,7 +36,8 @@ MIN_STRENGTH_FRACTION = 0.02
 #: matter; the paper's own softest springs (K = 1e3 N/m, §4.4) reach 0.0077.
 MIN_STIFFNESS_RATIO = 1e-3
 #: Standard gravity [m/s²] and the relative difference tolerated (g varies by 0.5 % on
-#: Earth; a laboratory may round it).
+#: Earth; a laboratory may round it, to 10). A value farther off but within the schema's
+#: bounds (9 to 10 m/s², rockcli.model.bounds) is a typo more likely than a place on Earth.
 STANDARD_GRAVITY, GRAVITY_RTOL = 9.80665, 0.02
 
 
@@ -191,6 +192,6 @@ def _gravity_warnings(model: Model) -> list[str]:
     if math.isclose(g, STANDARD_GRAVITY, rel_tol=GRAVITY_RTOL):
         return []
     return [
-        f"analysis.g = {g:g} m/s², not the Earth's {STANDARD_GRAVITY:g} m/s²: "
-        "g in cm/s², in g, or in ft/s²?"
+        f"analysis.g = {g:g} m/s², more than {GRAVITY_RTOL:.0%} from the Earth's standard "
+        f"{STANDARD_GRAVITY:g} m/s² (its surface gravity is 9.76 to 9.83 m/s²): a typo?"
     ]

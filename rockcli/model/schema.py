@@ -23,6 +23,7 @@ from pydantic import Field, model_validator
 from rockcli.codecheck.categories import LimitState
 from rockcli.codecheck.steel import GRADES, rod_area, tension_resistance
 from rockcli.model.bounds import (
+    MAX_GRAVITY,
     MAX_LENGTH,
     MAX_MODULUS,
     MAX_REACH,
@@ -30,6 +31,7 @@ from rockcli.model.bounds import (
     MAX_UNIT_WEIGHT,
     MAX_WEIGHT,
     MIN_ELONGATION,
+    MIN_GRAVITY,
     MIN_LENGTH,
     MIN_MODULUS,
     MIN_SLENDERNESS,
@@ -66,6 +68,11 @@ LONGEST_TAIL = 3600.0
 
 #: Default rest threshold on |θ̇| after an impact [rad/s] (spec/engine.md, "Rest rule").
 REST_VELOCITY = 1e-4
+#: Largest rest threshold accepted [rad/s]: 100 times the default. The threshold ends Zeno
+#: cascades of ever smaller impacts; at 0.1 rad/s it stopped the altar of the examples after
+#: its first impacts under El Centro (it survives, where it overturns at 1e-4 to 1e-2), and a
+#: large slender block rocks at p·α of a few 1e-3 rad/s (R = 100 m, α = 0.01: 2.7e-3 rad/s).
+MAX_REST_VELOCITY = 1e-2
 
 #: Relative slack when checking that a point lies within the thickness: the file's dimensions
 #: are rounded (the altar's R = 1.499, α = 0.163 give 2b = 0.4865 m for a 0.487 m wall: the
@@ -306,16 +313,23 @@ class Analysis(Table):
         le=LOOSEST_TOLERANCE,
     )
     rest_velocity: float = number(
-        "Rest rule: after an impact, |θ̇⁺| below this means rest; default 1e-4 [rad/s]",
+        "Rest rule: after an impact, |θ̇⁺| below this means rest, at most 1e-2; default 1e-4 "
+        "[rad/s]",
         REST_VELOCITY,
         gt=0,
+        le=MAX_REST_VELOCITY,
     )
     linearized: bool = Field(
         False,
         strict=True,
         description="Use the linearized equation (sin x ≈ x, cos x ≈ 1); default false",
     )
-    g: float = number("Gravity; default 9.81 [m/s²]", DEFAULT_GRAVITY, gt=0)
+    g: float = number(
+        "Gravity, 9 to 10 (the Earth's surface gravity is 9.76 to 9.83); default 9.81 [m/s²]",
+        DEFAULT_GRAVITY,
+        ge=MIN_GRAVITY,
+        le=MAX_GRAVITY,
+    )
     limit_ratio: dict[LimitState, LimitRatio] | None = Field(
         None,
         description="A record suite's limit on its measure of max θ/α, per limit state of the "

@@ -9,7 +9,9 @@ from __future__ import annotations
 from pathlib import Path
 
 from rockcli import outfile, textfile
+from rockcli.errors import InputError
 from rockcli.records.kinds import RecordFormat
+from rockcli.records.lines import check_record
 from rockcli.records.parse import parse_text
 from rockcli.records.plain import format_plain
 from rockcli.records.record import Record
@@ -59,10 +61,39 @@ def read_record(
     )
 
 
-def write_plain(record: Record, path: str | Path, *, where: str | None = None) -> None:
+def check_to_write(record: Record, *, made_by: str | None = None) -> None:
+    """Refuse a record that :func:`read_record` would refuse once written (InputError).
+
+    The checks are the readers' own (:func:`rockcli.records.lines.check_record`): a writer
+    never leaves a file that ``rock record info`` then refuses (NaN samples, |a| > 100 g,
+    a single sample, dt = 1e308).
+
+    Args:
+        record: the record about to be written.
+        made_by: the options or arguments that made the record (``--T1, --gamma``), named
+            in the error as where it comes from.
+    """
+    try:
+        check_record(record, file=None)
+    except InputError as exc:
+        at = f" at {exc.where}" if exc.where else ""
+        raise InputError(
+            f"the record it makes would not be a valid record: {exc.problem}{at}",
+            where=made_by,
+            value=exc.value,
+            allowed=exc.allowed,
+        ) from None
+
+
+def write_plain(
+    record: Record, path: str | Path, *, where: str | None = None, made_by: str | None = None
+) -> None:
     """Write a record as two-column plain text that :func:`read_record` reads back.
 
-    Atomically, without following a symlink at the target (:func:`rockcli.outfile.write_text`);
-    the overwrite policy is the caller's (:func:`rockcli.outfile.check_writable`, first).
+    First checked as the readers check it (:func:`check_to_write`; nothing is written when it
+    fails); then written atomically, without following a symlink at the target
+    (:func:`rockcli.outfile.write_text`); the overwrite policy is the caller's
+    (:func:`rockcli.outfile.check_writable`, first).
     """
+    check_to_write(record, made_by=made_by)
     outfile.write_text(path, format_plain(record), where=where)

@@ -54,6 +54,14 @@ SLIP_FACTORS = tuple(1.0 / unit.to_g for unit in (AccelUnit.M_S2, AccelUnit.CM_S
 #: Smallest time step [s] a record may declare (1 GHz): accelerographs sample at 50–1000 Hz,
 #: so a smaller step is a damaged header (DT = 1e-320 would pass "dt > 0"), not a record.
 MIN_DT = 1e-9
+#: Largest time step [s] a record may have (1 Hz): accelerographs sample at 50–1000 Hz and
+#: digitised analogue records at 50–100 Hz, so a larger step is a damaged header or a slip
+#: (a step in milliseconds, 5 for 0.005 s) and no motion a block rocks on; far above it the
+#: engines integrate over spans of 1e300 s.
+MAX_DT = 1.0
+#: Fewest samples a record may have: one sample is no motion (zero duration), and the
+#: two-column text rock writes needs two to give its time step.
+MIN_RECORD_SAMPLES = 2
 #: Most samples a transformation or a pulse may produce (80 MB of floats per array).
 MAX_SAMPLES = 10_000_000
 #: Numbers of one shape needed before a file counts as fixed-format (a coincidence in a
@@ -72,9 +80,8 @@ EDGE_TOL = 1e-9
 def check_positive(value: float, *, where: str, unit: str) -> float:
     """Return value if it is finite and > 0; InputError naming the argument otherwise."""
     if not (math.isfinite(value) and value > 0.0):
-        raise InputError(
-            "must be greater than 0", where=where, value=value, allowed=f"a number > 0 {unit}"
-        )
+        problem = "must be greater than 0" if math.isfinite(value) else "not a finite number"
+        raise InputError(problem, where=where, value=value, allowed=f"a finite number > 0 {unit}")
     return value
 
 
@@ -188,14 +195,19 @@ def parse_count(token: str, *, file: str, where: str) -> int:
 
 
 def check_dt(dt: float, *, file: str | None, where: str | None) -> float:
-    """Return dt if it is a finite number > 0 [s]; InputError otherwise (also below MIN_DT)."""
+    """Return dt if it is a finite number in [MIN_DT, MAX_DT] [s]; InputError otherwise."""
+    allowed = f"{MIN_DT:g} s ≤ dt ≤ {MAX_DT:g} s"
     if math.isfinite(dt) and 0.0 < dt < MIN_DT:
         raise InputError(
-            "the time step is implausibly small",
+            "the time step is implausibly small", file=file, where=where, value=dt, allowed=allowed
+        )
+    if math.isfinite(dt) and dt > MAX_DT:
+        raise InputError(
+            "the time step is implausibly large (a record samples at 50–1000 Hz)",
             file=file,
             where=where,
             value=dt,
-            allowed=f"dt ≥ {MIN_DT:g} s",
+            allowed=allowed,
         )
     if not (math.isfinite(dt) and dt > 0.0):
         raise InputError(
@@ -203,7 +215,7 @@ def check_dt(dt: float, *, file: str | None, where: str | None) -> float:
             file=file,
             where=where,
             value=dt,
-            allowed="dt > 0 [s]",
+            allowed=allowed,
         )
     return dt
 
@@ -333,7 +345,7 @@ def check_sample_count(count: float, *, where: str, what: str) -> int:
     return math.floor(count)
 
 
-def check_time_axis(time: np.ndarray, *, file: str) -> None:
+def check_time_axis(time: np.ndarray, *, file: str | None) -> None:
     """Times must be finite, strictly increasing, with a finite duration."""
     finite = np.isfinite(time)
     if not finite.all():
@@ -364,21 +376,54 @@ def check_time_axis(time: np.ndarray, *, file: str) -> None:
         )
 
 
+#: Why a value beyond MAX_ABS_ACCEL_G is in a file, and the fix (shown with the error).
+READ_CAUSE = " (a damaged file or a wrong unit)"
+
+
+def unit_fix(plain: bool) -> str:
+    """Where to look when a file's values are too large: its unit, as read."""
+    return "check --units" if plain else "check the unit the file's header declares"
+
+
 def check_accel(
-    accel: np.ndarray, time: np.ndarray, *, file: str, unit: str, plain: bool = False
+    accel: np.ndarray, time: np.ndarray, *, file: str | None, unit: str, cause: str, fix: str
 ) -> None:
-    """|a| ≤ MAX_ABS_ACCEL_G (NaN fails too); the message names the likely fix."""
+    """|a| ≤ MAX_ABS_ACCEL_G (NaN fails too); the message says why (``cause``) and the fix."""
     bad = ~(np.abs(accel) <= MAX_ABS_ACCEL_G)
     if bad.any():
         index = int(np.argmax(bad))
         raise InputError(
-            f"acceleration beyond {MAX_ABS_ACCEL_G:g} g (a damaged file or a wrong unit)",
+            f"acceleration beyond {MAX_ABS_ACCEL_G:g} g{cause}",
             file=file,
             where=f"sample {index + 1} (t = {float(time[index]):g} s)",
             value=f"{float(accel[index]):.6g} g (read as {unit})",
-            allowed=f"|a| ≤ {MAX_ABS_ACCEL_G:g} g; "
-            + ("check --units" if plain else "check the unit the file's header declares"),
+            allowed=f"|a| ≤ {MAX_ABS_ACCEL_G:g} g" + (f"; {fix}" if fix else ""),
         )
+
+
+def check_record(record: Record, *, file: str | None, cause: str = "", fix: str = "") -> None:
+    """What every record is, read from a file or about to be written (one set of checks).
+
+    At least MIN_RECORD_SAMPLES samples, dt in [MIN_DT, MAX_DT], a finite strictly
+    increasing time axis, |a| ≤ MAX_ABS_ACCEL_G with no NaN. The readers call it on what they
+    read (:func:`finish_record`), the writer on what it is about to write
+    (:func:`rockcli.records.files.write_plain`), so a file rock writes is one rock reads.
+
+    Args:
+        record: the record.
+        file: the file named in the errors (the one read; None for a record to write).
+        cause, fix: why an acceleration out of range is there, and what to check.
+    """
+    if record.npts < MIN_RECORD_SAMPLES:
+        raise InputError(
+            f"{record.npts} sample(s): a record needs at least {MIN_RECORD_SAMPLES}",
+            file=file,
+            value=record.npts,
+            allowed=f"{MIN_RECORD_SAMPLES} samples or more",
+        )
+    check_dt(record.dt, file=file, where="dt")
+    check_time_axis(record.time, file=file)
+    check_accel(record.accel, record.time, file=file, unit=record.unit, cause=cause, fix=fix)
 
 
 def pga_warnings(
@@ -423,9 +468,8 @@ def undeclared_unit_warning(pga: float) -> str:
 
 def finish_record(record: Record) -> Record:
     """Check a record just read (time axis, bounded accelerations) and add its warnings."""
-    check_time_axis(record.time, file=record.source)
     plain = record.format == "plain"
-    check_accel(record.accel, record.time, file=record.source, unit=record.unit, plain=plain)
+    check_record(record, file=record.source, cause=READ_CAUSE, fix=unit_fix(plain))
     warnings = pga_warnings(
         record.accel, unit=record.unit, plain=plain, declared=record.unit_declared
     )

@@ -23,7 +23,14 @@ import numpy as np
 
 from rockcli.errors import InputError
 from rockcli.records.kinds import PulseKind, RecordFormat
-from rockcli.records.lines import EDGE_TOL, check_positive, check_sample_count
+from rockcli.records.lines import (
+    EDGE_TOL,
+    MAX_ABS_ACCEL_G,
+    check_dt,
+    check_positive,
+    check_sample_count,
+)
+from rockcli.records.periods import MAX_PERIOD, MIN_PERIOD
 from rockcli.records.record import Record
 from rockcli.units import AccelUnit
 
@@ -35,8 +42,36 @@ RICKER_HALF_WIDTH = 1.5
 Shape = Callable[[np.ndarray], np.ndarray]
 
 
+def check_amplitude(amplitude: float) -> float:
+    """ap [g] in (0, MAX_ABS_ACCEL_G], the bound of every record read (InputError otherwise)."""
+    check_positive(amplitude, where="amplitude", unit="[g]")
+    if amplitude > MAX_ABS_ACCEL_G:
+        raise InputError(
+            "out of range",
+            where="amplitude",
+            value=amplitude,
+            allowed=f"0 < ap ≤ {MAX_ABS_ACCEL_G:g} g, as in every record rock reads",
+        )
+    return amplitude
+
+
+def check_period(period: float) -> float:
+    """Tp [s] in [MIN_PERIOD, MAX_PERIOD], the periods of a response spectrum (InputError)."""
+    if not MIN_PERIOD <= period <= MAX_PERIOD:
+        raise InputError(
+            "out of range",
+            where="period",
+            value=period,
+            allowed=f"{MIN_PERIOD:g} s ≤ Tp ≤ {MAX_PERIOD:g} s, the periods of a response "
+            "spectrum",
+        )
+    return period
+
+
 def _sample_count(length: float, dt: float, total: float | None) -> int:
     """Samples from t = 0 to max(length, total) [s]; total must not cut the pulse."""
+    if total is not None:
+        check_positive(total, where="duration", unit="[s]")
     if total is not None and total < length * (1.0 - EDGE_TOL):
         raise InputError(
             "the total duration is shorter than the pulse",
@@ -60,7 +95,7 @@ def _pulse_record(
     shape: Shape, length: float, dt: float, total: float | None, *, name: str, note: str
 ) -> Record:
     """Sample ``shape`` on 0 ≤ t ≤ length, zeros after; checks dt and the total duration."""
-    check_positive(dt, where="dt", unit="[s]")
+    check_dt(dt, file=None, where="dt")
     time = np.arange(_sample_count(length, dt, total)) * dt
     inside = time <= length * (1.0 + EDGE_TOL)
     accel = np.where(inside, shape(time), 0.0)
@@ -84,8 +119,8 @@ def rectangular(
     The last sample inside the pulse is at t < td, so a td that is a multiple of dt gives
     exactly td/dt samples at ap.
     """
-    check_positive(amplitude, where="amplitude", unit="[g]")
-    check_positive(duration, where="duration", unit="[s]")
+    check_amplitude(amplitude)
+    check_period(duration)  # td: the `period` of make_pulse
     end = duration - EDGE_TOL * dt
 
     def shape(t: np.ndarray) -> np.ndarray:
@@ -100,8 +135,8 @@ def _sine_family(
     kind: PulseKind, amplitude: float, period: float, dt: float, total: float | None
 ) -> Record:
     """The half-sine, one-sine and one-cosine pulses: ap·sin or ap·cos of ωp t."""
-    check_positive(amplitude, where="amplitude", unit="[g]")
-    omega = 2.0 * math.pi / check_positive(period, where="period", unit="[s]")
+    check_amplitude(amplitude)
+    omega = 2.0 * math.pi / check_period(period)
     trig, length, source = {
         PulseKind.HALF_SINE: (np.sin, period / 2.0, "Housner 1963"),
         PulseKind.ONE_SINE: (np.sin, period, "Makris & Roussos 2000, type A"),
@@ -137,8 +172,8 @@ def ricker(amplitude: float, period: float, *, dt: float, total: float | None = 
     a(t) = ap·(1 − 2π²fp²τ²)·exp(−π²fp²τ²), τ = t − tc (Ricker 1943); the support is
     0 ≤ t ≤ 3 Tp, where the tails have decayed to about 1e-8·ap.
     """
-    check_positive(amplitude, where="amplitude", unit="[g]")
-    centre = RICKER_HALF_WIDTH * check_positive(period, where="period", unit="[s]")
+    check_amplitude(amplitude)
+    centre = RICKER_HALF_WIDTH * check_period(period)
 
     def shape(t: np.ndarray) -> np.ndarray:
         arg = (math.pi * (t - centre) / period) ** 2
@@ -160,7 +195,8 @@ def make_pulse(
     """A pulse by kind; ``period`` is Tp [s] (for the rectangular pulse: its duration td).
 
     Raises:
-        InputError: an unknown kind, or a parameter that is not > 0.
+        InputError: an unknown kind, ap outside (0, 100] g, Tp outside [0.001, 100] s, dt
+            outside [1e-9, 1] s, a total duration shorter than the pulse, or too many samples.
     """
     try:
         chosen = PulseKind(str(kind))

@@ -15,6 +15,8 @@ from rockcli.errors import InputError
 from rockcli.records.lines import (
     EDGE_TOL,
     MAX_ABS_ACCEL_G,
+    MIN_RECORD_SAMPLES,
+    check_dt,
     check_positive,
     check_sample_count,
 )
@@ -107,12 +109,23 @@ def trim(record: Record, t0: float, t1: float) -> Record:
 def resample(record: Record, dt: float) -> Record:
     """Resample at a new uniform step dt [s] by linear interpolation (no anti-alias filter).
 
-    At most MAX_SAMPLES samples (InputError beyond). A coarser step can miss the peak: when
-    the PGA drops by more than PGA_LOSS_WARNING, the record carries a warning saying how much.
+    dt within the bounds of every record read (:func:`rockcli.records.lines.check_dt`), at
+    most MAX_SAMPLES samples and at least MIN_RECORD_SAMPLES (InputError otherwise). A coarser
+    step can miss the peak: when the PGA drops by more than PGA_LOSS_WARNING, the record
+    carries a warning saying how much.
     """
-    check_positive(dt, where="dt", unit="[s]")
+    check_dt(dt, file=None, where="dt")
     wanted = record.duration / dt * (1.0 + EDGE_TOL) + 1.0
     count = check_sample_count(wanted, where="dt", what=f"resampling at dt = {dt:g} s")
+    if count < MIN_RECORD_SAMPLES:
+        raise InputError(
+            f"resampling at dt = {dt:g} s leaves {count} sample(s) of the {record.duration:g} s "
+            "record",
+            file=record.source,
+            where="dt",
+            value=dt,
+            allowed=f"dt ≤ {record.duration:g} s (at least {MIN_RECORD_SAMPLES} samples)",
+        )
     time = record.time[0] + np.arange(count) * dt
     accel = np.interp(time, record.time, record.accel)
     note = f"resampled from dt = {record.dt:g} s to {dt:g} s (linear interpolation)"

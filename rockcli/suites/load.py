@@ -18,6 +18,7 @@ from pydantic_core import ErrorDetails
 
 from rockcli.codecheck.categories import Edition
 from rockcli.errors import InputError, printable
+from rockcli.model.bounds import MAX_PERIOD, MIN_PERIOD
 from rockcli.model.load import TRANSLATION, read_toml
 from rockcli.records.record import Record
 from rockcli.suites.schema import Suite, Target
@@ -321,8 +322,13 @@ def period_range(suite: Suite, file: str, period: float | None) -> tuple[float, 
     a, b = CODE_PERIOD_RANGE
     if period is None:
         return a, b
-    if not (math.isfinite(period) and period > 0):
-        raise InputError("out of range", where="--period", value=period, allowed="T > 0 [s]")
+    if not MIN_PERIOD <= period <= MAX_PERIOD:  # a building's T1 (1e300 s overflowed)
+        raise InputError(
+            "out of range",
+            where="--period",
+            value=period,
+            allowed=f"{MIN_PERIOD:g} s ≤ T ≤ {MAX_PERIOD:g} s, as a model's building.T1",
+        )
     return a, max(b, 2.0 * period)
 
 

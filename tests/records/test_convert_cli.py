@@ -125,8 +125,9 @@ def test_resample_lowering_the_pga_warns_on_stderr_and_in_the_file(tmp_path: Pat
 
 
 def test_resample_beyond_the_sample_cap_names_the_option(tmp_path: Path) -> None:
+    # The 3 s pulse at dt = 1e-8 s (within the bounds of a record's dt) is 3e8 samples.
     code, _, err = run(
-        "record", "convert", str(PULSE), "--resample", "1e-12", "-o", str(tmp_path / "x.txt")
+        "record", "convert", str(PULSE), "--resample", "1e-8", "-o", str(tmp_path / "x.txt")
     )
     assert code == 2 and err.startswith("error: --resample: ") and "10,000,000" in err
 

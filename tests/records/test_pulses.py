@@ -98,7 +98,7 @@ def test_total_duration_pads_with_zeros() -> None:
     [
         ("one-sine", {"amplitude": 0.0}, "amplitude"),
         ("one-sine", {"period": -1.0}, "period"),
-        ("rectangular", {"period": 0.0}, "duration"),
+        ("rectangular", {"period": 0.0}, "period"),
         ("ricker", {"dt": 0.0}, "dt"),
         ("half-sine", {"dt": 0.05}, "dt"),
         ("one-cosine", {"total": 0.2}, "duration"),

@@ -92,7 +92,9 @@ def test_bad_pulse_argument_exit_2(tmp_path: Path) -> None:
     args = ["record", "pulse", "ricker", "--amplitude", "-1", "--period", "0.5"]
     code, _, err = run(*args, "-o", str(tmp_path / "x.txt"))
     assert code == 2
-    assert err == "error: amplitude: must be greater than 0 (got -1.0; allowed: a number > 0 [g])\n"
+    assert err == (
+        "error: --amplitude: must be greater than 0 (got -1.0; allowed: a finite number > 0 [g])\n"
+    )
 
 
 def test_help_lists_the_record_commands() -> None:

@@ -326,15 +326,16 @@ def test_plain_file_whose_comment_says_units_of_g_stays_plain() -> None:
 
 
 def test_resample_is_capped() -> None:
+    # 0.25 s at dt = 1e-8 s (within a record's dt bounds): 2.5e7 samples.
     record = make_pulse("half-sine", 0.3, 0.5, dt=0.01)
     with pytest.raises(InputError) as caught:
-        resample(record, 1e-12)
+        resample(record, 1e-8)
     assert f"{MAX_SAMPLES:,}" in str(caught.value.allowed)
 
 
 def test_pulse_is_capped() -> None:
     with pytest.raises(InputError, match="samples"):
-        make_pulse("half-sine", 0.3, 0.5, dt=1e-12)
+        make_pulse("half-sine", 0.3, 0.5, dt=1e-8)
 
 
 # Item 12: linear header patterns --------------------------------------------------------------

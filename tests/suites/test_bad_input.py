@@ -136,10 +136,13 @@ def test_period_conflicts_with_the_files_range(tmp_path: Path) -> None:
     assert refused(path, "--period", "0.5").startswith("error: --period: conflicts with")
 
 
-@pytest.mark.parametrize("value", ["0", "-1", "nan", "inf"])
+@pytest.mark.parametrize("value", ["0", "-1", "nan", "inf", "1e300", "1e-300", "10.5"])
 def test_bad_period(tmp_path: Path, value: str) -> None:
+    # Issue 20, item 8: 1e300 exited 3 (an overflow in the spectra up to 2T), 1e-300 passed;
+    # T is bounded as a model's building.T1, 0.01 to 10 s.
     path = write_suite(tmp_path, THREE)
-    assert refused(path, "--period", value).startswith("error: --period: out of range")
+    line = refused(path, "--period", value)
+    assert line.startswith("error: --period: out of range") and "0.01 s ≤ T ≤ 10 s" in line
 
 
 def test_grid_without_a_site_is_refused(tmp_path: Path) -> None:

@@ -60,9 +60,9 @@ analysis = optional(
         "overturn_angle": floats(1e-3, math.pi / 2),
         "rtol": floats(1e-12, 1e-2),
         "atol": floats(1e-12, 1e-2),
-        "rest_velocity": floats(1e-9, 1.0),
+        "rest_velocity": floats(1e-9, 1e-2),
         "linearized": st.booleans(),
-        "g": floats(1.0, 20.0),
+        "g": floats(9.0, 10.0),
     }
 )
 

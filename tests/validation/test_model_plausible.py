@@ -112,9 +112,21 @@ def test_tie_rod_diameter_in_millimetres() -> None:
 
 
 @pytest.mark.parametrize("g", [981.0, 1.0, 32.17])
-def test_gravity_in_other_units(g: float) -> None:
-    (found,) = warnings_of(analysis={"g": g})
-    assert found.startswith(f"analysis.g = {g:g} m/s²")
+def test_gravity_in_other_units_is_out_of_range(g: float) -> None:
+    # g in cm/s², in g, in ft/s²: outside the Earth's 9.76–9.83 m/s² by a factor of 3 or
+    # more, refused by the schema's bounds (9 to 10 m/s², rockcli/model/bounds.py).
+    with pytest.raises(InputError, match=r"analysis\.g: out of range") as info:
+        warnings_of(analysis={"g": g})
+    assert info.value.allowed == "a number >= 9 and <= 10 [m/s²]"
+
+
+@pytest.mark.parametrize(("g", "warned"), [(9.3, True), (9.81, False), (10.0, False)])
+def test_gravity_far_from_the_earths_warns(g: float, warned: bool) -> None:
+    # Within the bounds but more than 2 % from 9.80665 m/s² (below 9.61): a typo.
+    found = warnings_of(analysis={"g": g})
+    assert bool(found) is warned
+    if warned:
+        assert found[0].startswith(f"analysis.g = {g:g} m/s², more than 2% from")
 
 
 # Issue 19, item 4: a restrainer typed in kN where N is asked ----------------------------------
