@@ -231,15 +231,11 @@ MAX_PSI = 1.5
 @record_format
 @plain_dt
 @plain_units
-@click.option(
-    "--T1", "t1", type=float, required=True, help="First-mode period T1 [s], 0.01 to 10."
-)
+@click.option("--T1", "t1", type=float, required=True, help="First-mode period T1 [s], 0.01 to 10.")
 @click.option(
     "--psi", type=float, required=True, help="Mode shape ψ at the element's height, 0 to 1.5."
 )
-@click.option(
-    "--gamma", type=float, required=True, help="Participation factor γ, 0.001 to 3."
-)
+@click.option("--gamma", type=float, required=True, help="Participation factor γ, 0.001 to 3.")
 @click.option(
     "--xi",
     type=float,

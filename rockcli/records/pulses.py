@@ -62,8 +62,7 @@ def check_period(period: float) -> float:
             "out of range",
             where="period",
             value=period,
-            allowed=f"{MIN_PERIOD:g} s ≤ Tp ≤ {MAX_PERIOD:g} s, the periods of a response "
-            "spectrum",
+            allowed=f"{MIN_PERIOD:g} s ≤ Tp ≤ {MAX_PERIOD:g} s, the periods of a response spectrum",
         )
     return period
 

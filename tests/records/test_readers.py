@@ -166,9 +166,7 @@ def test_forced_format_skips_detection() -> None:
 
 
 def test_record_name_is_the_file_stem(write_file: Callable[[str, str], Path]) -> None:
-    path = write_file(
-        "AQV_EW.cor.acc", CORACC_HEAD.format(n=2) + " 1.0000000E+00 5.0000000E-01\n"
-    )
+    path = write_file("AQV_EW.cor.acc", CORACC_HEAD.format(n=2) + " 1.0000000E+00 5.0000000E-01\n")
     assert read_record(path).name == "AQV_EW"
     assert read_record(path).source == str(path)
 

@@ -33,7 +33,6 @@ VALID: dict[str, Any] = {
 }
 
 
-
 #: The keys that, with the one under test, make a valid [[loads]] or [[thrusts]] table.
 AT_THE_TOP: dict[str, dict[str, Any]] = {
     "loads": {"position": "top"},
