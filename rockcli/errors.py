@@ -24,8 +24,27 @@ def printable(text: str) -> str:
     return "".join(_escaped(c) for c in text)
 
 
+#: The line breaks and tab a document keeps (a model's notes run over several lines; HTML,
+#: SVG and Typst take them as white space).
+DOCUMENT_WHITESPACE = frozenset("\t\n\r")
+
+
+def display_text(text: str) -> str:
+    """``text`` safe for a document or a figure (the HTML and PDF report, a plot file).
+
+    As :func:`printable`, but tab and line breaks are kept: control characters (a bell or an
+    escape sequence in a record's name), bidirectional controls, and the code points XML
+    forbids (surrogates, U+FFFE, U+FFFF, which make an SVG figure unreadable to Typst) are
+    shown as ``\\xNN``/``\\uNNNN``, so the reader sees that the name holds them.
+    """
+    if text.isprintable():
+        return text
+    return "".join(c if c in DOCUMENT_WHITESPACE else _escaped(c) for c in text)
+
+
 def _escaped(char: str) -> str:
-    if unicodedata.category(char) != "Cc" and char not in BIDI_CONTROLS:
+    category = unicodedata.category(char)
+    if category not in ("Cc", "Cs") and char not in BIDI_CONTROLS and char not in "\ufffe\uffff":
         return char
     code = ord(char)
     return f"\\x{code:02x}" if code < 0x100 else f"\\u{code:04x}"

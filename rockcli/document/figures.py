@@ -40,9 +40,13 @@ def new_figure(width: float, height: float) -> MplFigure:
 
 def svg_markup(fig: MplFigure) -> str:
     """The figure as an <svg> element to inline in HTML (no XML prolog, no fixed size: it
-    scales to the width of the page)."""
+    scales to the width of the page); its texts cleaned first
+    (:func:`rockcli.report.plots.files.clean_texts`)."""
+    from rockcli.report.plots.files import clean_texts
+
     buffer = io.StringIO()
     try:
+        clean_texts(fig)
         fig.savefig(buffer, format="svg", metadata={"Date": None})
     finally:
         fig.clear()

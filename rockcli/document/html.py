@@ -4,10 +4,16 @@ no link to anything outside it; print CSS for A4 (a browser prints it as the rep
 from __future__ import annotations
 
 from rockcli.document.content import Document
+from rockcli.errors import display_text
 
 
 def render_html(doc: Document) -> str:
-    """The HTML page of a Document (Jinja2, every text escaped except the figures' SVG)."""
+    """The HTML page of a Document (Jinja2, every text escaped except the figures' SVG).
+
+    Every text is also shown through :func:`rockcli.errors.display_text` (the ``finalize`` of
+    the environment): a control character in a model's or a record's name is written as
+    ``\\x07``, never as the raw byte HTML escaping leaves in place.
+    """
     from jinja2 import Environment, PackageLoader, StrictUndefined, select_autoescape
 
     env = Environment(
@@ -15,5 +21,15 @@ def render_html(doc: Document) -> str:
         autoescape=select_autoescape(("html", "j2")),
         undefined=StrictUndefined,
         trim_blocks=False,
+        finalize=_shown,
     )
     return env.get_template("report.html.j2").render(doc=doc)
+
+
+def _shown(value: object) -> object:
+    """A text as the page shows it; markup (the figures' SVG, already clean) as it is."""
+    from markupsafe import Markup
+
+    if isinstance(value, str) and not isinstance(value, Markup):
+        return display_text(value)
+    return value

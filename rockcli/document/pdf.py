@@ -12,18 +12,20 @@ import tempfile
 from pathlib import Path
 
 from rockcli.document.content import Document, Figure
+from rockcli.errors import DOCUMENT_WHITESPACE, display_text
 
 #: Characters with a meaning in Typst markup, escaped with a backslash in text.
 TYPST_SPECIAL = "\\#$*_`<>@[]~/=-+'\"."
 
 
 def typst_text(text: object) -> str:
-    """Text as literal Typst markup: every character with a meaning escaped."""
+    """Text as literal Typst markup: every character with a meaning escaped, control
+    characters shown as ``\\xNN`` (:func:`rockcli.errors.display_text`)."""
     out = []
-    for ch in str(text):
+    for ch in display_text(str(text)):
         if ch in TYPST_SPECIAL:
             out.append("\\" + ch)
-        elif ch == "\n":
+        elif ch in DOCUMENT_WHITESPACE:  # a line break or tab: a space in running text
             out.append(" ")
         else:
             out.append(ch)
@@ -31,8 +33,9 @@ def typst_text(text: object) -> str:
 
 
 def typst_string(text: object) -> str:
-    """Text as a Typst string literal."""
-    return '"' + str(text).replace("\\", "\\\\").replace('"', '\\"') + '"'
+    """Text as a Typst string literal (control characters shown as ``\\xNN``)."""
+    shown = "".join(" " if c in DOCUMENT_WHITESPACE else c for c in display_text(str(text)))
+    return '"' + shown.replace("\\", "\\\\").replace('"', '\\"') + '"'
 
 
 def typst_source(doc: Document) -> str:

@@ -66,18 +66,23 @@ def write_report(
 def write_document(
     document: Document, html_path: str, pdf_path: str | None, classification: str
 ) -> list[tuple[str, str]]:
-    """Write the report as HTML (and PDF); what was written, for the "wrote" lines."""
-    from rockcli.document.html import render_html
-    from rockcli.outfile import write_bytes, write_text
+    """Write the report as HTML (and PDF); what was written, for the "wrote" lines.
 
-    write_text(html_path, render_html(document), where="--output")
-    written = [(html_path, f"calculation report ({document.lang}), {classification}")]
+    Both are made before either is written: when the PDF cannot be typeset, no HTML is left
+    behind to be filed as if the run had ended well.
+    """
+    from rockcli.document.html import render_html
+    from rockcli.outfile import write_bytes
+
+    outputs = [(html_path, render_html(document).encode("utf-8"), "--output",
+                f"calculation report ({document.lang}), {classification}")]  # fmt: skip
     if pdf_path is not None:
         from rockcli.document.pdf import render_pdf
 
-        write_bytes(pdf_path, render_pdf(document), where="--pdf")
-        written.append((pdf_path, "the same report as PDF"))
-    return written
+        outputs.append((pdf_path, render_pdf(document), "--pdf", "the same report as PDF"))
+    for path, data, option, _ in outputs:
+        write_bytes(path, data, where=option)
+    return [(path, detail) for path, _, _, detail in outputs]
 
 
 def write_suite_report(

@@ -87,7 +87,8 @@ def _sample_count(length: float, dt: float, total: float | None) -> int:
         )
     end = length if total is None else max(length, total)
     wanted = end / dt * (1.0 + EDGE_TOL) + 1.0
-    return check_sample_count(wanted, where="dt", what=f"a pulse of {end:g} s at dt = {dt:g} s")
+    where = "dt" if end == length else "duration"  # the longer of the two sets the count
+    return check_sample_count(wanted, where=where, what=f"a record of {end:g} s at dt = {dt:g} s")
 
 
 def _pulse_record(

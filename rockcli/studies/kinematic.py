@@ -26,6 +26,7 @@ from rockcli.codecheck.restrainer_check import nonlinear_displacement_demand, re
 from rockcli.codecheck.result import Check, KinematicResult, Location
 from rockcli.errors import InputError
 from rockcli.mechanics import Block
+from rockcli.model.bounds import MIN_AG
 from rockcli.model.derive_ntc import NtcSettings
 from rockcli.model.schema import Model
 from rockcli.records.record import Record
@@ -191,12 +192,12 @@ def demands(
             from rockcli.codecheck.response import RecordSpectrum
 
             spectrum = RecordSpectrum.from_record(record, g=g)
-        if spectrum.pga_ground <= 0.0:
+        if not spectrum.pga_ground >= MIN_AG:  # 1e-310 g made capacity/demand infinite
             raise InputError(
-                "the record does not move: its spectrum cannot be the code demand",
+                "the record barely moves: its spectrum cannot be the code demand",
                 file=record.source,
                 value=f"PGA {spectrum.pga_ground:g} g",
-                allowed="a record with a nonzero acceleration",
+                allowed=f"a record whose PGA is at least {MIN_AG:g} g, as a spectrum's ag",
             )
         states = LIMIT_STATES[settings.edition]
         return {ls: record_demand(ls, spectrum, record.name) for ls in states}

@@ -13,7 +13,7 @@ import importlib.util
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-from rockcli.errors import InputError, install_hint
+from rockcli.errors import InputError, display_text, install_hint
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
@@ -56,14 +56,41 @@ def new_figure(path: str | Path, size: tuple[float, float]) -> Figure:
     return Figure(figsize=size, layout="constrained")
 
 
+def clean_texts(fig: Figure) -> None:
+    """Make every text of the figure safe to draw and to write, before it is saved.
+
+    The texts carry names from the user's files (a model, a record, a restrainer): a control
+    character in one (``\\x07``, an escape sequence) reached the SVG, which Typst then refused,
+    and matplotlib warned of a missing glyph; a ``$`` pair made matplotlib parse the name as
+    mathematics (``$\\frac$`` raised). Each text is passed through
+    :func:`rockcli.errors.display_text` and drawn literally (rock's own labels use no
+    mathematics). The tick labels are the formatters' numbers, left as they are.
+    """
+    from matplotlib.text import Text
+
+    ticks = {
+        id(label)
+        for ax in fig.axes
+        for axis in (ax.xaxis, ax.yaxis)
+        for tick in (*axis.get_major_ticks(), *axis.get_minor_ticks())
+        for label in (tick.label1, tick.label2)
+    }
+    for text in fig.findobj(Text):
+        if id(text) not in ticks:
+            text.set_text(display_text(text.get_text()))
+            text.set_parse_math(False)
+
+
 def save(fig: Figure, path: str | Path) -> None:
-    """Write the figure to ``path`` atomically (rockcli.outfile: temporary file + rename)."""
+    """Write the figure to ``path`` atomically (rockcli.outfile: temporary file + rename),
+    its texts cleaned first (:func:`clean_texts`)."""
     from io import BytesIO
 
     from rockcli.outfile import write_bytes
 
     buffer = BytesIO()
     try:
+        clean_texts(fig)
         fig.savefig(buffer, format=plot_format(path), dpi=DPI)
     finally:
         fig.clear()
