@@ -133,7 +133,7 @@ def _window(value: str | None) -> tuple[float, float] | None:
     "new_dt",
     type=float,
     default=None,
-    help="Resample to this time step [s] (linear interpolation).",
+    help="Resample to this time step [s], 1e-9 to 1 (linear interpolation).",
 )
 @plain_output
 @force_option
@@ -180,15 +180,18 @@ def convert(
 
 @record.command("pulse", short_help="Write a synthetic pulse KIND as a plain-text record.")
 @click.argument("kind", type=click.Choice([str(k) for k in PulseKind]))
-@click.option("--amplitude", type=float, required=True, help="Peak acceleration ap [g].")
+@click.option("--amplitude", type=float, required=True, help="Peak acceleration ap [g], up to 100.")
 @click.option(
     "--period",
     type=float,
     required=True,
-    help="Tp [s]: 2π/ωp of the sine pulses (the half-sine lasts Tp/2, one-sine and one-cosine "
-    "Tp), 1/fp of the Ricker wavelet (it lasts 3 Tp), the duration of the rectangular pulse.",
+    help="Tp [s], 0.001 to 100: 2π/ωp of the sine pulses (the half-sine lasts Tp/2, one-sine "
+    "and one-cosine Tp), 1/fp of the Ricker wavelet (it lasts 3 Tp), the duration of the "
+    "rectangular pulse.",
 )
-@click.option("--dt", type=float, default=0.005, show_default=True, help="Time step [s].")
+@click.option(
+    "--dt", type=float, default=0.005, show_default=True, help="Time step [s], 1e-9 to 1."
+)
 @click.option(
     "--duration",
     type=float,

@@ -149,3 +149,18 @@ def test_retrofit_rod_options_name_themselves(value: str, option: str) -> None:
     args = ["retrofit", WALL, "--record", PULSE, "--at", "3,0.2", "--length", "3", option, value]
     result = CliRunner().invoke(cli, args)
     assert result.exit_code == 2 and result.stderr.startswith(f"error: {option}: ")
+
+
+def test_the_helps_state_the_bounds_the_checks_apply() -> None:
+    # The help texts give the bounds as numbers; they must be the constants the checks use.
+    from rockcli.model.bounds import MAX_PARTICIPATION, MAX_PERIOD, MIN_MODAL, MIN_PERIOD
+    from rockcli.records import periods
+    from rockcli.records.lines import MAX_ABS_ACCEL_G, MAX_DT, MIN_DT
+
+    floor = CliRunner().invoke(cli, ["record", "floor", "--help"], terminal_width=200).stdout
+    assert f"T1 [s], {MIN_PERIOD:g} to {MAX_PERIOD:g}." in floor
+    assert f"γ, {MIN_MODAL:g} to {MAX_PARTICIPATION:g}." in floor
+    pulse = CliRunner().invoke(cli, ["record", "pulse", "--help"], terminal_width=200).stdout
+    assert f"ap [g], up to {MAX_ABS_ACCEL_G:g}." in pulse
+    assert f"Tp [s], {periods.MIN_PERIOD:g} to {periods.MAX_PERIOD:g}:" in pulse
+    assert f"Time step [s], {MIN_DT:.0e} to {MAX_DT:g}.".replace("e-09", "e-9") in pulse
