@@ -376,43 +376,56 @@ def check_time_axis(time: np.ndarray, *, file: str | None) -> None:
         )
 
 
-#: Why a value beyond MAX_ABS_ACCEL_G is in a file, and the fix (shown with the error).
-READ_CAUSE = " (a damaged file or a wrong unit)"
+class Reading(NamedTuple):
+    """How a record was read, for the error of a value out of range: the unit the file's
+    values were taken in, and whether the unit came from ``--units`` (a plain file)."""
 
-
-def unit_fix(plain: bool) -> str:
-    """Where to look when a file's values are too large: its unit, as read."""
-    return "check --units" if plain else "check the unit the file's header declares"
+    unit: str
+    plain: bool
 
 
 def check_accel(
-    accel: np.ndarray, time: np.ndarray, *, file: str | None, unit: str, cause: str, fix: str
+    accel: np.ndarray, time: np.ndarray, *, file: str | None, reading: Reading | None
 ) -> None:
-    """|a| ≤ MAX_ABS_ACCEL_G (NaN fails too); the message says why (``cause``) and the fix."""
+    """|a| ≤ MAX_ABS_ACCEL_G (NaN fails too). For a record read, the message names the likely
+    cause (a damaged file or a wrong unit) and the unit to check; ``reading`` None: a record
+    made by rock (a transformation, a pulse, a floor motion), whose values have no unit slip.
+    """
     bad = ~(np.abs(accel) <= MAX_ABS_ACCEL_G)
-    if bad.any():
-        index = int(np.argmax(bad))
-        raise InputError(
-            f"acceleration beyond {MAX_ABS_ACCEL_G:g} g{cause}",
-            file=file,
-            where=f"sample {index + 1} (t = {float(time[index]):g} s)",
-            value=f"{float(accel[index]):.6g} g (read as {unit})",
-            allowed=f"|a| ≤ {MAX_ABS_ACCEL_G:g} g" + (f"; {fix}" if fix else ""),
+    if not bad.any():
+        return
+    index = int(np.argmax(bad))
+    value = f"{float(accel[index]):.6g} g"
+    problem = f"acceleration beyond {MAX_ABS_ACCEL_G:g} g"
+    allowed = f"|a| ≤ {MAX_ABS_ACCEL_G:g} g"
+    if reading is not None:
+        value += f" (read as {reading.unit})"
+        problem += " (a damaged file or a wrong unit)"
+        allowed += "; " + (
+            "check --units" if reading.plain else "check the unit the file's header declares"
         )
+    raise InputError(
+        problem,
+        file=file,
+        where=f"sample {index + 1} (t = {float(time[index]):g} s)",
+        value=value,
+        allowed=allowed,
+    )
 
 
-def check_record(record: Record, *, file: str | None, cause: str = "", fix: str = "") -> None:
+def check_record(record: Record, *, file: str | None, reading: Reading | None = None) -> None:
     """What every record is, read from a file or about to be written (one set of checks).
 
     At least MIN_RECORD_SAMPLES samples, dt in [MIN_DT, MAX_DT], a finite strictly
     increasing time axis, |a| ≤ MAX_ABS_ACCEL_G with no NaN. The readers call it on what they
     read (:func:`finish_record`), the writer on what it is about to write
-    (:func:`rockcli.records.files.write_plain`), so a file rock writes is one rock reads.
+    (:func:`rockcli.records.files.check_to_write`), so a file rock writes is one rock reads.
 
     Args:
         record: the record.
         file: the file named in the errors (the one read; None for a record to write).
-        cause, fix: why an acceleration out of range is there, and what to check.
+        reading: how a record read was read (its unit, plain or not), for the hint of an
+            acceleration out of range; None for a record about to be written.
     """
     if record.npts < MIN_RECORD_SAMPLES:
         raise InputError(
@@ -423,7 +436,7 @@ def check_record(record: Record, *, file: str | None, cause: str = "", fix: str 
         )
     check_dt(record.dt, file=file, where="dt")
     check_time_axis(record.time, file=file)
-    check_accel(record.accel, record.time, file=file, unit=record.unit, cause=cause, fix=fix)
+    check_accel(record.accel, record.time, file=file, reading=reading)
 
 
 def pga_warnings(
@@ -469,7 +482,7 @@ def undeclared_unit_warning(pga: float) -> str:
 def finish_record(record: Record) -> Record:
     """Check a record just read (time axis, bounded accelerations) and add its warnings."""
     plain = record.format == "plain"
-    check_record(record, file=record.source, cause=READ_CAUSE, fix=unit_fix(plain))
+    check_record(record, file=record.source, reading=Reading(record.unit, plain))
     warnings = pga_warnings(
         record.accel, unit=record.unit, plain=plain, declared=record.unit_declared
     )
