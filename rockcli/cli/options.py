@@ -22,7 +22,10 @@ record_format = click.option(
     help="Force the record format instead of detecting it from the content.",
 )
 plain_dt = click.option(
-    "--dt", type=float, default=None, help="Sample interval [s] of a one-column plain-text record."
+    "--dt",
+    type=float,
+    default=None,
+    help="Sample interval [s] of a one-column plain-text record, 1e-9 to 1.",
 )
 plain_units = click.option(
     "--units",
