@@ -86,6 +86,26 @@ def suite_option(help_text: str):
     )
 
 
+allow_outside_option = click.option(
+    "--allow-outside",
+    is_flag=True,
+    help="Let a suite's records lie outside the suite's folder (an absolute path, '..', a "
+    "link to elsewhere); by default a suite reads only files inside its own folder.",
+)
+
+
+def check_allow_outside(allow_outside: bool, suite_path: str | None) -> None:
+    """Refuse --allow-outside without --suite: it is a suite's rule (InputError)."""
+    from rockcli.errors import InputError
+
+    if allow_outside and suite_path is None:
+        raise InputError(
+            "applies only to a suite",
+            where="--allow-outside",
+            allowed="--suite SUITE --allow-outside, or no --allow-outside",
+        )
+
+
 target_option = click.option(
     "--target",
     "target",

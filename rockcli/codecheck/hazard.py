@@ -41,7 +41,7 @@ from typing import NamedTuple
 import numpy as np
 
 from rockcli.errors import InputError
-from rockcli.textfile import read_text
+from rockcli.textfile import GRID_LIMIT, read_text
 
 #: Environment variable naming the user's copy of the grid file.
 ROCK_HAZARD_GRID = "ROCK_HAZARD_GRID"
@@ -133,14 +133,14 @@ def read_grid(path: str | Path) -> HazardGrid:
         stat = os.stat(path)
         key = (os.path.realpath(path), stat.st_mtime_ns, stat.st_size)
     except (OSError, ValueError):  # read_text says what is wrong with the path
-        return parse_grid(read_text(path, "hazard grid file"), source=str(path))
+        return parse_grid(read_text(path, "hazard grid file", GRID_LIMIT), source=str(path))
     return _read_grid_once(key, str(path))
 
 
 @functools.lru_cache(maxsize=4)
 def _read_grid_once(key: tuple[str, int, int], source: str) -> HazardGrid:
     """The grid of a file by its (real path, mtime, size): a file edited is read again."""
-    return parse_grid(read_text(source, "hazard grid file"), source=source)
+    return parse_grid(read_text(source, "hazard grid file", GRID_LIMIT), source=source)
 
 
 def parse_grid(text: str, *, source: str = "<text>") -> HazardGrid:

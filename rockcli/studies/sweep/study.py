@@ -25,7 +25,9 @@ from typing import Any
 from pydantic import BaseModel, Field, ValidationError, field_validator
 from pydantic_core import ErrorDetails
 
+from rockcli import inside
 from rockcli.errors import InputError
+from rockcli.inside import path_error
 from rockcli.model.schema_base import Table
 from rockcli.records.kinds import FILE_FORMATS, RecordFormat
 
@@ -320,18 +322,10 @@ INSIDE_ALLOWED = (
 def check_inside(path: Path, folder: Path, file: str, where: str, value: str) -> None:
     """Refuse a path of the study file that leaves its folder (``..``, an absolute path, a
     symlink to elsewhere): a study from an untrusted pull request reads only its own files."""
-    try:
-        inside = path.resolve().is_relative_to(folder.resolve())
-    except (OSError, ValueError) as exc:  # a NUL character, a name too long, a loop
-        raise path_error(exc, file, where) from None
-    if not inside:
-        raise InputError(
-            "leaves the study's folder",
-            file=file,
-            where=where,
-            value=value,
-            allowed=INSIDE_ALLOWED,
-        )
+    inside.check_inside(
+        path, folder, file=file, where=where, value=value,
+        problem="leaves the study's folder", allowed=INSIDE_ALLOWED,
+    )  # fmt: skip
 
 
 def is_file(path: str | Path, file: str, where: str) -> bool:
@@ -343,17 +337,6 @@ def is_file(path: str | Path, file: str, where: str) -> bool:
         return False
     except (OSError, ValueError) as exc:
         raise path_error(exc, file, where) from None
-
-
-def path_error(exc: OSError | ValueError, file: str, where: str) -> InputError:
-    """A path the system refuses, as one error naming the key of the study file."""
-    reason = exc.strerror if isinstance(exc, OSError) and exc.strerror else str(exc)
-    return InputError(
-        f"cannot use this path: {reason}",
-        file=file,
-        where=where,
-        allowed="a path the file system accepts (no NUL character, each name at most 255 bytes)",
-    )
 
 
 def load_study(
@@ -533,7 +516,7 @@ def suite_source(
     each of its records inside the records folder (a study reads only its own files)."""
     from rockcli.suites.load import load_suite
 
-    settings = load_suite(str(path))
+    settings = load_suite(str(path), allow_outside=True)  # checked below, against the study's
     if not allow_outside:
         for k, entry in enumerate(settings.entries):
             check_inside(
