@@ -121,7 +121,7 @@ def check_regular(mode: int, path: str | Path, what: str) -> None:
     raise InputError(
         f"not a regular file ({kind})",
         file=str(path),
-        allowed=f"a regular file as the {what}, not a folder, pipe or device",
+        allowed=f"a regular file as the {what} (not a folder, pipe or device)",
     )
 
 
