@@ -136,8 +136,8 @@ def compare(
     if with_suite:
         check_record_options(None, record_format, dt, units, scale, pga)
         doc = compare_with_suite(
-            model_path, (suite_path, target, allow_outside), grid_file, code_demand, edition, engine, ground,
-            jobs, output,
+            model_path, (suite_path, target, allow_outside), grid_file, code_demand, edition,
+            engine, ground, jobs, output,
         )  # fmt: skip
         if doc["classification"] in fail_on:
             raise SystemExit(EXIT_FAIL_ON)

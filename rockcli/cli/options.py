@@ -6,6 +6,27 @@ import click
 
 from rockcli.cli.inputs import InputPath
 
+
+class AsciiFloat(click.ParamType):
+    """A number option written in ASCII: click's ``float`` reads ``０.５`` (fullwidth digits)
+    as 0.5, like Python's ``float()`` (rockcli.numbers)."""
+
+    name = "float"
+
+    def convert(self, value, param, ctx):  # click.ParamType.convert
+        if isinstance(value, float):
+            return value
+        from rockcli.numbers import ascii_float
+
+        try:
+            return ascii_float(str(value).strip())
+        except ValueError:
+            self.fail(f"{value!r} is not a number written in ASCII digits", param, ctx)
+
+
+#: The type of a number option (rather than click's ``float``).
+ASCII_FLOAT = AsciiFloat()
+
 output_format = click.option(
     "--format",
     "output",

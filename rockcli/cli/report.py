@@ -10,8 +10,8 @@ import click
 from rockcli.cli.inputs import InputPath, RockCommand
 from rockcli.cli.options import (
     allow_outside_option,
-    check_allow_outside,
     announce_written,
+    check_allow_outside,
     check_outputs,
     check_record_options,
     edition_option,

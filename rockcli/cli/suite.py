@@ -6,6 +6,7 @@ import click
 
 from rockcli.cli.inputs import InputPath, RockCommands
 from rockcli.cli.options import (
+    ASCII_FLOAT,
     allow_outside_option,
     announce_written,
     check_outputs,
@@ -27,7 +28,7 @@ def suite() -> None:
 @target_option
 @click.option(
     "--period",
-    type=float,
+    type=ASCII_FLOAT,
     default=None,
     metavar="T",
     help="The structure's period [s]: check 0.15 s to max(2.0 s, 2T) (default 0.15–2.0 s).",

@@ -41,6 +41,7 @@ from typing import NamedTuple
 import numpy as np
 
 from rockcli.errors import InputError
+from rockcli.numbers import ascii_float
 from rockcli.textfile import GRID_LIMIT, read_text
 
 #: Environment variable naming the user's copy of the grid file.
@@ -189,7 +190,7 @@ def _check_header(line: str, source: str, number: int) -> None:
             value=bad,
             allowed="TR=<years> for " + ", ".join(f"{tr:g}" for tr in GRID_RETURN_PERIODS),
         )
-    found = tuple(float(token) for token in tokens)
+    found = tuple(ascii_float(token) for token in tokens)
     if found and found != GRID_RETURN_PERIODS:
         raise InputError(
             "the header's return periods are not the grid's",
@@ -210,7 +211,7 @@ def _parse_row(line: str, source: str, number: int) -> list[float]:
             allowed=_ROW_FORMAT,
         )
     try:
-        row = [float(token) for token in tokens]
+        row = [ascii_float(token) for token in tokens]
     except ValueError:
         bad = next(t for t in tokens if not _is_number(t))
         raise InputError(
@@ -228,7 +229,7 @@ def _parse_row(line: str, source: str, number: int) -> list[float]:
 
 def _is_number(token: str) -> bool:
     try:
-        float(token)
+        ascii_float(token)
     except ValueError:
         return False
     return True

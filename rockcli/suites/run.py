@@ -96,11 +96,12 @@ class SuiteCheck:
     def warnings(self) -> tuple[str, ...]:
         """Every record's warnings (a PGA that suggests a unit slip…), each after its name,
         then the pairs of records that are one motion (twin_warnings)."""
-        return tuple(
+        named = tuple(
             f"{entry.name}: {warning}"
             for entry, record in zip(self.settings.entries, self.records, strict=True)
             for warning in record.warnings
-        ) + self.twins
+        )
+        return named + self.twins
 
 
 def twin_warnings(settings: SuiteSettings, records: Sequence[Record]) -> tuple[str, ...]:

@@ -37,7 +37,7 @@ Scalar = bool | int | float | str
 KeyPath = tuple[str | int, ...]
 
 _PATH = re.compile(r"^[A-Za-z_][A-Za-z0-9_]*(\[\d+\])*(\.[A-Za-z_][A-Za-z0-9_]*(\[\d+\])*)*$")
-_PART = re.compile(r"([A-Za-z_][A-Za-z0-9_]*)|\[(\d+)\]")
+_PART = re.compile(r"([A-Za-z_][A-Za-z0-9_]*)|\[(\d+)\]", re.ASCII)
 PATH_ALLOWED = "dotted keys with [i] indices, e.g. geometry.R or restrainers[0].k_pos"
 
 
