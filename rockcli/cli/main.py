@@ -146,9 +146,8 @@ def refuse_nul(args: list[str]) -> None:
     one; a program running rock's CLI in process can."""
     bad = next((arg for arg in args if "\x00" in str(arg)), None)
     if bad is not None:
-        raise UsageLine(
-            click.UsageError(f"a NUL character in an argument: {bad!r} (no path or value holds one)")
-        )
+        problem = f"a NUL character in an argument: {bad!r} (no path or value holds one)"
+        raise UsageLine(click.UsageError(problem))
 
 
 def announce_compiling() -> None:

@@ -88,7 +88,7 @@ def best_correlation(a: Record, b: Record) -> tuple[float, float]:
     size = 1 << (x.size + y.size - 2).bit_length()  # ≥ the full linear correlation
     corr = np.fft.irfft(np.conj(np.fft.rfft(x, size)) * np.fft.rfft(y, size), size)
     k = int(np.argmax(np.abs(corr)))
-    shift = k if k < size // 2 else k - size  # negative lags wrap to the end
+    shift = k if k < y.size else k - size  # lags 0…len(y)−1 first, the negative ones wrap
     return float(corr[k] / np.sqrt(energy)), shift * dt
 
 
