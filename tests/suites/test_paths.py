@@ -222,8 +222,7 @@ def test_a_subfolder_with_a_records_suffix_is_an_error(tmp_path: Path) -> None:
 def test_a_top_level_key_under_target_is_named(tmp_path: Path, key: str) -> None:
     text = (
         'name = "s"\n[target]\nag = 0.25\nF0 = 2.5\nTc_star = 0.3\n'
-        f"{key} = [0.15, 2.0]\n"
-        + "".join(f'[[records]]\npath = "{p.name}"\n' for p in PULSES)
+        f"{key} = [0.15, 2.0]\n" + "".join(f'[[records]]\npath = "{p.name}"\n' for p in PULSES)
     )
     for pulse in PULSES:
         shutil.copyfile(pulse, tmp_path / pulse.name)
