@@ -117,12 +117,16 @@ def check_regular(mode: int, path: str | Path, what: str) -> None:
     """InputError unless ``mode`` is a regular file's, naming what the path is instead."""
     if stat.S_ISREG(mode):
         return
-    kind = next((name for test, name in _KINDS if test(mode)), "not a file")
     raise InputError(
-        f"not a regular file ({kind})",
+        f"not a regular file ({file_kind(mode)})",
         file=str(path),
         allowed=f"a regular file as the {what} (not a folder, pipe or device)",
     )
+
+
+def file_kind(mode: int) -> str:
+    """What a file that is not a regular file is ("a folder", "a named pipe"…)."""
+    return next((name for test, name in _KINDS if test(mode)), "not a file")
 
 
 def check_size(size: int, path: str | Path, what: str, limit: int) -> None:

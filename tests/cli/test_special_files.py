@@ -162,3 +162,38 @@ def test_huge_sparse_model_is_too_large(tmp_path: Path) -> None:
         handle.truncate(100 << 30)  # 100 GiB, sparse
     code, err = rock("kinematic", str(path))
     assert_refused(code, err, path, f"too large ({100 << 30:,} bytes; the limit is {TOML_LIMIT:,})")
+
+
+def test_fifo_as_a_study_record(tmp_path: Path) -> None:
+    (tmp_path / "wall.toml").write_bytes(MODEL.read_bytes())
+    fifo(tmp_path, "pipe.txt")
+    study = tmp_path / "study.toml"
+    study.write_text(
+        tomli_w.dumps({
+            "name": "s", "base": "wall.toml", "analyses": ["rocking"],
+            "axes": [{"path": "geometry.thickness", "values": [0.5]}],
+            "records": [{"path": "pipe.txt"}],
+        }),
+        encoding="utf-8",
+    )  # fmt: skip
+    code, err = rock("sweep", str(study), "--out", str(tmp_path / "out"), "--no-progress")
+    assert_refused(code, err, study, "records[0].path: not a regular file (a named pipe)")
+
+
+def test_fifo_named_in_a_studys_suite(tmp_path: Path) -> None:
+    # A suite of a study names a FIFO: the study's fingerprint hashes every record of its
+    # suites (rockcli.studies.sweep.output.file_digest), which opened and blocked on main.
+    (tmp_path / "wall.toml").write_bytes(MODEL.read_bytes())
+    fifo(tmp_path, "pipe.txt")
+    suite_with(tmp_path, "pipe.txt")
+    study = tmp_path / "study.toml"
+    study.write_text(
+        tomli_w.dumps({
+            "name": "s", "base": "wall.toml", "analyses": ["rocking"],
+            "axes": [{"path": "geometry.thickness", "values": [0.5]}],
+            "records": [{"suite": "suite.toml"}],
+        }),
+        encoding="utf-8",
+    )  # fmt: skip
+    code, err = rock("sweep", str(study), "--out", str(tmp_path / "out"), "--no-progress")
+    assert_refused(code, err, "pipe.txt", "not a regular file (a named pipe)")

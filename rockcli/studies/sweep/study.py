@@ -332,13 +332,25 @@ def check_inside(path: Path, folder: Path, file: str, where: str, value: str) ->
 
 def is_file(path: str | Path, file: str, where: str) -> bool:
     """True for an existing regular file, False when absent; a path the system refuses (a
-    name longer than NAME_MAX, a loop of links) is an InputError naming the key."""
+    name longer than NAME_MAX, a loop of links) or one that is not a regular file (a folder,
+    a FIFO that would block the read, a device) is an InputError naming the key."""
+    from rockcli.textfile import file_kind
+
     try:
-        return stat.S_ISREG(os.stat(path).st_mode)
+        mode = os.stat(path).st_mode
     except (FileNotFoundError, NotADirectoryError):
         return False
     except (OSError, ValueError) as exc:
         raise path_error(exc, file, where) from None
+    if not stat.S_ISREG(mode):
+        raise InputError(
+            f"not a regular file ({file_kind(mode)})",
+            file=file,
+            where=where,
+            value=str(path),
+            allowed="a regular file (not a folder, pipe or device)",
+        )
+    return True
 
 
 def load_study(
