@@ -197,3 +197,9 @@ def test_fifo_named_in_a_studys_suite(tmp_path: Path) -> None:
     )  # fmt: skip
     code, err = rock("sweep", str(study), "--out", str(tmp_path / "out"), "--no-progress")
     assert_refused(code, err, "pipe.txt", "not a regular file (a named pipe)")
+
+
+def test_fifo_as_the_hazard_grid(tmp_path: Path) -> None:
+    path = fifo(tmp_path, "grid.txt")
+    code, err = rock("kinematic", str(MODEL), "--site", "13.40,42.35", "--hazard-grid", str(path))
+    assert_refused(code, err, path, "not a regular file (a named pipe)")
