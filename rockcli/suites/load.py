@@ -18,10 +18,11 @@ from pydantic_core import ErrorDetails
 
 from rockcli.codecheck.categories import Edition
 from rockcli.errors import InputError, printable
-from rockcli.inside import check_inside
+from rockcli.model.bounds import MAX_PERIOD, MIN_PERIOD
 from rockcli.model.load import TRANSLATION, read_toml
 from rockcli.numbers import ascii_float, ascii_int
-from rockcli.records.periods import MAX_PERIOD, MIN_PERIOD
+from rockcli.records.periods import MAX_PERIOD as MAX_SPECTRUM_PERIOD
+from rockcli.records.periods import MIN_PERIOD as MIN_SPECTRUM_PERIOD
 from rockcli.records.record import Record
 from rockcli.suites.schema import Suite, Target
 
@@ -134,6 +135,8 @@ INSIDE_ALLOWED = (
 def check_entries_inside(settings: SuiteSettings) -> None:
     """Refuse a record that resolves outside the suite's folder (an absolute path, ``..``, a
     symlink to elsewhere), naming the entry."""
+    from rockcli.inside import check_inside
+
     for entry in settings.entries:
         check_inside(
             entry.path, settings.folder, file=settings.file, where=f"{entry.where}.path",
@@ -351,12 +354,14 @@ def check_target(target: Target, file: str | None) -> None:
 
 #: The periods a suite may be checked at [s]: those of the response spectra
 #: (rockcli.records.periods, as `rock record spectrum --periods`).
-PERIODS_ALLOWED = f"{MIN_PERIOD:g} s to {MAX_PERIOD:g} s, the periods of a response spectrum"
+PERIODS_ALLOWED = (
+    f"{MIN_SPECTRUM_PERIOD:g} s to {MAX_SPECTRUM_PERIOD:g} s, the periods of a response spectrum"
+)
 
 
 def check_period_range(values: Sequence[float], file: str | None) -> None:
-    """[a, b] with MIN_PERIOD ≤ a < b ≤ MAX_PERIOD [s] (0.001–100 s: beyond, the spectra's
-    exact-step coefficients lose their digits, rockcli.records.periods)."""
+    """[a, b] with 0.001 s ≤ a < b ≤ 100 s, the periods of a response spectrum (beyond, the
+    exact-step coefficients lose their digits; rockcli.records.periods)."""
     if len(values) != 2 or not 0.0 < values[0] < values[1]:
         raise InputError(
             "not a period range",
@@ -365,7 +370,7 @@ def check_period_range(values: Sequence[float], file: str | None) -> None:
             value=list(values),
             allowed=f"[a, b] with 0 < a < b [s], both from {PERIODS_ALLOWED}",
         )
-    if not MIN_PERIOD <= values[0] < values[1] <= MAX_PERIOD:
+    if not MIN_SPECTRUM_PERIOD <= values[0] < values[1] <= MAX_SPECTRUM_PERIOD:
         raise InputError(
             "period range out of bounds",
             file=file,
@@ -422,13 +427,12 @@ def period_range(suite: Suite, file: str, period: float | None) -> tuple[float, 
     a, b = CODE_PERIOD_RANGE
     if period is None:
         return a, b
-    if not (math.isfinite(period) and 0.0 < period <= MAX_PERIOD / 2.0):
+    if not MIN_PERIOD <= period <= MAX_PERIOD:  # a building's T1 (1e300 s overflowed)
         raise InputError(
             "out of range",
             where="--period",
             value=period,
-            allowed=f"0 < T ≤ {MAX_PERIOD / 2.0:g} s (the check reaches 2T; the response "
-            f"spectra reach {MAX_PERIOD:g} s)",
+            allowed=f"{MIN_PERIOD:g} s ≤ T ≤ {MAX_PERIOD:g} s, as a model's building.T1",
         )
     return a, max(b, 2.0 * period)
 
