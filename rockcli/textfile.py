@@ -10,7 +10,7 @@ descriptor, which is opened with ``O_NONBLOCK`` (a FIFO swapped in between the t
 block the open) — and at most ``limit + 1`` bytes are read, whatever the file claims its size
 is (``/proc`` files say 0).
 
-The limits, by kind of file (docs/model-reference.md, "Files rock reads"):
+The limits, by kind of file (docs/conventions.md, Records, "Files"):
 
 - :data:`TOML_LIMIT` (1 MiB) for the TOML files (model, study, suite, case file): a model
   file is 1–5 kB, the largest case file of the bundled casebook 10 kB; a file a hundred
