@@ -15,14 +15,17 @@ from pydantic import Field
 
 from rockcli.model.schema_base import Table
 
-Positive = Annotated[float, Field(gt=0, allow_inf_nan=False)]
-Finite = Annotated[float, Field(allow_inf_nan=False)]
+# Every number is strict: a TOML int or float, never a string ("0.09375" would be read as the
+# number by pydantic's lax mode: a case's expected value must be the number the file shows)
+# nor a boolean (true is not 1).
+Positive = Annotated[float, Field(gt=0, allow_inf_nan=False, strict=True)]
+Finite = Annotated[float, Field(allow_inf_nan=False, strict=True)]
 #: A sample interval [s]: fine enough for any case, coarse enough to keep a case small.
-SampleInterval = Annotated[float, Field(ge=1e-5, le=0.01, description="[s]")]
+SampleInterval = Annotated[float, Field(ge=1e-5, le=0.01, strict=True, description="[s]")]
 #: A period or a duration [s]: a case is short (the casebook runs in seconds).
-Seconds = Annotated[float, Field(gt=0, le=60, allow_inf_nan=False, description="[s]")]
+Seconds = Annotated[float, Field(gt=0, le=60, allow_inf_nan=False, strict=True, description="[s]")]
 #: A bisection bracket's end: an amplitude [g] or a velocity [rad/s].
-BracketEnd = Annotated[float, Field(gt=0, le=1e3, allow_inf_nan=False)]
+BracketEnd = Annotated[float, Field(gt=0, le=1e3, allow_inf_nan=False, strict=True)]
 
 
 class Kind(StrEnum):
@@ -132,7 +135,7 @@ class CaseFile(Table):
 class ModelInput(Table):
     """``model``: which restrainer (1-based) the restrainer quantities read."""
 
-    restrainer: int = Field(default=1, ge=1)
+    restrainer: int = Field(strict=True, default=1, ge=1)
 
 
 class KinematicInput(Table):
@@ -144,8 +147,10 @@ class KinematicInput(Table):
 class FreeRockingInput(Table):
     """``free-rocking``: released from rest at θ0 = φ0·α; the amplitude after n impacts."""
 
-    phi0: float = Field(gt=0, lt=1, description="θ0/α [-]")
-    impacts: int = Field(default=1, ge=1, le=20, description="impacts before the amplitude")
+    phi0: float = Field(strict=True, gt=0, lt=1, description="θ0/α [-]")
+    impacts: int = Field(
+        strict=True, default=1, ge=1, le=20, description="impacts before the amplitude"
+    )
     dt: SampleInterval = 1e-3
 
 
@@ -175,7 +180,7 @@ class SpectrumInput(Table):
     Tc_star: Positive
     soil: Literal["A", "B", "C", "D", "E"] = "A"
     topography: Literal["T1", "T2", "T3", "T4"] = "T1"
-    period: float = Field(ge=0, le=100, allow_inf_nan=False, description="T [s]")
+    period: float = Field(strict=True, ge=0, le=100, allow_inf_nan=False, description="T [s]")
     xi: Positive = Field(default=5.0, description="damping [%]")
 
 
@@ -195,7 +200,7 @@ class ResponseSpectrumInput(Table):
     period: Seconds = Field(description="the pulse's period (rectangular: duration) [s]")
     dt: SampleInterval = 1e-3
     oscillator_period: Seconds = Field(description="Tn [s]")
-    damping: float = Field(default=0.0, ge=0, lt=1, description="fraction of critical")
+    damping: float = Field(strict=True, default=0.0, ge=0, lt=1, description="fraction of critical")
 
 
 class FloorInput(Table):
@@ -204,11 +209,13 @@ class FloorInput(Table):
     T1: Seconds
     psi: Positive
     gamma: Positive
-    xi: float = Field(default=0.05, gt=0, lt=1)
+    xi: float = Field(strict=True, default=0.05, gt=0, lt=1)
     amplitude: Positive = Field(description="[g]")
-    cycles: int = Field(ge=10, le=200)
-    samples_per_period: int = Field(default=400, ge=20, le=4000)
-    last_cycles: int = Field(default=2, ge=1, le=10, description="cycles read for the peak")
+    cycles: int = Field(strict=True, ge=10, le=200)
+    samples_per_period: int = Field(strict=True, default=400, ge=20, le=4000)
+    last_cycles: int = Field(
+        strict=True, default=2, ge=1, le=10, description="cycles read for the peak"
+    )
 
 
 class SuiteInput(Table):
@@ -216,8 +223,8 @@ class SuiteInput(Table):
 
     period: Seconds = Field(description="the sines' period, the period checked [s]")
     amplitude: Positive = Field(description="[g]")
-    cycles: int = Field(ge=10, le=200)
-    samples_per_period: int = Field(default=400, ge=20, le=4000)
+    cycles: int = Field(strict=True, ge=10, le=200)
+    samples_per_period: int = Field(strict=True, default=400, ge=20, le=4000)
     scales: list[Positive] = Field(min_length=1, max_length=30)
     ag: Positive
     F0: Positive
@@ -239,18 +246,24 @@ class UpliftSineInput(Table):
 
     amplitude: Positive = Field(le=10, description="[g]")
     period: Seconds = Field(description="[s]")
-    cycles: int = Field(ge=1, le=200)
-    samples_per_period: int = Field(default=400, ge=20, le=4000)
+    cycles: int = Field(strict=True, ge=1, le=200)
+    samples_per_period: int = Field(strict=True, default=400, ge=20, le=4000)
     direction: Literal[1, -1] = Field(default=1, description="the sine's sign")
 
 
 class ReleaseInput(Table):
     """``release``: free rocking from θ0 with θ̇0, no ground motion, up to the nth impact."""
 
-    theta0: float = Field(default=0.0, ge=-1.5, le=1.5, allow_inf_nan=False, description="[rad]")
-    omega0: float = Field(ge=-100, le=100, allow_inf_nan=False, description="θ̇0 [rad/s]")
-    impacts: int = Field(default=1, ge=1, le=20, description="the run ends at this impact")
-    restrainer: int = Field(default=1, ge=1, description="1-based, for its quantities")
+    theta0: float = Field(
+        strict=True, default=0.0, ge=-1.5, le=1.5, allow_inf_nan=False, description="[rad]"
+    )
+    omega0: float = Field(
+        strict=True, ge=-100, le=100, allow_inf_nan=False, description="θ̇0 [rad/s]"
+    )
+    impacts: int = Field(
+        strict=True, default=1, ge=1, le=20, description="the run ends at this impact"
+    )
+    restrainer: int = Field(strict=True, default=1, ge=1, description="1-based, for its quantities")
 
 
 INPUTS: dict[Kind, type[Table]] = {

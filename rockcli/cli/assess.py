@@ -7,7 +7,9 @@ import click
 from rockcli.cli.exits import EXIT_GATE
 from rockcli.cli.inputs import InputPath, RockCommand
 from rockcli.cli.options import (
+    allow_outside_option,
     announce_written,
+    check_allow_outside,
     check_outputs,
     check_record_options,
     engine_option,
@@ -38,6 +40,7 @@ EXIT_OVERTURNS = EXIT_GATE
 )
 @hazard_grid_option
 @target_option
+@allow_outside_option
 @jobs_option("With --suite: workers, this process and N − 1 worker processes.")
 @engine_option
 @ground_option
@@ -67,6 +70,7 @@ def assess(
     pga,
     suite_path,
     target,
+    allow_outside,
     grid_file,
     jobs,
     engine,
@@ -82,11 +86,13 @@ def assess(
     from rockcli.report.assess import assessment_output_document
     from rockcli.studies.assess import run_assessment_output
 
+    check_allow_outside(allow_outside, suite_path)
     if one_record_or_suite(record_path, suite_path, history_path, plot_path, grid_file, target):
         check_record_options(None, record_format, dt, units, scale, pga)
         return assess_with_suite(
-            model_path, (suite_path, target), grid_file, engine, ground, jobs, output
-        )
+            model_path, (suite_path, target, allow_outside), grid_file, engine, ground, jobs,
+            output,
+        )  # fmt: skip
     check_outputs(force, history=history_path, plot=plot_path)
     record = load_record(record_path, record_format, dt, units, scale, pga)
     history = history_path is not None or plot_path is not None
@@ -164,7 +170,7 @@ def one_record_or_suite(
 def assess_with_suite(model_path, suite, grid_file, engine, ground, jobs, output) -> None:
     """Every record of the suite through the time history, the code's rule, the report.
 
-    suite: (the suite file or folder, the --target of a folder)."""
+    suite: (the suite file or folder, the --target of a folder, --allow-outside)."""
     from rockcli.report.suite import suite_assessment_document, suite_assessment_report
     from rockcli.report.sweep import progress_bar
     from rockcli.report.table import show
@@ -173,6 +179,6 @@ def assess_with_suite(model_path, suite, grid_file, engine, ground, jobs, output
     with progress_bar(None) as bar:
         result = assess_suite(
             model_path, suite[0], grid_file, engine=engine, ground=ground, jobs=jobs,
-            progress=bar, target=suite[1],
+            progress=bar, target=suite[1], allow_outside=suite[2],
         )  # fmt: skip
     show(suite_assessment_document(result), output, suite_assessment_report)

@@ -6,7 +6,9 @@ import click
 
 from rockcli.cli.inputs import InputPath, RockCommand
 from rockcli.cli.options import (
+    allow_outside_option,
     announce_written,
+    check_allow_outside,
     check_hazard_grid,
     check_outputs,
     check_record_options,
@@ -65,6 +67,7 @@ def refuse_record_demand(record_demand: bool) -> None:
     "the suite's target spectrum."
 )
 @target_option
+@allow_outside_option
 @jobs_option("With --suite: workers, this process and N − 1 worker processes.")
 @edition_option
 @engine_option
@@ -102,6 +105,7 @@ def compare(
     pga,
     suite_path,
     target,
+    allow_outside,
     jobs,
     edition,
     engine,
@@ -126,13 +130,14 @@ def compare(
     from rockcli.studies.compare import run_comparison_output
 
     refuse_record_demand(record_demand)
+    check_allow_outside(allow_outside, suite_path)
     with_suite = one_record_or_suite(record_path, suite_path, None, plot_path, None, target)
     code_demand = demand_for(code_demand, with_suite)
     if with_suite:
         check_record_options(None, record_format, dt, units, scale, pga)
         doc = compare_with_suite(
-            model_path, (suite_path, target), grid_file, code_demand, edition, engine, ground,
-            jobs, output,
+            model_path, (suite_path, target, allow_outside), grid_file, code_demand, edition,
+            engine, ground, jobs, output,
         )  # fmt: skip
         if doc["classification"] in fail_on:
             raise SystemExit(EXIT_FAIL_ON)
@@ -190,7 +195,7 @@ def compare_with_suite(
 ) -> dict:
     """The code check and every record of the suite, side by side; the document shown.
 
-    suite: (the suite file or folder, the --target of a folder)."""
+    suite: (the suite file or folder, the --target of a folder, --allow-outside)."""
     from rockcli.report.suite import suite_comparison_document, suite_comparison_report
     from rockcli.report.sweep import progress_bar
     from rockcli.report.table import show
@@ -200,6 +205,7 @@ def compare_with_suite(
         result = compare_suite(
             model_path, suite[0], grid_file, code_demand=code_demand, edition=edition,
             engine=engine, ground=ground, jobs=jobs, progress=bar, target=suite[1],
+            allow_outside=suite[2],
         )  # fmt: skip
     doc = suite_comparison_document(result)
     show(doc, output, suite_comparison_report)

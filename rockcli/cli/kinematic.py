@@ -23,6 +23,7 @@ from rockcli.cli.plot_option import plot_option
 
 def _site(value: str | None, record_path: str | None) -> tuple[float, float] | None:
     from rockcli.errors import InputError
+    from rockcli.numbers import ascii_float
 
     if value is None:
         return None
@@ -34,7 +35,7 @@ def _site(value: str | None, record_path: str | None) -> tuple[float, float] | N
             allowed="either --site LON,LAT or --record FILE",
         )
     try:
-        lon, lat = (float(x) for x in value.split(","))
+        lon, lat = (ascii_float(x) for x in value.split(","))
     except ValueError:
         raise InputError(
             "not a site",

@@ -104,6 +104,7 @@ class RockGroup(click.Group):
         return super().main(args, *rest, **kwargs)
 
     def make_context(self, info_name, args, parent=None, **extra) -> click.Context:
+        refuse_nul(args)
         try:
             return super().make_context(info_name, args, parent, **extra)
         except click.UsageError as exc:  # `rock --bogus`
@@ -137,6 +138,16 @@ class RockGroup(click.Group):
         finally:
             show_cache_note()
         return None  # unreachable: ctx.exit raises
+
+
+def refuse_nul(args: list[str]) -> None:
+    """Refuse an argument with a NUL character: no path or value can hold one, and the system
+    calls raise ValueError on it (click's own path checks among them). A shell cannot pass
+    one; a program running rock's CLI in process can."""
+    bad = next((arg for arg in args if "\x00" in str(arg)), None)
+    if bad is not None:
+        problem = f"a NUL character in an argument: {bad!r} (no path or value holds one)"
+        raise UsageLine(click.UsageError(problem))
 
 
 def announce_compiling() -> None:

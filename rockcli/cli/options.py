@@ -6,6 +6,27 @@ import click
 
 from rockcli.cli.inputs import InputPath
 
+
+class AsciiFloat(click.ParamType):
+    """A number option written in ASCII: click's ``float`` reads ``０.５`` (fullwidth digits)
+    as 0.5, like Python's ``float()`` (rockcli.numbers)."""
+
+    name = "float"
+
+    def convert(self, value, param, ctx):  # click.ParamType.convert
+        if isinstance(value, float):
+            return value
+        from rockcli.numbers import ascii_float
+
+        try:
+            return ascii_float(str(value).strip())
+        except ValueError:
+            self.fail(f"{value!r} is not a number written in ASCII digits", param, ctx)
+
+
+#: The type of a number option (rather than click's ``float``).
+ASCII_FLOAT = AsciiFloat()
+
 output_format = click.option(
     "--format",
     "output",
@@ -87,6 +108,26 @@ def suite_option(help_text: str):
         default=None,
         help=help_text,
     )
+
+
+allow_outside_option = click.option(
+    "--allow-outside",
+    is_flag=True,
+    help="Let a suite's records lie outside the suite's folder (an absolute path, '..', a "
+    "link to elsewhere); by default a suite reads only files inside its own folder.",
+)
+
+
+def check_allow_outside(allow_outside: bool, suite_path: str | None) -> None:
+    """Refuse --allow-outside without --suite: it is a suite's rule (InputError)."""
+    from rockcli.errors import InputError
+
+    if allow_outside and suite_path is None:
+        raise InputError(
+            "applies only to a suite",
+            where="--allow-outside",
+            allowed="--suite SUITE --allow-outside, or no --allow-outside",
+        )
 
 
 target_option = click.option(

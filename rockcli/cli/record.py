@@ -98,11 +98,12 @@ def info(
 
 def _window(value: str | None) -> tuple[float, float] | None:
     from rockcli.errors import InputError
+    from rockcli.numbers import ascii_float
 
     if value is None:
         return None
     try:
-        t0, t1 = (float(x) for x in value.split(","))
+        t0, t1 = (ascii_float(x) for x in value.split(","))
     except ValueError:
         raise InputError(
             "not a time window",

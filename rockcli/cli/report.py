@@ -9,7 +9,9 @@ import click
 
 from rockcli.cli.inputs import InputPath, RockCommand
 from rockcli.cli.options import (
+    allow_outside_option,
     announce_written,
+    check_allow_outside,
     check_outputs,
     check_record_options,
     edition_option,
@@ -41,6 +43,7 @@ EXTRA = install_hint("report")
     "by the code's rule, the code check on the suite's target)."
 )
 @target_option
+@allow_outside_option
 @click.option(
     "-o",
     "--output",
@@ -76,8 +79,9 @@ EXTRA = install_hint("report")
 )
 @force_option
 def report(
-    model_path, record_path, record_format, dt, units, scale, pga, suite_path, target, html_path,
-    pdf_path, lang, code_demand, edition, engine, ground, grid_file, force,
+    model_path, record_path, record_format, dt, units, scale, pga, suite_path, target,
+    allow_outside, html_path, pdf_path, lang, code_demand, edition, engine, ground, grid_file,
+    force,
 ):  # fmt: skip
     """The calculation report of MODEL under a record (or a record suite): identification
     and input digests, the model and its sketch, the site and demand, the kinematic
@@ -88,6 +92,7 @@ def report(
     from rockcli.cli.main import INVOKED
     from rockcli.document.run import write_report, write_suite_report
 
+    check_allow_outside(allow_outside, suite_path)
     with_suite = one_record_or_suite(record_path, suite_path, None, None, None, target)
     code_demand = demand_for(code_demand, with_suite)
     check_report_paths(html_path, pdf_path, force)
@@ -96,7 +101,7 @@ def report(
     if with_suite:
         check_record_options(None, record_format, dt, units, scale, pga)
         written = write_suite_report(
-            model_path, suite_path, target, grid_file, **common,
+            model_path, suite_path, target, grid_file, **common, allow_outside=allow_outside,
             options={"code_demand": code_demand, "edition": edition, "engine": engine,
                      "ground": ground},
         )  # fmt: skip

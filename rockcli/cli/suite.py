@@ -6,6 +6,8 @@ import click
 
 from rockcli.cli.inputs import InputPath, RockCommands
 from rockcli.cli.options import (
+    ASCII_FLOAT,
+    allow_outside_option,
     announce_written,
     check_outputs,
     force_option,
@@ -26,7 +28,7 @@ def suite() -> None:
 @target_option
 @click.option(
     "--period",
-    type=float,
+    type=ASCII_FLOAT,
     default=None,
     metavar="T",
     help="The structure's period [s]: check 0.15 s to max(2.0 s, 2T) (default 0.15–2.0 s).",
@@ -49,10 +51,14 @@ def suite() -> None:
     "height against the code's floor spectrum there (what its rocking analysis runs on).",
 )
 @hazard_grid_option
+@allow_outside_option
 @plot_option
 @force_option
 @output_format
-def check(suite_path, target, period, scale_mode, model_path, grid_file, plot_path, force, output):
+def check(
+    suite_path, target, period, scale_mode, model_path, grid_file, allow_outside, plot_path,
+    force, output,
+):  # fmt: skip
     """Check that the mean 5 %-damped spectrum of the suite's records matches the target
     (NTC §3.2.3.6: nowhere below −10 %, and in NTC 2018 nowhere above +30 %).
 
@@ -62,7 +68,7 @@ def check(suite_path, target, period, scale_mode, model_path, grid_file, plot_pa
     from rockcli.suites.load import load_suite
     from rockcli.suites.run import run_suite_check, suite_document
 
-    settings = load_suite(suite_path, period=period, target=target)
+    settings = load_suite(suite_path, period=period, target=target, allow_outside=allow_outside)
     check_grid_option(grid_file, settings.target.site is not None, suite_path)
     check_outputs(force, plot=plot_path)
     floor = model_floor_of(model_path)

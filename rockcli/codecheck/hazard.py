@@ -41,7 +41,8 @@ from typing import NamedTuple
 import numpy as np
 
 from rockcli.errors import InputError
-from rockcli.textfile import read_text
+from rockcli.numbers import ascii_float
+from rockcli.textfile import GRID_LIMIT, read_text
 
 #: Environment variable naming the user's copy of the grid file.
 ROCK_HAZARD_GRID = "ROCK_HAZARD_GRID"
@@ -133,14 +134,14 @@ def read_grid(path: str | Path) -> HazardGrid:
         stat = os.stat(path)
         key = (os.path.realpath(path), stat.st_mtime_ns, stat.st_size)
     except (OSError, ValueError):  # read_text says what is wrong with the path
-        return parse_grid(read_text(path, "hazard grid file"), source=str(path))
+        return parse_grid(read_text(path, "hazard grid file", GRID_LIMIT), source=str(path))
     return _read_grid_once(key, str(path))
 
 
 @functools.lru_cache(maxsize=4)
 def _read_grid_once(key: tuple[str, int, int], source: str) -> HazardGrid:
     """The grid of a file by its (real path, mtime, size): a file edited is read again."""
-    return parse_grid(read_text(source, "hazard grid file"), source=source)
+    return parse_grid(read_text(source, "hazard grid file", GRID_LIMIT), source=source)
 
 
 def parse_grid(text: str, *, source: str = "<text>") -> HazardGrid:
@@ -189,7 +190,7 @@ def _check_header(line: str, source: str, number: int) -> None:
             value=bad,
             allowed="TR=<years> for " + ", ".join(f"{tr:g}" for tr in GRID_RETURN_PERIODS),
         )
-    found = tuple(float(token) for token in tokens)
+    found = tuple(ascii_float(token) for token in tokens)
     if found and found != GRID_RETURN_PERIODS:
         raise InputError(
             "the header's return periods are not the grid's",
@@ -210,7 +211,7 @@ def _parse_row(line: str, source: str, number: int) -> list[float]:
             allowed=_ROW_FORMAT,
         )
     try:
-        row = [float(token) for token in tokens]
+        row = [ascii_float(token) for token in tokens]
     except ValueError:
         bad = next(t for t in tokens if not _is_number(t))
         raise InputError(
@@ -228,7 +229,7 @@ def _parse_row(line: str, source: str, number: int) -> list[float]:
 
 def _is_number(token: str) -> bool:
     try:
-        float(token)
+        ascii_float(token)
     except ValueError:
         return False
     return True

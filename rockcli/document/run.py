@@ -96,9 +96,11 @@ def write_suite_report(
     lang: str,
     command: str,
     options: dict[str, Any],
+    allow_outside: bool = False,
 ) -> list[tuple[str, str]]:
     """Compare the model under the suite (as `rock compare --suite`), keep each record's
-    history for the figures, write the report; what was written."""
+    history for the figures, write the report; what was written (allow_outside: the
+    suite's records may lie outside its folder, --allow-outside)."""
     from rockcli.document.build import Inputs
     from rockcli.document.suite import build_suite_document
     from rockcli.report.assess import assessment_output_document
@@ -108,7 +110,7 @@ def write_suite_report(
     from rockcli.studies.suite.compare import compare_loaded
     from rockcli.suites.run import suite_document
 
-    loaded = load_suite_and_model(model_path, suite_path, grid_file, target)
+    loaded = load_suite_and_model(model_path, suite_path, grid_file, target, allow_outside)
     comparison = compare_loaded(loaded, grid_file, **options)
     doc = suite_comparison_document(comparison)
     records = loaded.check.records

@@ -21,7 +21,6 @@ import tomllib
 from collections.abc import Callable, Mapping, Sequence
 from enum import Enum
 from inspect import isclass
-from pathlib import Path
 from typing import Any, get_args
 
 import annotated_types as at
@@ -35,6 +34,7 @@ from rockcli.model.derive import to_block
 from rockcli.model.derived_checks import FINITE_POSITIVE, check_block
 from rockcli.model.rules import RULE_ERROR
 from rockcli.model.schema import Model
+from rockcli.textfile import TOML_LIMIT, read_limited, reason
 
 Loc = tuple[str | int, ...]
 
@@ -126,11 +126,12 @@ def load_model(path: str | os.PathLike[str]) -> Model:
 
 
 def read_toml(file: str) -> dict[str, Any]:
-    """The TOML table of a file; InputError when it cannot be read or parsed."""
+    """The TOML table of a file; InputError when it cannot be read or parsed, is not a regular
+    file or is larger than :data:`rockcli.textfile.TOML_LIMIT` (1 MiB)."""
     try:
-        raw = Path(file).read_bytes()
-    except OSError as exc:
-        raise InputError(f"cannot read the file: {exc.strerror or exc}", file=file) from None
+        raw = read_limited(file, "TOML file", TOML_LIMIT)
+    except (OSError, ValueError) as exc:  # absent, no permission, a NUL in the path
+        raise InputError(f"cannot read the file: {reason(exc)}", file=file) from None
     try:
         return tomllib.loads(raw.decode("utf-8"))
     except UnicodeDecodeError as exc:

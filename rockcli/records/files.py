@@ -31,8 +31,9 @@ def record_name(path: Path) -> str:
 
 
 def read_text(path: str | Path) -> str:
-    """The text of a record file; InputError if unreadable."""
-    return textfile.read_text(path, "record file")
+    """The text of a record file; InputError if unreadable, not a regular file or larger than
+    :data:`rockcli.textfile.RECORD_LIMIT` (a 3 h, 200 Hz record; the module says why)."""
+    return textfile.read_text(path, "record file", textfile.RECORD_LIMIT)
 
 
 def read_record(

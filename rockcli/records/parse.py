@@ -21,6 +21,11 @@ from rockcli.records.record import Record
 from rockcli.units import AccelUnit
 
 FORMATS_ALLOWED = ", ".join(FILE_FORMATS)
+#: The formats rock recognises, as a user knows them.
+RECOGNISED = (
+    "PEER AT2 (NPTS and DT on line 4), ESM ASCII (EVENT_NAME: first), ITACA cor.acc, or plain "
+    "text (one or two columns of numbers)"
+)
 
 #: Recognisers in the order they are tried (most specific header first).
 _RECOGNISERS: tuple[tuple[RecordFormat, Callable[[list[str]], bool]], ...] = (
@@ -57,13 +62,12 @@ def detect_format(text: str, *, source: str = "<text>") -> RecordFormat:
     for fmt, recognises in _RECOGNISERS:
         if recognises(lines):
             return fmt
-    first = next((line.strip() for line in lines if line.strip()), "")
+    # The file's content is never quoted: a suite or a study may name any file of the
+    # machine (/etc/passwd, a key), and its first line would end up in a log.
     raise InputError(
-        "unrecognised record format",
+        "unrecognised record format (no header of a known format, and not numbers)",
         file=source,
-        where="line 1",
-        value=first[:60],
-        allowed=f"{FORMATS_ALLOWED} (or force one with --as)",
+        allowed=f"{RECOGNISED}; or force one with --as ({FORMATS_ALLOWED})",
     )
 
 

@@ -17,6 +17,7 @@ import math
 from typing import TYPE_CHECKING
 
 from rockcli.errors import InputError
+from rockcli.numbers import ascii_float
 
 if TYPE_CHECKING:
     import numpy as np
@@ -101,7 +102,7 @@ def _parse_range(body: str, text: str) -> list[float]:
 def _number(item: str, text: str) -> float:
     """One finite number (InputError otherwise, e.g. an empty item or 'nan')."""
     try:
-        value = float(item.strip())
+        value = ascii_float(item.strip())
     except ValueError:
         raise _error(f"not a number: {item.strip()!r}", text) from None
     if not math.isfinite(value):

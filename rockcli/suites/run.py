@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import Any
 
@@ -25,8 +26,9 @@ from rockcli.suites.compat import (
     record_spectra,
     target_spectrum,
 )
-from rockcli.suites.load import SuiteSettings, read_entries
+from rockcli.suites.load import SuiteEntry, SuiteSettings, read_entries
 from rockcli.suites.schema import Target
+from rockcli.suites.twins import TWIN_CORRELATION, best_correlation, find_twins, twin_groups
 
 #: The year of the code text of each edition (rock names editions by their Circolare).
 CODE_YEAR = {Edition.E2009: "2008", Edition.E2019: "2018"}
@@ -88,15 +90,50 @@ class SuiteCheck:
     auto: AutoScale | None
     scaled: Compatibility | None
     at_height: FloorCheck | None = None
+    twins: tuple[str, ...] = ()
 
     @property
     def warnings(self) -> tuple[str, ...]:
-        """Every record's warnings (a PGA that suggests a unit slip…), each after its name."""
-        return tuple(
+        """Every record's warnings (a PGA that suggests a unit slip…), each after its name,
+        then the pairs of records that are one motion (twin_warnings)."""
+        named = tuple(
             f"{entry.name}: {warning}"
             for entry, record in zip(self.settings.entries, self.records, strict=True)
             for warning in record.warnings
         )
+        return named + self.twins
+
+
+def twin_warnings(settings: SuiteSettings, records: Sequence[Record]) -> tuple[str, ...]:
+    """A warning for each group of records that are one motion (rockcli.suites.twins: a copy
+    flipped, shifted or scaled; exact copies are refused when the suite is read), with how
+    many different records the suite then holds."""
+    groups = twin_groups(len(records), find_twins(records))
+    distinct = len(records) - sum(len(g) - 1 for g in groups)
+    return tuple(twin_text(g, settings.entries, records, distinct) for g in groups)
+
+
+def twin_text(
+    group: Sequence[int], entries: Sequence[SuiteEntry], records: Sequence[Record], distinct: int
+) -> str:
+    """One warning: the records of a group, how each relates to the first, the count."""
+    names = [repr(entries[i].name) for i in group]
+    listed = ", ".join(names[:-1]) + " and " + names[-1]
+    relations = []
+    for i in group[1:]:
+        rho, lag = best_correlation(records[group[0]], records[i])
+        shift = f", {abs(lag):g} s {'later' if lag > 0 else 'earlier'}" if lag else ""
+        relations.append(f"{entries[i].name!r} ρ = {rho:+.4f}{', flipped' if rho < 0 else ''}"
+                         f"{shift}")  # fmt: skip
+    text = (
+        f"records {listed} are one motion (their accelerations correlate after alignment at "
+        f"|ρ| > {TWIN_CORRELATION:g} with {entries[group[0]].name!r}: {'; '.join(relations)}): "
+        f"the code asks for different records, and this suite holds {distinct} different "
+        f"records, not {len(records)}"
+    )
+    if count_rule(distinct) is not count_rule(len(records)):
+        text += f" — with {distinct} the worst effect governs, not the mean (NTC §3.2.3.6)"
+    return text
 
 
 def run_suite_check(
@@ -127,13 +164,14 @@ def run_suite_check(
         curve, a_z = floor_target(target.spectrum, floor, periods)
         at_height = FloorCheck(floor, a_z, [float(m.pga) for m in motions])
     check = compatibility(periods, curve, spectra.mean(axis=0), settings.tolerance)
+    twins = twin_warnings(settings, records)
     auto = scaled = None
     if scale_auto:
         auto = auto_scale(check.ratio, settings.tolerance)
         if auto.factor is not None:
             mean = check.mean * auto.factor
             scaled = compatibility(periods, check.target, mean, settings.tolerance)
-    return SuiteCheck(settings, records, target, spectra, check, auto, scaled, at_height)
+    return SuiteCheck(settings, records, target, spectra, check, auto, scaled, at_height, twins)
 
 
 def _bound(x: float) -> float | None:

@@ -101,3 +101,38 @@ def test_mutated_case_files_load_or_raise_input_error(
                 run_case(loaded, None)
             except InputError:
                 pass
+
+
+def number_leaves(node: Any, prefix: tuple[Any, ...] = ()) -> list[tuple[Any, ...]]:
+    """The key paths of every number (int or float, not a boolean) in a nested table."""
+    if isinstance(node, dict):
+        items: list[tuple[Any, Any]] = list(node.items())
+    elif isinstance(node, list):
+        items = list(enumerate(node))
+    else:
+        return [prefix] if isinstance(node, int | float) and not isinstance(node, bool) else []
+    return [leaf for key, value in items for leaf in number_leaves(value, (*prefix, key))]
+
+
+@settings(max_examples=60, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(st.data())
+def test_a_number_written_as_text_is_refused(
+    tmp_path_factory: pytest.TempPathFactory, data: st.DataObject
+) -> None:
+    """Any number of a bundled case (its expected value, tolerance, an input; not the inline
+    models, which the model schema reads) quoted as text: an InputError naming the file and
+    that field, never the number read from the text (pydantic's lax mode did that)."""
+    base = copy.deepcopy(data.draw(st.sampled_from(BASES)))
+    leaves = [p for p in number_leaves(base) if "model" not in p]
+    path = data.draw(st.sampled_from(leaves))
+    parent = base
+    for key in path[:-1]:
+        parent = parent[key]
+    text = parent[path[-1]] = str(parent[path[-1]])
+    file = tmp_path_factory.mktemp("text") / "cases.toml"
+    file.write_text(tomli_w.dumps(base), encoding="utf-8")
+    with pytest.raises(InputError) as info:
+        load_case_file(file)
+    where = "".join(f"[{k}]" if isinstance(k, int) else f".{k}" for k in path).lstrip(".")
+    assert info.value.file == str(file) and info.value.where == where, str(info.value)
+    assert info.value.value == text  # "not a number", "not a whole number", "should be 1 or -1"

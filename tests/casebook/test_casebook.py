@@ -143,6 +143,15 @@ BAD_INPUT = [
      .replace(SPECTRUM_CASE[SPECTRUM_CASE.index("[cases.input]"):], 'model = "absent.toml"\n'),
      "absent.toml"),
     ("repeated id", SPECTRUM_CASE + "\n" + SPECTRUM_CASE, "repeated case id"),
+    # A number written as text was converted on main (pydantic's lax mode): refused now.
+    ("expected as text", SPECTRUM_CASE.replace("expected = 0.2070828",
+     'expected = "0.2070828"'), "cases[0].expected: not a number (got '0.2070828'"),
+    ("tolerance as text", SPECTRUM_CASE.replace("tolerance = 1e-12", 'tolerance = "1e-12"'),
+     "cases[0].tolerance: not a number"),
+    ("input as text", SPECTRUM_CASE.replace("period = 0.30", 'period = "0.30"'),
+     "cases[0].input.period: not a number"),
+    ("input as a boolean", SPECTRUM_CASE.replace("period = 0.30", "period = true"),
+     "cases[0].input.period: not a number"),
     ("no cases", "# nothing here\n", "cases"),
 ]  # fmt: skip
 

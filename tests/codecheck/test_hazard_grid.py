@@ -12,6 +12,8 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from rockcli.codecheck.hazard import (
     ROCK_HAZARD_GRID,
@@ -267,3 +269,24 @@ def test_a_grid_file_is_read_once_and_again_when_edited(tmp_path: Path) -> None:
     path.write_text("not a grid\n", encoding="utf-8")
     with pytest.raises(InputError):
         read_grid(path)
+
+
+@settings(max_examples=100, deadline=None)
+@given(
+    token=st.text(alphabet="0123456789.-+eE０２٥ ,x", min_size=1, max_size=8),
+    column=st.integers(2, 28),
+)
+def test_a_grid_token_is_an_ascii_number_or_one_error(token: str, column: int) -> None:
+    """One cell of the small grid replaced: a grid, or one InputError naming the file and line;
+    a token with a non-ASCII digit is never read (float() would read "０.２" as 0.2)."""
+    lines = small_grid_text().split("\r\n")
+    cells = lines[1].split("\t")
+    cells[column] = token
+    lines[1] = "\t".join(cells)
+    try:
+        grid = parse_grid("\r\n".join(lines), source="grid.txt")
+    except InputError as exc:
+        assert (exc.file, exc.where) == ("grid.txt", "line 2") and "\n" not in str(exc)
+        return
+    assert token.strip().isascii()
+    assert np.all(np.isfinite(grid.ag)) and np.all(grid.ag > 0)

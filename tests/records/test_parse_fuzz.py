@@ -160,3 +160,21 @@ def test_a_cut_file_never_gives_the_declared_count_with_other_values(
 def test_empty_texts(text: str) -> None:
     with pytest.raises(InputError):
         parse_text(text)
+
+
+@settings(max_examples=100, deadline=None)
+@given(lines=st.lists(st.text(alphabet="abcxyz:/=_ 0123456789.,;", max_size=30), min_size=1,
+                      max_size=6),
+       fmt=st.sampled_from([None, "plain"]))  # fmt: skip
+def test_a_file_no_reader_recognises_is_never_quoted(lines: list[str], fmt: str | None) -> None:
+    """Whatever a file that is not a record holds (a suite may name /etc/passwd or a key
+    file), the error names it and the formats, never its first line: every line starts with
+    a marker that no message may show. A forced format may quote a bad token of a line it
+    reads; detection quotes nothing."""
+    text = "\n".join(f"SECRET{line}" for line in lines)
+    try:
+        parse_text(text, fmt=fmt, source="notes.txt")
+    except InputError as exc:
+        assert "notes.txt" in str(exc)
+        if fmt is None:
+            assert "SECRET" not in str(exc), str(exc)

@@ -184,7 +184,17 @@ def test_missing_file() -> None:
 def test_unrecognised_format(write_file: Writer) -> None:
     path = write_file("meta.csv", "station,component,pga\nAQV,WE,6.5\n")
     err = read_error(path)
-    assert (err.file, err.where, err.problem) == (str(path), "line 1", "unrecognised record format")
+    assert (err.file, err.where, err.value) == (str(path), None, None)
+    assert err.problem.startswith("unrecognised record format")
+
+
+def test_unrecognised_format_never_quotes_the_file(write_file: Writer) -> None:
+    # On main the error quoted the first line: a suite naming /etc/passwd printed its first
+    # entry. The error names the file and the formats rock reads, never the content.
+    secret = "hunter2-SECRET-token-1f3c"
+    path = write_file("notes.txt", f"{secret}\nsecond line {secret}\n")
+    text = str(read_error(path))
+    assert secret not in text and str(path) in text and "PEER AT2" in text
 
 
 def test_unknown_forced_format(write_file: Writer) -> None:

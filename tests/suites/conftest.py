@@ -33,12 +33,30 @@ def se_by_hand(T: np.ndarray) -> np.ndarray:
 
 
 def write_suite(folder: Path, records: list[dict[str, Any]], **keys: Any) -> Path:
-    """A suite file in ``folder`` with these [[records]] and keys (target: TARGET)."""
+    """A suite file in ``folder`` with these [[records]] and keys (target: TARGET).
+
+    A record given by the absolute path of an existing file elsewhere (a shipped pulse, a
+    real record of ../shared) is copied into the folder and named by its file name: a suite
+    reads only the files of its own folder unless --allow-outside (rockcli.suites.load).
+    """
     data: dict[str, Any] = {"name": "test suite", "target": dict(TARGET), **keys}
-    data["records"] = records
+    data["records"] = [beside(folder, record) for record in records]
     path = folder / "suite.toml"
     path.write_text(tomli_w.dumps(data), encoding="utf-8")
     return path
+
+
+def beside(folder: Path, record: dict[str, Any]) -> dict[str, Any]:
+    """The record entry, its file copied into ``folder`` when it lies elsewhere."""
+    path = Path(str(record.get("path", "")))
+    if not (path.is_absolute() and path.is_file()):
+        return record
+    if path.resolve().is_relative_to(folder.resolve()):
+        return record
+    copy = folder / path.name
+    if not copy.exists():
+        shutil.copyfile(path, copy)
+    return {**record, "path": path.name}
 
 
 def pulse_copies(folder: Path, count: int) -> list[Path]:

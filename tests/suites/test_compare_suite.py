@@ -143,7 +143,9 @@ def test_the_docs_suite_on_the_altar(shared_records: Path, grid_file: Path) -> N
     # The done-when of the suite comparison: the per-record table, the compatibility verdict,
     # the code's rule and the side-by-side classification, on the compatible example suite.
     # The code's SLV demand is the suite's target (the same spectrum `rock suite check` shows).
-    args = (str(ALTAR), "--suite", str(SCALED_SUITE), "--hazard-grid", str(grid_file))
+    # The example's records are in ../shared, outside its folder: --allow-outside.
+    args = (str(ALTAR), "--suite", str(SCALED_SUITE), "--hazard-grid", str(grid_file),
+            "--allow-outside")  # fmt: skip
     code, out, err = run(*args)
     assert code == 0, err
     for text in ("Records of the suite, both polarities", "Lazio-Abruzzo 1984 ISE WE",
@@ -153,7 +155,7 @@ def test_the_docs_suite_on_the_altar(shared_records: Path, grid_file: Path) -> N
     doc = json.loads(run(*args, "--format", "json")[1])
     check = CliRunner().invoke(
         cli, ["suite", "check", str(SCALED_SUITE), "--hazard-grid", str(grid_file), "--format",
-              "json"],
+              "json", "--allow-outside"],
     )  # fmt: skip
     target = json.loads(check.stdout)["target_parameters"]
     slv = doc["kinematic"]["demand"]["SLV"]

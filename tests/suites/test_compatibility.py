@@ -147,7 +147,8 @@ def test_json_has_the_documented_keys(tmp_path: Path) -> None:
 
 
 def test_example_suite_over_the_shared_records(shared_records: Path, grid_file: Path) -> None:
-    doc = run_json(str(EXAMPLE_SUITE), "--hazard-grid", str(grid_file))
+    # The example's records are in ../shared, outside its folder: --allow-outside.
+    doc = run_json(str(EXAMPLE_SUITE), "--hazard-grid", str(grid_file), "--allow-outside")
     p = doc["target_parameters"]
     assert p["limit_state"] == "SLV" and p["TR"] == pytest.approx(-50 / math.log(0.9))
     # The plateau is ag·S·F0 (soil A: S = 1; NTC Eq. 3.2.4) from the grid's own numbers.

@@ -8,13 +8,17 @@ import shutil
 from pathlib import Path
 from typing import Any
 
+import pytest
+import tomli_w
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from rockcli.errors import InputError
-from rockcli.suites.load import resolve, validate_suite
+from rockcli.records.periods import MAX_PERIOD, MIN_PERIOD
+from rockcli.suites.load import load_suite, resolve, validate_suite
 from rockcli.suites.schema import Suite
 from tests.suites.conftest import PULSES
+from tests.suites.conftest import TARGET as TARGET_TABLE
 
 #: Values of every kind a TOML file can hold (and a few it cannot, e.g. None).
 SCALARS = st.one_of(
@@ -31,7 +35,7 @@ VALUES = st.recursive(
     max_leaves=12,
 )
 RECORD = st.fixed_dictionaries(
-    {"path": st.one_of(st.text(max_size=6), VALUES)},
+    {"path": st.one_of(st.text(max_size=6), st.sampled_from(["a\x00b", "/etc/passwd"]), VALUES)},
     optional={"name": VALUES, "scale": VALUES, "extra": VALUES},
 )
 TARGET = st.fixed_dictionaries(
@@ -48,7 +52,11 @@ SUITES = st.fixed_dictionaries(
         "name": st.one_of(st.text(max_size=6), VALUES),
         "records": st.one_of(st.lists(RECORD, max_size=8), VALUES),
         "target": st.one_of(TARGET, VALUES),
-        "period_range": st.one_of(st.lists(st.floats(-1, 5), max_size=3), VALUES),
+        "period_range": st.one_of(
+            st.lists(st.floats(-1, 5), max_size=3),
+            st.lists(st.floats(0, 1e300) | st.sampled_from([1e-300, 5e-324, 1e300]), max_size=3),
+            VALUES,
+        ),
         "tolerance": st.one_of(st.lists(st.floats(-2, 2), max_size=3), VALUES),
         "other": VALUES,
     },
@@ -67,7 +75,7 @@ def check_suite_table(data: dict[str, Any]) -> None:
     assert isinstance(suite, Suite) and len(suite.records) >= 3
     settings_ = resolve(suite, "fuzz.toml", None)
     lo, hi = settings_.period_range
-    assert 0 < lo < hi
+    assert MIN_PERIOD <= lo < hi <= MAX_PERIOD  # the response spectra's periods
     assert -1 < settings_.tolerance[0] < settings_.tolerance[1]
 
 
@@ -122,7 +130,12 @@ def test_damaged_valid_suite_is_a_suite_or_one_input_error(spot: Any, value: Any
             st.text(max_size=12),
             st.tuples(
                 st.sampled_from(["lon", "lat", "ag", "F0", "Tc_star", "soil", "edition", "x"]),
-                st.one_of(st.text(max_size=6), st.floats().map(str), st.integers().map(str)),
+                st.one_of(
+                    st.text(max_size=6),
+                    st.floats().map(str),
+                    st.integers().map(str),
+                    st.text(alphabet="0123456789.-e０１２５٠٢٥", min_size=1, max_size=5),
+                ),
             ).map("=".join),
         ),
         max_size=6,
@@ -136,6 +149,47 @@ def test_target_text_is_a_suite_or_one_error(tmp_path: Path, text: str) -> None:
         if not (tmp_path / pulse.name).exists():
             shutil.copyfile(pulse, tmp_path / pulse.name)
     try:
-        load_suite(tmp_path, target=text)
+        settings_ = load_suite(tmp_path, target=text)
     except InputError as exc:
         assert "\n" not in str(exc)
+        return
+    # A number key read: its value was written in ASCII (０.２ is text, which the schema
+    # refuses for a number; float() alone would have read it).
+    for item in text.split(","):
+        key, _, value = (part.strip() for part in item.partition("="))
+        if key in ("lon", "lat", "ag", "F0", "Tc_star"):
+            assert value.isascii(), (key, value)
+    assert len(settings_.entries) == len(PULSES)
+
+
+#: Record paths a suite file may write: inside, outside by '..', by a link, absolute, NUL.
+PATHS = ["r.txt", "./r.txt", "sub/r2.txt", "sub/../r.txt", "../out.txt", "sub/../../out.txt",
+         "link.txt", "sub/link2.txt", "ABSOLUTE", "a\x00b.txt", "..", "none.txt"]  # fmt: skip
+
+
+@settings(max_examples=100, deadline=None)
+@given(paths=st.lists(st.sampled_from(PATHS), min_size=3, max_size=5), allow=st.booleans())
+def test_suite_paths_stay_inside_or_one_error(
+    tmp_path_factory: pytest.TempPathFactory, paths: list[str], allow: bool
+) -> None:
+    """Without --allow-outside, every record of a loaded suite resolves inside the suite's
+    folder (links and '..' followed); anything else is one InputError line naming the file."""
+    root = tmp_path_factory.mktemp("paths")
+    folder, outside = root / "suite", root / "out.txt"
+    (folder / "sub").mkdir(parents=True)
+    for path in (folder / "r.txt", folder / "sub" / "r2.txt", outside):
+        path.write_text("0 0\n0.01 0.1\n0.02 0\n", encoding="utf-8")
+    (folder / "link.txt").symlink_to(outside)
+    (folder / "sub" / "link2.txt").symlink_to(folder / "r.txt")  # a link that stays inside
+    records = [{"path": str(outside) if p == "ABSOLUTE" else p, "name": f"n{i}"}
+               for i, p in enumerate(paths)]  # fmt: skip
+    suite = folder / "suite.toml"
+    suite.write_text(tomli_w.dumps({"name": "s", "target": TARGET_TABLE, "records": records}))
+    try:
+        settings_ = load_suite(suite, allow_outside=allow)
+    except InputError as exc:
+        line = str(exc)
+        assert line.startswith(f"{suite}: ") and "\n" not in line, line
+        return
+    if not allow:
+        assert all(e.path.resolve().is_relative_to(folder.resolve()) for e in settings_.entries)

@@ -17,15 +17,17 @@ from click.testing import CliRunner
 
 from rockcli.cli.main import cli
 from tests.cli.test_tolerance_check import ISSUE_WALL, RECORD
-from tests.suites.conftest import PULSES
+from tests.suites.conftest import PULSES, beside
 
 
 def suite_with_the_issues_record(folder: Path, shared_records: Path) -> Path:
-    """A suite: the issue's record at 0.8 and two pulses, target by its parameters."""
+    """A suite: the issue's record at 0.8 and two pulses, target by its parameters (each
+    copied beside the suite file, which reads only its own folder)."""
     entries = [(shared_records / RECORD, "northr", 0.8), (PULSES[0], "p0", 1.0),
                (PULSES[1], "p1", 1.0)]  # fmt: skip
     text = 'name = "issue"\n[target]\nag = 0.2\nF0 = 2.5\nTc_star = 0.3\n\n' + "".join(
-        f'[[records]]\npath = "{path}"\nname = "{name}"\nscale = {scale}\n\n'
+        f'[[records]]\npath = "{beside(folder, {"path": str(path)})["path"]}"\n'
+        f'name = "{name}"\nscale = {scale}\n\n'
         for path, name, scale in entries
     )
     path = folder / "suite.toml"

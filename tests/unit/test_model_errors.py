@@ -688,7 +688,7 @@ def test_missing_file(tmp_path: Path) -> None:
 def test_directory_instead_of_file(tmp_path: Path) -> None:
     with pytest.raises(InputError) as info:
         load_model(tmp_path)
-    assert str(info.value).startswith(f"{tmp_path}: cannot read the file: ")
+    assert str(info.value).startswith(f"{tmp_path}: not a regular file (a folder)")
 
 
 def test_not_utf8(tmp_path: Path) -> None:

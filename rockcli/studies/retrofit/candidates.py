@@ -16,6 +16,7 @@ from typing import Any
 
 from rockcli.errors import InputError
 from rockcli.model.schema import Model
+from rockcli.numbers import ascii_float
 
 #: Diameters tried by default [mm]: the nominal sizes of tie-rod bars and threaded rods, ISO 261
 #: first and second choice from M10 to M36, and the 40 mm bar.
@@ -81,7 +82,7 @@ def parse_diameters(text: str | None) -> tuple[float, ...]:
 
 def _positive_number(part: str, text: str) -> float:
     try:
-        value = float(part)
+        value = ascii_float(part)
     except ValueError:
         value = math.nan
     if not (math.isfinite(value) and value > 0):
@@ -96,7 +97,7 @@ def parse_at(text: str) -> tuple[float, float]:
     """``--at 5.0,0.3`` → (height, from_pivot) [m]; InputError unless two finite numbers."""
     parts = text.split(",")
     try:
-        height, from_pivot = (float(p) for p in parts)
+        height, from_pivot = (ascii_float(p) for p in parts)
     except ValueError:
         raise InputError("not two numbers", where="--at", value=text, allowed=AT_ALLOWED) from None
     if not (math.isfinite(height) and math.isfinite(from_pivot)):

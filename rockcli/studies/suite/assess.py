@@ -48,18 +48,24 @@ class LoadedSuite:
 
 
 def load_suite_and_model(
-    model_path: str, suite_path: str, grid_file: str | None, target: str | None = None
+    model_path: str,
+    suite_path: str,
+    grid_file: str | None,
+    target: str | None = None,
+    allow_outside: bool = False,
 ) -> LoadedSuite:
     """Read the model and the suite (a file, or a folder with its ``target`` text), and check
     the suite against its target (InputError on bad input in either; the compatibility
-    check's verdict itself is data)."""
+    check's verdict itself is data). allow_outside: the suite's records may lie outside its
+    folder (rockcli.suites.load.load_suite)."""
     from rockcli.model.load import read_toml, validate_model
     from rockcli.suites.load import load_suite
     from rockcli.suites.run import run_suite_check
 
     table = read_toml(model_path)
     model = validate_model(table, file=model_path)
-    check = run_suite_check(load_suite(suite_path, target=target), grid_file)
+    settings = load_suite(suite_path, target=target, allow_outside=allow_outside)
+    check = run_suite_check(settings, grid_file)
     return LoadedSuite(model_path, table, model, check)
 
 
@@ -73,6 +79,7 @@ def assess_suite(
     jobs: int = 1,
     progress: Callable[[int, int], None] | None = None,
     target: str | None = None,
+    allow_outside: bool = False,
 ) -> SuiteAssessment:
     """Both polarities of the model under every record of the suite (its scales applied), on
     ``jobs`` local workers, and the suite measure by the code's rule (rule.suite_measure)
@@ -80,7 +87,7 @@ def assess_suite(
 
     The compatibility check runs first: a suite that fails it still runs, and says so.
     """
-    loaded = load_suite_and_model(model_path, suite_path, grid_file, target)
+    loaded = load_suite_and_model(model_path, suite_path, grid_file, target, allow_outside)
     return assess_loaded(loaded, engine=engine, ground=ground, jobs=jobs, progress=progress)
 
 

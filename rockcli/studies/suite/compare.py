@@ -208,6 +208,7 @@ def compare_suite(
     jobs: int = 1,
     progress: Callable[[int, int], None] | None = None,
     target: str | None = None,
+    allow_outside: bool = False,
 ) -> SuiteComparison:
     """The code check on the suite's target (or mean) spectrum, the suite through the time
     history, and the classification of the two verdicts of the target's limit state.
@@ -217,7 +218,7 @@ def compare_suite(
     """
     from rockcli.studies.suite.assess import load_suite_and_model
 
-    loaded = load_suite_and_model(model_path, suite_path, grid_file, target)
+    loaded = load_suite_and_model(model_path, suite_path, grid_file, target, allow_outside)
     return compare_loaded(
         loaded, grid_file, code_demand=code_demand, edition=edition, engine=engine,
         ground=ground, jobs=jobs, progress=progress,

@@ -25,7 +25,9 @@ from typing import Any
 from pydantic import BaseModel, Field, ValidationError, field_validator
 from pydantic_core import ErrorDetails
 
+from rockcli import inside
 from rockcli.errors import InputError
+from rockcli.inside import path_error
 from rockcli.model.schema_base import Table
 from rockcli.records.kinds import FILE_FORMATS, RecordFormat
 
@@ -34,8 +36,10 @@ Scalar = bool | int | float | str
 #: A key path inside the model: ("restrainers", 0, "k_pos").
 KeyPath = tuple[str | int, ...]
 
-_PATH = re.compile(r"^[A-Za-z_][A-Za-z0-9_]*(\[\d+\])*(\.[A-Za-z_][A-Za-z0-9_]*(\[\d+\])*)*$")
-_PART = re.compile(r"([A-Za-z_][A-Za-z0-9_]*)|\[(\d+)\]")
+_PATH = re.compile(
+    r"^[A-Za-z_][A-Za-z0-9_]*(\[\d+\])*(\.[A-Za-z_][A-Za-z0-9_]*(\[\d+\])*)*$", re.ASCII
+)
+_PART = re.compile(r"([A-Za-z_][A-Za-z0-9_]*)|\[(\d+)\]", re.ASCII)
 PATH_ALLOWED = "dotted keys with [i] indices, e.g. geometry.R or restrainers[0].k_pos"
 
 
@@ -320,40 +324,33 @@ INSIDE_ALLOWED = (
 def check_inside(path: Path, folder: Path, file: str, where: str, value: str) -> None:
     """Refuse a path of the study file that leaves its folder (``..``, an absolute path, a
     symlink to elsewhere): a study from an untrusted pull request reads only its own files."""
-    try:
-        inside = path.resolve().is_relative_to(folder.resolve())
-    except (OSError, ValueError) as exc:  # a NUL character, a name too long, a loop
-        raise path_error(exc, file, where) from None
-    if not inside:
-        raise InputError(
-            "leaves the study's folder",
-            file=file,
-            where=where,
-            value=value,
-            allowed=INSIDE_ALLOWED,
-        )
+    inside.check_inside(
+        path, folder, file=file, where=where, value=value,
+        problem="leaves the study's folder", allowed=INSIDE_ALLOWED,
+    )  # fmt: skip
 
 
 def is_file(path: str | Path, file: str, where: str) -> bool:
     """True for an existing regular file, False when absent; a path the system refuses (a
-    name longer than NAME_MAX, a loop of links) is an InputError naming the key."""
+    name longer than NAME_MAX, a loop of links) or one that is not a regular file (a folder,
+    a FIFO that would block the read, a device) is an InputError naming the key."""
+    from rockcli.textfile import file_kind
+
     try:
-        return stat.S_ISREG(os.stat(path).st_mode)
+        mode = os.stat(path).st_mode
     except (FileNotFoundError, NotADirectoryError):
         return False
     except (OSError, ValueError) as exc:
         raise path_error(exc, file, where) from None
-
-
-def path_error(exc: OSError | ValueError, file: str, where: str) -> InputError:
-    """A path the system refuses, as one error naming the key of the study file."""
-    reason = exc.strerror if isinstance(exc, OSError) and exc.strerror else str(exc)
-    return InputError(
-        f"cannot use this path: {reason}",
-        file=file,
-        where=where,
-        allowed="a path the file system accepts (no NUL character, each name at most 255 bytes)",
-    )
+    if not stat.S_ISREG(mode):
+        raise InputError(
+            f"not a regular file ({file_kind(mode)})",
+            file=file,
+            where=where,
+            value=str(path),
+            allowed="a regular file (not a folder, pipe or device)",
+        )
+    return True
 
 
 def load_study(
@@ -533,7 +530,7 @@ def suite_source(
     each of its records inside the records folder (a study reads only its own files)."""
     from rockcli.suites.load import load_suite
 
-    settings = load_suite(str(path))
+    settings = load_suite(str(path), allow_outside=True)  # checked below, against the study's
     if not allow_outside:
         for k, entry in enumerate(settings.entries):
             check_inside(

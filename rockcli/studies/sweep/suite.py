@@ -48,7 +48,7 @@ def read_suite(source: RecordSource) -> SuiteInput:
     from rockcli.studies.suite.run import SuiteRecord
     from rockcli.suites.load import load_suite, read_entries
 
-    settings = load_suite(source.path)
+    settings = load_suite(source.path, allow_outside=True)  # checked when the study loaded
     records = read_entries(settings)
     items = tuple(
         SuiteRecord(e.name, e.scale, r) for e, r in zip(settings.entries, records, strict=True)
