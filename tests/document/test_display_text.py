@@ -79,7 +79,16 @@ def test_a_suite_record_named_with_a_bell_gives_both_outputs(tmp_path: Path) -> 
     pytest.importorskip("typst", reason="the report extra (typst) is not installed")
     pdfium = pytest.importorskip("pypdfium2", reason="pypdfium2 (test extra) is not installed")
     html, pdf = tmp_path / "s.html", tmp_path / "s.pdf"
-    args = [str(ALTAR), "--suite", str(write_suite(tmp_path)), "-o", str(html), "--pdf", str(pdf), "--allow-outside"]
+    args = [
+        str(ALTAR),
+        "--suite",
+        str(write_suite(tmp_path)),
+        "-o",
+        str(html),
+        "--pdf",
+        str(pdf),
+        "--allow-outside",
+    ]
     result = CliRunner().invoke(cli, ["report", *args, "--lang", "en"])
     assert result.exit_code == 0, result.output
     page = html.read_bytes()
