@@ -27,6 +27,17 @@ class AsciiFloat(click.ParamType):
 #: The type of a number option (rather than click's ``float``).
 ASCII_FLOAT = AsciiFloat()
 
+
+class AsciiIntRange(click.IntRange):
+    """A whole-number option in a range, written in ASCII (click's ``IntRange`` reads
+    ``４`` as 4, like Python's ``int()``; rockcli.numbers)."""
+
+    def convert(self, value, param, ctx):  # click.ParamType.convert
+        if isinstance(value, str) and not value.isascii():
+            self.fail(f"{value!r} is not a number written in ASCII digits", param, ctx)
+        return super().convert(value, param, ctx)
+
+
 output_format = click.option(
     "--format",
     "output",
@@ -44,7 +55,7 @@ record_format = click.option(
 )
 plain_dt = click.option(
     "--dt",
-    type=float,
+    type=ASCII_FLOAT,
     default=None,
     help="Sample interval [s] of a one-column plain-text record, 1e-9 to 1.",
 )
@@ -143,7 +154,7 @@ target_option = click.option(
 def jobs_option(help_text: str):
     """``--jobs/-j N``: local workers, this process and N − 1 worker processes."""
     return click.option(
-        "--jobs", "-j", type=click.IntRange(min=1), default=1, show_default=True, help=help_text
+        "--jobs", "-j", type=AsciiIntRange(min=1), default=1, show_default=True, help=help_text
     )
 
 
@@ -162,9 +173,11 @@ def record_options(required: bool) -> list:
         plain_dt,
         plain_units,
         click.option(
-            "--scale", type=float, default=None, help="Multiply the record by this factor."
+            "--scale", type=ASCII_FLOAT, default=None, help="Multiply the record by this factor."
         ),
-        click.option("--pga", type=float, default=None, help="Scale the record to this PGA [g]."),
+        click.option(
+            "--pga", type=ASCII_FLOAT, default=None, help="Scale the record to this PGA [g]."
+        ),
     ]
 
 

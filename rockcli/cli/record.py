@@ -11,6 +11,7 @@ import click
 
 from rockcli.cli.inputs import InputPath, RockCommands
 from rockcli.cli.options import (
+    ASCII_FLOAT,
     announce_written,
     force_option,
     output_format,
@@ -119,8 +120,8 @@ def _window(value: str | None) -> tuple[float, float] | None:
 @record_format
 @plain_dt
 @plain_units
-@click.option("--scale", type=float, default=None, help="Multiply the record by this factor.")
-@click.option("--pga", type=float, default=None, help="Scale the record to this PGA [g].")
+@click.option("--scale", type=ASCII_FLOAT, default=None, help="Multiply the record by this factor.")
+@click.option("--pga", type=ASCII_FLOAT, default=None, help="Scale the record to this PGA [g].")
 @click.option("--flip", is_flag=True, help="Reverse the polarity.")
 @click.option(
     "--trim",
@@ -132,7 +133,7 @@ def _window(value: str | None) -> tuple[float, float] | None:
 @click.option(
     "--resample",
     "new_dt",
-    type=float,
+    type=ASCII_FLOAT,
     default=None,
     help="Resample to this time step [s], 1e-9 to 1 (linear interpolation).",
 )
@@ -181,21 +182,23 @@ def convert(
 
 @record.command("pulse", short_help="Write a synthetic pulse KIND as a plain-text record.")
 @click.argument("kind", type=click.Choice([str(k) for k in PulseKind]))
-@click.option("--amplitude", type=float, required=True, help="Peak acceleration ap [g], up to 100.")
+@click.option(
+    "--amplitude", type=ASCII_FLOAT, required=True, help="Peak acceleration ap [g], up to 100."
+)
 @click.option(
     "--period",
-    type=float,
+    type=ASCII_FLOAT,
     required=True,
     help="Tp [s], 0.001 to 100: 2π/ωp of the sine pulses (the half-sine lasts Tp/2, one-sine "
     "and one-cosine Tp), 1/fp of the Ricker wavelet (it lasts 3 Tp), the duration of the "
     "rectangular pulse.",
 )
 @click.option(
-    "--dt", type=float, default=0.005, show_default=True, help="Time step [s], 1e-9 to 1."
+    "--dt", type=ASCII_FLOAT, default=0.005, show_default=True, help="Time step [s], 1e-9 to 1."
 )
 @click.option(
     "--duration",
-    type=float,
+    type=ASCII_FLOAT,
     default=None,
     help="Total duration [s], zeros after the pulse (default: the pulse alone).",
 )
@@ -235,14 +238,18 @@ MAX_PSI = 1.5
 @record_format
 @plain_dt
 @plain_units
-@click.option("--T1", "t1", type=float, required=True, help="First-mode period T1 [s], 0.01 to 10.")
 @click.option(
-    "--psi", type=float, required=True, help="Mode shape ψ at the element's height, 0 to 1.5."
+    "--T1", "t1", type=ASCII_FLOAT, required=True, help="First-mode period T1 [s], 0.01 to 10."
 )
-@click.option("--gamma", type=float, required=True, help="Participation factor γ, 0.001 to 3.")
+@click.option(
+    "--psi", type=ASCII_FLOAT, required=True, help="Mode shape ψ at the element's height, 0 to 1.5."
+)
+@click.option(
+    "--gamma", type=ASCII_FLOAT, required=True, help="Participation factor γ, 0.001 to 3."
+)
 @click.option(
     "--xi",
-    type=float,
+    type=ASCII_FLOAT,
     default=0.05,
     show_default=True,
     help="First-mode damping ratio, a fraction of critical (0.05 = 5 %).",

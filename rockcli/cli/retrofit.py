@@ -6,6 +6,8 @@ import click
 
 from rockcli.cli.inputs import InputPath, RockCommand
 from rockcli.cli.options import (
+    ASCII_FLOAT,
+    AsciiIntRange,
     announce_written,
     check_outputs,
     edition_option,
@@ -37,7 +39,7 @@ EXIT_NONE = 1
     metavar="HEIGHT,FROM_PIVOT",
     help="Size a new rod at this point [m] (added to the model's restrainers; needs --length).",
 )
-@click.option("--length", type=float, default=None, help="Free length of the new rod [m].")
+@click.option("--length", type=ASCII_FLOAT, default=None, help="Free length of the new rod [m].")
 @click.option(
     "--diameters",
     default=None,
@@ -52,7 +54,7 @@ EXIT_NONE = 1
 )
 @click.option(
     "--count",
-    type=click.IntRange(min=1),
+    type=AsciiIntRange(min=1),
     default=None,
     help="Bars side by side [default: the model's tie-rod's, else 1].",
 )

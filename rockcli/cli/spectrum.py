@@ -12,6 +12,7 @@ import click
 
 from rockcli.cli.inputs import InputPath, RockCommand
 from rockcli.cli.options import (
+    ASCII_FLOAT,
     announce_written,
     check_outputs,
     force_option,
@@ -32,11 +33,13 @@ DAMPING_ALLOWED = "a fraction of critical, 0 < ζ < 1 (0.05 = 5 %)"
 @record_format
 @plain_dt
 @plain_units
-@click.option("--scale", type=float, default=None, help="Multiply every record by this factor.")
-@click.option("--pga", type=float, default=None, help="Scale every record to this PGA [g].")
+@click.option(
+    "--scale", type=ASCII_FLOAT, default=None, help="Multiply every record by this factor."
+)
+@click.option("--pga", type=ASCII_FLOAT, default=None, help="Scale every record to this PGA [g].")
 @click.option(
     "--damping",
-    type=float,
+    type=ASCII_FLOAT,
     default=0.05,
     show_default=True,
     help="Viscous damping ratio, a fraction of critical (0.05 = 5 %).",

@@ -11,7 +11,12 @@ from contextlib import contextmanager
 import click
 
 from rockcli.cli.inputs import InputPath, RockCommand
-from rockcli.cli.options import announce_written, hazard_grid_option, output_format
+from rockcli.cli.options import (
+    AsciiIntRange,
+    announce_written,
+    hazard_grid_option,
+    output_format,
+)
 from rockcli.cli.plot_option import plot_option
 
 #: Name prefix of the thread that runs chunks in this process (studies.sweep.executor).
@@ -106,7 +111,7 @@ def terminate_as_interrupt() -> Iterator[None]:
 @click.option(
     "--jobs",
     "-j",
-    type=click.IntRange(min=1),
+    type=AsciiIntRange(min=1),
     default=None,
     help="Workers on this machine: this process and N − 1 worker processes, at most the CPU "
     "count and the number of cases [default: the CPU count].",
@@ -143,7 +148,7 @@ def terminate_as_interrupt() -> Iterator[None]:
 )
 @click.option(
     "--chunk-size",
-    type=click.IntRange(min=1),
+    type=AsciiIntRange(min=1),
     default=None,
     help="Cases per chunk [default: about 1 s of work].",
 )

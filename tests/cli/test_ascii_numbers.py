@@ -6,10 +6,12 @@ from __future__ import annotations
 
 from pathlib import Path
 
+import click
 import pytest
 from click.testing import CliRunner
 
 from rockcli.cli.main import cli
+from rockcli.cli.options import AsciiFloat, AsciiIntRange
 from rockcli.codecheck.hazard import parse_grid
 from rockcli.errors import InputError
 from rockcli.numbers import ascii_float, ascii_int
@@ -68,3 +70,38 @@ def test_the_hazard_grid_reads_ascii_numbers_only() -> None:
     with pytest.raises(InputError) as info:
         parse_grid(text, source="grid.txt")
     assert (info.value.where, info.value.value) == ("line 2", "２.5")
+
+
+def number_options(command: click.Command, path: str = "rock"):
+    """Every option of every command that reads a number, with its command's path."""
+    if isinstance(command, click.Group):
+        for name, sub in command.commands.items():
+            yield from number_options(sub, f"{path} {name}")
+        return
+    for param in command.params:
+        if isinstance(param.type, (click.types.FloatParamType, click.types.IntParamType)):
+            yield path, param
+
+
+def test_every_number_option_reads_ascii_only() -> None:
+    """click's FLOAT, INT, FloatRange and IntRange read "０.５" through float()/int(): every
+    number option of every command is one of rock's ASCII types instead (cli/options.py)."""
+    loose = [
+        f"{path} {param.opts[0]}"
+        for path, param in number_options(cli)
+        if not isinstance(param.type, (AsciiFloat, AsciiIntRange))
+    ]
+    assert not loose, loose
+
+
+@pytest.mark.parametrize("text", LOOKALIKES)
+def test_plain_float_options_refuse_lookalikes(text: str, tmp_path: Path) -> None:
+    """`record pulse --amplitude ０.５` wrote a 0.5 g pulse on main."""
+    out = tmp_path / "p.txt"
+    line = error_line(
+        "record", "pulse", "ricker", "--amplitude", text, "--period", "0.5", "-o", str(out)
+    )
+    assert "ASCII" in line and not out.exists()
+    assert "ASCII" in error_line(
+        "record", "spectrum", str(ROOT / "records" / "ricker_Tp0.5s_0.5g.txt"), "--scale", text
+    )
