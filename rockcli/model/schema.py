@@ -30,11 +30,13 @@ from rockcli.model.bounds import (
     MAX_UNIT_WEIGHT,
     MAX_WEIGHT,
     MIN_ELONGATION,
+    MIN_FORCE,
     MIN_LENGTH,
     MIN_MODULUS,
     MIN_SLENDERNESS,
     MIN_UNIT_WEIGHT,
     MIN_WEIGHT,
+    PRETENSION_ALLOWED,
 )
 from rockcli.model.ntc import Ntc
 from rockcli.model.physical import Building, Load, Position, Thrust, check_mass, check_points
@@ -347,7 +349,6 @@ LAW_ALLOWED = (
     'law = "elastic" (no yield), or "elastic-plastic" with yield_pos and yield_neg [N] '
     "(a tie-rod: its grade or fy, fu)"
 )
-PRETENSION_ALLOWED = "0 <= pretension < the yield force and the anchor capacity [N]"
 CODE_ACTION_ALLOWED = (
     'code_action = "spring", or "force" for a member with a strength (a tie-rod\'s grade or '
     "fy, fu; a yield force; an anchor capacity)"
@@ -363,6 +364,10 @@ MIN_STEEL_STRENGTH, MAX_STEEL_STRENGTH = 100e6, 2000e6
 MAX_BARS = 100
 #: Largest anchor capacity accepted [N] (100 MN: beyond any masonry anchorage).
 MAX_ANCHOR = 1e8
+#: The keys of a restrainer that are forces [N]: each at least MIN_FORCE (1 N) and at most
+#: MAX_ANCHOR; pretension may also be 0 (none). tests/unit/test_model_bounds.py checks that
+#: every key whose unit is N is listed here.
+FORCE_KEYS = ("yield_pos", "yield_neg", "anchor_capacity", "pretension")
 
 
 class SteelGrade(StrEnum):
@@ -423,7 +428,7 @@ class Restrainer(Table):
     )
     anchor_capacity: float | None = number(
         "Force at which the anchorage (plate, masonry) gives way; caps the strength [N]",
-        gt=0,
+        ge=MIN_FORCE,
         le=MAX_ANCHOR,
     )
     radius: float | None = number(
@@ -463,13 +468,16 @@ class Restrainer(Table):
         "elastic-plastic for a tie-rod with a grade or fy, fu, for a spring with yield forces",
     )
     yield_pos: float | None = number(
-        "Spring: yield force while θ > 0 (elastic-plastic law) [N]", gt=0, le=MAX_ANCHOR
+        "Spring: yield force while θ > 0 (elastic-plastic law) [N]", ge=MIN_FORCE, le=MAX_ANCHOR
     )
     yield_neg: float | None = number(
-        "Spring: yield force while θ < 0 (elastic-plastic law) [N]", gt=0, le=MAX_ANCHOR
+        "Spring: yield force while θ < 0 (elastic-plastic law) [N]", ge=MIN_FORCE, le=MAX_ANCHOR
     )
     pretension: float | None = number(
-        "Force in the member at rest, below its yield force; default 0 [N]", ge=0, le=MAX_ANCHOR
+        f"Force in the member at rest: 0, or at least {MIN_FORCE:g} N and below its yield force; "
+        "default 0 [N]",
+        ge=0,
+        le=MAX_ANCHOR,
     )
     elongation_at_break: float | None = number(
         "Tie-rod: elongation at break of the steel, a fraction of the length (0.2 = 20 %); "
@@ -584,10 +592,13 @@ class Restrainer(Table):
                     raise rule_error(key, 'required with law = "elastic-plastic"', LAW_ALLOWED)
 
     def _check_pretension(self) -> None:
-        """A pretension below every yield force and the anchor's capacity."""
+        """A pretension of 0, or of at least MIN_FORCE below every yield force and the anchor's
+        capacity."""
         p0 = self.pretension
         if not p0:
             return
+        if p0 < MIN_FORCE:
+            raise rule_error("pretension", f"below {MIN_FORCE:g} N", PRETENSION_ALLOWED, p0)
         limits = [f for f in self.yield_forces() if math.isfinite(f)]
         if self.anchor_capacity is not None:
             limits.append(self.anchor_capacity)
