@@ -33,7 +33,7 @@ MIN_ELONGATION = 1e-6
 MIN_FORCE = 1.0
 #: What a pretension accepts (the schema's rule and the derived block's, one wording).
 PRETENSION_ALLOWED = (
-    f"0, or >= {MIN_FORCE:g} and below the yield force and the anchor capacity [N]"
+    f"0, or {MIN_FORCE:g} <= pretension < the yield force and the anchor capacity [N]"
 )
 #: Lightest weight [kN]: 1e-6 kN = 1 mN, a block of 0.1 g.
 MIN_WEIGHT = 1e-6
@@ -45,6 +45,10 @@ MIN_UNIT_WEIGHT = 0.1
 MAX_UNIT_WEIGHT = 300.0
 #: Stiffest restrainer [N/m]: 1e12 (a steel bar 1 m² in section, 0.2 m long).
 MAX_STIFFNESS = 1e12
+#: Softest restrainer given by its stiffness [N/m], when not 0 (no spring on that side):
+#: 1 N/m, a millionth of the paper's vault (4e6 N/m). A subnormal k (5e-324) overflowed the
+#: elongations F/K and P0/K at which the member yields, breaks or holds its pretension.
+MIN_STIFFNESS = 1.0
 #: Softest Young's modulus of a tie-rod [Pa]: 1 MPa (rubber).
 MIN_MODULUS = 1e6
 #: Stiffest Young's modulus [Pa]: 1.2e12 (diamond).

@@ -34,6 +34,7 @@ from rockcli.model.bounds import (
     MIN_LENGTH,
     MIN_MODULUS,
     MIN_SLENDERNESS,
+    MIN_STIFFNESS,
     MIN_UNIT_WEIGHT,
     MIN_WEIGHT,
     PRETENSION_ALLOWED,
@@ -334,6 +335,7 @@ LimitRatio = Annotated[float, Field(strict=True, gt=0, le=MAX_LIMIT_RATIO, allow
 PLACEMENTS = (("radius", "angle"), ("height", "from_pivot"), ("position",))
 PLACEMENT_ALLOWED = 'radius + angle, or height + from_pivot, or position = "top"'
 SPRING_ALLOWED = 'k or k_pos + k_neg [N/m]; or kind = "tie-rod" with diameter and length [m]'
+STIFFNESS_ALLOWED = f"0 (none), or >= {MIN_STIFFNESS:g} and <= {MAX_STIFFNESS:g} [N/m]"
 TIE_ROD_KEYS = (
     "diameter",
     "length",
@@ -390,10 +392,21 @@ class Restrainer(Table):
     kind: RestrainerKind = Field(
         RestrainerKind.SPRING, description="'spring' (default: stiffness given) or 'tie-rod'"
     )
-    k_pos: float | None = number("Stiffness while θ > 0, with k_neg [N/m]", ge=0, le=MAX_STIFFNESS)
-    k_neg: float | None = number("Stiffness while θ < 0, with k_pos [N/m]", ge=0, le=MAX_STIFFNESS)
+    k_pos: float | None = number(
+        f"Stiffness while θ > 0, with k_neg: 0 (none), or at least {MIN_STIFFNESS:g} N/m [N/m]",
+        ge=0,
+        le=MAX_STIFFNESS,
+    )
+    k_neg: float | None = number(
+        f"Stiffness while θ < 0, with k_pos: 0 (none), or at least {MIN_STIFFNESS:g} N/m [N/m]",
+        ge=0,
+        le=MAX_STIFFNESS,
+    )
     k: float | None = number(
-        "Stiffness on both sides (instead of k_pos + k_neg) [N/m]", ge=0, le=MAX_STIFFNESS
+        "Stiffness on both sides (instead of k_pos + k_neg): 0 (none), or at least "
+        f"{MIN_STIFFNESS:g} N/m [N/m]",
+        ge=0,
+        le=MAX_STIFFNESS,
     )
     diameter: float | None = number("Tie-rod: bar diameter d [m]", ge=MIN_LENGTH, le=MAX_LENGTH)
     length: float | None = number("Tie-rod: free length L [m]", ge=MIN_LENGTH, le=MAX_LENGTH)
@@ -610,6 +623,10 @@ class Restrainer(Table):
         forbid(values, TIE_ROD_KEYS, 'only allowed with kind = "tie-rod"', SPRING_ALLOWED)
         if choose_group(values, [("k",), ("k_pos", "k_neg")], SPRING_ALLOWED) is None:
             raise rule_error(None, "missing the stiffness", SPRING_ALLOWED)
+        for key in ("k", "k_pos", "k_neg"):
+            k = values.get(key)
+            if k is not None and 0 < k < MIN_STIFFNESS:
+                raise rule_error(key, f"below {MIN_STIFFNESS:g} N/m", STIFFNESS_ALLOWED, k)
 
     @staticmethod
     def _check_tie_rod(values: Mapping[str, Any]) -> None:

@@ -20,15 +20,18 @@ What is asserted, and why:
   rest W·R·sin α = W·b; the amplitude moves by no more than that fraction of itself:
   |max θ/α − free| ≤ free·F·r/(W·b) (first-order perturbation with a sensitivity of at most 1;
   measured on this block and pulse: 0.26 for a yield, 0.06 for an anchor, over 600 forces
-  from 1 N to 10⁵ N), plus the runs' integration error (1e-6 relative). Drawn down to 1e-300 N at the engine (the model file refuses less than
-  1 N, rockcli.model.bounds.MIN_FORCE; the engine must hold below it too);
+  from 1 N to 10⁵ N), plus the runs' integration error (1e-6 relative). Drawn down to
+  1e-300 N at the engine: the model file refuses less than 1 N
+  (rockcli.model.bounds.MIN_FORCE), and the engine must hold below it too;
 - monotone: under this one-cycle pulse a stronger elastic–perfectly plastic member never lets
   the block rock more (observed exactly over the 600 forces; not a theorem of rocking in
-  general, where a restrainer shifts the impacts, but a jump like main's, 0.29 → 0.0056 at a
-  tiny yield, breaks it); asserted to 1e-6 relative (the runs' own integration error at
-  rtol = atol = 1e-8 is below it);
+  general, where a restrainer shifts the impacts, but a jump like main's breaks it: a tiny
+  yield that is never reached holds the block as the elastic spring does, max θ/α 0.029
+  instead of the free block's 0.29); asserted to 1e-6 relative (the runs' own integration
+  error at rtol = atol = 1e-8 is below it);
 - the fast engine agrees with the reference engine (scipy DOP853) to 1e-3 relative, the
-  accuracy the engine promises for a block that survives with margin (spec: "Accuracy").
+  accuracy the engine promises for a block that survives with margin (docs/interpretations.md,
+  "Tolerance check").
 """
 
 from __future__ import annotations
