@@ -41,8 +41,11 @@ def new_figure(width: float, height: float) -> MplFigure:
 def svg_markup(fig: MplFigure) -> str:
     """The figure as an <svg> element to inline in HTML (no XML prolog, no fixed size: it
     scales to the width of the page)."""
+    from rockcli.report.plots.files import printable_text
+
     buffer = io.StringIO()
     try:
+        printable_text(fig)
         fig.savefig(buffer, format="svg", metadata={"Date": None})
     finally:
         fig.clear()

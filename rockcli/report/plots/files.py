@@ -13,7 +13,7 @@ import importlib.util
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-from rockcli.errors import InputError, install_hint
+from rockcli.errors import InputError, install_hint, printable
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
@@ -64,7 +64,25 @@ def save(fig: Figure, path: str | Path) -> None:
 
     buffer = BytesIO()
     try:
+        printable_text(fig)
         fig.savefig(buffer, format=plot_format(path), dpi=DPI)
     finally:
         fig.clear()
     write_bytes(path, buffer.getvalue(), where=OPTION)
+
+
+def printable_text(fig: Figure) -> None:
+    """Every text of the figure (titles, labels, legends, ticks) with its control characters
+    shown as ``\\xNN``, as on the terminal (rockcli.errors.printable); line breaks kept.
+
+    A name comes from a file: a record's file name, a model's ``name`` can hold an escape
+    sequence or a bell, for which no font has a glyph (matplotlib warned "Glyph 27 missing
+    from font(s) DejaVu Sans" on stderr, with its own source path) and which an SVG, being
+    XML, may not hold.
+    """
+    from matplotlib.text import Text
+
+    for artist in fig.findobj(Text):
+        text = artist.get_text()
+        if not text.replace("\n", "").isprintable():
+            artist.set_text("\n".join(printable(line) for line in text.split("\n")))
