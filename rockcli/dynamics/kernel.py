@@ -44,6 +44,7 @@ for _fn in (
     mechanics.cos_minus,
     mechanics.gravity_moment_ratio_trig,
     mechanics.ground_moment_ratio_trig,
+    mechanics.versine,
     mechanics.spring_elongation_trig,
     mechanics.spring_moment_trig,
     mechanics.spring_elongation,

@@ -11,10 +11,14 @@ re-engages or unloads applies it at once (rules.engage, rules.unload).
 
 What is asserted, and why:
 
-- the elongation u(a) and its inverse are exact to a few ulps: against the Taylor series
-  u/r = sin φ − sin(φ − a) = cos φ·(a − a³/6) + sin φ·(a²/2 − a⁴/24) for a ≤ 1e-6 (the next
-  terms, cos φ·a⁵/120 and sin φ·a⁶/720, are below 1e-25 of the leading cos φ·a or sin φ·a²/2:
-  far below ε), and the round trip a → u → a to 8 ulps for a from 1e-300 to π/2;
+- the elongation u(a) and its inverse are accurate relative to themselves at any size:
+  against the Taylor series u/r = sin φ − sin(φ − a) = cos φ·(a − a³/6) + sin φ·(a²/2 − a⁴/24)
+  for a ≤ 1e-6 (the next terms, cos φ·a⁵/120 and sin φ·a⁶/720, are below 1e-25 of the leading
+  cos φ·a or sin φ·a²/2: far below ε), to 4e-16; the engine's 1 − cos a (mechanics.versine)
+  against sin²a/(1 + cos a), exact to a few ulps, to 3e-13 (its documented accuracy); the
+  round trip a → u → a to 1e-12 relative (that 3e-13 and a few ulps of the inverse), for a
+  from 1e-280 to π/2 (from 1e-300, r·cos φ·a with φ = π/2 falls among the subnormal numbers,
+  which hold fewer digits);
 - limit: the member's force never exceeds its yield (or rupture) force F, and its arm is at
   most r, so its moment is at most a fraction F·r/(W·b) of the gravity's restoring moment at
   rest W·R·sin α = W·b; the amplitude moves by no more than that fraction of itself:
@@ -47,7 +51,13 @@ from hypothesis import strategies as st
 
 from rockcli.dynamics.settings import Engine
 from rockcli.dynamics.simulate import simulate
-from rockcli.mechanics import Block, Restrainer, spring_elongation, spring_failure_rotation
+from rockcli.mechanics import (
+    Block,
+    Restrainer,
+    spring_elongation,
+    spring_failure_rotation,
+    versine,
+)
 from rockcli.model.bounds import MIN_FORCE
 from rockcli.model.derive import to_block
 from rockcli.model.load import load_model
@@ -69,8 +79,10 @@ REFERENCE_RTOL = 1e-3
 #: Two runs that take different steps (a member's events restart the integration) differ by
 #: their integration error (rtol = atol = 1e-8): 1e-6 relative is a wide margin for it.
 INTEGRATION_RTOL = 1e-6
-#: The round trip a → u → a: a few roundings in each direction (measured 3.3 ulps).
-ROUND_TRIP_ULPS = 8
+#: Accuracy of the engine's 1 − cos a (mechanics.versine: Taylor series below 0.03 rad).
+VERSINE_RTOL = 3e-13
+#: The round trip a → u → a: the versine's 3e-13 and a few ulps of the inverse.
+ROUND_TRIP_RTOL = 1e-12
 
 
 def ricker() -> tuple[np.ndarray, np.ndarray, float]:
@@ -120,7 +132,7 @@ def test_elongation_of_a_small_rotation_matches_its_taylor_series(a: float, phi:
 
 @settings(max_examples=300, deadline=None)
 @given(
-    log_a=st.floats(-300.0, math.log10(math.pi / 2)),
+    log_a=st.floats(-280.0, math.log10(math.pi / 2)),
     phi=st.floats(0.0, math.pi / 2),
     r=st.floats(1e-3, 2e3),
 )
@@ -129,7 +141,15 @@ def test_rotation_at_elongation_inverts_the_elongation_to_a_few_ulps(
 ) -> None:
     a = 10.0**log_a
     back = spring_failure_rotation(r, phi, spring_elongation(r, phi, a))
-    assert abs(back - a) <= ROUND_TRIP_ULPS * math.ulp(a)
+    assert back == pytest.approx(a, rel=ROUND_TRIP_RTOL, abs=0.0)
+
+
+@settings(max_examples=300, deadline=None)
+@given(a=st.one_of(st.floats(1e-150, math.pi / 2), st.floats(0.029, 0.031)))
+def test_versine_is_accurate_on_both_sides_of_its_series(a: float) -> None:
+    # 1 − cos a = sin²a/(1 + cos a); from 1e-150 sin²a is a normal double.
+    exact = math.sin(a) ** 2 / (1.0 + math.cos(a))
+    assert versine(a, math.cos(a)) == pytest.approx(exact, rel=VERSINE_RTOL, abs=0.0)
 
 
 # --- the cases, at the engine --------------------------------------------------------

@@ -3,8 +3,8 @@
 A timer thread sends SIGINT to this process while the main thread is inside a compiled call
 (the response-spectrum kernel on a long load, about 0.3 s): the call completes, and
 KeyboardInterrupt is raised when the deferred block ends, or at the first check() between
-chunks; the default handler is back afterwards. A process that ignores SIGINT (a sweep's
-worker) keeps ignoring it.
+chunks; outside compiled code SIGINT raises at once, as Python's default handler does. A
+process that ignores SIGINT (a sweep's worker) keeps ignoring it.
 """
 
 from __future__ import annotations
@@ -13,6 +13,7 @@ import os
 import signal
 import threading
 import time
+from collections.abc import Iterator
 
 import numpy as np
 import pytest
@@ -22,6 +23,23 @@ from rockcli.codecheck.response import CHUNK_SAMPLES, peak_displacement_uniform,
 from rockcli.codecheck.response_kernel import peak_response
 
 pytestmark = pytest.mark.skipif(not hasattr(signal, "pthread_kill"), reason="POSIX signals")
+
+
+@pytest.fixture(autouse=True)
+def _default_handler() -> Iterator[None]:
+    """Each test starts and ends with Python's default SIGINT handler."""
+    signal.signal(signal.SIGINT, signal.default_int_handler)
+    yield
+    signal.signal(signal.SIGINT, signal.default_int_handler)
+
+
+def assert_sigint_raises_at_once() -> None:
+    """Outside compiled code SIGINT is KeyboardInterrupt right away (Python's default)."""
+    with pytest.raises(KeyboardInterrupt):
+        os.kill(os.getpid(), signal.SIGINT)
+        time.sleep(1.0)
+    interrupts.check()  # nothing left pending
+
 
 #: A load long enough that one compiled call over 40 periods lasts about 0.3 s.
 SAMPLES = 1_500_000
@@ -59,7 +77,7 @@ def test_sigint_inside_a_compiled_call_waits_for_its_end() -> None:
     assert peak is not None  # the call ran whole, then the interrupt came
     np.testing.assert_array_equal(peak, expected)
     assert time.monotonic() - returned < 0.05  # raised at the end of the block, not later
-    assert signal.getsignal(signal.SIGINT) is signal.default_int_handler
+    assert_sigint_raises_at_once()
 
 
 def test_call_defers_sigint_to_the_return_of_the_function() -> None:
@@ -67,7 +85,7 @@ def test_call_defers_sigint_to_the_return_of_the_function() -> None:
     with pytest.raises(KeyboardInterrupt):
         interrupts.call(time.sleep, 0.2)  # the handler runs in the sleep: it only notes it
     timer.join()
-    assert signal.getsignal(signal.SIGINT) is signal.default_int_handler
+    assert_sigint_raises_at_once()
 
 
 def test_the_spectrum_loop_stops_between_chunks() -> None:
@@ -81,7 +99,7 @@ def test_the_spectrum_loop_stops_between_chunks() -> None:
         peak_displacement_uniform(load(), 0.01, omega, 0.05)
     timer.join()
     assert time.monotonic() - start < 5.0
-    assert signal.getsignal(signal.SIGINT) is signal.default_int_handler
+    assert_sigint_raises_at_once()
 
 
 def test_a_process_that_ignores_sigint_keeps_ignoring_it() -> None:
@@ -101,6 +119,5 @@ def test_nested_blocks_raise_once_at_the_outermost_end() -> None:
             with interrupts.deferred():
                 os.kill(os.getpid(), signal.SIGINT)
                 time.sleep(0.05)  # the handler runs here: it only sets the flag
-            assert signal.getsignal(signal.SIGINT) is not signal.default_int_handler
-    assert signal.getsignal(signal.SIGINT) is signal.default_int_handler
     interrupts.check()  # raised once: nothing left pending
+    assert_sigint_raises_at_once()
