@@ -8,8 +8,8 @@ numba-compiled call. SIGINT now only sets a flag while compiled code runs, and t
 periods, in chunks, raises KeyboardInterrupt between them (rockcli.interrupts).
 
 The signal goes to the process group, as a terminal sends it, at several moments: during the
-start and the reading of the records, then during the loop (six records of 120,000 samples
-and 2000 periods: about 1 s to read them, 5 s of loop on this machine, 2 cores).
+start and the reading of the records, then during the loop (ten records of 120,000 samples
+and 2000 periods: about 1.5 s to read them, 8 s of loop on this machine, 2 cores).
 """
 
 from __future__ import annotations
@@ -86,7 +86,7 @@ def interrupt_at(args: list[str], moment: float) -> subprocess.CompletedProcess[
 def test_ctrl_c_during_record_spectrum_exits_130_with_one_line(
     long_record: Path, moment: float
 ) -> None:
-    args = ["record", "spectrum", *[str(long_record)] * 6, "--periods", "0.01:4:2000"]
+    args = ["record", "spectrum", *[str(long_record)] * 10, "--periods", "0.01:4:2000"]
     done = interrupt_at([*args, "--format", "csv"], moment)
     assert done.returncode != -signal.SIGSEGV, "SIGSEGV"
     assert (done.returncode, done.stderr) == (130, "interrupted\n")
