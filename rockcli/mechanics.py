@@ -308,11 +308,37 @@ def spring_elongation_trig(
     """u = r[sin φ − sin(φ − a)] from precomputed sines and cosines [m] (see spring_elongation).
 
     The engine evaluates sin a and cos a once per right-hand side and every spring and gravity
-    reuse them; this is the same formula, not a second one.
+    reuse them; this is the same formula, not a second one. It is evaluated as
+
+        sin φ − sin(φ − a) = cos φ·sin a + sin φ·(1 − cos a)
+
+    (the angle-difference identity; Abramowitz & Stegun 4.3.16), a sum of two non-negative
+    terms for 0 ≤ φ ≤ π/2, with 1 − cos a from :func:`versine`: its relative error is below
+    3e-13 at every rotation. The difference sin φ − sin(φ − a) as written loses every digit
+    below ε·r·sin φ (ε = 2.2e-16): an elongation of 1e-20 m came out as 0.
     """
     if linearized:
         return r * cos_phi * a
-    return r * (sin_phi - sin_minus(sin_phi, cos_phi, sin_a, cos_a))
+    return r * (cos_phi * sin_a + sin_phi * versine(a, cos_a))
+
+
+#: Below this |a| [rad], 1 − cos a comes from its Taylor series: see :func:`versine`.
+VERSINE_SERIES_BELOW = 0.03
+
+
+def versine(a: float, cos_a: float) -> float:
+    """1 − cos a, to 3e-13 relative at every a, without a division (the engine's hot path).
+
+    Below |a| = 0.03 the Taylor series a²/2 − a⁴/24 + a⁶/720 (Abramowitz & Stegun 4.3.66),
+    whose first omitted term a⁸/8! is below a⁶/20160 ≈ 4e-14 of the sum there; above, the
+    difference 1 − cos a, whose rounding (ε/2 of cos a ≈ 1) is below 2.5e-13 of it. The
+    difference alone is 0 below a ≈ 1e-8; the exact sin²a/(1 + cos a) costs a division that
+    slowed the engine by 40 % (tests/dynamics/test_tiny_strength.py measures the accuracy).
+    """
+    if abs(a) < VERSINE_SERIES_BELOW:
+        a2 = a * a
+        return a2 * (0.5 - a2 * (1.0 / 24.0 - a2 * (1.0 / 720.0)))
+    return 1.0 - cos_a
 
 
 def spring_moment_trig(
@@ -358,18 +384,34 @@ def spring_failure_rotation(
 ) -> float:
     """Rotation a = |θ| at which the spring elongation reaches ``fails_at`` [rad] (inf: never).
 
-    Inverse of :func:`spring_elongation`: sin(φ − a) = sin φ − u_f/r (u grows with a up to
-    a = φ + π/2, beyond any rotation a block survives).
+    Inverse of :func:`spring_elongation`: sin(φ − a) = q = sin φ − x with x = u_f/r (u grows
+    with a up to a = φ + π/2, beyond any rotation a block survives). Written as
+    a = atan2(sin a, cos a) with, from the angle-difference identities and
+    cos(φ − a) = √(1 − q²) = √(cos²φ + w), w = x·(2 sin φ − x) = sin²φ − q²,
+
+        sin a = sin φ·cos(φ − a) − cos φ·q = x·cos φ + sin φ·w / (cos(φ − a) + cos φ)
+        cos a = cos φ·cos(φ − a) + sin φ·q
+
+    (Abramowitz & Stegun 4.3.16–4.3.17; the difference cos(φ − a) − cos φ rewritten as
+    w/(cos(φ − a) + cos φ)), so that a small elongation gives its rotation to a few ulps: the
+    form φ − asin(sin φ − x) returned 0 for any x below ε·sin φ (ε = 2.2e-16), and a member
+    whose yield or rupture elongation was that small never yielded nor broke.
     """
     if not math.isfinite(fails_at):
         return math.inf
     if linearized:
         c = r * math.cos(phi)
         return fails_at / c if c > 0.0 else math.inf
-    x = math.sin(phi) - fails_at / r
-    if x < -1.0:
+    sin_phi = math.sin(phi)
+    cos_phi = math.cos(phi)
+    x = fails_at / r
+    if sin_phi - x < -1.0:
         return math.inf
-    return phi - math.asin(x)
+    w = x * (2.0 * sin_phi - x)
+    cos_q = math.sqrt(max(cos_phi * cos_phi + w, 0.0))
+    sin_a = x * cos_phi + sin_phi * w / (cos_q + cos_phi)
+    cos_a = cos_phi * cos_q + sin_phi * (sin_phi - x)
+    return math.atan2(sin_a, cos_a)
 
 
 def gravity_moment_ratio(alpha: float, a: float, linearized: bool = False) -> float:

@@ -14,6 +14,7 @@ import os
 import re
 import sys
 import traceback
+import warnings
 
 import click
 
@@ -101,7 +102,9 @@ class RockGroup(click.Group):
         quick_exit()
         make_output_encodable()
         announce_compiling()
-        return super().main(args, *rest, **kwargs)
+        with warnings.catch_warnings():  # restored after: rock run inside a host, a test
+            warnings.showwarning = show_python_warning
+            return super().main(args, *rest, **kwargs)
 
     def make_context(self, info_name, args, parent=None, **extra) -> click.Context:
         refuse_nul(args)
@@ -148,6 +151,22 @@ def refuse_nul(args: list[str]) -> None:
     if bad is not None:
         problem = f"a NUL character in an argument: {bad!r} (no path or value holds one)"
         raise UsageLine(click.UsageError(problem))
+
+
+def show_python_warning(
+    message: Warning | str,
+    category: type[Warning],
+    filename: str,
+    lineno: int,
+    file: object = None,
+    line: str | None = None,
+) -> None:
+    """A Python warning that reached the command line (a library's, one rock did not turn into
+    a note on the result): one ``warning:`` line on stderr, its text and its class, without
+    the source file and line Python prints by default (an absolute path of the installation,
+    and a second line of code, that say nothing to the user)."""
+    text = " ".join(str(message).split())
+    click.echo(f"warning: {printable(text)} ({category.__name__})", err=True)
 
 
 def announce_compiling() -> None:

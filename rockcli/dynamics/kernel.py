@@ -44,6 +44,7 @@ for _fn in (
     mechanics.cos_minus,
     mechanics.gravity_moment_ratio_trig,
     mechanics.ground_moment_ratio_trig,
+    mechanics.versine,
     mechanics.spring_elongation_trig,
     mechanics.spring_moment_trig,
     mechanics.spring_elongation,
@@ -69,10 +70,13 @@ for _law_fn in (
     rules.plateau_work,
     rules.released_energy,
     rules.idle_energy,
+    rules.cross_up,  # inside engage
+    rules.cross_down,  # inside unload
 ):
     register_jitable(_law_fn)
 _cross_up = njit(cache=CACHE)(rules.cross_up)
 _cross_down = njit(cache=CACHE)(rules.cross_down)
+_engage = njit(cache=CACHE)(rules.engage)
 _unload = njit(cache=CACHE)(rules.unload)
 _lose = njit(cache=CACHE)(rules.lose)
 _any_plastic = njit(cache=CACHE)(rules.any_plastic)
@@ -672,14 +676,17 @@ def _apply_law_event(kind, row, s, a, t, springs, alive, spring_out, lin):
     if kind == L.EV_SLACK:
         _cross_down(springs, row, s, lin)
         return False
-    if springs[row, rules.COL_UP_KIND + rules.side_index(s)] == rules.UP_BREAK:
+    up = springs[row, rules.COL_UP_KIND + rules.side_index(s)]
+    if up == rules.UP_ENGAGE:
+        up = _engage(springs, row, s, a, lin)  # its yield or rupture too, if already reached
+    if up == rules.UP_BREAK:
         _lose(springs, alive, row, s, a, lin, spring_out, L.S_ENERGY)
         spring_out[row, L.S_T_FAIL] = t
         return True
-    if _cross_up(springs, row, s, lin) == rules.UP_YIELD and math.isnan(
-        spring_out[row, L.S_T_YIELD]
-    ):
-        spring_out[row, L.S_T_YIELD] = t
+    if up == rules.UP_YIELD:
+        _cross_up(springs, row, s, lin)
+        if math.isnan(spring_out[row, L.S_T_YIELD]):
+            spring_out[row, L.S_T_YIELD] = t
     return False
 
 

@@ -371,13 +371,17 @@ def _apply_restrainer_event(phase, t, y, kind, row, out_f, spring_out):
         rules.unload(springs, phase.alive, s, a, lin, spring_out, L.S_ENERGY)
     elif kind == K_SLACK:
         rules.cross_down(springs, row, s, lin)
-    elif kind == K_FAIL or springs[row, rules.COL_UP_KIND + rules.side_index(s)] == rules.UP_BREAK:
-        rules.lose(springs, phase.alive, row, s, a, lin, spring_out, L.S_ENERGY)
-        spring_out[row, L.S_T_FAIL] = t
-    elif rules.cross_up(springs, row, s, lin) == rules.UP_YIELD and math.isnan(
-        spring_out[row, L.S_T_YIELD]
-    ):
-        spring_out[row, L.S_T_YIELD] = t
+    else:
+        up = springs[row, rules.COL_UP_KIND + rules.side_index(s)]
+        if kind == K_LAW_UP and up == rules.UP_ENGAGE:
+            up = rules.engage(springs, row, s, a, lin)  # its next level too, if already reached
+        if kind == K_FAIL or up == rules.UP_BREAK:
+            rules.lose(springs, phase.alive, row, s, a, lin, spring_out, L.S_ENERGY)
+            spring_out[row, L.S_T_FAIL] = t
+        elif up == rules.UP_YIELD:
+            rules.cross_up(springs, row, s, lin)
+            if math.isnan(spring_out[row, L.S_T_YIELD]):
+                spring_out[row, L.S_T_YIELD] = t
 
 
 def integrate_reference(

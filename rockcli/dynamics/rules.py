@@ -52,6 +52,12 @@ MODE_ELASTIC, MODE_PLASTIC, MODE_SLACK = 0.0, 1.0, 2.0
 UP_NONE, UP_YIELD, UP_ENGAGE, UP_BREAK = 0.0, 1.0, 2.0, 3.0
 #: No downward level (a ≥ 0 never falls below it).
 NO_LEVEL_DOWN = -1.0
+#: Lowest upward level of a member's law [rad]: the smallest positive double. A yield or
+#: rupture elongation that rounds to zero (a force F with F/K below the rounding of the slack
+#: point c) would put the level at a = 0, which a block leaving rest never crosses: both
+#: engines find an upward level where a_start < level ≤ a_end. Just above zero, the first
+#: step crosses it, and the member yields (or breaks) as the block leaves rest.
+LOWEST_LEVEL_UP = 5e-324
 
 
 def spring_on_side(springs, j, s):
@@ -175,10 +181,12 @@ def set_levels(springs, j, s, linearized):
         f_yield = springs[j, COL_YIELD + col]
         f_break = springs[j, COL_RUPTURE]
         if f_break <= f_yield and f_break < math.inf:
-            up = rotation_at_elongation(springs, j, s, c + f_break / k, linearized)
+            up = max(rotation_at_elongation(springs, j, s, c + f_break / k, linearized),
+                     LOWEST_LEVEL_UP)  # fmt: skip
             kind = UP_BREAK
         elif f_yield < math.inf:
-            up = rotation_at_elongation(springs, j, s, c + f_yield / k, linearized)
+            up = max(rotation_at_elongation(springs, j, s, c + f_yield / k, linearized),
+                     LOWEST_LEVEL_UP)  # fmt: skip
             kind = UP_YIELD
         if c > 0.0:
             down = rotation_at_elongation(springs, j, s, c, linearized)
@@ -216,6 +224,20 @@ def cross_up(springs, j, s, linearized):
     return kind
 
 
+def engage(springs, j, s, a, linearized):
+    """Row j's slack member on side s re-engages at rotation a (→ elastic, F = K·(u − c)).
+
+    Returns the kind of its next upward level when the rotation a is already at or past it
+    (UP_YIELD or UP_BREAK: its force to yield or break, F/K, is below the rounding of c, so
+    the member reaches it as it re-engages, and the engine applies it at once), else UP_NONE.
+    """
+    cross_up(springs, j, s, linearized)
+    col = side_index(s)
+    if springs[j, COL_UP + col] <= a:
+        return springs[j, COL_UP_KIND + col]
+    return UP_NONE
+
+
 def cross_down(springs, j, s, linearized):
     """Row j's member on side s reached its slack point going down: → slack (F = 0)."""
     springs[j, COL_MODE + side_index(s)] = MODE_SLACK
@@ -226,7 +248,9 @@ def unload(springs, alive, s, a, linearized, energy, energy_col):
     """At a turning point a: every member on the yield plateau of side s unloads elastically.
 
     Its slack point becomes c = u(a) − F_y/K (so that F = F_y there, continuous); the plastic
-    work of the plateau, F_y·(c_new − c_old) [J], is added to ``energy[j, energy_col]``.
+    work of the plateau, F_y·(c_new − c_old) [J], is added to ``energy[j, energy_col]``. A
+    member whose slack point is not below a (F_y/K below the rounding of u(a)) goes slack at
+    once: the block turns down from a, and no level at or above a would be crossed going down.
     """
     col = side_index(s)
     for j in range(springs.shape[0]):
@@ -236,6 +260,8 @@ def unload(springs, alive, s, a, linearized, energy, energy_col):
             springs[j, COL_C + col] = c_new
             springs[j, COL_MODE + col] = MODE_ELASTIC
             set_levels(springs, j, s, linearized)
+            if springs[j, COL_DOWN + col] >= a:
+                cross_down(springs, j, s, linearized)
 
 
 def plateau_slack_point(springs, j, s, a, linearized):

@@ -16,6 +16,7 @@ import math
 
 import numpy as np
 
+from rockcli import interrupts
 from rockcli.dynamics import layout as L
 from rockcli.dynamics import rules
 from rockcli.dynamics.result import (
@@ -279,21 +280,12 @@ def simulate(
     spring_out = np.zeros((len(block.restrainers), L.N_SPRING_OUT))
     spring_out[:, L.S_T_FAIL] = np.nan
     spring_out[:, L.S_T_YIELD] = np.nan
-    run(
-        times,
-        acc,
-        float(polarity),
-        par,
-        springs,
-        points,
-        alive,
-        hist_th,
-        hist_om,
-        hist_f,
-        out_f,
-        out_i,
-        spring_out,
-    )
+    arrays = (times, acc, float(polarity), par, springs, points, alive)
+    outputs = (hist_th, hist_om, hist_f, out_f, out_i, spring_out)
+    if engine is Engine.REFERENCE:  # Python: Ctrl-C stops it where it is
+        run(*arrays, *outputs)
+    else:  # compiled: Ctrl-C deferred to the end of the run (rockcli.interrupts)
+        interrupts.call(run, *arrays, *outputs)
     hist = _history(times, hist_th, hist_om, hist_f, out_f[L.O_T_END], origin) if history else None
     if origin:
         out_f[[L.O_T_END, L.O_T_OVERTURN, L.O_T_UPLIFT]] += origin

@@ -25,6 +25,16 @@ MAX_REACH = 2 * MAX_LENGTH
 MIN_SLENDERNESS = MIN_LENGTH / MAX_LENGTH
 #: Smallest elongation at which a restrainer may fail [m]: 1 µm.
 MIN_ELONGATION = 1e-6
+#: Smallest force of a restrainer's law [N] (yield_pos, yield_neg, anchor_capacity and a
+#: non-zero pretension: schema.FORCE_KEYS): 1 N, the weight of 100 g. A member's strength is a
+#: device's (a bar, an anchor plate, a vault); below 1 N the value is a slip of units, and the
+#: elongation F/K it yields at (1 N / 1e12 N/m = 1e-12 m) stays far above the rounding of the
+#: engine's elongations. docs/interpretations.md, "Forces of a restrainer".
+MIN_FORCE = 1.0
+#: What a pretension accepts (the schema's rule and the derived block's, one wording).
+PRETENSION_ALLOWED = (
+    f"0, or {MIN_FORCE:g} <= pretension < the yield force and the anchor capacity [N]"
+)
 #: Lightest weight [kN]: 1e-6 kN = 1 mN, a block of 0.1 g.
 MIN_WEIGHT = 1e-6
 #: Heaviest weight [kN]: 1e7 kN, a million tonnes (a whole cathedral façade is ~1e5 kN).
@@ -35,6 +45,10 @@ MIN_UNIT_WEIGHT = 0.1
 MAX_UNIT_WEIGHT = 300.0
 #: Stiffest restrainer [N/m]: 1e12 (a steel bar 1 m² in section, 0.2 m long).
 MAX_STIFFNESS = 1e12
+#: Softest restrainer given by its stiffness [N/m], when not 0 (no spring on that side):
+#: 1 N/m, a millionth of the paper's vault (4e6 N/m). A subnormal k (5e-324) overflowed the
+#: elongations F/K and P0/K at which the member yields, breaks or holds its pretension.
+MIN_STIFFNESS = 1.0
 #: Softest Young's modulus of a tie-rod [Pa]: 1 MPa (rubber).
 MIN_MODULUS = 1e6
 #: Stiffest Young's modulus [Pa]: 1.2e12 (diamond).

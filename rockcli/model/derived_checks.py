@@ -16,7 +16,7 @@ import math
 
 from rockcli.errors import InputError
 from rockcli.mechanics import Block, Restrainer, restrainer_coefficient, uplift_accelerations
-from rockcli.model.bounds import MAX_STIFFNESS
+from rockcli.model.bounds import MAX_STIFFNESS, PRETENSION_ALLOWED
 
 #: What a derived quantity must be.
 FINITE_POSITIVE = "a finite number > 0 (the inputs it comes from are out of scale)"
@@ -74,7 +74,7 @@ def _check_pretension(restrainer: Restrainer, where: str) -> None:
             f"not below the member's yield force {limit:g} N (its measured fy divided by FC)",
             where=where,
             value=p0,
-            allowed="0 <= pretension < the yield force and the anchor capacity [N]",
+            allowed=PRETENSION_ALLOWED,
         )
 
 

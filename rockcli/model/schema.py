@@ -31,12 +31,15 @@ from rockcli.model.bounds import (
     MAX_UNIT_WEIGHT,
     MAX_WEIGHT,
     MIN_ELONGATION,
+    MIN_FORCE,
     MIN_GRAVITY,
     MIN_LENGTH,
     MIN_MODULUS,
     MIN_SLENDERNESS,
+    MIN_STIFFNESS,
     MIN_UNIT_WEIGHT,
     MIN_WEIGHT,
+    PRETENSION_ALLOWED,
 )
 from rockcli.model.ntc import Ntc
 from rockcli.model.physical import Building, Load, Position, Thrust, check_mass, check_points
@@ -346,6 +349,7 @@ LimitRatio = Annotated[float, Field(strict=True, gt=0, le=MAX_LIMIT_RATIO, allow
 PLACEMENTS = (("radius", "angle"), ("height", "from_pivot"), ("position",))
 PLACEMENT_ALLOWED = 'radius + angle, or height + from_pivot, or position = "top"'
 SPRING_ALLOWED = 'k or k_pos + k_neg [N/m]; or kind = "tie-rod" with diameter and length [m]'
+STIFFNESS_ALLOWED = f"0 (none), or >= {MIN_STIFFNESS:g} and <= {MAX_STIFFNESS:g} [N/m]"
 TIE_ROD_KEYS = (
     "diameter",
     "length",
@@ -361,7 +365,6 @@ LAW_ALLOWED = (
     'law = "elastic" (no yield), or "elastic-plastic" with yield_pos and yield_neg [N] '
     "(a tie-rod: its grade or fy, fu)"
 )
-PRETENSION_ALLOWED = "0 <= pretension < the yield force and the anchor capacity [N]"
 CODE_ACTION_ALLOWED = (
     'code_action = "spring", or "force" for a member with a strength (a tie-rod\'s grade or '
     "fy, fu; a yield force; an anchor capacity)"
@@ -377,6 +380,10 @@ MIN_STEEL_STRENGTH, MAX_STEEL_STRENGTH = 100e6, 2000e6
 MAX_BARS = 100
 #: Largest anchor capacity accepted [N] (100 MN: beyond any masonry anchorage).
 MAX_ANCHOR = 1e8
+#: The keys of a restrainer that are forces [N]: each at least MIN_FORCE (1 N) and at most
+#: MAX_ANCHOR; pretension may also be 0 (none). tests/unit/test_model_bounds.py checks that
+#: every key whose unit is N is listed here.
+FORCE_KEYS = ("yield_pos", "yield_neg", "anchor_capacity", "pretension")
 
 
 class SteelGrade(StrEnum):
@@ -399,10 +406,21 @@ class Restrainer(Table):
     kind: RestrainerKind = Field(
         RestrainerKind.SPRING, description="'spring' (default: stiffness given) or 'tie-rod'"
     )
-    k_pos: float | None = number("Stiffness while θ > 0, with k_neg [N/m]", ge=0, le=MAX_STIFFNESS)
-    k_neg: float | None = number("Stiffness while θ < 0, with k_pos [N/m]", ge=0, le=MAX_STIFFNESS)
+    k_pos: float | None = number(
+        f"Stiffness while θ > 0, with k_neg: 0 (none), or at least {MIN_STIFFNESS:g} N/m [N/m]",
+        ge=0,
+        le=MAX_STIFFNESS,
+    )
+    k_neg: float | None = number(
+        f"Stiffness while θ < 0, with k_pos: 0 (none), or at least {MIN_STIFFNESS:g} N/m [N/m]",
+        ge=0,
+        le=MAX_STIFFNESS,
+    )
     k: float | None = number(
-        "Stiffness on both sides (instead of k_pos + k_neg) [N/m]", ge=0, le=MAX_STIFFNESS
+        "Stiffness on both sides (instead of k_pos + k_neg): 0 (none), or at least "
+        f"{MIN_STIFFNESS:g} N/m [N/m]",
+        ge=0,
+        le=MAX_STIFFNESS,
     )
     diameter: float | None = number("Tie-rod: bar diameter d [m]", ge=MIN_LENGTH, le=MAX_LENGTH)
     length: float | None = number("Tie-rod: free length L [m]", ge=MIN_LENGTH, le=MAX_LENGTH)
@@ -437,7 +455,7 @@ class Restrainer(Table):
     )
     anchor_capacity: float | None = number(
         "Force at which the anchorage (plate, masonry) gives way; caps the strength [N]",
-        gt=0,
+        ge=MIN_FORCE,
         le=MAX_ANCHOR,
     )
     radius: float | None = number(
@@ -477,13 +495,16 @@ class Restrainer(Table):
         "elastic-plastic for a tie-rod with a grade or fy, fu, for a spring with yield forces",
     )
     yield_pos: float | None = number(
-        "Spring: yield force while θ > 0 (elastic-plastic law) [N]", gt=0, le=MAX_ANCHOR
+        "Spring: yield force while θ > 0 (elastic-plastic law) [N]", ge=MIN_FORCE, le=MAX_ANCHOR
     )
     yield_neg: float | None = number(
-        "Spring: yield force while θ < 0 (elastic-plastic law) [N]", gt=0, le=MAX_ANCHOR
+        "Spring: yield force while θ < 0 (elastic-plastic law) [N]", ge=MIN_FORCE, le=MAX_ANCHOR
     )
     pretension: float | None = number(
-        "Force in the member at rest, below its yield force; default 0 [N]", ge=0, le=MAX_ANCHOR
+        f"Force in the member at rest: 0, or at least {MIN_FORCE:g} N and below its yield force; "
+        "default 0 [N]",
+        ge=0,
+        le=MAX_ANCHOR,
     )
     elongation_at_break: float | None = number(
         "Tie-rod: elongation at break of the steel, a fraction of the length (0.2 = 20 %); "
@@ -598,10 +619,13 @@ class Restrainer(Table):
                     raise rule_error(key, 'required with law = "elastic-plastic"', LAW_ALLOWED)
 
     def _check_pretension(self) -> None:
-        """A pretension below every yield force and the anchor's capacity."""
+        """A pretension of 0, or of at least MIN_FORCE below every yield force and the anchor's
+        capacity."""
         p0 = self.pretension
         if not p0:
             return
+        if p0 < MIN_FORCE:
+            raise rule_error("pretension", f"below {MIN_FORCE:g} N", PRETENSION_ALLOWED, p0)
         limits = [f for f in self.yield_forces() if math.isfinite(f)]
         if self.anchor_capacity is not None:
             limits.append(self.anchor_capacity)
@@ -613,6 +637,10 @@ class Restrainer(Table):
         forbid(values, TIE_ROD_KEYS, 'only allowed with kind = "tie-rod"', SPRING_ALLOWED)
         if choose_group(values, [("k",), ("k_pos", "k_neg")], SPRING_ALLOWED) is None:
             raise rule_error(None, "missing the stiffness", SPRING_ALLOWED)
+        for key in ("k", "k_pos", "k_neg"):
+            k = values.get(key)
+            if k is not None and 0 < k < MIN_STIFFNESS:
+                raise rule_error(key, f"below {MIN_STIFFNESS:g} N/m", STIFFNESS_ALLOWED, k)
 
     @staticmethod
     def _check_tie_rod(values: Mapping[str, Any]) -> None:

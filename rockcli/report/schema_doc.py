@@ -56,8 +56,9 @@ for the choices behind the defaults see [interpretations](interpretations.md).
   gets one line naming the key, the value and what is allowed, and every problem of the file
   is listed at once (up to ten).
 - Every number has a physical range (lengths from 1 mm to 1 km, weights from 1 mN to 10⁷ kN,
-  stiffnesses up to 10¹² N/m…): a value outside it is a slip (of units, of a digit), not an
-  element, and is refused.
+  a restrainer's forces — yield, anchor capacity, a pretension other than 0 — from 1 N to
+  10⁸ N, stiffnesses up to 10¹² N/m…): a value outside it is a slip (of units, of a digit),
+  not an element, and is refused.
 - *number*: a TOML integer or float, finite (`inf`/`nan` refused); a string or a boolean is
   refused. *integer*: a TOML integer.
 - *unit*: SI, as in the file (`-` dimensionless). *default*: what is used when the key is

@@ -19,8 +19,10 @@ from click.testing import CliRunner
 from rockcli.cli.main import cli
 from rockcli.errors import InputError
 from rockcli.mechanics import Block
+from rockcli.model.bounds import MIN_FORCE, MIN_WEIGHT
 from rockcli.model.derived_checks import check_block
 from rockcli.model.load import load_model, validate_model
+from rockcli.model.schema import FORCE_KEYS, MAX_ANCHOR
 from rockcli.report.schema_doc import bounds, sections, table_class
 
 #: A valid wall with a spring at the top (needs a mass).
@@ -200,3 +202,77 @@ def test_a_tie_rod_whose_derived_stiffness_is_out_of_range_is_refused(tmp_path: 
     )
     with pytest.raises(InputError, match="stiffness E·A/L"):
         load_model(path)
+
+
+# --- a restrainer's forces: at least 1 N (issue 20, item 4) ----------------------------------
+
+#: The issue's values: a yield of 1e-12 N never yielded, an anchor below ~1e-8 N never broke,
+#: and 5e-324 N made `--format json` exit 3 (utilisation = force / 5e-324 = inf).
+TINY_FORCES = [
+    ("yield_pos", 1e-12),
+    ("yield_neg", 0.5),
+    ("anchor_capacity", 1e-9),
+    ("anchor_capacity", 5e-324),
+]
+
+
+def with_restrainer(**keys: float) -> dict[str, Any]:
+    """VALID with its spring given the law keys (both yields, so the law is complete)."""
+    data = copy.deepcopy(VALID)
+    data["restrainers"][0].update({"yield_pos": 5e3, "yield_neg": 5e3, **keys})
+    return data
+
+
+def test_every_key_in_newtons_is_a_restrainer_force_of_at_least_one_newton() -> None:
+    # A key whose unit is N is a force: it is listed in FORCE_KEYS and bounded below by
+    # MIN_FORCE (a pretension by 0 and the rule "0, or >= 1 N", checked below). Weights in kN
+    # keep MIN_WEIGHT (1 mN): they enter the equation smoothly, without a level.
+    found: dict[str, dict[str, float]] = {}
+    for section in sections():
+        for key, info in section.table.model_fields.items():
+            unit = (info.description or "").rsplit("[", 1)[-1]
+            if unit == "N]":
+                found[key] = bounds(info)
+            elif unit == "kN]":
+                assert bounds(info).get("ge", 0.0) >= MIN_WEIGHT, key
+    assert set(found) == set(FORCE_KEYS)
+    for key, limits in found.items():
+        assert limits.get("le") == MAX_ANCHOR, key
+        assert limits.get("ge") == (0.0 if key == "pretension" else MIN_FORCE), key
+
+
+@pytest.mark.parametrize(("key", "value"), TINY_FORCES, ids=[f"{k}={v:g}" for k, v in TINY_FORCES])
+def test_a_force_below_one_newton_is_refused_with_its_bound(key: str, value: float) -> None:
+    with pytest.raises(InputError, match="out of range") as info:
+        validate_model(with_restrainer(**{key: value}), file="m.toml")
+    assert (info.value.where, info.value.value) == (f"restrainers[0].{key}", value)
+    assert info.value.allowed == "a number >= 1 and <= 1e+08 [N]"
+
+
+def test_a_pretension_below_one_newton_is_refused_but_zero_is_none() -> None:
+    with pytest.raises(InputError, match="below 1 N") as info:
+        validate_model(with_restrainer(pretension=1e-3), file="m.toml")
+    assert info.value.where == "restrainers[0].pretension"
+    assert info.value.allowed is not None and info.value.allowed.startswith(
+        "0, or 1 <= pretension <"
+    )
+    validate_model(with_restrainer(pretension=0.0))
+    validate_model(with_restrainer(pretension=1.0))
+
+
+def test_one_newton_is_accepted_for_every_force() -> None:
+    validate_model(with_restrainer(yield_pos=1.0, yield_neg=1.0))
+    validate_model(with_restrainer(anchor_capacity=1.0, yield_pos=2.0, yield_neg=2.0))
+
+
+def test_rock_refuses_the_issues_tiny_yield_with_one_line(tmp_path: Path) -> None:
+    path = tmp_path / "m.toml"
+    path.write_text(tomli_w.dumps(with_restrainer(yield_pos=1e-12)), encoding="utf-8")
+    ricker = Path(__file__).resolve().parents[2] / "records" / "ricker_Tp0.5s_0.5g.txt"
+    args = ["assess", str(path), "--record", str(ricker), "--format", "json"]
+    result = CliRunner().invoke(cli, args)
+    assert result.exit_code == 2, result.output
+    assert result.stderr == (
+        f"error: {path}: restrainers[0].yield_pos: out of range (got 1e-12; allowed: a number "
+        ">= 1 and <= 1e+08 [N])\n"
+    )
