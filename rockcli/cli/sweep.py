@@ -199,6 +199,7 @@ def sweep(
     from rockcli.report.table import show
     from rockcli.studies.sweep.cases import expand
     from rockcli.studies.sweep.executor import dask_executor, local_executor
+    from rockcli.process import interrupted
     from rockcli.studies.sweep.run import SweepInterrupted, run_sweep
     from rockcli.studies.sweep.study import load_study
 
@@ -237,7 +238,9 @@ def sweep(
         )
         exit_now_if_busy(EXIT_INTERRUPTED)
         raise SystemExit(EXIT_INTERRUPTED) from None
-    except KeyboardInterrupt:
+    except (KeyboardInterrupt, SystemError) as exc:  # SystemError: Ctrl-C in compiled code
+        if not interrupted(exc):
+            raise
         click.echo("interrupted before any case ran", err=True)
         raise SystemExit(EXIT_INTERRUPTED) from None
     names = ("cases.csv", "cases.parquet") if cases_format == "parquet" else ("cases.csv",)
