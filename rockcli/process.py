@@ -142,3 +142,46 @@ def exit_with_parent(parent: int | None = None) -> None:
         os._exit(1)
 
     threading.Thread(target=watch, name="rock-parent-watch", daemon=True).start()
+
+
+def exit_at_once(code: int) -> None:
+    """End the process now with ``code``, the output flushed, without the interpreter's exit.
+
+    For an interrupted command, whose work is stopped and whose files are closed: nothing is
+    waited for (a case still running in a thread, a worker pool's joins, a worker starting).
+    multiprocessing's resource tracker removes the pools' semaphores once every process that
+    uses them has ended (silently: :func:`start_resource_tracker`).
+    """
+    for stream in (sys.stdout, sys.stderr):
+        try:
+            stream.flush()
+        except (OSError, ValueError, AttributeError):
+            pass
+    os._exit(code)
+
+
+def start_resource_tracker() -> None:
+    """Start multiprocessing's resource tracker with its standard error on the null device.
+
+    It warns there ("There appear to be N leaked semaphore objects to clean up") when it
+    removes the semaphores of a pool whose process ended without its finalizers — a `rock
+    sweep` interrupted (:func:`exit_at_once`) or killed: lines about multiprocessing's
+    internals, not for the user. Nothing else writes to standard error meanwhile (the main
+    thread starts it, before the study's threads).
+    """
+    from multiprocessing import resource_tracker
+
+    try:
+        sys.stderr.flush()
+        saved = os.dup(2)
+    except (OSError, ValueError, AttributeError):  # no standard error to save
+        resource_tracker.ensure_running()
+        return
+    devnull = os.open(os.devnull, os.O_WRONLY)
+    try:
+        os.dup2(devnull, 2)
+        resource_tracker.ensure_running()
+    finally:
+        os.dup2(saved, 2)
+        os.close(saved)
+        os.close(devnull)

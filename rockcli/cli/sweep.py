@@ -58,20 +58,12 @@ def exit_now_if_busy(code: int) -> None:
     tens of seconds); its result is lost anyway, every finished row is on disk (rows are
     written by the main thread only) and the worker processes end with this one.
     """
-    import sys
     import threading
 
-    if any(t.name.startswith(CHUNK_THREAD) and t.is_alive() for t in threading.enumerate()):
-        from contextlib import suppress
-        from multiprocessing import util
+    from rockcli.process import exit_at_once
 
-        # The finalizers that never block (the pool queues' semaphores, priority ≥ 0), so
-        # that the resource tracker has nothing to warn about; not the joins (< 0).
-        with suppress(Exception):
-            util._run_finalizers(0)  # type: ignore[attr-defined]
-        sys.stdout.flush()
-        sys.stderr.flush()
-        os._exit(code)
+    if any(t.name.startswith(CHUNK_THREAD) and t.is_alive() for t in threading.enumerate()):
+        exit_at_once(code)
 
 
 @contextmanager

@@ -18,7 +18,7 @@ import json
 import math
 import os
 from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
-from contextlib import contextmanager
+from contextlib import contextmanager, suppress
 from dataclasses import asdict
 from pathlib import Path
 from typing import Any, NoReturn
@@ -241,9 +241,22 @@ class Output:
         """The folder checked, made and locked for the block: no other `rock sweep` writes
         into it meanwhile (InputError naming the pid of the one that holds it)."""
         self._check_writable()
+        created = not self.folder.exists()
         self._make_folder()
+        fd = self._take_lock()
         try:
-            fd = lock_folder(self.folder)
+            yield
+        except BaseException:
+            unlock_folder(self.folder, fd)
+            if created:  # refused before writing (a bad study): leave no empty folder
+                with suppress(OSError):
+                    self.folder.rmdir()
+            raise
+        unlock_folder(self.folder, fd)
+
+    def _take_lock(self) -> int | None:
+        try:
+            return lock_folder(self.folder)
         except FolderBusy as exc:
             pid = f" (pid {exc.pid})" if exc.pid is not None else ""
             self._refuse(
@@ -253,10 +266,6 @@ class Output:
         except (NotALockFile, OSError) as exc:
             reason = exc.strerror if isinstance(exc, OSError) and exc.strerror else "not a file"
             self._refuse(f"cannot be locked ({LOCK_FILE}: {reason})", f"remove {LOCK_FILE}")
-        try:
-            yield
-        finally:
-            unlock_folder(self.folder, fd)
 
     def check(self, *, resume: bool, overwrite: bool) -> dict[int, dict[str, str]]:
         """Before any work: the folder can be written and may be used; the rows kept from an
@@ -326,7 +335,7 @@ class Output:
                 "--resume to continue it, or --force to start over",
             )
 
-    def _refuse(self, problem: str, allowed: str) -> None:
+    def _refuse(self, problem: str, allowed: str) -> NoReturn:
         raise InputError(
             f"the output folder {problem}", file=str(self.folder), where="--out", allowed=allowed
         )
