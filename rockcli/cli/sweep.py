@@ -187,11 +187,11 @@ def sweep(
     --resume continues an interrupted study (Ctrl-C or SIGTERM: exit 130, finished cases
     kept). A case that fails is a row with its error, and the study goes on.
     """
+    from rockcli.process import interrupted
     from rockcli.report.sweep import progress_bar, sweep_report
     from rockcli.report.table import show
     from rockcli.studies.sweep.cases import expand
     from rockcli.studies.sweep.executor import dask_executor, local_executor
-    from rockcli.process import interrupted
     from rockcli.studies.sweep.run import SweepInterrupted, run_sweep
     from rockcli.studies.sweep.study import load_study
 

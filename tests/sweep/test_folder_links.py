@@ -92,7 +92,9 @@ def test_every_name_written_in_the_folder_is_known(write_study: WriteStudy, tmp_
     names = json.loads(done.stdout.splitlines()[-1])
     assert {CASES_FILE, STATE_FILE} <= set(names)
     unknown = [
-        n for n in names if n not in FOLDER_FILES and not any(is_temp_of(n, f) for f in FOLDER_FILES)
+        n
+        for n in names
+        if n not in FOLDER_FILES and not any(is_temp_of(n, f) for f in FOLDER_FILES)
     ]
     assert unknown == []
 

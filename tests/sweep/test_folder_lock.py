@@ -87,7 +87,9 @@ def test_two_sweeps_started_at_once_one_runs(write_study: WriteStudy, tmp_path: 
 
 
 @pytest.mark.skipif(sys.platform == "win32", reason="flock: POSIX")
-def test_a_folder_in_use_is_refused_before_any_work(write_study: WriteStudy, tmp_path: Path) -> None:
+def test_a_folder_in_use_is_refused_before_any_work(
+    write_study: WriteStudy, tmp_path: Path
+) -> None:
     out = tmp_path / "out"
     out.mkdir()
     fd = lock_folder(out)  # this process holds the folder, as a running sweep would

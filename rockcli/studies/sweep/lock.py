@@ -30,9 +30,7 @@ LOCK_ATTEMPTS = 5
 PID_BYTES = 32
 #: How the lock file is opened: created if absent, never through a link, never blocking (a
 #: FIFO planted in its place), not inherited by the worker processes.
-OPEN_FLAGS = (
-    os.O_RDWR | os.O_CREAT | os.O_NOFOLLOW | os.O_NONBLOCK | getattr(os, "O_CLOEXEC", 0)
-)
+OPEN_FLAGS = os.O_RDWR | os.O_CREAT | os.O_NOFOLLOW | os.O_NONBLOCK | getattr(os, "O_CLOEXEC", 0)
 
 
 class FolderBusy(Exception):
