@@ -93,7 +93,8 @@ def terminate_as_interrupt() -> Iterator[None]:
     "out",
     default=None,
     type=click.Path(file_okay=False),
-    help="Output folder for cases.csv and summary.json [default: ./sweep-STUDY].",
+    help="Output folder for cases.csv and summary.json, one rock sweep at a time "
+    "[default: ./sweep-STUDY].",
 )
 @click.option(
     "--jobs",
@@ -185,7 +186,8 @@ def sweep(
     The study names a base model, the axes (model fields by key path), the records and the
     analyses (examples/studies/). Every case goes to OUT/cases.csv as its chunk completes;
     --resume continues an interrupted study (Ctrl-C or SIGTERM: exit 130, finished cases
-    kept). A case that fails is a row with its error, and the study goes on.
+    kept). A case that fails is a row with its error, and the study goes on; a study in
+    which no case succeeds exits 2.
     """
     from rockcli.process import interrupted
     from rockcli.report.sweep import progress_bar, sweep_report

@@ -4,9 +4,9 @@ done.
 Measured before the change (main): a study whose suite target gives the SLV spectrum only,
 on a base model without a code spectrum of its own, wrote every case as a row with the same
 error (naming the suite file by its absolute path) and exited 0; `rock compare --suite` on the
-same model and suite exits 2. Now the study is refused when it loads, with compare's message;
-and any study whose every case fails ends with exit 2 once cases.csv and summary.json are
-written.
+same model and suite exits 2. Now the study is refused when it loads, with compare's message
+(what is allowed: the study's own options); and any study whose every case fails ends with
+exit 2 once cases.csv and summary.json are written.
 """
 
 from __future__ import annotations
@@ -62,8 +62,17 @@ def test_a_suite_target_the_code_check_cannot_use_is_refused_as_compare_does(
     compare_code, compare_stderr = run("compare", "wall.toml", "--suite", "records/suite.toml")
     assert (code, compare_code) == (2, 2)
     assert stderr.count("\n") == 1
-    assert stderr == compare_stderr
-    assert "the target gives the SLV spectrum only; the code check also needs SLD" in stderr
+    # compare's line, but for what is allowed: what a study can do about it.
+    problem, allowed = stderr.split("allowed: ")
+    assert compare_stderr.startswith(problem)
+    assert problem == (
+        "error: records/suite.toml: target: the target gives the SLV spectrum only; the code "
+        "check also needs SLD (got 'ag, F0, Tc_star (SLV)'; "
+    )
+    assert allowed == (
+        "lon, lat in the suite's [target] (every limit state from the hazard grid), or "
+        "[ntc.demand] or [ntc.site] in the base model)\n"
+    )
     assert not (tmp_path / "out").exists()  # refused before any work
 
 
@@ -94,3 +103,19 @@ def test_a_study_where_no_case_succeeds_exits_2(write_study: WriteStudy, tmp_pat
     assert len(rows) == 8 and all(r["error"] for r in rows)
     summary = json.loads((out / "summary.json").read_text(encoding="utf-8"))
     assert summary["cases"] == summary["errors"] == 8
+
+
+def test_a_suite_state_the_edition_lacks_is_refused_when_the_study_loads(
+    write_study: WriteStudy, tmp_path: Path
+) -> None:
+    # The base model's edition (2009) checks SLD and SLV only; the suite's target is at SLC.
+    study = suite_study(write_study, tmp_path, BASE + DEMAND)
+    suite = tmp_path / "records" / "suite.toml"
+    suite.write_text(SUITE.replace("[target]", '[target]\nlimit_state = "SLC"'), encoding="utf-8")
+    code, stderr = run("sweep", str(study), "--out", str(tmp_path / "out"), "--no-progress")
+    assert code == 2
+    assert stderr == (
+        f"error: {tmp_path / 'records' / 'suite.toml'}: target.limit_state: the code check of "
+        "this edition (2009) has no SLC verdict to compare the suite with (got 'SLC'; allowed: "
+        'SLD, SLV (or analyses = ["rocking"], the time history alone))\n'
+    )

@@ -6,7 +6,9 @@ finished chunk; ``--resume`` reads them back (dropping a half-written last line)
 cases and appends the rest. When the study completes, the file is rewritten sorted by case id,
 so its content does not depend on the order the chunks completed in. ``sweep.json`` holds the
 study's fingerprint (the study, the base model, the records, the rock version) so that a
-resume never mixes the results of two different studies.
+resume never mixes the results of two different studies. One run at a time writes into the
+folder (:meth:`Output.lock`, rockcli.studies.sweep.lock), and no file of it is written
+through a link planted at its name (:data:`FOLDER_FILES`).
 """
 
 from __future__ import annotations

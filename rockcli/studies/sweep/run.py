@@ -296,8 +296,8 @@ def run_sweep(
         }
         with runner.stopping():
             summary = conclude(plan, cases, output, facts, run, parquet)
-    if summary["errors"] == summary["cases"]:
-        raise nothing_succeeded(plan, output)
+        if summary["errors"] == summary["cases"]:
+            raise nothing_succeeded(plan, output)
     return SweepResult(summary, split_axis(plan), str(output.folder))
 
 

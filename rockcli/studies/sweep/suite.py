@@ -107,13 +107,21 @@ def suite_checks(plan: StudyPlan) -> Callable[[Model], None] | None:
     return check
 
 
+#: What a study can do about a suite's target that gives too little (compare's message names
+#: its own options instead).
+TARGET_ALLOWED = (
+    "lon, lat in the suite's [target] (every limit state from the hazard grid), or "
+    "[ntc.demand] or [ntc.site] in the base model"
+)
+
+
 def check_suite_demand(plan: StudyPlan, model: Model, source: RecordSource) -> None:
-    """InputError (compare's, naming the suite file as the study names it) when the code
-    check of the model cannot be made under this suite."""
+    """InputError when the code check of the model cannot be made under this suite:
+    compare's problem, the suite file named as the study names it, what the study can do."""
     from rockcli.errors import InputError
     from rockcli.studies.compare import CodeDemand
     from rockcli.studies.kinematic import check_settings
-    from rockcli.studies.suite.compare import target_demands, verdict_key
+    from rockcli.studies.suite.compare import VERDICT_KEY, target_demands, verdict_key
     from rockcli.studies.sweep.study import shown_path
 
     settings = read_suite(source).settings
@@ -126,9 +134,14 @@ def check_suite_demand(plan: StudyPlan, model: Model, source: RecordSource) -> N
     except InputError as exc:
         if exc.file != settings.file:
             raise
+        states = ", ".join(VERDICT_KEY[ntc.edition])
+        allowed = {
+            "target": TARGET_ALLOWED,
+            "target.limit_state": f'{states} (or analyses = ["rocking"], the time history alone)',
+        }.get(exc.where or "", exc.allowed)
         shown = shown_path(plan.file, settings.file)
         raise InputError(
-            exc.problem, file=shown, where=exc.where, value=exc.value, allowed=exc.allowed
+            exc.problem, file=shown, where=exc.where, value=exc.value, allowed=allowed
         ) from None
 
 
