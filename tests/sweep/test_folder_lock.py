@@ -152,3 +152,20 @@ def test_a_cases_file_another_program_wrote_to_is_not_marked_complete(
     assert "cases.csv changed during the run: line 18 is case 0, not case 16" in str(caught.value)
     assert "the study is not marked complete" in str(caught.value)
     assert json.loads((out / STATE_FILE).read_text(encoding="utf-8"))["complete"] is False
+
+
+@pytest.mark.skipif(not hasattr(os, "mkfifo"), reason="FIFOs: POSIX")
+def test_a_fifo_at_the_lock_name_is_refused_without_blocking(
+    write_study: WriteStudy, tmp_path: Path
+) -> None:
+    # Opening a FIFO for writing waits for a reader: the lock file is opened non-blocking
+    # and must be a regular file.
+    out = tmp_path / "out"
+    out.mkdir()
+    os.mkfifo(out / LOCK_FILE)
+    code, stderr = sweep(str(write_study()), "--out", str(out), "-j", "1")
+    assert code == 2
+    assert stderr == (
+        f"error: {out}: --out: the output folder cannot be locked ({LOCK_FILE}: not a regular "
+        f"file) (allowed: remove {LOCK_FILE})\n"
+    )

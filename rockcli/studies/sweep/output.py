@@ -266,7 +266,9 @@ class Output:
                 "another --out, or wait until that run ends",
             )
         except (NotALockFile, OSError) as exc:
-            reason = exc.strerror if isinstance(exc, OSError) and exc.strerror else "not a file"
+            reason = (
+                exc.strerror if isinstance(exc, OSError) and exc.strerror else "not a regular file"
+            )
             self._refuse(f"cannot be locked ({LOCK_FILE}: {reason})", f"remove {LOCK_FILE}")
 
     def check(self, *, resume: bool, overwrite: bool) -> dict[int, dict[str, str]]:
