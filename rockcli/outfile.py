@@ -15,8 +15,10 @@ from __future__ import annotations
 
 import os
 import tempfile
-from contextlib import suppress
+from collections.abc import Iterator
+from contextlib import contextmanager, suppress
 from pathlib import Path
+from typing import BinaryIO
 
 from rockcli.errors import InputError
 
@@ -72,18 +74,55 @@ def new_file_mode() -> int:
     return 0o666 & ~mask
 
 
+#: The suffix of the temporary files beside an output (``.NAME.XXXXXXXX.tmp``).
+TEMP_SUFFIX = ".tmp"
+
+
+def temp_beside(target: str | Path) -> tuple[int, str]:
+    """A new, empty file in the target's folder to write the target's content to, then
+    rename onto it: (its descriptor, its path).
+
+    mkstemp creates it with O_CREAT|O_EXCL under a random name (``.NAME.XXXXXXXX.tmp``), so a
+    link planted in the folder is never opened; it gets a new file's mode (mkstemp's is 0600).
+    """
+    target = Path(target)
+    fd, name = tempfile.mkstemp(prefix=f".{target.name}.", suffix=TEMP_SUFFIX, dir=target.parent)
+    try:
+        os.fchmod(fd, new_file_mode())
+    except OSError:
+        os.close(fd)
+        os.unlink(name)
+        raise
+    return fd, name
+
+
+def is_temp_of(name: str, target: str) -> bool:
+    """True when the file name is one :func:`temp_beside` gives for the target's name."""
+    prefix = f".{target}."
+    return name.startswith(prefix) and name.endswith(TEMP_SUFFIX) and len(name) > len(prefix)
+
+
+@contextmanager
+def replacing(target: str | Path) -> Iterator[BinaryIO]:
+    """A binary file (:func:`temp_beside`) for the target's new content: it replaces the
+    target (``os.replace``: a link at the target is replaced, not followed) when the block
+    ends, and is removed when the block raises (OSError as it came)."""
+    fd, tmp_name = temp_beside(target)
+    try:
+        with os.fdopen(fd, "wb") as fh:
+            yield fh
+        os.replace(tmp_name, target)
+    except BaseException:
+        with suppress(OSError):
+            os.unlink(tmp_name)
+        raise
+
+
 def write_bytes(path: str | Path, data: bytes, *, where: str | None = None) -> None:
     """Write ``data`` to ``path`` atomically (temporary file + rename; symlinks not followed)."""
-    target = Path(path)
-    folder = target.parent
-    tmp_name = None
     try:
-        fd, tmp_name = tempfile.mkstemp(prefix=f".{target.name}.", suffix=".tmp", dir=folder)
-        os.fchmod(fd, new_file_mode())  # mkstemp makes it 0600: give it a new file's mode
-        with os.fdopen(fd, "wb") as fh:
+        with replacing(path) as fh:
             fh.write(data)
-        os.replace(tmp_name, target)
-        tmp_name = None
     except OSError as exc:
         raise InputError(
             "cannot write the file",
@@ -92,10 +131,6 @@ def write_bytes(path: str | Path, data: bytes, *, where: str | None = None) -> N
             value=exc.strerror or str(exc),
             allowed="a writable path with free space",
         ) from None
-    finally:
-        if tmp_name is not None:
-            with suppress(OSError):
-                os.unlink(tmp_name)
 
 
 def write_text(path: str | Path, text: str, *, where: str | None = None) -> None:

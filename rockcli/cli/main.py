@@ -22,6 +22,7 @@ from rockcli import __version__
 from rockcli.cli.console import make_output_encodable
 from rockcli.cli.exits import EXIT_INPUT, EXIT_INTERNAL, EXIT_INTERRUPTED, REPORT_TO
 from rockcli.errors import RockError, printable
+from rockcli.process import interrupted
 
 #: Set to 1 to see the traceback of an internal error.
 DEBUG_VARIABLE = "ROCK_DEBUG"
@@ -134,6 +135,9 @@ class RockGroup(click.Group):
         except _CLICK_FLOW:
             raise
         except Exception as exc:
+            if interrupted(exc):  # Ctrl-C inside compiled code: numba's SystemError
+                click.echo("interrupted", err=True)
+                ctx.exit(EXIT_INTERRUPTED)
             if debug_enabled():
                 traceback.print_exc(file=sys.stderr)
             click.echo(internal_error_line(exc), err=True)

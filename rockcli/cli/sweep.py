@@ -63,20 +63,12 @@ def exit_now_if_busy(code: int) -> None:
     tens of seconds); its result is lost anyway, every finished row is on disk (rows are
     written by the main thread only) and the worker processes end with this one.
     """
-    import sys
     import threading
 
-    if any(t.name.startswith(CHUNK_THREAD) and t.is_alive() for t in threading.enumerate()):
-        from contextlib import suppress
-        from multiprocessing import util
+    from rockcli.process import exit_at_once
 
-        # The finalizers that never block (the pool queues' semaphores, priority ≥ 0), so
-        # that the resource tracker has nothing to warn about; not the joins (< 0).
-        with suppress(Exception):
-            util._run_finalizers(0)  # type: ignore[attr-defined]
-        sys.stdout.flush()
-        sys.stderr.flush()
-        os._exit(code)
+    if any(t.name.startswith(CHUNK_THREAD) and t.is_alive() for t in threading.enumerate()):
+        exit_at_once(code)
 
 
 @contextmanager
@@ -106,7 +98,8 @@ def terminate_as_interrupt() -> Iterator[None]:
     "out",
     default=None,
     type=click.Path(file_okay=False),
-    help="Output folder for cases.csv and summary.json [default: ./sweep-STUDY].",
+    help="Output folder for cases.csv and summary.json, one rock sweep at a time "
+    "[default: ./sweep-STUDY].",
 )
 @click.option(
     "--jobs",
@@ -198,8 +191,10 @@ def sweep(
     The study names a base model, the axes (model fields by key path), the records and the
     analyses (examples/studies/). Every case goes to OUT/cases.csv as its chunk completes;
     --resume continues an interrupted study (Ctrl-C or SIGTERM: exit 130, finished cases
-    kept). A case that fails is a row with its error, and the study goes on.
+    kept). A case that fails is a row with its error, and the study goes on; a study in
+    which no case succeeds exits 2.
     """
+    from rockcli.process import interrupted
     from rockcli.report.sweep import progress_bar, sweep_report
     from rockcli.report.table import show
     from rockcli.studies.sweep.cases import expand
@@ -242,7 +237,9 @@ def sweep(
         )
         exit_now_if_busy(EXIT_INTERRUPTED)
         raise SystemExit(EXIT_INTERRUPTED) from None
-    except KeyboardInterrupt:
+    except (KeyboardInterrupt, SystemError) as exc:  # SystemError: Ctrl-C in compiled code
+        if not interrupted(exc):
+            raise
         click.echo("interrupted before any case ran", err=True)
         raise SystemExit(EXIT_INTERRUPTED) from None
     names = ("cases.csv", "cases.parquet") if cases_format == "parquet" else ("cases.csv",)

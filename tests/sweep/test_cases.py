@@ -8,6 +8,7 @@ its axis values) and the model's rule for position = "top": r = 2R, φ = α (pap
 from __future__ import annotations
 
 import csv
+import json
 import math
 
 import pytest
@@ -97,16 +98,17 @@ def test_a_case_the_code_check_refuses_is_a_row_with_its_error(
 ) -> None:
     # Issue 7, item 13: a case that fails at run time is recorded (cases.csv, column error)
     # and the study goes on; the summary counts it, never as a collapse. The kinematic check
-    # alone, without records and without a code spectrum in the model: every case fails.
+    # alone, without records and without a code spectrum in the model: every case fails, so
+    # the study ends as bad input once it is written (issue 20, item 3).
     from rockcli.studies.sweep.executor import local_executor
     from rockcli.studies.sweep.run import run_sweep
 
     text = STUDY.split("[[records]]")[0].replace("base =", 'analyses = ["kinematic"]\nbase =')
     path = write_study(text)
     plan = load_study(str(path))
-    with local_executor(1) as lanes:
-        result = run_sweep(plan, str(path.parent / "out"), lanes)
-    summary = result.summary
+    with local_executor(1) as lanes, pytest.raises(InputError, match="no case of the study"):
+        run_sweep(plan, str(path.parent / "out"), lanes)
+    summary = json.loads((path.parent / "out" / "summary.json").read_text(encoding="utf-8"))
     assert summary["cases"] == 8  # 2 R × 2 alpha × 2 K, no record
     assert summary["errors"] == 8
     assert summary["undetermined"] == 8

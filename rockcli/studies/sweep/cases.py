@@ -12,13 +12,14 @@ from __future__ import annotations
 
 import itertools
 import math
+from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Any
 
 from rockcli.errors import InputError
 from rockcli.model.schema import Model
 from rockcli.studies.sweep.paths import with_values
-from rockcli.studies.sweep.study import StudyPlan
+from rockcli.studies.sweep.study import StudyPlan, relative_to_study
 
 
 @dataclass(frozen=True)
@@ -57,7 +58,7 @@ def case_error(plan: StudyPlan, case: Case, exc: InputError) -> InputError:
     """A case's bad input as one line naming the study file and the case's axis values."""
     inner = ": ".join(x for x in (exc.where, exc.problem) if x)
     if exc.file and exc.file != plan.base_file:
-        inner = f"{exc.file}: {inner}"
+        inner = f"{relative_to_study(plan.file, exc.file)}: {inner}"
     return InputError(
         inner, file=plan.file, where=case_label(plan, case), value=exc.value, allowed=exc.allowed
     )
@@ -85,16 +86,20 @@ def build_model(plan: StudyPlan, case: Case) -> Model:
 CHECK_ALL_UP_TO = 20_000
 
 
-def check_cases(plan: StudyPlan) -> int:
+def check_cases(plan: StudyPlan, check: Callable[[Model], None] | None = None) -> int:
     """Validate the models of the grid's points (the record does not change the model) so that
     a bad case stops the study before any work: every point up to CHECK_ALL_UP_TO, else a
     covering subset (:func:`covering_points`). The error names the case of the first record
-    (its id is the point's index) by its axis values. Returns how many points were checked."""
+    (its id is the point's index) by its axis values. check: what else each model must allow
+    (InputError otherwise; rockcli.studies.sweep.suite.suite_checks). Returns how many points
+    were checked."""
     sizes = [len(a.values) for a in plan.axes]
     total = math.prod(sizes)
     points = axis_points(plan) if total <= CHECK_ALL_UP_TO else covering_points(sizes)
     for point in points:
-        build_model(plan, Case(point_id(point, sizes), None, tuple(point)))
+        model = build_model(plan, Case(point_id(point, sizes), None, tuple(point)))
+        if check is not None:
+            check(model)
     return len(points)
 
 

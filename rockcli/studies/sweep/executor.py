@@ -18,6 +18,7 @@ scale"):
 from __future__ import annotations
 
 import multiprocessing
+import os
 import re
 import threading
 from collections.abc import Callable, Iterator
@@ -26,6 +27,7 @@ from contextlib import contextmanager, suppress
 from typing import NamedTuple
 
 from rockcli.errors import InputError, install_hint
+from rockcli.process import CREATOR_ENV, interrupts_blocked, start_resource_tracker
 
 #: Start methods of the local worker processes, in order of preference (never fork: numba).
 START_METHODS = ("forkserver", "spawn")
@@ -64,21 +66,39 @@ def process_executor(workers: int) -> ProcessPoolExecutor:
 
     method = start_method()
     context = multiprocessing.get_context(method)
+    os.environ[CREATOR_ENV] = str(os.getpid())  # before any worker process starts
+    start_resource_tracker()
     if method == "forkserver":
-        from multiprocessing import forkserver
-
-        context.set_forkserver_preload([PRELOAD])
-        # Started here, by the main thread: the server dies with its parent thread (prctl
-        # PR_SET_PDEATHSIG), which must live as long as the study.
-        forkserver.ensure_running()
+        start_fork_server(context)
     pool = ProcessPoolExecutor(max_workers=workers, mp_context=context, initializer=init_worker)
     threading.Thread(target=_start, args=(pool, workers), daemon=True).start()
     return pool
 
 
+def start_fork_server(context: multiprocessing.context.BaseContext) -> None:
+    """Start the fork server with SIGINT blocked (it inherits the mask: a Ctrl-C during its
+    second of imports reaches `rock sweep` alone, when the block ends).
+
+    Started here, by the main thread: the server dies with its parent thread (prctl
+    PR_SET_PDEATHSIG), which must live as long as the study.
+    """
+    from multiprocessing import forkserver
+
+    context.set_forkserver_preload([PRELOAD])
+    # The resource tracker runs already (process_executor): starting it unblocks SIGINT (it
+    # blocks, then unblocks, rather than restoring the mask), which would leave the server
+    # unprotected.
+    with interrupts_blocked():
+        forkserver.ensure_running()
+
+
 def _start(pool: ProcessPoolExecutor, workers: int) -> None:
-    """Submit no-op tasks, which starts the processes (a pool starts one per submission)."""
-    with suppress(RuntimeError):  # the pool was shut down first
+    """Submit no-op tasks, which starts the processes (a pool starts one per submission);
+    SIGINT blocked in this thread, so that a worker spawned from it (no fork server) starts
+    with it blocked."""
+    # Any error: the pool was shut down (RuntimeError), or its processes were stopped while
+    # starting (Ctrl-C); the study's own submissions say what matters.
+    with suppress(Exception), interrupts_blocked():
         for _ in range(workers):
             pool.submit(int)
 

@@ -6,7 +6,9 @@ finished chunk; ``--resume`` reads them back (dropping a half-written last line)
 cases and appends the rest. When the study completes, the file is rewritten sorted by case id,
 so its content does not depend on the order the chunks completed in. ``sweep.json`` holds the
 study's fingerprint (the study, the base model, the records, the rock version) so that a
-resume never mixes the results of two different studies.
+resume never mixes the results of two different studies. One run at a time writes into the
+folder (:meth:`Output.lock`, rockcli.studies.sweep.lock), and no file of it is written
+through a link planted at its name (:data:`FOLDER_FILES`).
 """
 
 from __future__ import annotations
@@ -18,13 +20,21 @@ import json
 import math
 import os
 from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
+from contextlib import contextmanager, suppress
 from dataclasses import asdict
 from pathlib import Path
 from typing import Any, NoReturn
 
 from rockcli import __version__
 from rockcli.errors import InputError, install_hint
-from rockcli.outfile import write_text
+from rockcli.outfile import replacing, write_text
+from rockcli.studies.sweep.lock import (
+    LOCK_FILE,
+    FolderBusy,
+    NotALockFile,
+    lock_folder,
+    unlock_folder,
+)
 from rockcli.studies.sweep.study import RecordSource, StudyPlan
 
 CASES_FILE = "cases.csv"
@@ -33,6 +43,11 @@ PARQUET_FILE = "cases.parquet"
 PARQUET_EXTRA = f"{install_hint('parquet')} (pyarrow)"
 STATE_FILE = "sweep.json"
 SUMMARY_FILE = "summary.json"
+#: Every name a study gives a file in its output folder. Each is written through a new
+#: temporary file beside it (rockcli.outfile.replacing: mkstemp, then a rename that replaces
+#: a link rather than follows it); cases.csv is appended to with O_NOFOLLOW; the lock file is
+#: opened with O_NOFOLLOW (rockcli.studies.sweep.lock).
+FOLDER_FILES = (CASES_FILE, PARQUET_FILE, STATE_FILE, SUMMARY_FILE, LOCK_FILE)
 STATE_SCHEMA = 1
 #: Bytes read at a time when hashing a record file.
 HASH_BLOCK = 1 << 20
@@ -227,6 +242,39 @@ class Output:
         except (OSError, ValueError):
             return None
 
+    @contextmanager
+    def lock(self) -> Iterator[None]:
+        """The folder checked, made and locked for the block: no other `rock sweep` writes
+        into it meanwhile (InputError naming the pid of the one that holds it)."""
+        self._check_writable()
+        created = not self.folder.exists()
+        self._make_folder()
+        fd = self._take_lock()
+        try:
+            yield
+        except BaseException:
+            unlock_folder(self.folder, fd)
+            if created:  # refused before writing (a bad study): leave no empty folder
+                with suppress(OSError):
+                    self.folder.rmdir()
+            raise
+        unlock_folder(self.folder, fd)
+
+    def _take_lock(self) -> int | None:
+        try:
+            return lock_folder(self.folder)
+        except FolderBusy as exc:
+            pid = f" (pid {exc.pid})" if exc.pid is not None else ""
+            self._refuse(
+                f"is in use by another rock sweep{pid}",
+                "another --out, or wait until that run ends",
+            )
+        except (NotALockFile, OSError) as exc:
+            reason = (
+                exc.strerror if isinstance(exc, OSError) and exc.strerror else "not a regular file"
+            )
+            self._refuse(f"cannot be locked ({LOCK_FILE}: {reason})", f"remove {LOCK_FILE}")
+
     def check(self, *, resume: bool, overwrite: bool) -> dict[int, dict[str, str]]:
         """Before any work: the folder can be written and may be used; the rows kept from an
         earlier run (by case id) when resuming."""
@@ -255,9 +303,27 @@ class Output:
             self._refuse(f"cannot be used: {exc.strerror or exc}", "a shorter, plain folder path")
         if folder.exists() and not folder.is_dir():
             self._refuse("is a file", "a folder path")
+        self._check_link()
         target = folder if folder.is_dir() else _existing_parent(folder)
         if not os.access(target, os.W_OK | os.X_OK):
             self._refuse(f"cannot be written ({target} is not writable)", "a writable folder")
+
+    def _check_link(self) -> None:
+        """Refuse an output folder that is a symbolic link leading out of the current folder
+        (a link planted at the default ./sweep-STUDY would send the results elsewhere)."""
+        if not self.folder.is_symlink():
+            return
+        if not self.folder.resolve().is_relative_to(Path.cwd().resolve()):
+            self._refuse(
+                f"is a symbolic link to {self.folder.resolve()}, outside the current folder",
+                "the folder itself as --out, or a link to a folder inside the current one",
+            )
+
+    def _make_folder(self) -> None:
+        try:
+            self.folder.mkdir(parents=True, exist_ok=True)
+        except OSError as exc:
+            self._refuse(f"cannot be made: {exc.strerror or exc}", "a writable folder path")
 
     def _check_reuse(self, state: dict[str, Any] | None, same: bool, resume: bool) -> None:
         """Refuse to replace what the folder holds unless it is this study, complete."""
@@ -277,14 +343,14 @@ class Output:
                 "--resume to continue it, or --force to start over",
             )
 
-    def _refuse(self, problem: str, allowed: str) -> None:
+    def _refuse(self, problem: str, allowed: str) -> NoReturn:
         raise InputError(
             f"the output folder {problem}", file=str(self.folder), where="--out", allowed=allowed
         )
 
     def _write_state(self, *, complete: bool) -> None:
+        self._make_folder()
         try:
-            self.folder.mkdir(parents=True, exist_ok=True)
             state = {
                 "schema": STATE_SCHEMA,
                 "study": self.file,
@@ -361,17 +427,20 @@ class Output:
         write_text(self.cases_path, csv_lines(body))
 
     def append(self, rows: Iterable[Mapping[str, Any]]) -> list[int]:
-        """Append the rows of a completed chunk; returns their case ids."""
+        """Append the rows of a completed chunk; returns their case ids.
+
+        A write that fails part-way (a full disk) raises :class:`PartialWrite` with the ids of
+        the rows whose whole line reached the file (--resume keeps those).
+        """
         cells = [[cell(row.get(c)) for c in self.header] for row in rows]
         ids = [int(r[0]) for r in cells]
-        data = csv_lines(cells).encode("utf-8")
+        lines = [csv_lines([r]).encode("utf-8") for r in cells]
+        data = b"".join(lines)
         flags = os.O_WRONLY | os.O_APPEND | getattr(os, "O_NOFOLLOW", 0)  # never via a link
         fd = os.open(self.cases_path, flags)
         try:
             offset = os.fstat(fd).st_size
-            view = memoryview(data)
-            while view:
-                view = view[os.write(fd, view) :]
+            write_all(fd, data, lambda written: ids[: whole_lines(lines, written)])
         finally:
             os.close(fd)
         if ids and self._blocks is not None:
@@ -394,13 +463,11 @@ class Output:
             return
         if all(a[2] < b[2] for a, b in zip(blocks, blocks[1:], strict=False)):
             return  # written in order already
-        target = self.cases_path.with_name(CASES_FILE + ".sorting")
-        with open(self.cases_path, "rb") as src, open(target, "wb") as dst:
+        with open(self.cases_path, "rb") as src, replacing(self.cases_path) as dst:
             dst.write(csv_lines([self.header]).encode("utf-8"))
             for _, _, offset, length in blocks:
                 src.seek(offset)
                 dst.write(src.read(length))
-        os.replace(target, self.cases_path)
 
     def write_summary(self, summary: dict[str, Any]) -> None:
         """Write summary.json and mark the study complete."""
@@ -410,6 +477,64 @@ class Output:
     def typed_rows(self) -> Iterator[tuple[int, dict[str, Any]]]:
         """Each case id and its result cells as values (:func:`typed_rows`)."""
         return typed_rows(self.cases_path)
+
+    def checked_rows(self) -> Iterator[tuple[int, dict[str, Any]]]:
+        """:meth:`typed_rows` of the finished (sorted) cases.csv, checked on the way: this
+        study's header, then every case once, in order. Anything else (another program wrote
+        to the file meanwhile) is an InputError before the study is marked complete."""
+        expected = 0
+        try:
+            with open(self.cases_path, encoding="utf-8", newline="") as fh:
+                if next(csv.reader(fh), None) != self.header:
+                    self._changed("its header is not this study's columns")
+            for k, row in typed_rows(self.cases_path):
+                if k != expected:
+                    self._changed(f"line {expected + 2} is case {k}, not case {expected}")
+                expected += 1
+                yield k, row
+        except (OSError, UnicodeDecodeError, ValueError, csv.Error) as exc:
+            self._changed(f"line {expected + 2} cannot be read ({exc.__class__.__name__})")
+        if expected != self.n_cases:
+            self._changed(f"it holds {expected} of the {self.n_cases} cases")
+
+    def _changed(self, problem: str) -> NoReturn:
+        raise InputError(
+            f"{CASES_FILE} changed during the run: {problem}; the study is not marked complete",
+            file=str(self.cases_path),
+            allowed="one rock sweep at a time in a folder no other program writes to; "
+            "rerun with --resume",
+        )
+
+
+class PartialWrite(OSError):
+    """A write that failed part-way; ids: the rows whose whole line is in the file."""
+
+    def __init__(self, exc: OSError, ids: list[int]) -> None:
+        super().__init__(exc.errno, exc.strerror)
+        self.ids = ids
+
+
+def write_all(fd: int, data: bytes, saved: Callable[[int], list[int]]) -> None:
+    """Write every byte of data (os.write may write part of it); on an error, PartialWrite
+    with ``saved(bytes written)``."""
+    view = memoryview(data)
+    written = 0
+    while written < len(data):
+        try:
+            written += os.write(fd, view[written:])
+        except OSError as exc:
+            raise PartialWrite(exc, saved(written)) from exc
+
+
+def whole_lines(lines: Sequence[bytes], written: int) -> int:
+    """How many of the lines the first ``written`` bytes of their concatenation hold whole."""
+    count = end = 0
+    for line in lines:
+        end += len(line)
+        if end > written:
+            break
+        count += 1
+    return count
 
 
 def _existing_parent(path: Path) -> Path:
@@ -472,8 +597,7 @@ def write_parquet(csv_path: Path, parquet_path: Path, header: Sequence[str]) -> 
     read = pacsv.ReadOptions(block_size=1 << 22)
     reader = pacsv.open_csv(str(csv_path), read_options=read, convert_options=convert)
     guarded = r"^'+[=+\-@\t\r]"
-    tmp = parquet_path.with_name(parquet_path.name + ".writing")
-    with pq.ParquetWriter(str(tmp), reader.schema) as writer:
+    with replacing(parquet_path) as fh, pq.ParquetWriter(fh, reader.schema) as writer:
         for batch in reader:
             columns = []
             for field, column in zip(batch.schema, batch.columns, strict=True):
@@ -482,4 +606,3 @@ def write_parquet(csv_path: Path, parquet_path: Path, header: Sequence[str]) -> 
                     column = pc.if_else(strip, pc.utf8_slice_codeunits(column, 1), column)
                 columns.append(column)
             writer.write_batch(pa.RecordBatch.from_arrays(columns, schema=batch.schema))
-    os.replace(tmp, parquet_path)

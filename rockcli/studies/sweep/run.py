@@ -13,17 +13,21 @@ from __future__ import annotations
 import math
 import time
 from collections import deque
-from collections.abc import Callable, Iterator, MutableSequence, Sequence
+from collections.abc import Callable, Iterable, Iterator, Mapping, MutableSequence, Sequence
 from concurrent.futures import FIRST_COMPLETED, BrokenExecutor, Future, wait
+from contextlib import contextmanager
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any, Protocol, TypeVar, cast
 
 from rockcli.errors import InputError
+from rockcli.process import interrupted
 from rockcli.studies.sweep.cases import Case, check_cases, expand
 from rockcli.studies.sweep.executor import Lane
-from rockcli.studies.sweep.output import Output, cell
+from rockcli.studies.sweep.output import Output, PartialWrite, cell
 from rockcli.studies.sweep.study import StudyPlan
+from rockcli.studies.sweep.suite import suite_checks
+from rockcli.studies.sweep.summary import split_axis
 from rockcli.studies.sweep.worker import Chunk, read_source, run_chunk
 
 #: Work per chunk aimed at [s]: long enough that pickling and scheduling (≈ 1 ms per task)
@@ -256,6 +260,9 @@ def run_sweep(
 ) -> SweepResult:
     """Run every case of a study not already in the output folder; the summary.
 
+    The output folder is locked from the first look at it to the summary (another run into
+    it: InputError); the study is marked complete only when cases.csv holds every case once.
+
     Args:
         plan: the validated study. out: the output folder.
         lanes: where the chunks run: executors and how many chunks each takes at a time.
@@ -267,70 +274,158 @@ def run_sweep(
         started: time.perf_counter() when the command started (the summary's wall time).
         parquet: also write the cases as cases.parquet (needs pyarrow).
     """
-    from rockcli.studies.sweep.summary import split_axis, summarize
-
     start = time.perf_counter() if started is None else started
     cases = expand(plan)
     output = Output(out, plan, len(cases), lambda k: _label_cells(plan, cases[k]))
-    kept = output.check(resume=resume, overwrite=overwrite)  # before any work
-    checked = check_cases(plan)
-    npts, facts = record_facts(plan)
-    output.start(kept)
-    # Which cases are saved: one byte each, not their rows (memory stays flat).
-    done = bytearray(len(cases))
-    for k in kept:
-        done[k] = 1
-    resumed = saved = len(kept)
-    todo = [c for c in cases if not done[c.id]]
-    del kept
-    if progress:
-        progress(saved, len(cases))
-    workers = sum(lane.workers for lane in lanes)
+    with output.lock():
+        kept = output.check(resume=resume, overwrite=overwrite)  # before any work
+        checked = check_cases(plan, suite_checks(plan))
+        npts, facts = record_facts(plan)
+        output.start(kept)
+        resumed = len(kept)
+        runner = Runner(plan, cases, output, progress, kept)
+        del kept
+        runner.run(lanes, npts, chunk_size)
+        run = {
+            "out": str(output.folder),
+            "computed_cases": len(cases) - resumed,
+            "resumed_cases": resumed,
+            **(run_facts or {}),
+            "checked_up_front": checked,
+            "wall_time_s": time.perf_counter() - start,
+        }
+        with runner.stopping():
+            summary = conclude(plan, cases, output, facts, run, parquet)
+        if summary["errors"] == summary["cases"]:
+            raise nothing_succeeded(plan, output)
+    return SweepResult(summary, split_axis(plan), str(output.folder))
 
-    def save(chunk_rows: list[dict[str, Any]]) -> None:
-        nonlocal saved
-        for k in output.append({**_labels(plan, cases[r["case"]]), **r} for r in chunk_rows):
-            saved += not done[k]
-            done[k] = 1
-        if progress:
-            progress(saved, len(cases))
+
+class Runner:
+    """The cases of a study not yet saved, run chunk by chunk, each chunk's rows appended as
+    it completes; what is saved (a byte per case: memory stays flat)."""
+
+    def __init__(
+        self,
+        plan: StudyPlan,
+        cases: Sequence[Case],
+        output: Output,
+        progress: Progress | None,
+        kept: Iterable[int] = (),
+    ) -> None:
+        """kept: the ids of the cases already in cases.csv (an earlier run's)."""
+        self.plan, self.cases, self.output, self.progress = plan, cases, output, progress
+        self.done = bytearray(len(cases))
+        for k in kept:
+            self.done[k] = 1
+        self.saved = sum(self.done)
+
+    def run(self, lanes: MutableSequence[Lane], npts: Sequence[int], size: int | None) -> None:
+        """Every case not saved yet (SweepInterrupted on Ctrl-C, InputError when the folder
+        cannot be written: each with the count of cases on disk)."""
+        todo = [c for c in self.cases if not self.done[c.id]]
+        self.tell()
+        with self.stopping():
+            speed = 1.0
+            if todo and size is None:
+                first_rows, speed = measure(self.plan, todo[0], npts)
+                self.save(first_rows)
+                todo = todo[1:]
+            workers = sum(lane.workers for lane in lanes)
+            chunks = make_chunks(self.plan, todo, npts, workers, size, speed)
+            for chunk_rows in run_chunks(lanes, chunks):
+                self.save(chunk_rows)
+
+    def save(self, chunk_rows: list[dict[str, Any]]) -> None:
+        """Append a chunk's rows to cases.csv and count them saved."""
+        rows = ({**_labels(self.plan, self.cases[r["case"]]), **r} for r in chunk_rows)
+        try:
+            ids = self.output.append(rows)
+        except PartialWrite as exc:
+            self.mark(exc.ids)  # the lines that reached the disk before the error
+            raise
+        self.mark(ids)
+        self.tell()
+
+    def mark(self, ids: Iterable[int]) -> None:
+        for k in ids:
+            self.saved += not self.done[k]
+            self.done[k] = 1
+
+    def tell(self) -> None:
+        if self.progress:
+            self.progress(self.saved, len(self.cases))
+
+    @contextmanager
+    def stopping(self) -> Iterator[None]:
+        """Errors of the block as :meth:`stopped` turns them."""
+        try:
+            yield
+        except BaseException as exc:
+            replaced = self.stopped(exc)
+            if replaced is exc:
+                raise
+            raise replaced from None
+
+    def stopped(self, exc: BaseException) -> BaseException:
+        """The error to raise when the run stops: an interruption (Ctrl-C, and what it caused
+        inside compiled code) or a write error, each saying how many cases are on disk;
+        anything else as it came."""
+        if interrupted(exc):
+            return SweepInterrupted(self.saved, len(self.cases), str(self.output.folder))
+        if isinstance(exc, OSError):  # a full disk, a folder turned read-only
+            return InputError(
+                f"cannot write the output folder: {exc.strerror or exc}; "
+                f"{self.saved} of {len(self.cases)} cases saved",
+                file=str(self.output.folder),
+                where="--out",
+                allowed="a writable folder with free space, then rerun with --resume",
+            )
+        return exc
+
+
+def conclude(
+    plan: StudyPlan,
+    cases: Sequence[Case],
+    output: Output,
+    facts: Mapping[str, Mapping[str, Any]],
+    run: Mapping[str, Any],
+    parquet: bool,
+) -> dict[str, Any]:
+    """Sort cases.csv, write cases.parquet (when asked), the summary, and mark the study
+    complete; the summary. The summary is made from cases.csv read back and checked
+    (Output.checked_rows): a file this run did not write whole is never marked complete."""
+    from rockcli.studies.sweep.output import PARQUET_FILE, write_parquet
+    from rockcli.studies.sweep.summary import summarize
 
     try:
-        speed = 1.0
-        if todo and chunk_size is None:
-            first_rows, speed = measure(plan, todo[0], npts)
-            save(first_rows)
-            todo = todo[1:]
-        for chunk_rows in run_chunks(
-            lanes, make_chunks(plan, todo, npts, workers, chunk_size, speed)
-        ):
-            save(chunk_rows)
-    except KeyboardInterrupt:
-        raise SweepInterrupted(saved, len(cases), str(output.folder)) from None
-    except OSError as exc:  # a full disk, a folder turned read-only
+        output.finish()
+        if parquet:
+            write_parquet(output.cases_path, output.folder / PARQUET_FILE, output.header)
+    except OSError as exc:
         raise InputError(
-            f"cannot write the output folder: {exc.strerror or exc}; "
-            f"{saved} of {len(cases)} cases saved",
+            f"cannot write the output folder: {exc.strerror or exc}; every case is in "
+            f"{output.cases_path} (not sorted by case)",
             file=str(output.folder),
             where="--out",
             allowed="a writable folder with free space, then rerun with --resume",
         ) from None
-    run = {
-        "out": str(output.folder),
-        "computed_cases": len(cases) - resumed,
-        "resumed_cases": resumed,
-        **(run_facts or {}),
-        "checked_up_front": checked,
-        "wall_time_s": time.perf_counter() - start,
-    }
-    output.finish()
-    if parquet:
-        from rockcli.studies.sweep.output import PARQUET_FILE, write_parquet
-
-        write_parquet(output.cases_path, output.folder / PARQUET_FILE, output.header)
-    summary = summarize(plan, ((cases[k], row) for k, row in output.typed_rows()), facts, run)
+    summary = summarize(plan, ((cases[k], row) for k, row in output.checked_rows()), facts, run)
     output.write_summary(summary)
-    return SweepResult(summary, split_axis(plan), str(output.folder))
+    return summary
+
+
+def nothing_succeeded(plan: StudyPlan, output: Output) -> InputError:
+    """The error of a study where every case failed: an input that gives no result at all is
+    bad input (exit 2), not a study done; the first case's error, every case's in cases.csv
+    (which, with summary.json, is written all the same)."""
+    first = next(((k, row["error"]) for k, row in output.typed_rows() if row.get("error")), None)
+    case, error = first if first is not None else (0, "")
+    return InputError(
+        f"no case of the study succeeded (each case's error is in {output.cases_path}); "
+        f"case {case}: {error}",
+        file=plan.file,
+    )
 
 
 def plot_rows(plan: StudyPlan, out: str) -> list[dict[str, Any]]:

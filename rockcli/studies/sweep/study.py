@@ -330,6 +330,23 @@ def check_inside(path: Path, folder: Path, file: str, where: str, value: str) ->
     )  # fmt: skip
 
 
+def relative_to_study(study_file: str, path: str) -> str:
+    """A file of the study named from the study file's folder (``records/suite.toml``), as the
+    error column of cases.csv names it: an absolute path would differ between machines and
+    tell the user's folders to whoever reads the file. Its name alone when no relative path
+    exists (another drive)."""
+    try:
+        return os.path.relpath(Path(path).resolve(), Path(study_file).parent.resolve())
+    except (OSError, ValueError):
+        return Path(path).name
+
+
+def shown_path(study_file: str, path: str) -> str:
+    """A file of the study as the user would name it: the study file's folder as given, then
+    the file's path from there (``studies/records/suite.toml``)."""
+    return os.path.join(os.path.dirname(study_file), relative_to_study(study_file, path))
+
+
 def is_file(path: str | Path, file: str, where: str) -> bool:
     """True for an existing regular file, False when absent; a path the system refuses (a
     name longer than NAME_MAX, a loop of links) or one that is not a regular file (a folder,

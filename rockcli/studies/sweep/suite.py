@@ -12,6 +12,7 @@ The summary counts cases, not records (docs/sweeps.md).
 from __future__ import annotations
 
 import threading
+from collections.abc import Callable
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
@@ -78,6 +79,70 @@ def suite_facts(source: RecordSource, grid_file: str | None) -> tuple[int, dict[
         "npts": suite.npts,
         "warnings": list(check.warnings),
     }
+
+
+def suite_checks(plan: StudyPlan) -> Callable[[Model], None] | None:
+    """The check of what each suite of the study asks of a case's model, for the models
+    validated before any work (rockcli.studies.sweep.cases.check_cases): the code check has
+    a verdict of the target's limit state, and the target gives every limit state's spectrum
+    the code check needs — what `rock compare MODEL --suite SUITE` refuses, refused once with
+    its message (not as the same error in every case's row). Models alike in what decides
+    this (edition, a code spectrum of their own, g) are checked once. None: nothing to check.
+    """
+    suites = [source for source in plan.records if source.suite]
+    if not suites or "kinematic" not in plan.analyses:
+        return None
+    from rockcli.studies.compare import code_sets_demand
+    from rockcli.studies.kinematic import check_settings
+
+    seen: set[tuple[str, bool, float]] = set()
+
+    def check(model: Model) -> None:
+        key = (check_settings(model).edition, code_sets_demand(model), model.analysis.g)
+        if key not in seen:
+            seen.add(key)
+            for source in suites:
+                check_suite_demand(plan, model, source)
+
+    return check
+
+
+#: What a study can do about a suite's target that gives too little (compare's message names
+#: its own options instead).
+TARGET_ALLOWED = (
+    "lon, lat in the suite's [target] (every limit state from the hazard grid), or "
+    "[ntc.demand] or [ntc.site] in the base model"
+)
+
+
+def check_suite_demand(plan: StudyPlan, model: Model, source: RecordSource) -> None:
+    """InputError when the code check of the model cannot be made under this suite:
+    compare's problem, the suite file named as the study names it, what the study can do."""
+    from rockcli.errors import InputError
+    from rockcli.studies.compare import CodeDemand
+    from rockcli.studies.kinematic import check_settings
+    from rockcli.studies.suite.compare import VERDICT_KEY, target_demands, verdict_key
+    from rockcli.studies.sweep.study import shown_path
+
+    settings = read_suite(source).settings
+    ntc = check_settings(model)
+    try:
+        verdict_key(ntc.edition, settings.target.limit_state.value, settings.file)
+        if plan.code_demand == CodeDemand.RECORD:
+            demand_of = target_demands(settings.target, settings.file, model, plan.grid_file)
+            demand_of(ntc, model.analysis.g)
+    except InputError as exc:
+        if exc.file != settings.file:
+            raise
+        states = ", ".join(VERDICT_KEY[ntc.edition])
+        allowed = {
+            "target": TARGET_ALLOWED,
+            "target.limit_state": f'{states} (or analyses = ["rocking"], the time history alone)',
+        }.get(exc.where or "", exc.allowed)
+        shown = shown_path(plan.file, settings.file)
+        raise InputError(
+            exc.problem, file=shown, where=exc.where, value=exc.value, allowed=allowed
+        ) from None
 
 
 def run_suite_case(plan: StudyPlan, model: Model, suite: SuiteInput) -> dict[str, Any]:

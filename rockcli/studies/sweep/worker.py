@@ -12,14 +12,20 @@ from __future__ import annotations
 
 import os
 import threading
-import time
 import unicodedata
 from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
 from rockcli.errors import InputError
-from rockcli.process import quick_exit
+from rockcli.process import (
+    SERVER_ENV,
+    exit_with_parent,
+    expected_parent,
+    ignore_interrupts,
+    quick_exit,
+    set_death_signal,
+)
 from rockcli.studies.sweep.cases import Case, build_model, case_error
 from rockcli.studies.sweep.study import RecordSource, StudyPlan
 
@@ -54,17 +60,15 @@ class Chunk:
     cases: tuple[Case, ...]
 
 
-#: Seconds between two looks of a worker at its parent (how soon an orphan exits).
-PARENT_POLL = 0.5
-#: Linux prctl option: the signal a process gets when its parent dies (<linux/prctl.h>).
-PR_SET_PDEATHSIG = 1
-
-
 def init_worker() -> None:
-    """Process-pool initializer: one thread, the compiled kernels loaded, a quick exit, and
-    an exit with the parent (a killed `rock sweep` leaves no worker behind)."""
+    """Process-pool initializer: Ctrl-C ignored (`rock sweep` handles it), an exit with the
+    parent (a killed `rock sweep` leaves no worker behind), one thread, the compiled kernels
+    loaded, a quick exit."""
+    ignore_interrupts()
+    if os.environ.get(SERVER_ENV):  # a fork of the single-threaded server: prctl is safe
+        set_death_signal()
+    exit_with_parent(expected_parent())
     single_thread()
-    exit_with_parent()
     warm()
     quick_exit()
 
@@ -73,48 +77,6 @@ def single_thread() -> None:
     """One numba/BLAS thread in this process (set before numpy and numba load)."""
     for key, value in SINGLE_THREAD.items():
         os.environ.setdefault(key, value)
-
-
-def exit_with_parent() -> None:
-    """End this process when its parent ends, whatever killed the parent (even SIGKILL).
-
-    A daemon thread looks at os.getppid() every PARENT_POLL s: an orphan is re-parented (to
-    init or a subreaper), so a changed parent id means the parent is gone.
-    """
-    parent = os.getppid()
-
-    def watch() -> None:
-        while os.getppid() == parent:
-            time.sleep(PARENT_POLL)
-        os._exit(1)
-
-    threading.Thread(target=watch, name="rock-parent-watch", daemon=True).start()
-
-
-def die_with_parent() -> bool:
-    """Ask Linux to SIGKILL this process when its parent thread ends (prctl PR_SET_PDEATHSIG).
-
-    For the fork server, which must stay single-threaded (it forks the workers): no watcher
-    thread there. False where prctl is not available (not Linux). The parent thread must be
-    the one that lives as long as the study (the main thread: see
-    :func:`rockcli.studies.sweep.executor.process_executor`).
-    """
-    import ctypes
-    import signal
-    import sys
-
-    if not sys.platform.startswith("linux"):
-        return False
-    parent = os.getppid()
-    try:
-        libc = ctypes.CDLL(None, use_errno=True)
-        if libc.prctl(PR_SET_PDEATHSIG, signal.SIGKILL, 0, 0, 0) != 0:
-            return False
-    except (OSError, AttributeError):
-        return False
-    if os.getppid() != parent:  # the parent died before prctl
-        os._exit(1)
-    return True
 
 
 def warm() -> None:
