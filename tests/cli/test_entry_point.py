@@ -1,0 +1,65 @@
+"""The installed `rock` script handles a Ctrl-C that arrives while the command loads.
+
+The script pip writes imports its entry point and calls it. With `rockcli.cli.main:cli` as the
+entry point, a Ctrl-C during the first ~0.1–1 s (click, rich, numpy, numba loading) printed a
+Python traceback and exited by SIGINT; `rockcli.__main__:main` imports the command inside a
+``try`` and ends with "interrupted" and 130 (issue 20, item 7).
+"""
+
+from __future__ import annotations
+
+import os
+import resource
+import shutil
+import signal
+import subprocess
+import sys
+import time
+from importlib.metadata import entry_points
+from pathlib import Path
+
+import pytest
+
+ROOT = Path(__file__).resolve().parents[2]
+WALL = ROOT / "examples" / "wall.toml"
+PULSE = ROOT / "records" / "ricker_Tp0.5s_0.5g.txt"
+
+
+def test_the_rock_script_runs_the_guarded_main() -> None:
+    (script,) = [ep for ep in entry_points(group="console_scripts") if ep.name == "rock"]
+    assert script.value == "rockcli.__main__:main"
+
+
+def limits() -> None:
+    """At most 2 GiB of address space and 60 s of CPU for the child."""
+    resource.setrlimit(resource.RLIMIT_AS, (2 << 30, 2 << 30))
+    resource.setrlimit(resource.RLIMIT_CPU, (60, 60))
+
+
+@pytest.mark.parametrize("moment", [0.05, 0.15, 0.3, 0.6])
+def test_ctrl_c_while_the_script_loads(moment: float) -> None:
+    """SIGINT to the group (as a terminal sends it) at several moments of the start-up."""
+    rock = shutil.which("rock", path=str(Path(sys.executable).parent))
+    if rock is None:
+        pytest.skip("the rock script is not installed beside this Python")
+    proc = subprocess.Popen(
+        [rock, "assess", str(WALL), "--record", str(PULSE)],
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+        start_new_session=True,
+        preexec_fn=limits,
+    )
+    try:
+        time.sleep(moment)
+        os.killpg(proc.pid, signal.SIGINT)
+        _, err = proc.communicate(timeout=60)
+    finally:
+        if proc.poll() is None:
+            os.killpg(proc.pid, signal.SIGKILL)
+            proc.wait()
+    text = err.decode()
+    assert proc.returncode in (0, 130), text  # 0: done before the signal
+    if proc.returncode == 0:
+        return
+    assert proc.returncode == 130, text
+    assert "Traceback" not in text and text.strip() == "interrupted", text
