@@ -1,0 +1,174 @@
+"""The wall as the mechanisms see it: one physical description, in SI units, frame fixed.
+
+What the model file describes (``[[geometry.storeys]]``, ``gable_height``, ``[return_walls]``,
+``[masonry]``, ``[[loads]]``, ``[[thrusts]]``, ``[[restrainers]]``, ``[[mechanisms]]``) after
+validation and unit conversion at the edge (rockcli.model): the catalogue
+(rockcli.mechanisms) builds every mechanism from it, so the code check and the time history
+read one geometry.
+
+The frame, for every quantity here: x horizontal, out of the wall's plane, measured **inward
+from the outer face** (the outer face is plumb, at x = 0); z vertical, **up from the wall's
+base**. Positive rotation is outward (the top moves towards x < 0), about the outer edge of
+the hinge section (side 1); side −1 turns inward about the inner edge. A storey's inner face is
+at x = its thickness (set-backs on the inner face). Weights in N, forces in N, lengths in m,
+stresses in Pa, angles in rad.
+
+Pure data: no validation here (the model's edge does it), no numerics.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from enum import StrEnum
+
+from rockcli.mechanics import Restrainer
+
+
+@dataclass(frozen=True)
+class Storey:
+    """One storey of the wall, bottom up.
+
+    Attributes:
+        height: its height [m] (> 0).
+        thickness: its thickness [m] (> 0), from the outer face x = 0 to x = thickness.
+    """
+
+    height: float
+    thickness: float
+
+
+@dataclass(frozen=True)
+class WallLoad:
+    """A weight on the wall (a floor, the roof, an overburden): the Circolare's P_i or P_j.
+
+    Attributes:
+        name: label.
+        weight: [N].
+        x: horizontal distance of its point from the outer face [m].
+        z: height of its point above the wall's base [m]. A load exactly at a hinge's height
+            belongs to the part below the hinge.
+        bears: its weight rests on the wall (it restores and it is lifted).
+        moves: its mass follows the wall horizontally (it pushes).
+    """
+
+    name: str
+    weight: float
+    x: float
+    z: float
+    bears: bool = True
+    moves: bool = True
+
+
+@dataclass(frozen=True)
+class WallThrust:
+    """A horizontal force independent of the earthquake (a roof's or an arch's thrust).
+
+    Attributes:
+        name: label.
+        force: its magnitude [N] (> 0).
+        direction: +1 pushes outward (towards positive rotation), −1 inward.
+        x, z: its point, from the outer face and above the wall's base [m].
+    """
+
+    name: str
+    force: float
+    direction: int
+    x: float
+    z: float
+
+
+@dataclass(frozen=True)
+class WallRestrainer:
+    """A horizontal member (a tie-rod, a floor's connection) holding a point of the wall.
+
+    Attributes:
+        member: its laws, strengths and losses, as rockcli.mechanics.Restrainer gives them
+            (its ``r_pos/phi_pos/r_neg/phi_neg`` are those about the whole wall's base edges;
+            a mechanism places it again about its own hinges from ``x`` and ``z``).
+        x, z: its attachment point, from the outer face and above the wall's base [m].
+    """
+
+    member: Restrainer
+    x: float
+    z: float
+
+
+class MechanismType(StrEnum):
+    """The mechanisms of the catalogue (Circolare 7/2019 §C8.7.1; Circolare 617/2009 §C8A.4)."""
+
+    OVERTURNING = "overturning"
+    WEDGE = "wedge"
+    VERTICAL_FLEXURE = "vertical-flexure"
+    GABLE = "gable"
+
+
+#: ``hinge_height`` of a vertical flexure whose hinge the code finds (the lowest α0).
+OPTIMAL = "optimal"
+
+
+@dataclass(frozen=True)
+class MechanismSpec:
+    """One ``[[mechanisms]]`` entry, resolved ("each-floor" already expanded).
+
+    Attributes:
+        name: its label (the model's, or made from its type and hinge).
+        type: which mechanism.
+        hinge_height: overturning: the hinge's height above the wall's base, at a storey's
+            base (0: the whole wall) [m]; vertical flexure: the intermediate hinge's height
+            above the wall's base [m], or :data:`OPTIMAL`; None for wedge and gable.
+        storey: vertical flexure: the storey it spans (1 = the ground storey); else None.
+        angle: wedge: the crack's angle from the vertical [rad]; else None.
+        sides: wedge: 1 or 2 return walls dragged; else None.
+    """
+
+    name: str
+    type: MechanismType
+    hinge_height: float | str | None = None
+    storey: int | None = None
+    angle: float | None = None
+    sides: int | None = None
+
+
+@dataclass(frozen=True)
+class Wall:
+    """The wall, its surroundings and the mechanisms to check.
+
+    Attributes:
+        storeys: bottom up (at least one).
+        width: the wall's width along its plane [m] (the strip the model describes).
+        unit_weight: the masonry's unit weight [N/m³].
+        g: gravity [m/s²].
+        gable_height: a triangular gable of base ``width`` on top of the last storey, of the
+            last storey's thickness [m]; None: no gable.
+        return_wall_thickness: thickness of the return walls, where a wedge can form [m];
+            None: no return walls given.
+        f_m: the masonry's compressive strength used for the hinge's set-back (already divided
+            by FC when the model says so) [Pa]; None: infinitely strong (hinges at the edges).
+        loads, thrusts, restrainers: as described above, in the wall's frame.
+        mechanisms: the mechanisms to check; empty: the whole wall overturning about its base.
+    """
+
+    storeys: tuple[Storey, ...]
+    width: float
+    unit_weight: float
+    g: float
+    gable_height: float | None = None
+    return_wall_thickness: float | None = None
+    f_m: float | None = None
+    loads: tuple[WallLoad, ...] = field(default_factory=tuple)
+    thrusts: tuple[WallThrust, ...] = field(default_factory=tuple)
+    restrainers: tuple[WallRestrainer, ...] = field(default_factory=tuple)
+    mechanisms: tuple[MechanismSpec, ...] = field(default_factory=tuple)
+
+    @property
+    def height(self) -> float:
+        """Height of the storeys together (the gable above them not counted) [m]."""
+        return sum(s.height for s in self.storeys)
+
+    def storey_bases(self) -> tuple[float, ...]:
+        """Height of each storey's base above the wall's base, bottom up [m] (0 first)."""
+        bases, z = [], 0.0
+        for s in self.storeys:
+            bases.append(z)
+            z += s.height
+        return tuple(bases)
