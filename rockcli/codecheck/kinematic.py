@@ -19,14 +19,9 @@ import math
 from dataclasses import dataclass
 from functools import cached_property
 
-from rockcli.mechanics import (
-    Block,
-    Restrainer,
-    point_moments,
-    point_table,
-    spring_elongation,
-    spring_failure_rotation,
-)
+from rockcli.mechanics import Block, Restrainer
+from rockcli.mechanisms.block import BlockSide, Polar, polar_of
+from rockcli.mechanisms.side import ChainPoint, ChainSide
 
 #: Rotation searched for the zero of the capacity curve [rad]: beyond π/2 the block is flat.
 THETA_MAX = math.pi / 2
@@ -43,32 +38,46 @@ CURVE_END = math.pi / 4
 
 @dataclass(frozen=True)
 class Mechanism:
-    """The block turning about one base edge, with its loads and thrusts (``block.loads``,
-    ``block.thrusts``: the model's physical description, shared with the rocking analysis).
+    """A mechanism opening to one side, with its loads, thrusts and restrainers (the model's
+    physical description, shared with the rocking analysis).
 
     Attributes:
-        block: the rigid block, its restrainers, loads and thrusts (mass required).
+        block: the rigid block, its restrainers, loads and thrusts (mass required), when the
+            mechanism is today's block turning about a base edge; None for the catalogue's
+            other mechanisms (``geometry``).
         side: the side it overturns to (+1: θ > 0, pivot O; −1: θ < 0, pivot O′).
-        distributed: True when the block's mass is spread over its height for M* and e*
-            (e* = 0.75 for a lone rectangle), False when lumped at the centroid (e* = 1).
+        distributed: True when each body's mass is spread over its section for M* and e*
+            (e* = 0.75 for a lone rectangle), False when lumped at its centroid (e* = 1).
+        geometry: the mechanism's one geometry (rockcli.mechanisms.side.ChainSide); None:
+            the block's closed forms (rockcli.mechanisms.block.BlockSide).
     """
 
-    block: Block
+    block: Block | None = None
     side: int = 1
     distributed: bool = False
+    geometry: ChainSide | None = None
 
     @cached_property
-    def points(self) -> tuple[float, ...]:
-        """The block, its loads and thrusts as the point table (mechanics.point_table)."""
-        return point_table(self.block)
+    def view(self) -> BlockSide | ChainSide:
+        """The geometry the formulas read: the block's closed forms, or the general chain."""
+        if self.geometry is not None:
+            return self.geometry
+        assert self.block is not None
+        return BlockSide(self.block, self.side)
 
     @property
-    def moving(self) -> tuple[tuple[float, float], ...]:
-        """(P, z) of the weights whose masses move with the block: the block's own at h, then
-        every load that moves (the Circolare's P_i and P_j; a load that only bears is carried
-        horizontally by something else and has no horizontal inertia here)."""
-        own = (self.block.weight, self.block.h)
-        return (own, *((ld.weight, ld.z) for ld in self.block.loads if ld.moves))
+    def g(self) -> float:
+        """Gravity [m/s²]."""
+        return self.view.g
+
+    @property
+    def restrainers(self) -> tuple[Restrainer, ...]:
+        """The restrainers, in the model's order."""
+        return self.view.restrainers
+
+    def placement(self, index: int) -> Polar | ChainPoint:
+        """Restrainer ``index``'s point: its elongation and moment along the rotation."""
+        return self.view.placement(index)
 
 
 def alpha0(mech: Mechanism) -> float:
@@ -97,35 +106,24 @@ def activation_terms(mech: Mechanism) -> dict[str, float]:
     ``overturning`` = Σ_moving P_i z_i (the horizontal forces' work per unit α), and
     α0 = (stabilising − thrusts + restrainers) / overturning, which is :func:`alpha0`.
     """
-    g, h, t, _, _ = point_moments(mech.points, mech.side, 0.0, 1.0)
+    g, t, h = mech.view.work_terms(0.0)
     restrainers = _spring_moments(mech, 0.0, False, False)
     return {
         "stabilising": g,
-        "thrusts": mech.side * t,
+        "thrusts": t,
         "restrainers": restrainers,
         "overturning": h,
-        "alpha0": (g - mech.side * t + restrainers) / h,
+        "alpha0": (g - t + restrainers) / h,
     }
 
 
 def _moments(mech: Mechanism) -> tuple[float, float]:
-    """(Σ P δx, Σ P δx²) per unit virtual rotation [N·m, N·m²], the block lumped or spread.
+    """(Σ P δx, Σ P δx²) per unit virtual rotation [N·m, N·m²], each body lumped or spread.
 
-    Spread over the height 2h: Σ P δx = W h, Σ P δx² = W (2h)²/3 (integrals of z and z²).
+    The block spread over its height 2h: Σ P δx = W h, Σ P δx² = W (2h)²/3 (integrals of z and
+    z²); a body of the catalogue adds P·var_z (rockcli.mechanisms.side).
     """
-    b = mech.block
-    own_1, own_2 = (
-        (b.weight * b.h, b.weight * 4.0 * b.h**2 / 3.0)
-        if mech.distributed
-        else (
-            b.weight * b.h,
-            b.weight * b.h**2,
-        )
-    )
-    loads = mech.moving[1:]
-    first = own_1 + sum(w * z for w, z in loads)
-    second = own_2 + sum(w * z**2 for w, z in loads)
-    return first, second
+    return mech.view.first_moments(mech.distributed)
 
 
 def participating_mass(mech: Mechanism) -> float:
@@ -134,7 +132,7 @@ def participating_mass(mech: Mechanism) -> float:
     Circolare 617/2009 Eq. C8A.4.2; Circolare 7/2019 Eq. C8.7.1.2.
     """
     first, second = _moments(mech)
-    return first**2 / (mech.block.g * second)
+    return first**2 / (mech.g * second)
 
 
 def e_star(mech: Mechanism) -> float:
@@ -143,8 +141,8 @@ def e_star(mech: Mechanism) -> float:
     Circolare 617/2009 Eq. C8A.4.3; Circolare 7/2019 Eq. C8.7.1.3. Block alone: 1 lumped,
     0.75 spread over the height (spec/ntc.md).
     """
-    total = sum(w for w, _ in mech.moving)
-    return mech.block.g * participating_mass(mech) / total
+    total = mech.view.moving_weight
+    return mech.g * participating_mass(mech) / total
 
 
 def a0_star(alpha_0: float, e_s: float, FC: float, g: float) -> float:
@@ -161,19 +159,19 @@ def displacement_factor(mech: Mechanism) -> float:
     Circolare 617/2009 Eq. C8A.4.5; Circolare 7/2019 Eq. C8.7.1.5.
     """
     first, second = _moments(mech)
-    return second / (mech.block.h * first)
+    return second / (mech.view.control_delta * first)
 
 
 def control_displacement(mech: Mechanism, theta: float) -> float:
-    """Horizontal displacement of the centroid d_k = R[sin α − sin(α − θ)] [m] (spec/ntc.md)."""
-    b = mech.block
-    return b.R * (math.sin(b.alpha) - math.sin(b.alpha - theta))
+    """Horizontal displacement of the control point d_k [m]: the block's centroid,
+    R[sin α − sin(α − θ)] (spec/ntc.md); a catalogue mechanism's bodies' centre of mass."""
+    return mech.view.control_displacement(theta)
 
 
 def rotation_at(mech: Mechanism, d_k: float) -> float:
-    """The rotation θ at which the centroid has moved d_k [m] (inverse of control_displacement)."""
-    b = mech.block
-    return b.alpha - math.asin(max(-1.0, min(1.0, math.sin(b.alpha) - d_k / b.R)))
+    """The rotation θ at which the control point has moved d_k [m] (inverse of
+    control_displacement)."""
+    return mech.view.rotation_at(d_k)
 
 
 #: The code_action of a restrainer taken as a constant force (mechanics.Restrainer; the
@@ -181,20 +179,24 @@ def rotation_at(mech: Mechanism, d_k: float) -> float:
 FORCE = "force"
 
 
-def force_at(sp: Restrainer, s: int, theta: float) -> float:
+def force_at(
+    sp: Restrainer, s: int, theta: float, place: Polar | ChainPoint | None = None
+) -> float:
     """Horizontal force of restrainer ``sp`` in the check at rotation θ on side s, intact [N].
 
     code_action "force": its code_force F, constant from θ = 0 (Circolare 617/2009 §C8A.4.1 and
     Circolare 7/2019 §C8.7.1.1: a tie-rod is an external force in the virtual work of α0).
     "spring": P0 + K·u(θ) (pretension plus the spring, mechanics.spring_elongation), capped at
-    :func:`force_cap`. 0 on a side where the member does not work (K = 0).
+    :func:`force_cap`. 0 on a side where the member does not work (K = 0). ``place``: its
+    point on a catalogue mechanism (default: its r, φ about the block's pivot of side s).
     """
-    k, r, phi = sp.side(s)
+    k = sp.side(s)[0]
     if k == 0.0:
         return 0.0
     if sp.code_action == FORCE:
         return sp.code_force
-    return min(sp.pretension + k * spring_elongation(r, phi, theta), force_cap(sp, s))
+    u = (place or polar_of(sp, s)).elongation(theta)
+    return min(sp.pretension + k * u, force_cap(sp, s))
 
 
 def force_cap(sp: Restrainer, s: int) -> float:
@@ -219,10 +221,9 @@ def loss_elongation(sp: Restrainer, s: int) -> float:
     return min(sp.fails_at, max(0.0, (sp.rupture_force - sp.pretension) / k))
 
 
-def loss_rotation(sp: Restrainer, s: int) -> float:
+def loss_rotation(sp: Restrainer, s: int, place: Polar | ChainPoint | None = None) -> float:
     """Rotation at which the member is lost on side s [rad] (inf: never)."""
-    _, r, phi = sp.side(s)
-    return spring_failure_rotation(r, phi, loss_elongation(sp, s))
+    return (place or polar_of(sp, s)).rotation_at(loss_elongation(sp, s))
 
 
 def can_be_lost(sp: Restrainer, s: int) -> bool:
@@ -230,13 +231,16 @@ def can_be_lost(sp: Restrainer, s: int) -> bool:
     return math.isfinite(loss_elongation(sp, s))
 
 
-def restrainer_moment(sp: Restrainer, s: int, theta: float) -> float:
-    """Restoring moment F·r·cos(φ − θ) of the member's force about the pivot of side s [N·m].
+def restrainer_moment(
+    sp: Restrainer, s: int, theta: float, place: Polar | ChainPoint | None = None
+) -> float:
+    """Restoring moment F·r·cos(φ − θ) of the member's force about the pivot of side s [N·m]
+    (on a catalogue mechanism, F·δx of its point per unit rotation).
 
     The arm of mechanics.spring_moment (a horizontal force at the attachment point).
     """
-    _, r, phi = sp.side(s)
-    return force_at(sp, s, theta) * r * math.cos(phi - theta)
+    where = place or polar_of(sp, s)
+    return where.moment(force_at(sp, s, theta, where), theta)
 
 
 def _spring_moments(mech: Mechanism, theta: float, sure_only: bool, intact: bool) -> float:
@@ -246,13 +250,14 @@ def _spring_moments(mech: Mechanism, theta: float, sure_only: bool, intact: bool
     to last until collapse). intact: ignore losses (the curve just before one).
     """
     total = 0.0
-    for sp in mech.block.restrainers:
+    for i, sp in enumerate(mech.restrainers):
         lost = can_be_lost(sp, mech.side)
         if sure_only and lost:
             continue
-        if lost and not intact and theta > loss_rotation(sp, mech.side):
+        place = mech.placement(i)
+        if lost and not intact and theta > loss_rotation(sp, mech.side, place):
             continue
-        total += restrainer_moment(sp, mech.side, theta)
+        total += restrainer_moment(sp, mech.side, theta, place)
     return total
 
 
@@ -266,10 +271,12 @@ def load_multiplier(
     (:func:`rockcli.mechanics.point_moments`, the engine's own function; spec/ntc.md, "Capacity
     curve"; equilibrium in the rotated position, Circolare 617/2009 §C8A.4.2.3). The block
     alone: tan(α − θ). M_k: :func:`restrainer_moment`, a force (code_action "force") or a
-    capped spring (mechanics.spring_moment's elongation and arm, as in the engine).
+    capped spring (mechanics.spring_moment's elongation and arm, as in the engine). A
+    catalogue mechanism: the same sums with the virtual displacements of its chain
+    (rockcli.mechanisms.side).
     """
-    g, h, t, _, _ = point_moments(mech.points, mech.side, math.sin(theta), math.cos(theta))
-    return (g - mech.side * t + _spring_moments(mech, theta, sure_only, intact)) / h
+    g, t, h = mech.view.work_terms(theta)
+    return (g - t + _spring_moments(mech, theta, sure_only, intact)) / h
 
 
 def _bisect(f, lo: float, hi: float) -> float:
@@ -293,8 +300,9 @@ def zero_rotation(mech: Mechanism) -> float | None:
         return load_multiplier(mech, t, sure_only=True)
 
     prev = 0.0
+    limit = mech.view.limit
     for k in range(1, BRACKET_POINTS + 1):
-        t = THETA_MAX * k / BRACKET_POINTS
+        t = limit * k / BRACKET_POINTS
         if f(t) <= 0.0:
             return _bisect(f, prev, t)
         prev = t
@@ -307,18 +315,20 @@ def failure_rotations(mech: Mechanism) -> list[tuple[str, float, float]]:
     The drop is the share of α lost with it: 1 − α_after/α_before at θ_f.
     """
     out = []
-    for sp in mech.block.restrainers:
-        theta_f = loss_rotation(sp, mech.side)
+    for i, sp in enumerate(mech.restrainers):
+        place = mech.placement(i)
+        theta_f = loss_rotation(sp, mech.side, place)
         if sp.side(mech.side)[0] == 0.0 or not math.isfinite(theta_f) or theta_f >= THETA_MAX:
             continue
+        moment = restrainer_moment(sp, mech.side, theta_f, place)
         before = load_multiplier(mech, theta_f, intact=True)
-        after = before - restrainer_moment(sp, mech.side, theta_f) / _overturning(mech, theta_f)
+        after = before - moment / _overturning(mech, theta_f)
         out.append((sp.name, theta_f, 1.0 - after / before if before > 0 else 1.0))
     return out
 
 
 def _overturning(mech: Mechanism, theta: float) -> float:
-    return point_moments(mech.points, mech.side, math.sin(theta), math.cos(theta))[1]
+    return mech.view.work_terms(theta)[2]
 
 
 @dataclass(frozen=True)
@@ -347,7 +357,7 @@ class Capacity:
             return self.a0_star * (1.0 - d_star / self.d0_star)
         theta = rotation_at(self.mech, d_star / self.factor)
         alpha = load_multiplier(self.mech, theta, sure_only=True)
-        return alpha * self.mech.block.g / (self.e_star * self.FC)
+        return alpha * self.mech.g / (self.e_star * self.FC)
 
     def d_star_at(self, theta: float) -> float:
         """Spectral displacement d* at rotation θ [m] (Eq. C8A.4.5)."""
@@ -360,8 +370,8 @@ def constant_forces_only(mech: Mechanism) -> bool:
     an a0* the sure curve does not have)."""
     s = mech.side
     return not any(
-        sp.side(s)[0] and (not can_be_lost(sp, s) or force_at(sp, s, 0.0) > 0.0)
-        for sp in mech.block.restrainers
+        sp.side(s)[0] and (not can_be_lost(sp, s) or force_at(sp, s, 0.0, mech.placement(i)) > 0.0)
+        for i, sp in enumerate(mech.restrainers)
     )
 
 
@@ -383,7 +393,7 @@ def capacity(mech: Mechanism, FC: float) -> Capacity:
         alpha0=a_0,
         e_star=e_s,
         FC=FC,
-        a0_star=a0_star(a_0, e_s, FC, mech.block.g),
+        a0_star=a0_star(a_0, e_s, FC, mech.g),
         factor=factor,
         d0_star=d0,
         linear=linear,

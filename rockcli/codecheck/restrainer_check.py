@@ -48,24 +48,26 @@ def demand_rotation(cap: Capacity, d_star: float) -> float:
 
 
 def restrainer_action(
-    sp: Restrainer, cap: Capacity, theta: float | None, at: str
+    sp: Restrainer, cap: Capacity, theta: float | None, at: str, index: int | None = None
 ) -> RestrainerAction:
     """The action of one restrainer and its verification at rotation θ [rad] (``at`` says which;
     θ None: the check reaches no displacement, a spring's demand is not evaluated).
 
     force: what it gives α0 (θ = 0). demand: a force's code_force; a spring's force at θ
-    (capped at its strength; intact: ``lost`` says if it broke before θ).
+    (capped at its strength; intact: ``lost`` says if it broke before θ). ``index``: its place
+    among the mechanism's restrainers (None: its r, φ about the block's pivot).
     """
     s = cap.mech.side
+    place = None if index is None else cap.mech.placement(index)
     strength = sp.strength if math.isfinite(sp.strength) else None
     acts = sp.side(s)[0] > 0.0
-    force = force_at(sp, s, 0.0)
+    force = force_at(sp, s, 0.0, place)
     demand: float | None
     if sp.code_action == FORCE:
         demand = sp.code_force
     else:
-        demand = None if theta is None else force_at(sp, s, theta)
-    lost = acts and theta is not None and theta > loss_rotation(sp, s)
+        demand = None if theta is None else force_at(sp, s, theta, place)
+    lost = acts and theta is not None and theta > loss_rotation(sp, s, place)
     use = None if strength is None or demand is None else demand / strength
     passed = False if lost else (None if use is None or not acts else use <= 1.0)
     return RestrainerAction(
@@ -106,4 +108,6 @@ def restrainer_actions(
     """Every restrainer's action, the springs read at the spectral displacement d* [m] (None:
     no displacement to read them at)."""
     theta = None if d_star is None else demand_rotation(cap, d_star)
-    return tuple(restrainer_action(sp, cap, theta, at) for sp in cap.mech.block.restrainers)
+    return tuple(
+        restrainer_action(sp, cap, theta, at, i) for i, sp in enumerate(cap.mech.restrainers)
+    )

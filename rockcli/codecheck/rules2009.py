@@ -192,7 +192,7 @@ def check_2009(
     limit: float | None,
 ) -> tuple[dict[str, float | None], list[Check]]:
     """Every 2009 check of a mechanism: DLS and ULS linear, ULS non-linear."""
-    g = cap.mech.block.g
+    g = cap.mech.g
     values = quantities(cap, limit)
     checks = [
         *linear_checks(cap, sld, pos, g, q, "DLS"),

@@ -266,7 +266,7 @@ def check_2019(
     limit: float | None,
 ) -> tuple[dict[str, float | None], list[Check], list[str]]:
     """Every 2019 check: SLD, SLV linear, SLV and SLC non-linear."""
-    g = cap.mech.block.g
+    g = cap.mech.g
     d_slv, d_slc, cap_note = limit_displacements(cap, limit)
     a_slv, T_slv = _period(SLV_PERIOD, d_slv, cap)
     a_slc, T_slc = _period(SLC_PERIOD, d_slc, cap)

@@ -293,7 +293,7 @@ def governing_demand(
         demand = nonlinear_displacement_demand(checks)
         ultimate, name = values.get("du_star"), "du*"
     else:
-        demand = rules2019.slv_displacement_demand(values, dem["SLV"], pos, cap.mech.block.g)
+        demand = rules2019.slv_displacement_demand(values, dem["SLV"], pos, cap.mech.g)
         ultimate, name = values.get("d_SLV"), "d_SLV"
     if demand is not None:
         return demand, f"SLV displacement demand d* = {demand:.4g} m"

@@ -1,0 +1,127 @@
+"""One degree of freedom: where every body of a mechanism is for a finite rotation θ.
+
+A mechanism is seen from the pivot of the side it opens to (its *side frame*): origin at that
+pivot, x horizontal **into the wall** from it, z up. θ > 0 opens the mechanism: the driving
+body turns about the origin so that a point (x, z) goes to (x cos θ − z sin θ, x sin θ +
+z cos θ) — the top moves away from the wall (to x < 0), as the rocking block's does about its
+pivot (spec of the block: docs/physics.md). Side 1 of a wall opens outward about the outer
+edge of the hinge section; side −1 inward about the inner edge, with x measured outward from it.
+
+A *motion* places each link (a rigid group of bodies) for any θ: the link's rest reference
+point p0 goes to c(θ) and the link turns by φ(θ), so a point p of the link is at
+P(θ) = c(θ) + Rot(φ)(p − p0), with the derivative P′ = c′ + φ′·(−v_z, v_x), v = Rot(φ)(p − p0).
+Everything the two analyses need — the virtual displacements of the Circolare's virtual work
+(Circ. 7/2019 §C8.7.1.1; Circ. 617/2009 §C8A.4.1), the capacity curve by finite rotations, and
+the terms M, V, Γ of the equation of motion — follows from these positions and derivatives.
+
+- :class:`Rotation`: one rigid body about the pivot (overturning, wedge, gable; the block).
+- :class:`TwoBlock`: vertical flexure. The lower link turns by θ about the pivot; the upper
+  link hangs from the intermediate hinge H (on the opposite face) and its top point T is held
+  horizontally (x_T fixed) but free to rise. With a = x_T − x_H, c = z_T − z_H (the upper
+  link's rest chord, length L, direction δ = atan2(c, a)) and the hinge at c_x(θ), the
+  constraint a cos ψ + c sin ψ = x_T − c_x(θ) gives the upper link's rotation φ = −ψ with
+  ψ = δ − acos((x_T − c_x)/L) and ψ′ = c_x′/(L sin(ψ − δ)); at θ = 0, ψ′ = z_H/(z_T − z_H)
+  (the two-block chain of Sorrentino, Masiani & Griffith 2008, Struct. Eng. Mech. 29:433–453,
+  and of Doherty et al. 2002, EESD 31:833–850).
+
+Pure and silent: only :mod:`math`.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+
+@dataclass(frozen=True)
+class LinkState:
+    """Where one link is at θ: rest reference point (px, pz) now at (cx, cz), turned by phi,
+    and the derivatives of c and φ with respect to θ."""
+
+    px: float
+    pz: float
+    cx: float
+    cz: float
+    phi: float
+    dcx: float
+    dcz: float
+    dphi: float
+
+    def place(self, x: float, z: float) -> tuple[float, float, float, float]:
+        """(X, Z, dX/dθ, dZ/dθ) of the link's point (x, z) at rest."""
+        c, s = math.cos(self.phi), math.sin(self.phi)
+        vx = (x - self.px) * c - (z - self.pz) * s
+        vz = (x - self.px) * s + (z - self.pz) * c
+        return (
+            self.cx + vx,
+            self.cz + vz,
+            self.dcx - self.dphi * vz,
+            self.dcz + self.dphi * vx,
+        )
+
+
+@dataclass(frozen=True)
+class Rotation:
+    """One link turning by θ about the origin (the pivot)."""
+
+    links: int = 1
+
+    @property
+    def limit(self) -> float:
+        """The largest rotation the motion is defined for [rad]."""
+        return math.pi / 2
+
+    def states(self, theta: float) -> tuple[LinkState, ...]:
+        """The link at θ."""
+        return (LinkState(0.0, 0.0, 0.0, 0.0, theta, 0.0, 0.0, 1.0),)
+
+
+@dataclass(frozen=True)
+class TwoBlock:
+    """Two links: the lower turns by θ about the origin, the upper hangs from the hinge
+    (hinge_x, hinge_z) and its top point (top_x, top_z) keeps its x (held) and may rise."""
+
+    hinge_x: float
+    hinge_z: float
+    top_x: float
+    top_z: float
+    links: int = 2
+
+    @property
+    def chord(self) -> tuple[float, float]:
+        """(L, δ): length and direction of the upper link's rest chord from H to T."""
+        a, c = self.top_x - self.hinge_x, self.top_z - self.hinge_z
+        return math.hypot(a, c), math.atan2(c, a)
+
+    @property
+    def limit(self) -> float:
+        """The rotation at which the upper link's chord lies flat (the chain cannot follow
+        further with its top held): the lower link's hinge then is L from the top's line."""
+        length, _ = self.chord
+        lo, hi = 0.0, math.pi / 2
+        for _ in range(80):
+            mid = 0.5 * (lo + hi)
+            cx = self.hinge_x * math.cos(mid) - self.hinge_z * math.sin(mid)
+            if abs(self.top_x - cx) <= length:
+                lo = mid
+            else:
+                hi = mid
+        return lo
+
+    def states(self, theta: float) -> tuple[LinkState, LinkState]:
+        """The two links at θ."""
+        c, s = math.cos(theta), math.sin(theta)
+        hx = self.hinge_x * c - self.hinge_z * s
+        hz = self.hinge_x * s + self.hinge_z * c
+        dhx, dhz = -hz, hx
+        length, delta = self.chord
+        q = max(-1.0, min(1.0, (self.top_x - hx) / length))
+        psi = delta - math.acos(q)
+        denom = length * math.sin(psi - delta)
+        dpsi = dhx / denom if denom != 0.0 else math.inf
+        lower = LinkState(0.0, 0.0, 0.0, 0.0, theta, 0.0, 0.0, 1.0)
+        upper = LinkState(self.hinge_x, self.hinge_z, hx, hz, -psi, dhx, dhz, -dpsi)
+        return lower, upper
+
+
+Motion = Rotation | TwoBlock

@@ -1,0 +1,224 @@
+"""A mechanism opening to one side, as both analyses read it: bodies, loads, thrusts and
+restrainers on the links of one motion, in the side frame (rockcli.mechanisms.chain).
+
+From the one configuration function (the motion's link states) come, at any rotation θ:
+
+- the virtual-work sums of the Circolare (Circ. 7/2019 §C8.7.1.1; Circ. 617/2009 §C8A.4.1),
+  written per unit virtual rotation δθ with the virtual displacements δx = −∂X/∂θ (outward,
+  away from the wall in the side frame) and δy = ∂Z/∂θ (up):
+  G = Σ_bearing P·δy (the weights' work against the opening), H = Σ_moving P·δx (the work of
+  a unit horizontal load multiplier), T = Σ F_open·δx (the thrusts pushing the mechanism open),
+  and the restrainers' F·δx; in equilibrium α(θ) = (G − T + Σ F_k δx_k) / H — at θ = 0 the
+  Circolare's α0, along θ its capacity curve by finite rotations (§C8A.4.2.3);
+- M* and e* from the δx of the masses at θ = 0 (Circ. 7/2019 Eq. C8.7.1.2–3; Circ. 617/2009
+  Eq. C8A.4.2–3), each body lumped at its centroid or spread over its section;
+- the control point's displacement d_k(θ) (the bodies' centre of mass) for d*;
+- the equation of motion's M(θ), V(θ), Γ(θ) (rockcli.mechanisms.motion).
+
+Pure and silent: only :mod:`math` and the package's own modules.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+from rockcli.mechanics import Restrainer
+from rockcli.mechanisms.bodies import Body
+from rockcli.mechanisms.chain import LinkState, Motion
+
+#: Bisection steps of an inversion in θ (θ resolved to π/2·2⁻⁶⁰).
+INVERSION_STEPS = 60
+
+
+@dataclass(frozen=True)
+class Attached:
+    """A point of a link: ``link`` index, rest position (x, z) in the side frame [m]."""
+
+    link: int
+    x: float
+    z: float
+
+
+@dataclass(frozen=True)
+class SideLoad:
+    """A weight on a link (a floor, the roof, an overburden) in the side frame.
+
+    Attributes:
+        name: label. weight: [N]. at: its point. bears: its weight rests on the mechanism
+        (it is lifted). moves: its mass follows the mechanism horizontally (it pushes).
+    """
+
+    name: str
+    weight: float
+    at: Attached
+    bears: bool = True
+    moves: bool = True
+
+
+@dataclass(frozen=True)
+class SideThrust:
+    """A horizontal force independent of the earthquake on a link.
+
+    Attributes:
+        name: label. force: its magnitude [N]. opens: +1 when it pushes the mechanism open
+        (away from the wall in the side frame), −1 when it pushes it shut. at: its point.
+    """
+
+    name: str
+    force: float
+    opens: int
+    at: Attached
+
+
+@dataclass(frozen=True)
+class ChainPoint:
+    """A restrainer's attachment point on a link of a mechanism: elongation, moment and the
+    inverse, from the motion (the general form of rockcli.mechanisms.block.Polar)."""
+
+    side: ChainSide
+    at: Attached
+
+    def elongation(self, theta: float) -> float:
+        """The point's displacement away from the wall since rest, X(0) − X(θ) [m]."""
+        return self.side.place(self.at, 0.0)[0] - self.side.place(self.at, theta)[0]
+
+    def moment(self, force: float, theta: float) -> float:
+        """The virtual work of a horizontal force F [N] pulling the point back, per unit δθ:
+        F·δx [N·m] (the block's F·r·cos(φ − θ))."""
+        return -force * self.side.place(self.at, theta)[2]
+
+    def rotation_at(self, elongation: float) -> float:
+        """The rotation at which the elongation reaches ``elongation`` [rad] (inf: never
+        within the motion's range)."""
+        if not math.isfinite(elongation):
+            return math.inf
+        return self.side.invert(self.elongation, elongation)
+
+
+@dataclass(frozen=True)
+class ChainSide:
+    """One mechanism opening to one side (the code check's and the equation of motion's view).
+
+    Attributes:
+        motion: how its links move (chain.Rotation, chain.TwoBlock).
+        bodies: (link, body) with the body in the side frame.
+        loads, thrusts: on the links, in the side frame.
+        restrainers: the members, in the model's order; ``anchors`` their points.
+        g: gravity [m/s²].
+    """
+
+    motion: Motion
+    bodies: tuple[tuple[int, Body], ...]
+    g: float
+    loads: tuple[SideLoad, ...] = ()
+    thrusts: tuple[SideThrust, ...] = ()
+    restrainers: tuple[Restrainer, ...] = ()
+    anchors: tuple[Attached, ...] = field(default_factory=tuple)
+
+    @property
+    def limit(self) -> float:
+        """The largest rotation the motion is defined for [rad]."""
+        return self.motion.limit
+
+    def states(self, theta: float) -> tuple[LinkState, ...]:
+        """Every link at θ."""
+        return self.motion.states(theta)
+
+    def place(self, at: Attached, theta: float) -> tuple[float, float, float, float]:
+        """(X, Z, dX/dθ, dZ/dθ) of a point at θ."""
+        return self.states(theta)[at.link].place(at.x, at.z)
+
+    def placement(self, index: int) -> ChainPoint:
+        """Restrainer ``index``'s point."""
+        return ChainPoint(self, self.anchors[index])
+
+    def work_terms(self, theta: float) -> tuple[float, float, float]:
+        """(G, T, H) at θ [N·m] per unit virtual rotation (module docstring)."""
+        states = self.states(theta)
+        g = h = t = 0.0
+        for link, body in self.bodies:
+            _, _, dx, dz = states[link].place(body.x, body.z)
+            g += body.weight * dz
+            h -= body.weight * dx
+        for ld in self.loads:
+            _, _, dx, dz = states[ld.at.link].place(ld.at.x, ld.at.z)
+            if ld.bears:
+                g += ld.weight * dz
+            if ld.moves:
+                h -= ld.weight * dx
+        for th in self.thrusts:
+            dx = states[th.at.link].place(th.at.x, th.at.z)[2]
+            t -= th.opens * th.force * dx
+        return g, t, h
+
+    def masses_at_rest(self) -> list[tuple[float, float, float]]:
+        """(P, δx, P·δx² spread) of every moving weight at θ = 0: the bodies (δx of the
+        centroid; the spread adds P·φ′²·var_z, ∫(z − z_G)² dm of a rotation) and the loads
+        that move (point masses)."""
+        states = self.states(0.0)
+        out = []
+        for link, body in self.bodies:
+            dx = -states[link].place(body.x, body.z)[2]
+            spread = body.weight * states[link].dphi ** 2 * body.var_z
+            out.append((body.weight, dx, spread))
+        for ld in self.loads:
+            if ld.moves:
+                out.append((ld.weight, -states[ld.at.link].place(ld.at.x, ld.at.z)[2], 0.0))
+        return out
+
+    def first_moments(self, distributed: bool) -> tuple[float, float]:
+        """(Σ P δx, Σ P δx²) per unit virtual rotation [N·m, N·m²] (Circ. 7/2019 Eq.
+        C8.7.1.2): each body lumped at its centroid, or spread over its section."""
+        first = second = 0.0
+        for p, dx, spread in self.masses_at_rest():
+            first += p * dx
+            second += p * dx * dx + (spread if distributed else 0.0)
+        return first, second
+
+    @property
+    def moving_weight(self) -> float:
+        """Σ P of the weights that move [N]."""
+        return sum(p for p, _, _ in self.masses_at_rest())
+
+    def _centre(self, theta: float) -> tuple[float, float]:
+        """(X, dX/dθ) of the bodies' centre of mass (the control point)."""
+        states = self.states(theta)
+        total = x = dx = 0.0
+        for link, body in self.bodies:
+            bx, _, bdx, _ = states[link].place(body.x, body.z)
+            total += body.weight
+            x += body.weight * bx
+            dx += body.weight * bdx
+        return x / total, dx / total
+
+    @property
+    def control_delta(self) -> float:
+        """δx_k of the control point per unit rotation at rest [m]."""
+        return -self._centre(0.0)[1]
+
+    def control_displacement(self, theta: float) -> float:
+        """d_k(θ): the control point's displacement away from the wall [m]."""
+        return self._centre(0.0)[0] - self._centre(theta)[0]
+
+    def rotation_at(self, d_k: float) -> float:
+        """The rotation at which the control point has moved d_k [m] (inverse of
+        :meth:`control_displacement`, by bisection within the motion's range)."""
+        return self.invert(self.control_displacement, d_k, clamp=True)
+
+    def invert(self, f, value: float, clamp: bool = False) -> float:
+        """The θ in [0, limit] where the increasing f(θ) reaches ``value`` (bisection); inf
+        (or the limit, with ``clamp``) when it never does."""
+        hi = self.limit
+        if value <= 0.0:
+            return 0.0
+        if f(hi) < value:
+            return hi if clamp else math.inf
+        lo = 0.0
+        for _ in range(INVERSION_STEPS):
+            mid = 0.5 * (lo + hi)
+            if f(mid) < value:
+                lo = mid
+            else:
+                hi = mid
+        return 0.5 * (lo + hi)
