@@ -65,6 +65,16 @@ def _site(value: str | None, record_path: str | None) -> tuple[float, float] | N
     help=f"Exit with code {EXIT_GATE} when the ULS verdict is not satisfied, or not evaluated "
     "(a gate cannot pass on a check that was not made).",
 )
+@click.option(
+    "--mechanism",
+    "mechanism_name",
+    default=None,
+    metavar="NAME",
+    help="Show this mechanism of the catalogue in detail (default: the governing one).",
+)
+@click.option(
+    "--all", "all_mechanisms", is_flag=True, help="Show every mechanism of the catalogue."
+)
 @plot_option
 @force_option
 @output_format
@@ -80,13 +90,14 @@ def kinematic(
     site,
     grid_file,
     fail_on_uls,
+    mechanism_name,
+    all_mechanisms,
     plot_path,
     force,
     output,
 ):
     """NTC kinematic analysis of MODEL: α0, e*, a0*, capacity curve, DLS and ULS checks."""
-    from rockcli.report.kinematic import kinematic_document, kinematic_report
-    from rockcli.report.table import show
+    from rockcli.report.kinematic import kinematic_document
     from rockcli.studies.kinematic import run_kinematic
 
     check_record_options(record_path, record_format, dt, units, scale, pga)
@@ -100,15 +111,36 @@ def kinematic(
     out = run_kinematic(
         model_path, edition=edition, record=record, site=lon_lat, grid_file=grid_file
     )
-    doc = kinematic_document(out.name, out.result, out.warnings)
+    doc = kinematic_document(out.name, out.result, out.warnings, mechanism_name)
     if plot_path:
         from rockcli.report.plots import plot_kinematic
 
         plot_kinematic(doc, plot_path)
         announce_written(plot_path)
-    show(doc, output, kinematic_report)
+    show_catalogue(doc, out, output, all_mechanisms)
     if fail_on_uls:
         gate_uls(doc["verdict"]["ULS"])
+
+
+def show_catalogue(doc, out, output: str, all_mechanisms: bool) -> None:
+    """JSON, or the summary of the catalogue and the detail of one mechanism (every one with
+    ``all_mechanisms``) in the terminal."""
+    from rockcli.report.kinematic import catalogue_reports, kinematic_document, kinematic_report
+    from rockcli.report.table import console_for, render, show
+
+    if output == "json" or len(doc.get("mechanisms", ())) < 2:
+        show(doc, output, kinematic_report)
+        return
+    reports = catalogue_reports(doc, all_mechanisms)
+    if all_mechanisms:
+        others = [m.name for m in out.result.catalogue if m.name != doc["mechanism"]]
+        reports += [
+            kinematic_report(kinematic_document(out.name, out.result, out.warnings, name))
+            for name in others
+        ]
+    console = console_for()
+    for report in reports:
+        render(report, console)
 
 
 def gate_uls(uls: bool | None) -> None:

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from typing import Any
+
 from dataclasses import dataclass, field
 from enum import StrEnum
 
@@ -104,6 +106,9 @@ class KinematicResult:
         alpha0_by_side: α0 towards each side, keys "1" (θ > 0) and "-1" (θ < 0): loads off the
             mid-plane and thrusts make them differ.
         restrainer_actions: how each restrainer entered the check, and its verification.
+        catalogue: every mechanism of the model with its own result, the governing one
+            first (rockcli.studies.catalogue.MechanismResult); this result is the governing
+            mechanism's. governing: its name.
     """
 
     edition: str
@@ -121,6 +126,8 @@ class KinematicResult:
     notes: tuple[str, ...] = field(default_factory=tuple)
     alpha0_by_side: dict[str, float] = field(default_factory=dict)
     restrainer_actions: tuple[RestrainerAction, ...] = ()
+    catalogue: tuple[Any, ...] = ()
+    governing: str | None = None
 
     def verdict(self) -> dict[str, bool | None]:
         """DLS and ULS satisfied? (None: not evaluated).

@@ -129,7 +129,37 @@ def to_block(model: Model) -> Block:
     """The rigid block with its restrainers, in SI floats (spec/rocking.md).
 
     The same model object asked twice in a row gives the same block (models are not changed
-    after validation)."""
+    after validation). A wall whose mechanisms are not the block's (rockcli.model.derive_wall)
+    is refused: the time history rocks the rectangular block only (InputError).
+    """
+    refuse_unrockable(model)
+    return block_of(model)
+
+
+def refuse_unrockable(model: Model) -> None:
+    """InputError unless the model's only mechanism is a rectangle overturning about its base
+    (a block, or a one-storey wall without a gable), the body the time history rocks."""
+    geometry = model.geometry
+    storeys = geometry.storeys or ()
+    plain = all(
+        m.type.value == "overturning" and m.hinge_height in (None, 0.0) for m in model.mechanisms
+    )
+    if len(storeys) <= 1 and geometry.gable_height is None and plain:
+        return
+    from rockcli.errors import InputError
+
+    raise InputError(
+        "the time history cannot yet rock this wall's mechanisms (a wall of several storeys, "
+        "a gable, or mechanisms other than the overturning of a one-storey wall about its base)",
+        where="mechanisms" if model.mechanisms else "geometry.storeys",
+        allowed="rock kinematic, which checks every mechanism of the catalogue; for a time "
+        "history, a model of one block or of one storey without a gable",
+    )
+
+
+def block_of(model: Model) -> Block:
+    """:func:`to_block` without the check of the mechanisms (the model's validation derives
+    the block's numbers of any model to check they are finite)."""
     global _last_block
     last = _last_block
     if last is not None and last[0] is model:

@@ -28,6 +28,7 @@ from rockcli.model.bounds import (
     MAX_MODULUS,
     MAX_REACH,
     MAX_STIFFNESS,
+    MAX_STOREYS,
     MAX_UNIT_WEIGHT,
     MAX_WEIGHT,
     MIN_ELONGATION,
@@ -45,6 +46,7 @@ from rockcli.model.ntc import Ntc
 from rockcli.model.physical import Building, Load, Position, Thrust, check_mass, check_points
 from rockcli.model.rules import choose_group, forbid, number, rule_error
 from rockcli.model.schema_base import Table
+from rockcli.model.wall import MechanismEntry, Masonry, ReturnWalls, Storey, check_mechanisms
 from rockcli.units import DEFAULT_GRAVITY
 
 #: Default steel modulus of a tie-rod [Pa] (paper Table 2: E = 210 GPa).
@@ -169,19 +171,46 @@ class Geometry(Table):
         ge=0,
         le=MAX_LENGTH,
     )
+    storeys: tuple[Storey, ...] | None = Field(
+        None,
+        min_length=1,
+        max_length=MAX_STOREYS,
+        description="A wall of several storeys, bottom up (instead of thickness + height or "
+        "R + alpha): each with height and thickness [m], the outer face plumb",
+    )
+    gable_height: float | None = number(
+        "A triangular gable of base width on top of the last storey, of its thickness [m]",
+        ge=MIN_LENGTH,
+        le=MAX_LENGTH,
+    )
 
     @model_validator(mode="after")
     def _one_form(self) -> Geometry:
-        """Exactly one of (R, alpha) and (thickness, height)."""
-        allowed = "either R + alpha, or thickness + height"
+        """Exactly one of (R, alpha), (thickness, height) and storeys."""
+        allowed = "either R + alpha, thickness + height, or [[geometry.storeys]]"
         values = self.__dict__
-        if choose_group(values, [("R", "alpha"), ("thickness", "height")], allowed) is None:
+        groups = [("R", "alpha"), ("thickness", "height"), ("storeys",)]
+        if choose_group(values, groups, allowed) is None:
             raise rule_error(None, "missing the block's dimensions", allowed)
+        if self.gable_height is not None and self.width is None:
+            raise rule_error("width", "required with gable_height (the gable's base)",
+                             LENGTH_ALLOWED)  # fmt: skip
         return self
 
     @property
+    def storey_list(self) -> tuple[Storey, ...]:
+        """The storeys, bottom up: the given ones, or the block as one storey."""
+        if self.storeys is not None:
+            return self.storeys
+        b, h = self.half_sizes
+        return (Storey(height=2.0 * h, thickness=2.0 * b),)
+
+    @property
     def half_sizes(self) -> tuple[float, float]:
-        """(b, h): half-thickness and half-height [m] (b = R sin α, h = R cos α)."""
+        """(b, h): half-thickness and half-height [m] (b = R sin α, h = R cos α); a wall of
+        storeys: half the ground storey's thickness and half the storeys' height."""
+        if self.storeys is not None:
+            return self.storeys[0].thickness / 2.0, sum(s.height for s in self.storeys) / 2.0
         if self.thickness is not None and self.height is not None:
             return self.thickness / 2.0, self.height / 2.0
         assert self.R is not None and self.alpha is not None
@@ -694,6 +723,13 @@ class Model(Table):
         Building.model_validate({}), description="Where the element stands in the building"
     )
     ntc: Ntc | None = Field(None, description="Settings of the NTC kinematic check")
+    return_walls: ReturnWalls | None = Field(
+        None, description="The return walls, where a wedge can form"
+    )
+    masonry: Masonry | None = Field(None, description="The masonry's strength")
+    mechanisms: tuple[MechanismEntry, ...] = Field(
+        (), description="The local mechanisms to check; none: overturning about the base"
+    )
 
     @model_validator(mode="after")
     def _cross_table_rules(self) -> Model:
@@ -708,7 +744,9 @@ class Model(Table):
             "thrusts": self.thrusts,
         }
         check_mass(physical, self.mass is not None)
-        check_points(physical, 2.0 * b, 2.0 * h, CONTAINMENT_RTOL)
+        top = 2.0 * h + (self.geometry.gable_height or 0.0)
+        check_points(physical, 2.0 * b, top, CONTAINMENT_RTOL)
+        check_mechanisms(self)
         return self
 
     def _check_width(self) -> None:

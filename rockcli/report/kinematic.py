@@ -48,9 +48,66 @@ def check_document(c: Check, edition: str) -> dict[str, Any]:
 
 
 def kinematic_document(
+    name: str,
+    result: KinematicResult,
+    warnings: tuple[str, ...] = (),
+    mechanism: str | None = None,
+) -> dict[str, Any]:
+    """The whole `rock kinematic --format json` document (schema 1): the top-level keys are the
+    governing mechanism's (or ``mechanism``'s, by name), ``mechanisms`` lists every one of the
+    catalogue, the governing first, and ``governing`` names it."""
+    chosen = chosen_result(result, mechanism)
+    doc = mechanism_document(name, chosen, warnings)
+    if result.catalogue:
+        doc["mechanisms"] = [catalogue_entry(m) for m in result.catalogue]
+        doc["governing"] = result.governing
+        doc["mechanism"] = mechanism or result.governing
+    return doc
+
+
+def chosen_result(result: KinematicResult, mechanism: str | None) -> KinematicResult:
+    """The result of the mechanism named (InputError naming the catalogue when unknown)."""
+    if mechanism is None:
+        return result
+    for m in result.catalogue:
+        if m.name == mechanism:
+            return m.result
+    from rockcli.errors import InputError
+
+    raise InputError(
+        "no such mechanism",
+        where="--mechanism",
+        value=mechanism,
+        allowed="one of: " + "; ".join(f"'{m.name}'" for m in result.catalogue),
+    )
+
+
+def catalogue_entry(m: Any) -> dict[str, Any]:
+    """One mechanism of the catalogue: what it is, its oscillator, its checks and ζ_E."""
+    r = m.result
+    return {
+        "name": m.name,
+        "type": m.type,
+        "hinge_height": m.hinge_height,
+        "storey": m.storey,
+        "side": r.side,
+        "alpha0": r.alpha0,
+        "alpha0_by_side": r.alpha0_by_side,
+        "M_star": m.M_star,
+        "e_star": r.e_star,
+        "a0_star": r.a0_star,
+        "d0_star": r.d0_star,
+        "zeta": {"DLS": m.zeta_dls, "ULS": m.zeta_uls},
+        "checks": [check_document(c, r.edition) for c in r.checks],
+        "verdict": r.verdict(),
+        "notes": list(r.notes),
+    }
+
+
+def mechanism_document(
     name: str, result: KinematicResult, warnings: tuple[str, ...] = ()
 ) -> dict[str, Any]:
-    """The whole `rock kinematic --format json` document (schema 1)."""
+    """The document of one mechanism's result (today's top-level keys)."""
     return {
         "schema": SCHEMA,
         "rock_version": __version__,
@@ -188,6 +245,56 @@ QUANTITIES = {
 EDITION_TEXT = {"2009": "NTC 2008 + Circ. 617/2009", "2019": "NTC 2018 + Circ. 7/2019"}
 
 
+SUMMARY_COLUMNS = (
+    Column("name", "mechanism", align="left"),
+    Column("hinge_height", "hinge", "m", "{:.3g}"),
+    Column("alpha0", "α0", "", "{:.4f}"),
+    Column("M_star_t", "M*", "t", "{:.4g}"),
+    Column("e_star", "e*", "", "{:.3f}"),
+    Column("a0_star", "a0*", "m/s²", "{:.3f}"),
+    Column("d0_star", "d0*", "m", "{:.4f}"),
+    Column("zeta_dls", "ζ_E DLS", "", "{:.3f}", short="ζ DLS"),
+    Column("zeta_uls", "ζ_E ULS", "", "{:.3f}", short="ζ ULS"),
+    Column("verdict_text", "verdict", align="left"),
+)
+
+
+def summary_table(doc: dict[str, Any]) -> Table:
+    """The catalogue in one table, the governing mechanism first."""
+    rows = tuple(
+        {
+            **m,
+            "M_star_t": m["M_star"] / KILO,
+            "zeta_dls": m["zeta"]["DLS"],
+            "zeta_uls": m["zeta"]["ULS"],
+            "verdict_text": short_verdict(m["verdict"]),
+        }
+        for m in doc["mechanisms"]
+    )
+    return Table("Mechanisms (governing first)", SUMMARY_COLUMNS, rows)
+
+
+def short_verdict(verdict: dict[str, bool | None]) -> str:
+    """'DLS ok, ULS fails' in a few words."""
+    word = {True: "ok", False: "fails", None: "n/e"}
+    return ", ".join(f"{ls} {word[verdict[ls]]}" for ls in ("DLS", "ULS"))
+
+
+def catalogue_reports(doc: dict[str, Any], all_mechanisms: bool) -> list[Report]:
+    """The summary, then the detail of the mechanism shown (or of every one, ``all``)."""
+    if len(doc.get("mechanisms", ())) < 2:
+        return [kinematic_report(doc)]
+    first = kinematic_report(doc)
+    governing = f"governing mechanism: {doc['governing']}"
+    shown = f"{governing}; detail below: {doc['mechanism']}"
+    head = Report(
+        title=f"rock kinematic — {doc['model']['name']}",
+        tables=(summary_table(doc),),
+        notes=(shown, "ζ_E = capacity/demand of the deciding checks (< 1: not satisfied)"),
+    )
+    return [head, first]
+
+
 def kinematic_report(doc: dict[str, Any]) -> Report:
     """The terminal report of a kinematic document."""
     edition = EDITION_TEXT[doc["edition"]]
@@ -233,8 +340,11 @@ def kinematic_report(doc: dict[str, Any]) -> Report:
             if c["note"]
         ),
     ]
+    title = f"rock kinematic — {doc['model']['name']}"
+    if "mechanism" in doc and len(doc.get("mechanisms", ())) > 1:
+        title = f"{title}: {doc['mechanism']}"
     return Report(
-        title=f"rock kinematic — {doc['model']['name']}",
+        title=title,
         tables=tables,
         notes=tuple(notes),
         warnings=tuple(doc.get("warnings", ())),

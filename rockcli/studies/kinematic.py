@@ -222,7 +222,20 @@ def analyse(
     cap = governing_capacity(block, settings)
     b = settings.building
     pos = position(b.Z, b.H, b.N, b.T1, b.gamma, b.psi, b.damping)
-    notes = list(pos.notes)
+    by_side = {str(s): alpha0(mechanism(block, settings, s)) for s in (1, -1)}
+    return analyse_capacity(cap, settings, dem, pos, by_side)
+
+
+def analyse_capacity(
+    cap: Capacity,
+    settings: NtcSettings,
+    dem: dict[str, LimitStateDemand],
+    pos: Position,
+    alpha0_by_side: dict[str, float],
+    extra_notes: tuple[str, ...] = (),
+) -> KinematicResult:
+    """The checks of the settings' edition on one mechanism's capacity at its position."""
+    notes = [*pos.notes, *extra_notes]
     if settings.defaults:
         notes.append("defaults (not in the model's [ntc]): " + ", ".join(settings.defaults))
     notes.append(
@@ -269,7 +282,7 @@ def analyse(
             for ls, d in dem.items()
         },
         notes=tuple(notes),
-        alpha0_by_side={str(s): alpha0(mechanism(block, settings, s)) for s in (1, -1)},
+        alpha0_by_side=alpha0_by_side,
         restrainer_actions=actions,
     )
 
@@ -335,13 +348,47 @@ def kinematic_model(
     record suite's target, rockcli.studies.suite.compare).
     """
     from rockcli.model.derive import to_block
+    from rockcli.model.derive_wall import is_wall
 
     settings = check_settings(model, edition)
+    if is_wall(model):
+        return wall_model(model, settings, record, site, grid_file, spectrum, demand_of)
     block = to_block(model)
     if demand_of is not None:
-        return analyse(block, settings, demand_of(settings, block.g))
-    dem = demands(settings, block.g, record, site, grid_file, spectrum)
-    return analyse(block, settings, dem)
+        dem = demand_of(settings, block.g)
+    else:
+        dem = demands(settings, block.g, record, site, grid_file, spectrum)
+    result = analyse(block, settings, dem)
+    return with_block_entry(result, block, settings)
+
+
+def with_block_entry(result: KinematicResult, block: Block, settings: NtcSettings):
+    """Today's block as the catalogue's one mechanism: overturning of the whole wall."""
+    from rockcli.codecheck.kinematic import participating_mass
+    from rockcli.studies.catalogue import MechanismResult
+
+    m_star = participating_mass(mechanism(block, settings, result.side))
+    name = "overturning, whole wall"
+    entry = MechanismResult(name, "overturning", 0.0, None, m_star, result)
+    return replace(result, catalogue=(entry,), governing=name)
+
+
+def wall_model(model, settings, record, site, grid_file, spectrum, demand_of) -> KinematicResult:
+    """The catalogue of a wall: every mechanism, the governing one's result with the rest."""
+    from rockcli.model.derive import free_side
+    from rockcli.model.derive_wall import to_wall
+    from rockcli.model.schema import Sides
+    from rockcli.studies.catalogue import analyse_wall
+
+    wall = to_wall(model)
+    if demand_of is not None:
+        dem = demand_of(settings, wall.g)
+    else:
+        dem = demands(settings, wall.g, record, site, grid_file, spectrum)
+    motion = model.motion
+    free = free_side(motion.stopped) if motion.sides is Sides.ONE else None
+    results = analyse_wall(wall, settings, dem, free)
+    return replace(results[0].result, catalogue=results, governing=results[0].name)
 
 
 def check_settings(model: Model, edition: str | None = None) -> NtcSettings:

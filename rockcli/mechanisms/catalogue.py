@@ -1,0 +1,302 @@
+"""The catalogue: every local mechanism of a wall, as one geometry per side.
+
+From the wall (rockcli.mechanisms.wall, its frame: x inward from the outer face, z up from the
+base) each ``[[mechanisms]]`` entry becomes, for each side it can open to, a
+:class:`rockcli.mechanisms.side.ChainSide` in the side frame of its base hinge:
+
+- **overturning** about a storey's base (Circ. 7/2019 §C8.7.1 and its commentary's
+  "ribaltamento semplice"; Circ. 617/2009 §C8A.4): the storeys above the hinge, the gable,
+  and the loads, thrusts and restrainers above the hinge, one rigid body turning about the
+  outer edge (side 1) or the inner edge (side −1) of the hinge section;
+- **wedge** ("ribaltamento composto"): the whole wall with a triangular wedge of each return
+  wall, bounded by a crack from the base corner at ``angle`` from the vertical, turning with
+  the façade about its outer base edge (side 1 only);
+- **vertical flexure** ("flessione verticale"): a storey as two blocks — the lower about the
+  outer edge of the storey's base, an intermediate hinge on the inner face, the upper about
+  the outer face at the top, which is held horizontally and free to rise (side −1 mirrors it)
+  (Doherty et al. 2002, EESD 31:833–850; Sorrentino, Masiani & Griffith 2008);
+- **gable** ("ribaltamento del timpano"): the triangular gable about its base.
+
+A load, thrust or restrainer exactly at a hinge's height belongs to the part below it. With a
+masonry strength f_m each hinge moves inward from its edge by half the depth a = N/(f_m·width)
+of the stress block that carries the weight N above it (*arretramento della cerniera*).
+
+Pure and silent: only :mod:`math` and the package's own modules.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable
+from dataclasses import dataclass
+
+from rockcli.mechanisms.bodies import Body, gable, prism, triangle
+from rockcli.mechanisms.chain import Rotation, TwoBlock
+from rockcli.mechanisms.side import Attached, ChainSide, SideLoad, SideThrust
+from rockcli.mechanisms.wall import OPTIMAL, MechanismSpec, MechanismType, Wall
+
+#: Relative tolerance of "at a hinge's height" (heights typed in the file and sums of storey
+#: heights agree to far better than this).
+SAME_HEIGHT = 1e-9
+
+
+class CrushingError(ValueError):
+    """The stress block at a hinge is deeper than the section: the wall crushes first."""
+
+    def __init__(self, hinge: str, depth: float, thickness: float):
+        super().__init__(hinge)
+        self.hinge, self.depth, self.thickness = hinge, depth, thickness
+
+
+def same_height(a: float, b: float) -> bool:
+    """True when two heights are the same to SAME_HEIGHT (relative, and 1e-9 m absolute)."""
+    return math.isclose(a, b, rel_tol=SAME_HEIGHT, abs_tol=SAME_HEIGHT)
+
+
+def above(z: float, hinge: float) -> bool:
+    """True when a point at height z is above the hinge (one at the hinge is below it)."""
+    return z > hinge and not same_height(z, hinge)
+
+
+def storey_bodies(wall: Wall, from_storey: int) -> list[Body]:
+    """The storeys from index ``from_storey`` (0-based) up, and the gable, in the wall frame."""
+    bases = wall.storey_bases()
+    out = [
+        prism(f"storey {i + 1}", 0.0, s.thickness, bases[i], bases[i] + s.height, wall.width,
+              wall.unit_weight, wall.g)
+        for i, s in enumerate(wall.storeys) if i >= from_storey
+    ]  # fmt: skip
+    if wall.gable_height is not None:
+        out.append(gable_body(wall))
+    return out
+
+
+def gable_body(wall: Wall) -> Body:
+    """The gable: a triangle of base ``width`` on the last storey, of its thickness."""
+    t = wall.storeys[-1].thickness
+    return gable("gable", t, wall.height, wall.gable_height or 0.0, wall.width,
+                 wall.unit_weight, wall.g)  # fmt: skip
+
+
+def wedge_body(wall: Wall, angle: float, sides: int) -> Body:
+    """The return walls' wedges: a triangle from the base corner at the façade's inner face
+    (the ground storey's), up the wall's height, opening at ``angle`` from the vertical
+    (h·tan β wide at the top), of the return walls' thickness times ``sides``."""
+    t, h = wall.storeys[0].thickness, wall.height
+    depth = (wall.return_wall_thickness or 0.0) * sides
+    name = "wedge (both return walls)" if sides == 2 else "wedge (one return wall)"
+    return triangle(name, ((t, 0.0), (t, h), (t + h * math.tan(angle), h)), depth,
+                    wall.unit_weight, wall.g)  # fmt: skip
+
+
+@dataclass(frozen=True)
+class Frame:
+    """The side frame of a pivot at (x0, z0) of the wall: x into the wall from it, z up."""
+
+    x0: float
+    z0: float
+    side: int
+
+    def x(self, x: float) -> float:
+        """x in the side frame."""
+        return (x - self.x0) if self.side > 0 else (self.x0 - x)
+
+    def z(self, z: float) -> float:
+        """z in the side frame."""
+        return z - self.z0
+
+    def body(self, b: Body) -> Body:
+        """A body in the side frame."""
+        from dataclasses import replace
+
+        return replace(b, x=self.x(b.x), z=self.z(b.z))
+
+
+def stress_block(wall: Wall, weight: float) -> float:
+    """Depth a = N/(f_m·width) of the stress block carrying N [N] [m] (0 without f_m)."""
+    return 0.0 if wall.f_m is None else weight / (wall.f_m * wall.width)
+
+
+def weight_above(wall: Wall, bodies: list[Body], hinge: float) -> float:
+    """The weight bearing on a hinge: the bodies given and the bearing loads above it [N]."""
+    loads = sum(ld.weight for ld in wall.loads if ld.bears and above(ld.z, hinge))
+    return sum(b.weight for b in bodies) + loads
+
+
+def set_back(wall: Wall, bodies: list[Body], hinge: float, thickness: float, name: str) -> float:
+    """How far the hinge moves in from the section's edge: half the stress block [m]."""
+    return half_block(wall, weight_above(wall, bodies, hinge), thickness, name)
+
+
+def rigid(wall: Wall, bodies: list[Body], hinge: float, thickness: float, side: int,
+          name: str) -> ChainSide:  # fmt: skip
+    """One rigid body (``bodies`` together) about the edge of a hinge section at ``hinge`` of
+    ``thickness``, with everything above the hinge on it."""
+    a = set_back(wall, bodies, hinge, thickness, name)
+    frame = Frame(a if side > 0 else thickness - a, hinge, side)
+
+    def on(z: float) -> int | None:
+        return 0 if above(z, hinge) else None
+
+    return attach(wall, frame, Rotation(), [(0, frame.body(b)) for b in bodies], on)
+
+
+def attach(wall: Wall, frame: Frame, motion, bodies, link_of: Callable[[float], int | None]):
+    """The mechanism with the wall's loads, thrusts and restrainers on the link ``link_of``
+    their height (None: not on the mechanism)."""
+    loads, thrusts, members, anchors = [], [], [], []
+    for ld in wall.loads:
+        if (k := link_of(ld.z)) is not None:
+            at = Attached(k, frame.x(ld.x), frame.z(ld.z))
+            loads.append(SideLoad(ld.name, ld.weight, at, ld.bears, ld.moves))
+    for th in wall.thrusts:
+        if (k := link_of(th.z)) is not None:
+            at = Attached(k, frame.x(th.x), frame.z(th.z))
+            thrusts.append(SideThrust(th.name, th.force, th.direction * frame.side, at))
+    for rs in wall.restrainers:
+        if (k := link_of(rs.z)) is not None:
+            members.append(rs.member)
+            anchors.append(Attached(k, frame.x(rs.x), frame.z(rs.z)))
+    return ChainSide(motion=motion, bodies=tuple(bodies), g=wall.g, loads=tuple(loads),
+                     thrusts=tuple(thrusts), restrainers=tuple(members),
+                     anchors=tuple(anchors))  # fmt: skip
+
+
+def overturning(wall: Wall, hinge: float, side: int, name: str) -> ChainSide:
+    """The part of the wall above a storey's base at ``hinge`` [m], about that section."""
+    k = wall.storey_bases().index(next(b for b in wall.storey_bases() if same_height(b, hinge)))
+    return rigid(wall, storey_bodies(wall, k), hinge, wall.storeys[k].thickness, side, name)
+
+
+def wedge(wall: Wall, angle: float, sides: int, name: str) -> ChainSide:
+    """The whole wall and its return walls' wedge about the façade's outer base edge."""
+    bodies = [*storey_bodies(wall, 0), wedge_body(wall, angle, sides)]
+    return rigid(wall, bodies, 0.0, wall.storeys[0].thickness, 1, name)
+
+
+def gable_mechanism(wall: Wall, side: int, name: str) -> ChainSide:
+    """The gable about its base on the last storey."""
+    return rigid(wall, [gable_body(wall)], wall.height, wall.storeys[-1].thickness, side, name)
+
+
+def flexure(wall: Wall, storey: int, hinge: float, side: int, name: str) -> ChainSide:
+    """Vertical flexure of ``storey`` (1 = ground) with the intermediate hinge at ``hinge``
+    [m above the wall's base]: two blocks between the storey's base and its held top."""
+    base = wall.storey_bases()[storey - 1]
+    s = wall.storeys[storey - 1]
+    top = base + s.height
+    lower = prism("lower block", 0.0, s.thickness, base, hinge, wall.width, wall.unit_weight,
+                  wall.g)  # fmt: skip
+    upper = prism("upper block", 0.0, s.thickness, hinge, top, wall.width, wall.unit_weight,
+                  wall.g)  # fmt: skip
+    on_upper = bearing(wall, hinge, top)
+    on_lower = bearing(wall, base, hinge)
+    a_top = half_block(wall, bearing(wall, top, top, at_top=True), s.thickness, name)
+    a_mid = half_block(wall, upper.weight + on_upper, s.thickness, name)
+    a_base = half_block(wall, lower.weight + upper.weight + on_upper + on_lower, s.thickness,
+                        name)  # fmt: skip
+    outer = side > 0
+    frame = Frame(a_base if outer else s.thickness - a_base, base, side)
+    mid_x = s.thickness - a_mid if outer else a_mid
+    top_x = a_top if outer else s.thickness - a_top
+    motion = TwoBlock(frame.x(mid_x), frame.z(hinge), frame.x(top_x), frame.z(top))
+
+    def link_of(z: float) -> int | None:
+        if not above(z, base) or above(z, top):
+            return None
+        return 1 if above(z, hinge) else 0
+
+    return attach(wall, frame, motion, [(0, frame.body(lower)), (1, frame.body(upper))], link_of)
+
+
+def bearing(wall: Wall, lo: float, hi: float, at_top: bool = False) -> float:
+    """The bearing loads above ``lo`` up to ``hi`` included [N] (``at_top``: only those at
+    ``hi``, a storey's overburden)."""
+    if at_top:
+        return sum(ld.weight for ld in wall.loads if ld.bears and same_height(ld.z, hi))
+    return sum(
+        ld.weight for ld in wall.loads if ld.bears and above(ld.z, lo) and not above(ld.z, hi)
+    )
+
+
+def half_block(wall: Wall, weight: float, thickness: float, name: str) -> float:
+    """Half the stress block carrying ``weight`` [N] on a section of ``thickness`` [m]."""
+    depth = stress_block(wall, weight)
+    if depth >= thickness:
+        raise CrushingError(name, depth, thickness)
+    return 0.5 * depth
+
+
+def restrained_top(wall: Wall, storey: int) -> bool:
+    """True when something holds the top of ``storey``: a floor (a load at its top) or a
+    restrainer there (vertical flexure needs it)."""
+    top = wall.storey_bases()[storey - 1] + wall.storeys[storey - 1].height
+    points = [ld.z for ld in wall.loads] + [r.z for r in wall.restrainers]
+    return any(same_height(z, top) for z in points)
+
+
+def sides_of(spec: MechanismSpec, one_sided: int | None) -> tuple[int, ...]:
+    """The sides a mechanism can open to: the wedge outward only; a one-sided wall its free
+    side; the others both."""
+    if spec.type is MechanismType.WEDGE:
+        return (1,)
+    return (one_sided,) if one_sided is not None else (1, -1)
+
+
+def hinge_of(spec: MechanismSpec, wall: Wall) -> float:
+    """The hinge's height above the wall's base [m]: overturning and flexure as given, the
+    wedge at the base, the gable on the last storey."""
+    if spec.type is MechanismType.GABLE:
+        return wall.height
+    if spec.type is MechanismType.WEDGE:
+        return 0.0
+    assert isinstance(spec.hinge_height, float)
+    return spec.hinge_height
+
+
+def build(wall: Wall, spec: MechanismSpec, side: int) -> ChainSide:
+    """The mechanism ``spec`` of the wall opening to ``side`` (flexure: hinge height resolved)."""
+    if spec.type is MechanismType.OVERTURNING:
+        return overturning(wall, hinge_of(spec, wall), side, spec.name)
+    if spec.type is MechanismType.WEDGE:
+        assert spec.angle is not None and spec.sides is not None
+        return wedge(wall, spec.angle, spec.sides, spec.name)
+    if spec.type is MechanismType.GABLE:
+        return gable_mechanism(wall, side, spec.name)
+    assert spec.storey is not None and isinstance(spec.hinge_height, float)
+    return flexure(wall, spec.storey, spec.hinge_height, side, spec.name)
+
+
+def flexure_range(wall: Wall, storey: int) -> tuple[float, float]:
+    """Where the optimal intermediate hinge is searched [m above the wall's base]: the
+    storey's height less, at each end, the larger of its thickness and a tenth of its height
+    (a block squatter than the wall is thick is not the slender block the chain assumes, and
+    a hinge at an end is no flexure: docs/interpretations.md)."""
+    base = wall.storey_bases()[storey - 1]
+    s = wall.storeys[storey - 1]
+    margin = max(s.thickness, 0.1 * s.height)
+    return base + margin, base + s.height - margin
+
+
+#: Points of the scan of the optimal hinge (then golden-section refinement).
+HINGE_SCAN = 101
+#: Golden-section iterations of the refinement (the bracket shrinks by 0.618 each).
+HINGE_REFINE = 60
+
+
+def optimal_hinge(lo: float, hi: float, alpha0: Callable[[float], float]) -> float:
+    """The hinge height in [lo, hi] that minimises ``alpha0``: the lowest of a uniform scan,
+    refined by golden-section search between its neighbours."""
+    zs = [lo + (hi - lo) * k / (HINGE_SCAN - 1) for k in range(HINGE_SCAN)]
+    values = [alpha0(z) for z in zs]
+    k = min(range(HINGE_SCAN), key=values.__getitem__)
+    a, b = zs[max(k - 1, 0)], zs[min(k + 1, HINGE_SCAN - 1)]
+    ratio = (math.sqrt(5.0) - 1.0) / 2.0
+    for _ in range(HINGE_REFINE):
+        c, d = b - ratio * (b - a), a + ratio * (b - a)
+        if alpha0(c) <= alpha0(d):
+            b = d
+        else:
+            a = c
+    best = 0.5 * (a + b)
+    return best if alpha0(best) <= values[k] else zs[k]

@@ -1,0 +1,167 @@
+"""From the validated model to the wall the mechanism catalogue reads (SI floats, one frame).
+
+The frame of rockcli.mechanisms.wall: x inward from the outer face at the base (a load's or
+restrainer's ``from_pivot``), z up from the wall's base (its ``height``). A model with
+``[[geometry.storeys]]`` or ``[[mechanisms]]`` is a wall; a model of one block without either
+keeps today's path (rockcli.model.derive.to_block).
+
+Pure: only :mod:`math`, the model and the mechanisms' data.
+"""
+
+from __future__ import annotations
+
+import math
+
+from rockcli.mechanisms.wall import (
+    OPTIMAL,
+    MechanismSpec,
+    MechanismType,
+    Storey,
+    Wall,
+    WallLoad,
+    WallRestrainer,
+    WallThrust,
+)
+from rockcli.model.derive import NEWTONS_PER_KILONEWTON, to_restrainer
+from rockcli.model.physical import Direction
+from rockcli.model.schema import Model, Position
+from rockcli.model.wall import EACH_FLOOR, MechanismEntry, MechanismKind, point_height
+
+
+def is_wall(model: Model) -> bool:
+    """True when the model describes a wall of storeys or lists mechanisms."""
+    return model.geometry.storeys is not None or bool(model.mechanisms)
+
+
+def to_wall(model: Model) -> Wall:
+    """The wall of the model, its loads, thrusts, restrainers and mechanisms (SI units)."""
+    storeys = tuple(Storey(s.height, s.thickness) for s in model.geometry.storey_list)
+    width = model.geometry.width
+    assert width is not None  # the schema requires it of a wall
+    wall = Wall(
+        storeys=storeys,
+        width=width,
+        unit_weight=unit_weight(model, storeys, width),
+        g=model.analysis.g,
+        gable_height=model.geometry.gable_height,
+        return_wall_thickness=None if model.return_walls is None else model.return_walls.thickness,
+        f_m=None if model.masonry is None else model.masonry.f_m,
+    )
+    from dataclasses import replace
+
+    wall = replace(
+        wall,
+        loads=tuple(wall_load(model, wall, i) for i in range(len(model.loads))),
+        thrusts=tuple(wall_thrust(model, wall, i) for i in range(len(model.thrusts))),
+        restrainers=tuple(wall_restrainer(model, wall, i) for i in range(len(model.restrainers))),
+    )
+    return replace(wall, mechanisms=mechanism_specs(model, wall))
+
+
+def unit_weight(model: Model, storeys: tuple[Storey, ...], width: float) -> float:
+    """γ [N/m³]: the model's unit weight, or its weight over the wall's volume."""
+    assert model.mass is not None  # the schema requires it of a wall
+    if model.mass.unit_weight is not None:
+        return model.mass.unit_weight * NEWTONS_PER_KILONEWTON
+    volume = sum(s.height * s.thickness for s in storeys) * width
+    if model.geometry.gable_height is not None:
+        volume += storeys[-1].thickness * width * model.geometry.gable_height / 2.0
+    assert model.mass.weight is not None
+    return model.mass.weight * NEWTONS_PER_KILONEWTON / volume
+
+
+def thickness_at(wall: Wall, z: float) -> float:
+    """The wall's thickness at height z (at a storey's base: the storey below's) [m]."""
+    for base, s in zip(wall.storey_bases(), wall.storeys, strict=True):
+        if z <= base + s.height:
+            return s.thickness
+    return wall.storeys[-1].thickness
+
+
+def _xz(model: Model, wall: Wall, table) -> tuple[float, float]:
+    """(x, z) of a load's or thrust's point: from_pivot (default mid-thickness at its height),
+    its height (``position = "top"``: the storeys' top)."""
+    z = point_height(table, wall.height)
+    assert z is not None
+    x = table.from_pivot if table.from_pivot is not None else thickness_at(wall, z) / 2.0
+    return float(x), z
+
+
+def wall_load(model: Model, wall: Wall, index: int) -> WallLoad:
+    """Load ``index`` in the wall's frame, weight in N."""
+    table = model.loads[index]
+    x, z = _xz(model, wall, table)
+    return WallLoad(table.name or f"load {index + 1}", table.weight * NEWTONS_PER_KILONEWTON,
+                    x, z, table.bears, table.moves)  # fmt: skip
+
+
+def wall_thrust(model: Model, wall: Wall, index: int) -> WallThrust:
+    """Thrust ``index`` in the wall's frame, force in N, +1 outward."""
+    table = model.thrusts[index]
+    x, z = _xz(model, wall, table)
+    direction = 1 if table.direction is Direction.POSITIVE else -1
+    return WallThrust(table.name or f"thrust {index + 1}",
+                      table.force * NEWTONS_PER_KILONEWTON, direction, x, z)  # fmt: skip
+
+
+def wall_restrainer(model: Model, wall: Wall, index: int) -> WallRestrainer:
+    """Restrainer ``index`` at its point in the wall's frame: height + from_pivot, the
+    paper's radius + angle about the outer base edge, or the top inner corner."""
+    table = model.restrainers[index]
+    member = to_restrainer(model, index)
+    if table.position is Position.TOP:
+        return WallRestrainer(member, wall.storeys[-1].thickness, wall.height)
+    if table.radius is not None and table.angle is not None:
+        r, phi = table.radius, table.angle
+        return WallRestrainer(member, r * math.sin(phi), r * math.cos(phi))
+    assert table.height is not None and table.from_pivot is not None
+    return WallRestrainer(member, table.from_pivot, table.height)
+
+
+def mechanism_specs(model: Model, wall: Wall) -> tuple[MechanismSpec, ...]:
+    """The mechanisms to check, "each-floor" expanded, names made and kept unique; none:
+    overturning about the base."""
+    entries = model.mechanisms or (MechanismEntry(type=MechanismKind.OVERTURNING),)
+    specs = [spec for entry in entries for spec in expand(entry, wall)]
+    seen: dict[str, int] = {}
+    out = []
+    for spec in specs:
+        count = seen.get(spec.name, 0) + 1
+        seen[spec.name] = count
+        out.append(spec if count == 1 else _renamed(spec, f"{spec.name} ({count})"))
+    return tuple(out)
+
+
+def _renamed(spec: MechanismSpec, name: str) -> MechanismSpec:
+    from dataclasses import replace
+
+    return replace(spec, name=name)
+
+
+def expand(entry: MechanismEntry, wall: Wall) -> list[MechanismSpec]:
+    """One entry as mechanism specs (several for "each-floor")."""
+    kind = MechanismType(entry.type.value)
+    if kind is MechanismType.OVERTURNING:
+        hinge = 0.0 if entry.hinge_height is None else entry.hinge_height
+        heights = list(wall.storey_bases()) if hinge == EACH_FLOOR else [float(hinge)]
+        return [MechanismSpec(entry.name if entry.name and len(heights) == 1 else
+                              overturning_name(wall, z), kind, z) for z in heights]  # fmt: skip
+    if kind is MechanismType.WEDGE:
+        sides = entry.sides or 1
+        angle = entry.angle or 0.0
+        walls = "both return walls" if sides == 2 else "one return wall"
+        name = entry.name or f"wedge {angle:g}°, {walls}"
+        return [MechanismSpec(name, kind, angle=math.radians(angle), sides=sides)]
+    if kind is MechanismType.GABLE:
+        return [MechanismSpec(entry.name or "gable", kind)]
+    hinge = OPTIMAL if entry.hinge_height is None else entry.hinge_height
+    name = entry.name or f"vertical flexure, storey {entry.storey}"
+    value = hinge if hinge == OPTIMAL else float(hinge)
+    return [MechanismSpec(name, kind, value, storey=entry.storey)]
+
+
+def overturning_name(wall: Wall, hinge: float) -> str:
+    """'overturning, whole wall' at the base, 'overturning, storey k' above a floor."""
+    bases = wall.storey_bases()
+    k = min(range(len(bases)), key=lambda i: abs(bases[i] - hinge))
+    return "overturning, whole wall" if k == 0 else f"overturning, storey {k + 1}"

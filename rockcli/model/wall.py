@@ -1,0 +1,230 @@
+"""The wall of several storeys and its mechanisms, as the model file gives them.
+
+`[[geometry.storeys]]`, `geometry.gable_height`, `[return_walls]`, `[masonry]` and
+`[[mechanisms]]` (docs/mechanisms.md). Validated here at the edge like every other table; the
+rules that need the whole model (a hinge at a storey's base, a wedge needs return walls, a
+vertical flexure needs a restrained top, the gable needs its height) are
+:func:`check_mechanisms`, called by the model.
+
+Sources: Circolare 7/2019 §C8.7.1 and Circolare 617/2009 §C8A.4 (the local mechanisms);
+Doherty et al. 2002, EESD 31:833–850 (vertical flexure).
+"""
+
+from __future__ import annotations
+
+import math
+from enum import StrEnum
+from typing import Any
+
+from pydantic import Field, model_validator
+
+from rockcli.model.bounds import MAX_LENGTH, MIN_LENGTH
+from rockcli.model.rules import number, rule_error
+from rockcli.model.schema_base import Table
+
+#: The wedge's crack angle from the vertical: above 0, at most 60° (a flatter crack would
+#: drag more of the return wall than a wedge is: the Circolare's compound overturning).
+MAX_WEDGE_ANGLE = 60.0
+#: Lowest masonry strength accepted [Pa]: 0.1 MPa (the weakest rubble masonry of Circolare
+#: 7/2019 Tab. C8.5.I has f_m ≥ 1.0 MPa; below 0.1 MPa the value is a slip of units).
+MIN_STRENGTH = 1e5
+#: Highest [Pa]: 100 MPa (the strongest squared stone of Tab. C8.5.I is below 10 MPa).
+MAX_STRENGTH = 1e8
+#: hinge_height of an overturning for one mechanism per storey base.
+EACH_FLOOR = "each-floor"
+#: hinge_height of a vertical flexure whose hinge the code finds.
+OPTIMAL = "optimal"
+
+
+class MechanismKind(StrEnum):
+    """The mechanisms of the catalogue."""
+
+    OVERTURNING = "overturning"
+    WEDGE = "wedge"
+    VERTICAL_FLEXURE = "vertical-flexure"
+    GABLE = "gable"
+
+
+class Storey(Table):
+    """One storey of the wall, bottom up: the outer face plumb, set-backs on the inner face."""
+
+    height: float = number("Height of the storey [m]", ..., ge=MIN_LENGTH, le=MAX_LENGTH)
+    thickness: float = number(
+        "Thickness of the storey, from the outer face [m]", ..., ge=MIN_LENGTH, le=MAX_LENGTH
+    )
+
+
+class ReturnWalls(Table):
+    """The walls at right angles to the façade at its ends, where a wedge can form."""
+
+    thickness: float = number(
+        "Thickness of the return walls [m]", ..., ge=MIN_LENGTH, le=MAX_LENGTH
+    )
+
+
+class Masonry(Table):
+    """The masonry's strength, for the hinges' set-back (off when not given)."""
+
+    f_m: float | None = number(
+        "Compressive strength of the masonry: each hinge moves inward by half the stress "
+        "block a = N/(f_m·width) carrying the weight N above it [Pa]",
+        ge=MIN_STRENGTH,
+        le=MAX_STRENGTH,
+    )
+
+
+class MechanismEntry(Table):
+    """One local mechanism to check (docs/mechanisms.md)."""
+
+    name: str | None = Field(
+        None, min_length=1, description="Label; default from the type and the hinge"
+    )
+    type: MechanismKind = Field(
+        ..., description="'overturning', 'wedge', 'vertical-flexure' or 'gable'"
+    )
+    hinge_height: float | str | None = Field(
+        None,
+        description="overturning: a storey base's height above the wall's base [m] (default "
+        "0), or 'each-floor'; vertical-flexure: the intermediate hinge's height [m] or "
+        "'optimal' (default)",
+    )
+    storey: int | None = Field(
+        None, strict=True, ge=1, description="vertical-flexure: the storey (1 = ground)"
+    )
+    angle: float | None = number(
+        "wedge: the crack's angle from the vertical, through the base corner [degrees]",
+        gt=0.0,
+        le=MAX_WEDGE_ANGLE,
+    )
+    sides: int | None = Field(
+        None, strict=True, ge=1, le=2, description="wedge: return walls dragged, 1 or 2"
+    )
+
+    @model_validator(mode="after")
+    def _keys_of_type(self) -> MechanismEntry:
+        """Each type's keys and no other's."""
+        own = {
+            MechanismKind.OVERTURNING: {"hinge_height"},
+            MechanismKind.WEDGE: {"angle", "sides"},
+            MechanismKind.VERTICAL_FLEXURE: {"hinge_height", "storey"},
+            MechanismKind.GABLE: set(),
+        }[self.type]
+        for key in ("hinge_height", "storey", "angle", "sides"):
+            if key not in own and getattr(self, key) is not None:
+                raise rule_error(
+                    key, f"not a key of a {self.type.value} mechanism", _allowed(self.type),
+                    getattr(self, key),
+                )  # fmt: skip
+        self._check_hinge()
+        if self.type is MechanismKind.WEDGE and self.angle is None:
+            raise rule_error("angle", "required with type = 'wedge'", _allowed(self.type))
+        return self
+
+    def _check_hinge(self) -> None:
+        value = self.hinge_height
+        word = EACH_FLOOR if self.type is MechanismKind.OVERTURNING else OPTIMAL
+        if isinstance(value, str) and value != word:
+            raise rule_error("hinge_height", "not a hinge height", _allowed(self.type), value)
+        if isinstance(value, bool) or (
+            isinstance(value, float) and not (math.isfinite(value) and 0 <= value <= MAX_LENGTH)
+        ):
+            raise rule_error("hinge_height", "not a hinge height", _allowed(self.type), value)
+
+
+def _allowed(kind: MechanismKind) -> str:
+    """What each type accepts."""
+    return {
+        MechanismKind.OVERTURNING: "hinge_height = a storey base's height [m] or 'each-floor'",
+        MechanismKind.WEDGE: "angle (0–60 degrees from the vertical), sides = 1 or 2",
+        MechanismKind.VERTICAL_FLEXURE: "storey (1 = ground), hinge_height [m] or 'optimal'",
+        MechanismKind.GABLE: "no other key (the gable is geometry.gable_height)",
+    }[kind]
+
+
+def storey_bases(storeys: tuple[Storey, ...]) -> list[float]:
+    """The height of each storey's base above the wall's base, bottom up [m]."""
+    out, z = [], 0.0
+    for s in storeys:
+        out.append(z)
+        z += s.height
+    return out
+
+
+def check_mechanisms(model: Any) -> None:
+    """The rules between the mechanisms and the rest of the model (raises a rule error)."""
+    storeys = model.geometry.storey_list
+    if model.geometry.storeys is not None or model.mechanisms:
+        if model.geometry.width is None:
+            raise rule_error(("geometry", "width"), "required for a wall of storeys or with "
+                             "[[mechanisms]] (the bodies' weights)",
+                             f"a number >= {MIN_LENGTH:g} and <= {MAX_LENGTH:g} [m]")  # fmt: skip
+        if model.mass is None:
+            raise rule_error("mass", "required for a wall of storeys or with [[mechanisms]]",
+                             "a [mass] table with unit_weight [kN/m³] or weight [kN]")  # fmt: skip
+    for i, entry in enumerate(model.mechanisms):
+        where = ("mechanisms", i)
+        if entry.type is MechanismKind.WEDGE and model.return_walls is None:
+            raise rule_error(
+                (*where, "type"), "a wedge needs the return walls", "a [return_walls] table "
+                "with thickness [m]", entry.type.value,
+            )  # fmt: skip
+        if entry.type is MechanismKind.GABLE and model.geometry.gable_height is None:
+            raise rule_error((*where, "type"), "no gable to overturn",
+                             "geometry.gable_height [m]", entry.type.value)  # fmt: skip
+        if entry.type is MechanismKind.OVERTURNING:
+            _check_floor(entry, storeys, where)
+        if entry.type is MechanismKind.VERTICAL_FLEXURE:
+            _check_flexure(model, entry, storeys, where)
+
+
+def _check_floor(entry: MechanismEntry, storeys: tuple[Storey, ...], where: tuple) -> None:
+    """An overturning's hinge at a storey's base."""
+    value = entry.hinge_height
+    if value is None or value == EACH_FLOOR:
+        return
+    bases = storey_bases(storeys)
+    if not any(math.isclose(value, b, rel_tol=1e-9, abs_tol=1e-9) for b in bases):
+        raise rule_error(
+            (*where, "hinge_height"), "not at a storey's base",
+            "one of " + ", ".join(f"{b:g}" for b in bases) + " [m], or 'each-floor'", value,
+        )  # fmt: skip
+
+
+def _check_flexure(model: Any, entry: MechanismEntry, storeys: tuple, where: tuple) -> None:
+    """A vertical flexure: its storey exists, its hinge inside it, its top restrained."""
+    if entry.storey is None:
+        raise rule_error((*where, "storey"), "required with type = 'vertical-flexure'",
+                         f"1 to {len(storeys)} (1 = ground)")  # fmt: skip
+    if entry.storey > len(storeys):
+        raise rule_error((*where, "storey"), "no such storey",
+                         f"1 to {len(storeys)} (1 = ground)", entry.storey)  # fmt: skip
+    base = storey_bases(storeys)[entry.storey - 1]
+    top = base + storeys[entry.storey - 1].height
+    value = entry.hinge_height
+    if isinstance(value, float) and not base < value < top:
+        raise rule_error((*where, "hinge_height"), "not inside the storey",
+                         f"above {base:g} and below {top:g} [m], or 'optimal'", value)  # fmt: skip
+    wall_top = sum(s.height for s in storeys)
+    heights = [point_height(t, wall_top) for t in (*model.loads, *model.restrainers)]
+    if not any(
+        z is not None and math.isclose(z, top, rel_tol=1e-9, abs_tol=1e-9) for z in heights
+    ):
+        raise rule_error(
+            (*where, "storey"), "nothing restrains the storey's top (no floor, tie or "
+            "restrainer at its top)",
+            f"a [[loads]] or [[restrainers]] entry at height = {top:g} m (the floor or tie "
+            "that holds the top)", entry.storey,
+        )  # fmt: skip
+
+
+def point_height(table: Any, wall_top: float) -> float | None:
+    """The height of a load's, thrust's or restrainer's point above the wall's base [m]:
+    ``height``, the top of the storeys for ``position = "top"``, r·cos φ for radius + angle."""
+    if getattr(table, "height", None) is not None:
+        return float(table.height)
+    if getattr(table, "position", None) is not None:
+        return wall_top
+    radius, angle = getattr(table, "radius", None), getattr(table, "angle", None)
+    if radius is not None and angle is not None:
+        return radius * math.cos(angle)
+    return None

@@ -1,0 +1,175 @@
+"""The code check of every mechanism of a wall, and the governing one.
+
+Composition only: the geometry of each mechanism comes from rockcli.mechanisms.catalogue, its
+capacity from rockcli.codecheck.kinematic, its checks from the edition's rules through
+:func:`rockcli.studies.kinematic.analyse_capacity` — the very path of today's block. A storey
+mechanism stands in the building at the height of its hinge (Z + hinge height: ψ and the floor
+spectra there). The governing mechanism is the one with the lowest ULS ζ_E (capacity over
+demand of the deciding checks), then the lowest DLS ζ_E, then the lowest α0
+(Circolare 7/2019 §C8.7.1: the assessment takes the most vulnerable mechanism).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, replace
+
+from rockcli.codecheck.demand import LimitStateDemand
+from rockcli.codecheck.kinematic import Capacity, Mechanism, alpha0, capacity
+from rockcli.codecheck.position import Position, position
+from rockcli.codecheck.result import KinematicResult, deciding
+from rockcli.errors import InputError
+from rockcli.mechanisms.catalogue import (
+    CrushingError,
+    build,
+    flexure_range,
+    hinge_of,
+    optimal_hinge,
+    sides_of,
+)
+from rockcli.mechanisms.wall import OPTIMAL, MechanismSpec, MechanismType, Wall
+from rockcli.model.derive_ntc import NtcSettings
+
+
+@dataclass(frozen=True)
+class MechanismResult:
+    """One mechanism of the catalogue and its code check.
+
+    Attributes:
+        name, type: as in the model (``type`` a MechanismType value).
+        hinge_height: the base hinge's height above the wall's base [m] (vertical flexure:
+            its intermediate hinge's).
+        storey: vertical flexure's storey (1 = ground), else None.
+        M_star: participating mass [kg].
+        result: the code check, as for today's block.
+    """
+
+    name: str
+    type: str
+    hinge_height: float
+    storey: int | None
+    M_star: float
+    result: KinematicResult
+
+    def zeta(self, states: tuple[str, ...]) -> float | None:
+        """ζ_E of these limit states: the lowest capacity/demand of the deciding checks
+        (None: not evaluated)."""
+        ratios = [c.ratio for c in deciding(self.result.checks, states)]
+        if not ratios or any(r is None for r in ratios):
+            return None
+        return min(ratios)
+
+    @property
+    def zeta_uls(self) -> float | None:
+        """ULS ζ_E (2009: ULS; 2019: the lower of SLV and SLC)."""
+        return self.zeta(("ULS", "SLV", "SLC"))
+
+    @property
+    def zeta_dls(self) -> float | None:
+        """DLS ζ_E."""
+        return self.zeta(("DLS", "SLD"))
+
+
+def governing_order(m: MechanismResult) -> tuple[float, float, float]:
+    """The key that sorts the governing mechanism first: ULS ζ, DLS ζ, α0 (not evaluated:
+    last)."""
+    uls, dls = m.zeta_uls, m.zeta_dls
+    return (math.inf if uls is None else uls, math.inf if dls is None else dls,
+            m.result.alpha0)  # fmt: skip
+
+
+def mechanism_of(wall: Wall, spec: MechanismSpec, side: int, settings: NtcSettings) -> Mechanism:
+    """The code check's view of one mechanism on one side."""
+    try:
+        geometry = build(wall, spec, side)
+    except CrushingError as exc:
+        raise InputError(
+            f"the wall crushes before it rocks: at a hinge of '{exc.hinge}' the stress block "
+            f"is {exc.depth:.3g} m deep, the section {exc.thickness:.3g} m",
+            where="masonry.f_m",
+            value=wall.f_m,
+            allowed="a strength at which the weight above each hinge needs a stress block "
+            "thinner than the wall (a = N/(f_m·width))",
+        ) from None
+    return Mechanism(side=side, distributed=settings.distributed, geometry=geometry)
+
+
+def resolved(wall: Wall, spec: MechanismSpec, sides: tuple[int, ...], settings: NtcSettings):
+    """The spec with an optimal flexure hinge found: the height that minimises the smaller
+    α0 of its sides (rockcli.mechanisms.catalogue.optimal_hinge)."""
+    if spec.type is not MechanismType.VERTICAL_FLEXURE or spec.hinge_height != OPTIMAL:
+        return spec, ()
+    assert spec.storey is not None
+    lo, hi = flexure_range(wall, spec.storey)
+
+    def smallest(z: float) -> float:
+        return min(
+            alpha0(mechanism_of(wall, replace(spec, hinge_height=z), s, settings)) for s in sides
+        )
+
+    z = optimal_hinge(lo, hi, smallest)
+    note = (f"optimal hinge at {z:.3f} m (the lowest α0 between {lo:.3f} and {hi:.3f} m: the "
+            "storey less max(thickness, a tenth of its height) at each end)")  # fmt: skip
+    return replace(spec, hinge_height=z), (note,)
+
+
+def spec_position(wall: Wall, spec: MechanismSpec, settings: NtcSettings) -> Position:
+    """Where the mechanism stands: Z + the height of its base hinge (a vertical flexure: its
+    storey's base); without the building's H, H = Z + the wall's height, N its storeys."""
+    b = settings.building
+    base = spec_base(wall, spec)
+    Z = b.Z + base
+    if base == 0.0:
+        return position(b.Z, b.H, b.N, b.T1, b.gamma, b.psi, b.damping)
+    H = b.H if b.H is not None else b.Z + wall.height
+    N = b.N if b.N is not None else len(wall.storeys)
+    pos = position(Z, H, N, b.T1, b.gamma, None, b.damping)
+    if b.H is None:
+        pos = replace(pos, notes=(*pos.notes, f"building height H = Z + the wall's height = "
+                                  f"{H:.3f} m and N = {N} storeys, not given"))  # fmt: skip
+    return pos
+
+
+def spec_base(wall: Wall, spec: MechanismSpec) -> float:
+    """The height of the mechanism's base hinge above the wall's base [m]."""
+    if spec.type is MechanismType.VERTICAL_FLEXURE:
+        assert spec.storey is not None
+        return wall.storey_bases()[spec.storey - 1]
+    return hinge_of(spec, wall)
+
+
+def analyse_mechanism(
+    wall: Wall,
+    spec: MechanismSpec,
+    settings: NtcSettings,
+    dem: dict[str, LimitStateDemand],
+    free_side: int | None,
+) -> MechanismResult:
+    """One mechanism: each side it opens to, the governing side (the smaller d0*, as for the
+    block), its checks at its position."""
+    from rockcli.studies.kinematic import analyse_capacity
+
+    sides = sides_of(spec, free_side)
+    spec, notes = resolved(wall, spec, sides, settings)
+    caps: list[Capacity] = [capacity(mechanism_of(wall, spec, s, settings), settings.FC)
+                            for s in sides]  # fmt: skip
+    cap = min(caps, key=lambda c: (c.d0_star is None, c.d0_star or 0.0, -c.mech.side))
+    by_side = {str(c.mech.side): c.alpha0 for c in caps}
+    if wall.f_m is not None:
+        notes = (*notes, f"hinges set back by half the stress block a = N/(f_m·width), "
+                 f"f_m = {wall.f_m / 1e6:g} MPa")  # fmt: skip
+    result = analyse_capacity(cap, settings, dem, spec_position(wall, spec, settings),
+                              by_side, notes)  # fmt: skip
+    from rockcli.codecheck.kinematic import participating_mass
+
+    hinge = spec.hinge_height if isinstance(spec.hinge_height, float) else hinge_of(spec, wall)
+    return MechanismResult(spec.name, spec.type.value, hinge, spec.storey,
+                           participating_mass(cap.mech), result)  # fmt: skip
+
+
+def analyse_wall(
+    wall: Wall, settings: NtcSettings, dem: dict[str, LimitStateDemand], free_side: int | None
+) -> tuple[MechanismResult, ...]:
+    """Every mechanism of the wall, the governing one first."""
+    out = [analyse_mechanism(wall, spec, settings, dem, free_side) for spec in wall.mechanisms]
+    return tuple(sorted(out, key=governing_order))
