@@ -173,7 +173,6 @@ class Geometry(Table):
     )
     storeys: tuple[Storey, ...] | None = Field(
         None,
-        min_length=1,
         max_length=MAX_STOREYS,
         description="A wall of several storeys, bottom up (instead of thickness + height or "
         "R + alpha): each with height and thickness [m], the outer face plumb",
@@ -192,6 +191,9 @@ class Geometry(Table):
         groups = [("R", "alpha"), ("thickness", "height"), ("storeys",)]
         if choose_group(values, groups, allowed) is None:
             raise rule_error(None, "missing the block's dimensions", allowed)
+        if self.storeys is not None and not self.storeys:
+            raise rule_error("storeys", "no storey", "one [[geometry.storeys]] table or more, "
+                             "bottom up, each with height and thickness [m]")  # fmt: skip
         if self.gable_height is not None and self.width is None:
             raise rule_error("width", "required with gable_height (the gable's base)",
                              LENGTH_ALLOWED)  # fmt: skip

@@ -1,0 +1,156 @@
+"""`rock kinematic` on the mechanism catalogue: the summary, the JSON contract, bad input.
+
+Issue 21 ("The mechanism catalogue"): every mechanism of a wall evaluated, the governing one
+first (lowest ULS ζ_E, then DLS ζ_E, then α0), the top-level JSON keys the governing
+mechanism's; each bad input one line naming the key, exit 2.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+from pathlib import Path
+
+import pytest
+from click.testing import CliRunner
+
+from rockcli.cli.main import cli
+from tests.cli.conftest import ROOT
+
+FACADE = ROOT / "examples" / "two-storey-facade.toml"
+RICKER = ROOT / "records" / "ricker_Tp0.5s_0.5g.txt"
+
+#: A one-storey wall 4 m × 0.5 m, 1 m wide, 18 kN/m³, with a floor at its top and the code's
+#: demand given: the base of every bad-input case below.
+BASE = """
+name = "wall"
+kind = "wall"
+[geometry]
+width = 1.0
+[[geometry.storeys]]
+height = 4.0
+thickness = 0.5
+[mass]
+unit_weight = 18.0
+[[loads]]
+name = "floor"
+weight = 5.0
+height = 4.0
+moves = false
+[ntc]
+edition = "2019"
+[ntc.demand.SLD]
+ag = 0.06
+F0 = 2.5
+Tc_star = 0.27
+[ntc.demand.SLV]
+ag = 0.15
+F0 = 2.5
+Tc_star = 0.29
+[ntc.demand.SLC]
+ag = 0.19
+F0 = 2.5
+Tc_star = 0.30
+"""
+
+
+def run(*args: str) -> tuple[int, str, str]:
+    result = CliRunner().invoke(cli, list(args))
+    return result.exit_code, result.stdout, result.stderr
+
+
+def kinematic_json(path: Path, *extra: str) -> dict:
+    code, out, err = run("kinematic", str(path), "--format", "json", *extra)
+    assert code == 0, err
+    return json.loads(out)
+
+
+def test_facade_catalogue_governing_first() -> None:
+    doc = kinematic_json(FACADE)
+    names = [m["name"] for m in doc["mechanisms"]]
+    # "each-floor" gives the whole wall and storey 2; one entry per other [[mechanisms]].
+    assert len(names) == 6 and len(set(names)) == 6
+    types = {m["type"] for m in doc["mechanisms"]}
+    assert types == {"overturning", "wedge", "vertical-flexure", "gable"}
+    assert doc["governing"] == names[0] == doc["mechanism"]
+    # The top-level keys are the governing mechanism's (today's consumers keep working).
+    first = doc["mechanisms"][0]
+    assert doc["alpha0"] == first["alpha0"] and doc["d0_star"] == first["d0_star"]
+    # Governing order: the ULS ζ_E never decreases down the list.
+    uls = [m["zeta"]["ULS"] for m in doc["mechanisms"]]
+    finite = [math.inf if z is None else z for z in uls]
+    assert finite == sorted(finite)
+    # The wedge reports side 1 only; two-way mechanisms both sides.
+    wedge = next(m for m in doc["mechanisms"] if m["type"] == "wedge")
+    assert list(wedge["alpha0_by_side"]) == ["1"]
+    gable = next(m for m in doc["mechanisms"] if m["type"] == "gable")
+    assert set(gable["alpha0_by_side"]) == {"1", "-1"}
+
+
+def test_mechanism_option_and_all() -> None:
+    doc = kinematic_json(FACADE, "--mechanism", "overturning, storey 2")
+    entry = next(m for m in doc["mechanisms"] if m["name"] == "overturning, storey 2")
+    assert doc["alpha0"] == entry["alpha0"] and doc["mechanism"] == "overturning, storey 2"
+    code, out, err = run("kinematic", str(FACADE), "--all")
+    assert code == 0, err
+    for m in doc["mechanisms"]:
+        assert f"Two-storey façade: {m['name']}" in " ".join(out.split())
+    code, _, err = run("kinematic", str(FACADE), "--mechanism", "nope")
+    assert code == 2 and "--mechanism: no such mechanism" in err
+
+
+def test_summary_names_the_governing_mechanism() -> None:
+    code, out, err = run("kinematic", str(FACADE))
+    assert code == 0, err
+    assert "Mechanisms (governing first)" in out
+    assert "governing mechanism:" in out
+
+
+def test_legacy_block_lists_itself() -> None:
+    # A model without [[mechanisms]] is one mechanism: overturning of the whole wall.
+    doc = kinematic_json(ROOT / "examples" / "top-storey-wall.toml")
+    assert [m["name"] for m in doc["mechanisms"]] == ["overturning, whole wall"]
+    assert doc["mechanisms"][0]["alpha0"] == doc["alpha0"]
+
+
+def test_assess_refuses_a_wall_it_cannot_rock() -> None:
+    code, _, err = run("assess", str(FACADE), "--record", str(RICKER))
+    assert code == 2
+    assert "cannot yet rock" in err and len(err.strip().splitlines()) == 1
+
+
+BAD = [
+    # (what is appended or replaced, the key the message names)
+    ("zero height", BASE.replace("height = 4.0\nthickness", "height = 0.0\nthickness"),
+     "geometry.storeys"),
+    ("negative thickness", BASE.replace("thickness = 0.5", "thickness = -0.5"),
+     "geometry.storeys"),
+    ("hinge not at a floor", BASE + '[[mechanisms]]\ntype = "overturning"\nhinge_height = 1.0\n',
+     "mechanisms[0].hinge_height"),
+    ("hinge above the wall", BASE + '[[mechanisms]]\ntype = "overturning"\nhinge_height = 9.0\n',
+     "mechanisms[0].hinge_height"),
+    ("wedge angle 0", BASE + '[return_walls]\nthickness = 0.4\n[[mechanisms]]\ntype = "wedge"\n'
+     "angle = 0.0\n", "mechanisms[0].angle"),
+    ("wedge angle 75", BASE + '[return_walls]\nthickness = 0.4\n[[mechanisms]]\ntype = "wedge"\n'
+     "angle = 75.0\n", "mechanisms[0].angle"),
+    ("wedge without return walls", BASE + '[[mechanisms]]\ntype = "wedge"\nangle = 30.0\n',
+     "mechanisms[0].type"),
+    ("flexure without restraint", BASE.replace("height = 4.0\nmoves", "height = 2.0\nmoves")
+     + '[[mechanisms]]\ntype = "vertical-flexure"\nstorey = 1\n', "mechanisms[0].storey"),
+    ("gable without gable_height", BASE + '[[mechanisms]]\ntype = "gable"\n',
+     "mechanisms[0].type"),
+    ("unknown type", BASE + '[[mechanisms]]\ntype = "arch"\n', "mechanisms[0].type"),
+    ("crushing f_m", BASE + "[masonry]\nf_m = 1.0e5\n[[loads]]\nname = 'heavy'\nweight = 60.0\n"
+     "height = 4.0\n", "masonry.f_m"),
+]
+
+
+@pytest.mark.parametrize(("label", "text", "key"), BAD, ids=[b[0] for b in BAD])
+def test_bad_wall_input_one_line_exit_2(tmp_path: Path, label: str, text: str, key: str) -> None:
+    path = tmp_path / "bad.toml"
+    path.write_text(text, encoding="utf-8")
+    code, out, err = run("kinematic", str(path))
+    assert code == 2, (label, out, err)
+    assert key in err, (label, err)
+    assert len(err.strip().splitlines()) == 1, err
+    assert "Traceback" not in err
