@@ -2,8 +2,6 @@
 
 import sys
 
-from rockcli.process import exit_at_once
-
 #: Exit code after Ctrl-C (rockcli.cli.exits.EXIT_INTERRUPTED, not imported: it loads click).
 EXIT_INTERRUPTED = 130
 
@@ -22,11 +20,20 @@ def main() -> None:
         cli(prog_name="rock")  # the usage lines say "rock", as the installed command
     except KeyboardInterrupt:  # Ctrl-C while the command loads: as during the command
         sys.stderr.write("interrupted\n")
-        exit_at_once(EXIT_INTERRUPTED)
+        _exit_at_once(EXIT_INTERRUPTED)
     except SystemExit as exc:
         if exc.code == EXIT_INTERRUPTED:
-            exit_at_once(EXIT_INTERRUPTED)
+            _exit_at_once(EXIT_INTERRUPTED)
         raise
+
+
+def _exit_at_once(code: int) -> None:
+    """rockcli.process.exit_at_once, imported when needed: the module imported at the top of
+    the `rock` script stays as small as can be, so that a Ctrl-C in the interpreter's start-up
+    window outside rock's reach is as short as it can be."""
+    from rockcli.process import exit_at_once
+
+    exit_at_once(code)
 
 
 if __name__ == "__main__":

@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import replace
+from typing import TYPE_CHECKING
 
 import numpy as np
 
@@ -28,6 +29,10 @@ from rockcli.mechanics import Block, linear_global_stiffness, stiffness_coeffici
 from rockcli.model.derive import to_block
 from rockcli.model.schema import Model
 from rockcli.records.record import Record
+
+if TYPE_CHECKING:
+    from rockcli.codecheck.result import KinematicResult
+    from rockcli.studies.catalogue import MechanismResult
 
 #: NTC 2018 §3.2.3.6 band of the suite case (the ratio itself is what is checked).
 SUITE_BAND = (-0.10, 0.30)
@@ -74,17 +79,79 @@ def positive_stiffness_ratio(block: Block, index: int) -> float:
 
 
 def kinematic_quantity(model: Model, inputs: KinematicInput, quantity: str) -> float | None:
-    """A quantity of `rock kinematic` on the model (its own demand)."""
+    """A quantity of `rock kinematic` on the model (its own demand), of the mechanism named
+    (default: the governing one): its check's, or M* and the hinge's height of the catalogue
+    (rockcli.studies.catalogue.MechanismResult), or a flexure's instability displacement."""
     from rockcli.studies.kinematic import kinematic_model
 
-    result = kinematic_model(model, edition=inputs.edition)
+    entry = catalogue_entry(kinematic_model(model, edition=inputs.edition), inputs.mechanism)
+    if quantity == "instability_displacement":
+        return instability_displacement(model, inputs.edition, entry)
+    result = entry.result
     direct = {
         "alpha0": result.alpha0,
         "e_star": result.e_star,
         "a0_star": result.a0_star,
         "d0_star": result.d0_star,
+        "M_star": entry.M_star,
+        "hinge_height": entry.hinge_height,
     }
     return direct[quantity] if quantity in direct else result.quantities.get(quantity)
+
+
+def catalogue_entry(result: KinematicResult, name: str | None) -> MechanismResult:
+    """The mechanism of the catalogue named, the governing one (listed first) for None.
+
+    As `rock kinematic --mechanism` (rockcli.report.kinematic.chosen_result); an unknown
+    name is an InputError listing the catalogue.
+    """
+    if name is None:
+        return result.catalogue[0]
+    for entry in result.catalogue:
+        if entry.name == name:
+            return entry
+    raise InputError(
+        "no such mechanism in the model's catalogue",
+        where="input.mechanism",
+        value=name,
+        allowed="one of: " + "; ".join(f"'{m.name}'" for m in result.catalogue),
+    )
+
+
+def instability_displacement(
+    model: Model, edition: str | None, entry: MechanismResult
+) -> float | None:
+    """Horizontal displacement [m] of a vertical flexure's intermediate hinge where its
+    capacity curve reaches zero (the instability displacement Δ_ins of Doherty, Griffith,
+    Lam & Wilson 2002, EESD 31:833–850), on the side and at the hinge height checked.
+
+    The mechanism is rebuilt as the catalogue builds it (rockcli.studies.catalogue
+    .mechanism_of); θ0 is rockcli.codecheck.kinematic.zero_rotation's, and the hinge's
+    displacement away from the wall is its rest x less its x at θ0 (rockcli.mechanisms.chain:
+    the upper link's reference point is the hinge). None: the curve never reaches zero.
+    """
+    from rockcli.codecheck.kinematic import zero_rotation
+    from rockcli.model.derive_wall import to_wall
+    from rockcli.studies.catalogue import mechanism_of
+    from rockcli.studies.kinematic import check_settings
+
+    if entry.type != "vertical-flexure":
+        raise InputError(
+            "a quantity of a vertical flexure only",
+            where="quantity",
+            value=f"instability_displacement of '{entry.name}' ({entry.type})",
+            allowed="input.mechanism naming a vertical-flexure mechanism",
+        )
+    wall = to_wall(model)
+    spec = next(s for s in wall.mechanisms if s.name == entry.name)
+    spec = replace(spec, hinge_height=entry.hinge_height)
+    mech = mechanism_of(wall, spec, entry.result.side, check_settings(model, edition))
+    theta0 = zero_rotation(mech)
+    if theta0 is None:
+        return None
+    assert mech.geometry is not None
+    hinge = mech.geometry.states(theta0)[1]
+    return hinge.px - hinge.cx
 
 
 def spectrum_quantity(inputs: SpectrumInput, quantity: str) -> float:

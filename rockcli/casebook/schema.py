@@ -72,6 +72,9 @@ QUANTITIES: dict[Kind, dict[str, str]] = {
         "d0_star": "m",
         "du_star": "m",
         "Ts": "s",
+        "M_star": "kg",
+        "hinge_height": "m",
+        "instability_displacement": "m",
     },
     Kind.FREE_ROCKING: {"period": "s", "amplitude": "rad"},
     Kind.IMPULSE: {"omega_threshold": "rad/s"},
@@ -139,9 +142,13 @@ class ModelInput(Table):
 
 
 class KinematicInput(Table):
-    """``kinematic``: the edition (default: the model's)."""
+    """``kinematic``: the edition (default: the model's) and the mechanism of the catalogue
+    read (its name as `rock kinematic` prints it; default: the governing one)."""
 
     edition: Literal["2009", "2019"] | None = None
+    mechanism: str | None = Field(
+        None, min_length=1, description="a mechanism's name (default: the governing one)"
+    )
 
 
 class FreeRockingInput(Table):

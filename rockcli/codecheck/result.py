@@ -2,10 +2,9 @@
 
 from __future__ import annotations
 
-from typing import Any
-
 from dataclasses import dataclass, field
 from enum import StrEnum
+from typing import Any
 
 
 class Method(StrEnum):
@@ -108,7 +107,8 @@ class KinematicResult:
         restrainer_actions: how each restrainer entered the check, and its verification.
         catalogue: every mechanism of the model with its own result, the governing one
             first (rockcli.studies.catalogue.MechanismResult); this result is the governing
-            mechanism's. governing: its name.
+            mechanism's. governing: its name. mechanism: the name of the mechanism this
+            result describes (None: the block, outside a catalogue).
     """
 
     edition: str
@@ -128,6 +128,7 @@ class KinematicResult:
     restrainer_actions: tuple[RestrainerAction, ...] = ()
     catalogue: tuple[Any, ...] = ()
     governing: str | None = None
+    mechanism: str | None = None
 
     def verdict(self) -> dict[str, bool | None]:
         """DLS and ULS satisfied? (None: not evaluated).

@@ -306,6 +306,8 @@ def kinematic_section(inputs: Inputs, kin: Mapping[str, Any], w: Words) -> Secti
 
     n = w.number
     blocks: list[Block] = [Paragraph(w(f"kin.intro_{kin['edition']}"))]
+    if len(kin.get("mechanisms", ())) > 1:
+        blocks.append(catalogue_grid(kin, w))
     mechs = mechanisms(inputs.model, kin)
     blocks.append(activation_grid(mechs, w))
     quantities = [
@@ -342,6 +344,23 @@ def kinematic_section(inputs: Inputs, kin: Mapping[str, Any], w: Words) -> Secti
         "verdict",
     ))  # fmt: skip
     return Section("kinematic", w("section.kinematic"), tuple(blocks))
+
+
+def catalogue_grid(kin: Mapping[str, Any], w: Words) -> Grid:
+    """Every mechanism of the catalogue in one table: α0, M*, e*, a0*, d0*, ζ_E of DLS and
+    ULS, the governing one first (rockcli.studies.catalogue)."""
+    n = w.number
+    rows = tuple(
+        (m["name"], n(m["hinge_height"], "{:.3g}"), n(m["alpha0"]), n(m["M_star"] / 1e3),
+         n(m["e_star"], "{:.3f}"), n(m["a0_star"], "{:.3f}"), n(m["d0_star"]),
+         n(m["zeta"]["DLS"], "{:.3f}"), n(m["zeta"]["ULS"], "{:.3f}"))
+        for m in kin["mechanisms"]
+    )  # fmt: skip
+    uls = "ζ SLU" if w.lang == "it" else "ζ ULS"
+    headers = (w("kin.catalogue_mechanism"), w("kin.catalogue_hinge"), "α0", "M* [t]", "e*",
+               "a0* [m/s²]", "d0* [m]", "ζ SLD", uls)  # fmt: skip
+    return Grid(w("kin.catalogue_caption", shown=kin["mechanism"]), headers, rows,
+                (False, *([True] * 8)))  # fmt: skip
 
 
 def mechanisms(model: Model, kin: Mapping[str, Any]) -> dict[int, Any]:

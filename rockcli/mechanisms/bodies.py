@@ -48,7 +48,14 @@ class Body:
 
 
 def prism(
-    name: str, x0: float, x1: float, z0: float, z1: float, depth: float, unit_weight: float, g: float
+    name: str,
+    x0: float,
+    x1: float,
+    z0: float,
+    z1: float,
+    depth: float,
+    unit_weight: float,
+    g: float,
 ) -> Body:
     """A rectangular prism, section [x0, x1] × [z0, z1], ``depth`` along the wall's plane.
 
@@ -108,7 +115,12 @@ def triangle(
 
 
 def gable(
-    name: str, thickness: float, base_z: float, height: float, width: float, unit_weight: float,
+    name: str,
+    thickness: float,
+    base_z: float,
+    height: float,
+    width: float,
+    unit_weight: float,
     g: float,
 ) -> Body:
     """A triangular gable of base ``width`` (along the wall's plane) and ``height``, of constant

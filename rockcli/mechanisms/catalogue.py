@@ -33,7 +33,7 @@ from dataclasses import dataclass
 from rockcli.mechanisms.bodies import Body, gable, prism, triangle
 from rockcli.mechanisms.chain import Rotation, TwoBlock
 from rockcli.mechanisms.side import Attached, ChainSide, SideLoad, SideThrust
-from rockcli.mechanisms.wall import OPTIMAL, MechanismSpec, MechanismType, Wall
+from rockcli.mechanisms.wall import MechanismSpec, MechanismType, Wall
 
 #: Relative tolerance of "at a hinge's height" (heights typed in the file and sums of storey
 #: heights agree to far better than this).

@@ -137,23 +137,26 @@ def to_block(model: Model) -> Block:
 
 
 def refuse_unrockable(model: Model) -> None:
-    """InputError unless the model's only mechanism is a rectangle overturning about its base
-    (a block, or a one-storey wall without a gable), the body the time history rocks."""
+    """InputError unless the time history can rock the model: a block, or a one-storey wall
+    without a gable and without a masonry strength (the set-back hinge) whose mechanisms are
+    none or include its overturning about the base (the rectangle the engine rocks; the
+    other mechanisms are checked by the code only, rockcli.studies.compare says so)."""
     geometry = model.geometry
     storeys = geometry.storeys or ()
-    plain = all(
+    rocked = not model.mechanisms or any(
         m.type.value == "overturning" and m.hinge_height in (None, 0.0) for m in model.mechanisms
     )
-    if len(storeys) <= 1 and geometry.gable_height is None and plain:
+    plain = len(storeys) <= 1 and geometry.gable_height is None
+    if plain and rocked and (model.masonry is None or model.masonry.f_m is None):
         return
     from rockcli.errors import InputError
 
     raise InputError(
-        "the time history cannot yet rock this wall's mechanisms (a wall of several storeys, "
-        "a gable, or mechanisms other than the overturning of a one-storey wall about its base)",
-        where="mechanisms" if model.mechanisms else "geometry.storeys",
+        "the time history cannot yet rock this wall (it rocks the rectangular block: one "
+        "storey, no gable, no masonry.f_m, with its overturning about the base)",
+        where="geometry.storeys" if len(storeys) > 1 else "mechanisms",
         allowed="rock kinematic, which checks every mechanism of the catalogue; for a time "
-        "history, a model of one block or of one storey without a gable",
+        "history, a model of one block or of one storey",
     )
 
 

@@ -25,7 +25,7 @@ from rockcli.mechanisms.wall import (
 from rockcli.model.derive import NEWTONS_PER_KILONEWTON, to_restrainer
 from rockcli.model.physical import Direction
 from rockcli.model.schema import Model, Position
-from rockcli.model.wall import EACH_FLOOR, MechanismEntry, MechanismKind, point_height
+from rockcli.model.wall import EACH_FLOOR, MechanismEntry, point_height
 
 
 def is_wall(model: Model) -> bool:
@@ -121,7 +121,7 @@ def wall_restrainer(model: Model, wall: Wall, index: int) -> WallRestrainer:
 def mechanism_specs(model: Model, wall: Wall) -> tuple[MechanismSpec, ...]:
     """The mechanisms to check, "each-floor" expanded, names made and kept unique; none:
     overturning about the base."""
-    entries = model.mechanisms or (MechanismEntry(type=MechanismKind.OVERTURNING),)
+    entries = model.mechanisms or (MechanismEntry.model_validate({"type": "overturning"}),)
     specs = [spec for entry in entries for spec in expand(entry, wall)]
     seen: dict[str, int] = {}
     out = []

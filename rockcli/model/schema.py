@@ -46,7 +46,7 @@ from rockcli.model.ntc import Ntc
 from rockcli.model.physical import Building, Load, Position, Thrust, check_mass, check_points
 from rockcli.model.rules import choose_group, forbid, number, rule_error
 from rockcli.model.schema_base import Table
-from rockcli.model.wall import MechanismEntry, Masonry, ReturnWalls, Storey, check_mechanisms
+from rockcli.model.wall import Masonry, MechanismEntry, ReturnWalls, Storey, check_mechanisms
 from rockcli.units import DEFAULT_GRAVITY
 
 #: Default steel modulus of a tie-rod [Pa] (paper Table 2: E = 210 GPa).
@@ -205,7 +205,8 @@ class Geometry(Table):
         if self.storeys is not None:
             return self.storeys
         b, h = self.half_sizes
-        return (Storey(height=2.0 * h, thickness=2.0 * b),)
+        # The block's own sizes, already validated as its form's (2R may exceed a storey's).
+        return (Storey.model_construct(height=2.0 * h, thickness=2.0 * b),)
 
     @property
     def half_sizes(self) -> tuple[float, float]:

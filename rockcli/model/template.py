@@ -223,6 +223,18 @@ OTHER_KEYS: dict[str, dict[str, Any]] = {
         "height": 3.0,
         "width": 3.0,
         "pivot_height": 0.0,
+        "gable_height": 2.0,
+    },
+    "geometry.storeys": {"height": 4.0, "thickness": 0.6},
+    "return_walls": {"thickness": 0.45},
+    "masonry": {"f_m": 2.0e6},
+    "mechanisms": {
+        "type": "overturning",
+        "hinge_height": "each-floor",
+        "name": "overturning of each storey",
+        "storey": 1,
+        "angle": 30.0,
+        "sides": 2,
     },
     "mass": {"weight": 100.0, "unit_weight": 18.0},
     "restitution": {"model": "explicit", "factor": 0.9, "e": 0.8},
@@ -295,7 +307,7 @@ OTHER_KEYS: dict[str, dict[str, Any]] = {
 }
 
 #: Tables written as arrays of tables (``[[name]]``).
-ARRAYS = frozenset({"restrainers", "loads", "thrusts"})
+ARRAYS = frozenset({"restrainers", "loads", "thrusts", "mechanisms", "geometry.storeys"})
 
 #: For a table a template lacks: the keys that, uncommented together, make a valid table
 #: (the other keys of :data:`OTHER_KEYS` follow as alternatives).
@@ -303,10 +315,24 @@ TABLE_CORE: dict[str, tuple[str, ...]] = {
     "restrainers": ("name", "k", "position", "fails_at"),
     "loads": ("name", "weight", "position"),
     "thrusts": ("name", "force", "position", "direction"),
+    "mechanisms": ("type", "hinge_height"),
+    "geometry.storeys": ("height", "thickness"),
 }
 
 #: Notes of the tables a template may show commented only.
 OPTIONAL_TABLE_NOTES: dict[str, tuple[str, ...]] = {
+    "geometry.storeys": (
+        "A wall of several storeys instead of thickness + height (or R + alpha): one "
+        "[[geometry.storeys]] table per storey, bottom up; needs geometry.width and [mass]. "
+        "See docs/mechanisms.md.",
+    ),
+    "return_walls": ("The return walls, where a wedge (compound overturning) can form.",),
+    "masonry": ("The masonry's strength: each hinge moves inward by half the stress block.",),
+    "mechanisms": (
+        "The local mechanisms to check, one [[mechanisms]] table each (none: overturning about "
+        'the base). type = "overturning" | "wedge" | "vertical-flexure" | "gable"; each '
+        "type takes only its own keys (docs/mechanisms.md).",
+    ),
     "ntc.site": ("Instead of [ntc.demand.*]: the site, for the demand from a hazard grid.",),
     "ntc.demand.SLO": ("Spectrum parameters of the operational limit state, if needed.",),
     "thrusts": (

@@ -18,7 +18,7 @@ from typing import Any
 
 from pydantic import Field, model_validator
 
-from rockcli.model.bounds import MAX_LENGTH, MIN_LENGTH
+from rockcli.model.bounds import MAX_LENGTH, MAX_STOREYS, MIN_LENGTH
 from rockcli.model.rules import number, rule_error
 from rockcli.model.schema_base import Table
 
@@ -89,7 +89,11 @@ class MechanismEntry(Table):
         "'optimal' (default)",
     )
     storey: int | None = Field(
-        None, strict=True, ge=1, description="vertical-flexure: the storey (1 = ground)"
+        None,
+        strict=True,
+        ge=1,
+        le=MAX_STOREYS,
+        description="vertical-flexure: the storey (1 = ground)",
     )
     angle: float | None = number(
         "wedge: the crack's angle from the vertical, through the base corner [degrees]",
@@ -180,7 +184,7 @@ def check_mechanisms(model: Any) -> None:
 def _check_floor(entry: MechanismEntry, storeys: tuple[Storey, ...], where: tuple) -> None:
     """An overturning's hinge at a storey's base."""
     value = entry.hinge_height
-    if value is None or value == EACH_FLOOR:
+    if not isinstance(value, float):  # None (the base) or "each-floor"
         return
     bases = storey_bases(storeys)
     if not any(math.isclose(value, b, rel_tol=1e-9, abs_tol=1e-9) for b in bases):
@@ -206,9 +210,7 @@ def _check_flexure(model: Any, entry: MechanismEntry, storeys: tuple, where: tup
                          f"above {base:g} and below {top:g} [m], or 'optimal'", value)  # fmt: skip
     wall_top = sum(s.height for s in storeys)
     heights = [point_height(t, wall_top) for t in (*model.loads, *model.restrainers)]
-    if not any(
-        z is not None and math.isclose(z, top, rel_tol=1e-9, abs_tol=1e-9) for z in heights
-    ):
+    if not any(z is not None and math.isclose(z, top, rel_tol=1e-9, abs_tol=1e-9) for z in heights):
         raise rule_error(
             (*where, "storey"), "nothing restrains the storey's top (no floor, tie or "
             "restrainer at its top)",

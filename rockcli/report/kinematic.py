@@ -61,7 +61,7 @@ def kinematic_document(
     if result.catalogue:
         doc["mechanisms"] = [catalogue_entry(m) for m in result.catalogue]
         doc["governing"] = result.governing
-        doc["mechanism"] = mechanism or result.governing
+        doc["mechanism"] = chosen.mechanism or result.governing
     return doc
 
 

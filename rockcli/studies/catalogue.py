@@ -55,9 +55,10 @@ class MechanismResult:
         """ζ_E of these limit states: the lowest capacity/demand of the deciding checks
         (None: not evaluated)."""
         ratios = [c.ratio for c in deciding(self.result.checks, states)]
-        if not ratios or any(r is None for r in ratios):
+        known = [r for r in ratios if r is not None]
+        if not ratios or len(known) < len(ratios):
             return None
-        return min(ratios)
+        return min(known)
 
     @property
     def zeta_uls(self) -> float | None:
@@ -164,7 +165,8 @@ def analyse_mechanism(
 
     hinge = spec.hinge_height if isinstance(spec.hinge_height, float) else hinge_of(spec, wall)
     return MechanismResult(spec.name, spec.type.value, hinge, spec.storey,
-                           participating_mass(cap.mech), result)  # fmt: skip
+                           participating_mass(cap.mech),
+                           replace(result, mechanism=spec.name))  # fmt: skip
 
 
 def analyse_wall(

@@ -369,6 +369,7 @@ def with_block_entry(result: KinematicResult, block: Block, settings: NtcSetting
 
     m_star = participating_mass(mechanism(block, settings, result.side))
     name = "overturning, whole wall"
+    result = replace(result, mechanism=name)
     entry = MechanismResult(name, "overturning", 0.0, None, m_star, result)
     return replace(result, catalogue=(entry,), governing=name)
 

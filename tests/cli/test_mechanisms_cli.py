@@ -121,27 +121,50 @@ def test_assess_refuses_a_wall_it_cannot_rock() -> None:
 
 BAD = [
     # (what is appended or replaced, the key the message names)
-    ("zero height", BASE.replace("height = 4.0\nthickness", "height = 0.0\nthickness"),
-     "geometry.storeys"),
-    ("negative thickness", BASE.replace("thickness = 0.5", "thickness = -0.5"),
-     "geometry.storeys"),
-    ("hinge not at a floor", BASE + '[[mechanisms]]\ntype = "overturning"\nhinge_height = 1.0\n',
-     "mechanisms[0].hinge_height"),
-    ("hinge above the wall", BASE + '[[mechanisms]]\ntype = "overturning"\nhinge_height = 9.0\n',
-     "mechanisms[0].hinge_height"),
-    ("wedge angle 0", BASE + '[return_walls]\nthickness = 0.4\n[[mechanisms]]\ntype = "wedge"\n'
-     "angle = 0.0\n", "mechanisms[0].angle"),
-    ("wedge angle 75", BASE + '[return_walls]\nthickness = 0.4\n[[mechanisms]]\ntype = "wedge"\n'
-     "angle = 75.0\n", "mechanisms[0].angle"),
-    ("wedge without return walls", BASE + '[[mechanisms]]\ntype = "wedge"\nangle = 30.0\n',
-     "mechanisms[0].type"),
-    ("flexure without restraint", BASE.replace("height = 4.0\nmoves", "height = 2.0\nmoves")
-     + '[[mechanisms]]\ntype = "vertical-flexure"\nstorey = 1\n', "mechanisms[0].storey"),
-    ("gable without gable_height", BASE + '[[mechanisms]]\ntype = "gable"\n',
-     "mechanisms[0].type"),
+    (
+        "zero height",
+        BASE.replace("height = 4.0\nthickness", "height = 0.0\nthickness"),
+        "geometry.storeys",
+    ),
+    ("negative thickness", BASE.replace("thickness = 0.5", "thickness = -0.5"), "geometry.storeys"),
+    (
+        "hinge not at a floor",
+        BASE + '[[mechanisms]]\ntype = "overturning"\nhinge_height = 1.0\n',
+        "mechanisms[0].hinge_height",
+    ),
+    (
+        "hinge above the wall",
+        BASE + '[[mechanisms]]\ntype = "overturning"\nhinge_height = 9.0\n',
+        "mechanisms[0].hinge_height",
+    ),
+    (
+        "wedge angle 0",
+        BASE + '[return_walls]\nthickness = 0.4\n[[mechanisms]]\ntype = "wedge"\nangle = 0.0\n',
+        "mechanisms[0].angle",
+    ),
+    (
+        "wedge angle 75",
+        BASE + '[return_walls]\nthickness = 0.4\n[[mechanisms]]\ntype = "wedge"\nangle = 75.0\n',
+        "mechanisms[0].angle",
+    ),
+    (
+        "wedge without return walls",
+        BASE + '[[mechanisms]]\ntype = "wedge"\nangle = 30.0\n',
+        "mechanisms[0].type",
+    ),
+    (
+        "flexure without restraint",
+        BASE.replace("height = 4.0\nmoves", "height = 2.0\nmoves")
+        + '[[mechanisms]]\ntype = "vertical-flexure"\nstorey = 1\n',
+        "mechanisms[0].storey",
+    ),
+    ("gable without gable_height", BASE + '[[mechanisms]]\ntype = "gable"\n', "mechanisms[0].type"),
     ("unknown type", BASE + '[[mechanisms]]\ntype = "arch"\n', "mechanisms[0].type"),
-    ("crushing f_m", BASE + "[masonry]\nf_m = 1.0e5\n[[loads]]\nname = 'heavy'\nweight = 60.0\n"
-     "height = 4.0\n", "masonry.f_m"),
+    (
+        "crushing f_m",
+        BASE + "[masonry]\nf_m = 1.0e5\n[[loads]]\nname = 'heavy'\nweight = 60.0\nheight = 4.0\n",
+        "masonry.f_m",
+    ),
 ]
 
 

@@ -88,7 +88,8 @@ def test_unknown_table_at_top_level_exact_line(tmp_path: Path) -> None:
     line = message_for(tmp_path, table("results", edition=2019))
     assert line == (
         f"{tmp_path / 'm.toml'}: unknown table [results] (allowed: one of: name, kind, notes, "
-        "geometry, mass, restitution, motion, analysis, restrainers, loads, thrusts, building, ntc)"
+        "geometry, mass, restitution, motion, analysis, restrainers, loads, thrusts, building, "
+        "ntc, return_walls, masonry, mechanisms)"
     )
 
 
@@ -136,7 +137,10 @@ CASES: list[tuple[str, Edit, list[str]]] = [
     (
         "missing dimensions",
         table("geometry", width=3.0),
-        ["geometry: missing the block's dimensions", "either R + alpha, or thickness + height"],
+        [
+            "geometry: missing the block's dimensions",
+            "either R + alpha, thickness + height, or [[geometry.storeys]]",
+        ],
     ),
     (
         "zero height",
@@ -185,13 +189,17 @@ CASES: list[tuple[str, Edit, list[str]]] = [
             "geometry.thickness",
             "not allowed together with R",
             "got 0.5",
-            "either R + alpha, or thickness + height",
+            "either R + alpha, thickness + height, or [[geometry.storeys]]",
         ],
     ),
     (
         "R without alpha",
         table("geometry", R=1.499, width=3.0),
-        ["geometry.alpha", "required with R", "either R + alpha, or thickness + height"],
+        [
+            "geometry.alpha",
+            "required with R",
+            "either R + alpha, thickness + height, or [[geometry.storeys]]",
+        ],
     ),
     (
         "height without thickness",
