@@ -2,9 +2,9 @@
 
 Model quantities come from the derived block (``rockcli.model.derive.to_block``), the
 kinematic ones from ``rockcli.studies.kinematic.kinematic_model`` (what `rock kinematic`
-runs), the spectra from ``rockcli.codecheck`` (NTC spectrum, hazard grid, response spectrum,
-floor motion) and the suite's ratio from ``rockcli.suites.compat`` (what `rock suite check`
-runs).
+runs), of the mechanism of its catalogue the case names, the spectra from
+``rockcli.codecheck`` (NTC spectrum, hazard grid, response spectrum, floor motion) and the
+suite's ratio from ``rockcli.suites.compat`` (what `rock suite check` runs).
 """
 
 from __future__ import annotations

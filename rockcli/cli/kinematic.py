@@ -62,8 +62,8 @@ def _site(value: str | None, record_path: str | None) -> tuple[float, float] | N
 @click.option(
     "--fail-on-uls",
     is_flag=True,
-    help=f"Exit with code {EXIT_GATE} when the ULS verdict is not satisfied, or not evaluated "
-    "(a gate cannot pass on a check that was not made).",
+    help=f"Exit with code {EXIT_GATE} when the ULS verdict of a mechanism is not satisfied, or "
+    "not evaluated (a gate cannot pass on a check that was not made).",
 )
 @click.option(
     "--mechanism",
@@ -118,8 +118,8 @@ def kinematic(
         plot_kinematic(doc, plot_path)
         announce_written(plot_path)
     show_catalogue(doc, out, output, all_mechanisms)
-    if fail_on_uls:
-        gate_uls(doc["verdict"]["ULS"])
+    if fail_on_uls:  # every mechanism's verdict, whichever is shown
+        gate_uls(catalogue_uls(doc))
 
 
 def show_catalogue(doc, out, output: str, all_mechanisms: bool) -> None:
@@ -141,6 +141,15 @@ def show_catalogue(doc, out, output: str, all_mechanisms: bool) -> None:
     console = console_for()
     for report in reports:
         render(report, console)
+
+
+def catalogue_uls(doc) -> bool | None:
+    """The ULS verdict of the catalogue: False if a mechanism fails, else None if one is not
+    evaluated, else True (the document's own verdict without a catalogue)."""
+    verdicts = [m["verdict"]["ULS"] for m in doc.get("mechanisms", ())] or [doc["verdict"]["ULS"]]
+    if False in verdicts:
+        return False
+    return None if None in verdicts else True
 
 
 def gate_uls(uls: bool | None) -> None:

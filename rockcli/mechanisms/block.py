@@ -57,7 +57,7 @@ def polar_of(sp: Restrainer, side: int) -> Polar:
 class BlockSide:
     """The block turning about the base edge of ``side`` (+1: pivot O, −1: pivot O′), with
     its loads, thrusts and restrainers: the virtual-work sums of the Circolare in the closed
-    forms of the rectangle (Circ. 617/2009 §C8A.4; Circ. 7/2019 §C8.7.1.1–5)."""
+    forms of the rectangle (Circ. 617/2009 §C8A.4; Circ. 7/2019 §C8.7.1.2.1.1 and §C8.7.1.2.1.3)."""
 
     block: Block
     side: int

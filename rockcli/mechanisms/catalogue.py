@@ -28,7 +28,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 from rockcli.mechanisms.bodies import Body, gable, prism, triangle
 from rockcli.mechanisms.chain import Rotation, TwoBlock
@@ -189,9 +189,10 @@ def flexure(wall: Wall, storey: int, hinge: float, side: int, name: str) -> Chai
                   wall.g)  # fmt: skip
     upper = prism("upper block", 0.0, s.thickness, hinge, top, wall.width, wall.unit_weight,
                   wall.g)  # fmt: skip
-    on_upper = bearing(wall, hinge, top)
+    w_above, x_above = overburden_above(wall, storey)
+    on_upper = bearing(wall, hinge, top) + w_above
     on_lower = bearing(wall, base, hinge)
-    a_top = half_block(wall, bearing(wall, top, top, at_top=True), s.thickness, name)
+    a_top = half_block(wall, bearing(wall, top, top, at_top=True) + w_above, s.thickness, name)
     a_mid = half_block(wall, upper.weight + on_upper, s.thickness, name)
     a_base = half_block(wall, lower.weight + upper.weight + on_upper + on_lower, s.thickness,
                         name)  # fmt: skip
@@ -206,7 +207,31 @@ def flexure(wall: Wall, storey: int, hinge: float, side: int, name: str) -> Chai
             return None
         return 1 if above(z, hinge) else 0
 
-    return attach(wall, frame, motion, [(0, frame.body(lower)), (1, frame.body(upper))], link_of)
+    side_view = attach(wall, frame, motion, [(0, frame.body(lower)), (1, frame.body(upper))],
+                       link_of)  # fmt: skip
+    if w_above <= 0.0:
+        return side_view
+    at = Attached(1, frame.x(x_above), frame.z(top))
+    load = SideLoad(ABOVE, w_above, at, bears=True, moves=False)
+    return replace(side_view, loads=(*side_view.loads, load))
+
+
+#: The name of a vertical flexure's overburden from the wall above.
+ABOVE = "the wall above"
+
+
+def overburden_above(wall: Wall, storey: int) -> tuple[float, float]:
+    """(N [N], x [m]) of what bears on the top of ``storey`` from above: the storeys above,
+    the gable and the bearing loads above its top, and the x of their centroid (where the
+    chain takes it, bearing on the held top without horizontal inertia: the floor holds the
+    top, docs/mechanisms/vertical-flexure.md). (0, 0) for the last storey without a gable."""
+    top = wall.storey_bases()[storey - 1] + wall.storeys[storey - 1].height
+    items = [(b.weight, b.x) for b in storey_bodies(wall, storey)]
+    items += [(ld.weight, ld.x) for ld in wall.loads if ld.bears and above(ld.z, top)]
+    total = sum(w for w, _ in items)
+    if total <= 0.0:
+        return 0.0, 0.0
+    return total, sum(w * x for w, x in items) / total
 
 
 def bearing(wall: Wall, lo: float, hi: float, at_top: bool = False) -> float:

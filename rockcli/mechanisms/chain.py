@@ -11,8 +11,9 @@ A *motion* places each link (a rigid group of bodies) for any θ: the link's res
 point p0 goes to c(θ) and the link turns by φ(θ), so a point p of the link is at
 P(θ) = c(θ) + Rot(φ)(p − p0), with the derivative P′ = c′ + φ′·(−v_z, v_x), v = Rot(φ)(p − p0).
 Everything the two analyses need — the virtual displacements of the Circolare's virtual work
-(Circ. 7/2019 §C8.7.1.1; Circ. 617/2009 §C8A.4.1), the capacity curve by finite rotations, and
-the terms M, V, Γ of the equation of motion — follows from these positions and derivatives.
+(Circ. 7/2019 §C8.7.1.2.1.1, Eq. C8.7.1.1; Circ. 617/2009 §C8A.4.1), the capacity curve by
+finite rotations, and the terms M, V, Γ of the equation of motion — follows from these
+positions and derivatives.
 
 - :class:`Rotation`: one rigid body about the pivot (overturning, wedge, gable; the block).
 - :class:`TwoBlock`: vertical flexure. The lower link turns by θ about the pivot; the upper
@@ -24,7 +25,7 @@ the terms M, V, Γ of the equation of motion — follows from these positions an
   (the two-block chain of Sorrentino, Masiani & Griffith 2008, Struct. Eng. Mech. 29:433–453,
   and of Doherty et al. 2002, EESD 31:833–850).
 
-Pure and silent: only :mod:`math`.
+Pure and silent: only :mod:`math` and :mod:`rockcli.mechanics`.
 """
 
 from __future__ import annotations
@@ -32,11 +33,14 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
+from rockcli.mechanics import versine
+
 
 @dataclass(frozen=True)
 class LinkState:
     """Where one link is at θ: rest reference point (px, pz) now at (cx, cz), turned by phi,
-    and the derivatives of c and φ with respect to θ."""
+    the derivatives of c and φ with respect to θ, and c − p written without cancellation
+    (ux, uz: for the displacements of small rotations)."""
 
     px: float
     pz: float
@@ -46,6 +50,16 @@ class LinkState:
     dcx: float
     dcz: float
     dphi: float
+    ux: float = 0.0
+    uz: float = 0.0
+
+    def displacement(self, x: float, z: float) -> tuple[float, float]:
+        """(X − x, Z − z) of the link's point (x, z) since rest, to a few ulps at any
+        rotation: c − p plus (Rot(φ) − I)(p − p0) with 1 − cos φ from mechanics.versine (the
+        difference of the positions loses every digit below ε·|p|)."""
+        vx, vz = x - self.px, z - self.pz
+        s, vers = math.sin(self.phi), versine(self.phi, math.cos(self.phi))
+        return self.ux - vx * vers - vz * s, self.uz + vx * s - vz * vers
 
     def place(self, x: float, z: float) -> tuple[float, float, float, float]:
         """(X, Z, dX/dθ, dZ/dθ) of the link's point (x, z) at rest."""
@@ -74,6 +88,11 @@ class Rotation:
     def states(self, theta: float) -> tuple[LinkState, ...]:
         """The link at θ."""
         return (LinkState(0.0, 0.0, 0.0, 0.0, theta, 0.0, 0.0, 1.0),)
+
+
+#: Fixed-point steps of the upper link's rotation (each gains far more than the digits the
+#: first guess lacks: the step's slope is about ψ/2).
+UPPER_ROTATION_STEPS = 4
 
 
 @dataclass(frozen=True)
@@ -108,6 +127,20 @@ class TwoBlock:
                 hi = mid
         return lo
 
+    def upper_rotation(self, shift: float, length: float, delta: float) -> float:
+        """ψ from the hinge's inward shift x_H(0) − x_H(θ) = ``shift`` [m]: the constraint
+        cos(δ − ψ) − cos δ = shift/L, written 2·sin(δ − ψ/2)·sin(ψ/2) = shift/L (A&S 4.3.37)
+        and solved by fixed-point steps from ψ = δ − acos(cos δ + shift/L), so that a small ψ
+        keeps its digits (the difference δ − acos(…) alone loses them below ψ ≈ 1e-8)."""
+        q = max(-1.0, min(1.0, math.cos(delta) + shift / length))
+        psi = delta - math.acos(q)
+        for _ in range(UPPER_ROTATION_STEPS):
+            arg = shift / (2.0 * length * math.sin(delta - 0.5 * psi))
+            if not -1.0 <= arg <= 1.0:
+                break
+            psi = 2.0 * math.asin(arg)
+        return psi
+
     def states(self, theta: float) -> tuple[LinkState, LinkState]:
         """The two links at θ."""
         c, s = math.cos(theta), math.sin(theta)
@@ -115,12 +148,14 @@ class TwoBlock:
         hz = self.hinge_x * s + self.hinge_z * c
         dhx, dhz = -hz, hx
         length, delta = self.chord
-        q = max(-1.0, min(1.0, (self.top_x - hx) / length))
-        psi = delta - math.acos(q)
+        vers = versine(theta, c)
+        ux = -self.hinge_x * vers - self.hinge_z * s
+        uz = self.hinge_x * s - self.hinge_z * vers
+        psi = self.upper_rotation(-ux, length, delta)
         denom = length * math.sin(psi - delta)
         dpsi = dhx / denom if denom != 0.0 else math.inf
         lower = LinkState(0.0, 0.0, 0.0, 0.0, theta, 0.0, 0.0, 1.0)
-        upper = LinkState(self.hinge_x, self.hinge_z, hx, hz, -psi, dhx, dhz, -dpsi)
+        upper = LinkState(self.hinge_x, self.hinge_z, hx, hz, -psi, dhx, dhz, -dpsi, ux, uz)
         return lower, upper
 
 

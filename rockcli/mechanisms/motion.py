@@ -22,7 +22,7 @@ with
   (1 m/s²) along +x, i.e. towards the wall from the pivot, whose inertia forces push the
   mechanism open; a ground acceleration of a·g (a in g) gives g·Γ·a [N·m], and g·Γ is H of
   ChainSide.work_terms, so at rest α0 = V′(0)/(g Γ(0)) without thrusts and restrainers
-  (Circ. 7/2019 §C8.7.1.1; Circ. 617/2009 Eq. C8A.4.1);
+  (Circ. 7/2019 §C8.7.1.2.1.1, Eq. C8.7.1.1; Circ. 617/2009 Eq. C8A.4.1);
 - M′(θ) = dM/dθ [kg·m²/rad], by a central difference of M (:data:`MASS_STEP`).
 
 The thrusts (T of work_terms, opening) and the restrainers (minus the virtual work F·δx of

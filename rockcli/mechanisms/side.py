@@ -3,14 +3,15 @@ restrainers on the links of one motion, in the side frame (rockcli.mechanisms.ch
 
 From the one configuration function (the motion's link states) come, at any rotation θ:
 
-- the virtual-work sums of the Circolare (Circ. 7/2019 §C8.7.1.1; Circ. 617/2009 §C8A.4.1),
-  written per unit virtual rotation δθ with the virtual displacements δx = −∂X/∂θ (outward,
-  away from the wall in the side frame) and δy = ∂Z/∂θ (up):
+- the virtual-work sums of the Circolare (Circ. 7/2019 §C8.7.1.2.1.1, Eq. C8.7.1.1;
+  Circ. 617/2009 §C8A.4.1), written per unit virtual rotation δθ with the virtual
+  displacements δx = −∂X/∂θ (outward, away from the wall in the side frame) and δy = ∂Z/∂θ
+  (up):
   G = Σ_bearing P·δy (the weights' work against the opening), H = Σ_moving P·δx (the work of
   a unit horizontal load multiplier), T = Σ F_open·δx (the thrusts pushing the mechanism open),
   and the restrainers' F·δx; in equilibrium α(θ) = (G − T + Σ F_k δx_k) / H — at θ = 0 the
   Circolare's α0, along θ its capacity curve by finite rotations (§C8A.4.2.3);
-- M* and e* from the δx of the masses at θ = 0 (Circ. 7/2019 Eq. C8.7.1.2–3; Circ. 617/2009
+- M* and e* from the δx of the masses at θ = 0 (Circ. 7/2019 §C8.7.1.2.1.3; Circ. 617/2009
   Eq. C8A.4.2–3), each body lumped at its centroid or spread over its section;
 - the control point's displacement d_k(θ) (the bodies' centre of mass) for d*;
 - the equation of motion's M(θ), V(θ), Γ(θ) (rockcli.mechanisms.motion).
@@ -80,8 +81,10 @@ class ChainPoint:
     at: Attached
 
     def elongation(self, theta: float) -> float:
-        """The point's displacement away from the wall since rest, X(0) − X(θ) [m]."""
-        return self.side.place(self.at, 0.0)[0] - self.side.place(self.at, theta)[0]
+        """The point's displacement away from the wall since rest, X(0) − X(θ) [m], to a few
+        ulps at any rotation (chain.LinkState.displacement)."""
+        state = self.side.states(theta)[self.at.link]
+        return -state.displacement(self.at.x, self.at.z)[0]
 
     def moment(self, force: float, theta: float) -> float:
         """The virtual work of a horizontal force F [N] pulling the point back, per unit δθ:
@@ -168,8 +171,8 @@ class ChainSide:
         return out
 
     def first_moments(self, distributed: bool) -> tuple[float, float]:
-        """(Σ P δx, Σ P δx²) per unit virtual rotation [N·m, N·m²] (Circ. 7/2019 Eq.
-        C8.7.1.2): each body lumped at its centroid, or spread over its section."""
+        """(Σ P δx, Σ P δx²) per unit virtual rotation [N·m, N·m²] (Circ. 7/2019
+        §C8.7.1.2.1.3): each body lumped at its centroid, or spread over its section."""
         first = second = 0.0
         for p, dx, spread in self.masses_at_rest():
             first += p * dx
@@ -198,8 +201,14 @@ class ChainSide:
         return -self._centre(0.0)[1]
 
     def control_displacement(self, theta: float) -> float:
-        """d_k(θ): the control point's displacement away from the wall [m]."""
-        return self._centre(0.0)[0] - self._centre(theta)[0]
+        """d_k(θ): the control point's displacement away from the wall [m] (the bodies'
+        weighted displacements, without the cancellation of a difference of positions)."""
+        states = self.states(theta)
+        total = moved = 0.0
+        for link, body in self.bodies:
+            total += body.weight
+            moved -= body.weight * states[link].displacement(body.x, body.z)[0]
+        return moved / total
 
     def rotation_at(self, d_k: float) -> float:
         """The rotation at which the control point has moved d_k [m] (inverse of

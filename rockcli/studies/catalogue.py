@@ -25,6 +25,7 @@ from rockcli.mechanisms.catalogue import (
     flexure_range,
     hinge_of,
     optimal_hinge,
+    overburden_above,
     sides_of,
 )
 from rockcli.mechanisms.wall import OPTIMAL, MechanismSpec, MechanismType, Wall
@@ -111,7 +112,15 @@ def resolved(wall: Wall, spec: MechanismSpec, sides: tuple[int, ...], settings: 
     z = optimal_hinge(lo, hi, smallest)
     note = (f"optimal hinge at {z:.3f} m (the lowest α0 between {lo:.3f} and {hi:.3f} m: the "
             "storey less max(thickness, a tenth of its height) at each end)")  # fmt: skip
+    if min(z - lo, hi - z) <= RANGE_END * (hi - lo):
+        note += ("; the optimum lies at the end of the range, which decides it (α0 keeps "
+                 "falling towards it): give hinge_height where a crack shows the "
+                 "hinge")  # fmt: skip
     return replace(spec, hinge_height=z), (note,)
+
+
+#: An optimal hinge this close to an end of its range (a share of the range) is at the end.
+RANGE_END = 1e-6
 
 
 def spec_position(wall: Wall, spec: MechanismSpec, settings: NtcSettings) -> Position:
@@ -124,6 +133,14 @@ def spec_position(wall: Wall, spec: MechanismSpec, settings: NtcSettings) -> Pos
         return position(b.Z, b.H, b.N, b.T1, b.gamma, b.psi, b.damping)
     H = b.H if b.H is not None else b.Z + wall.height
     N = b.N if b.N is not None else len(wall.storeys)
+    if Z > H * (1.0 + 1e-9):
+        raise InputError(
+            f"below the base of mechanism '{spec.name}' (Z + its hinge = {Z:g} m): ψ = Z/H "
+            "would exceed 1",
+            where="building.H",
+            value=b.H,
+            allowed=f"the building's height, at least Z + the hinge's height = {Z:g} m",
+        )
     pos = position(Z, H, N, b.T1, b.gamma, None, b.damping)
     if b.H is None:
         pos = replace(pos, notes=(*pos.notes, f"building height H = Z + the wall's height = "
@@ -137,6 +154,33 @@ def spec_base(wall: Wall, spec: MechanismSpec) -> float:
         assert spec.storey is not None
         return wall.storey_bases()[spec.storey - 1]
     return hinge_of(spec, wall)
+
+
+def flexure_notes(wall: Wall, spec: MechanismSpec) -> tuple[str, ...]:
+    """What a vertical flexure carries from above, in a sentence (none for other types)."""
+    if spec.type is not MechanismType.VERTICAL_FLEXURE or spec.storey is None:
+        return ()
+    weight, x = overburden_above(wall, spec.storey)
+    if weight <= 0.0:
+        return ("vertical flexure: nothing above the storey's top but the loads at it",)
+    return (f"vertical flexure: the wall above (storeys, gable, bearing loads) bears on the "
+            f"held top, {weight / 1e3:.4g} kN at {x:.3f} m from the outer face, without "
+            "horizontal inertia",)  # fmt: skip
+
+
+def refuse_unstable(spec: MechanismSpec, cap: Capacity) -> None:
+    """InputError when the thrusts open the mechanism with no earthquake (α0 ≤ 0), as for
+    the block (rockcli.model.derived_checks): no code check describes a wall already falling."""
+    if cap.alpha0 > 0.0:
+        return
+    side = "outward (side 1)" if cap.mech.side > 0 else "inward (side −1)"
+    raise InputError(
+        f"the thrusts open mechanism '{spec.name}' {side} with no earthquake "
+        f"(α0 = {cap.alpha0:.4g})",
+        where="thrusts",
+        allowed="thrusts whose work is less than that of the weights (α0 > 0 on each side "
+        "each mechanism can open to)",
+    )
 
 
 def analyse_mechanism(
@@ -154,8 +198,11 @@ def analyse_mechanism(
     spec, notes = resolved(wall, spec, sides, settings)
     caps: list[Capacity] = [capacity(mechanism_of(wall, spec, s, settings), settings.FC)
                             for s in sides]  # fmt: skip
+    for c in caps:
+        refuse_unstable(spec, c)
     cap = min(caps, key=lambda c: (c.d0_star is None, c.d0_star or 0.0, -c.mech.side))
     by_side = {str(c.mech.side): c.alpha0 for c in caps}
+    notes = (*notes, *flexure_notes(wall, spec))
     if wall.f_m is not None:
         notes = (*notes, f"hinges set back by half the stress block a = N/(f_m·width), "
                  f"f_m = {wall.f_m / 1e6:g} MPa")  # fmt: skip
