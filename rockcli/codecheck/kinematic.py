@@ -110,7 +110,7 @@ def activation_terms(mech: Mechanism) -> dict[str, float]:
     restrainers = _spring_moments(mech, 0.0, False, False)
     return {
         "stabilising": g,
-        "thrusts": t,
+        "thrusts": t + 0.0,  # + 0.0: a side without thrust shows 0, not −0
         "restrainers": restrainers,
         "overturning": h,
         "alpha0": (g - t + restrainers) / h,

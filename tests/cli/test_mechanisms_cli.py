@@ -160,8 +160,12 @@ BAD = [
     ),
     ("gable without gable_height", BASE + '[[mechanisms]]\ntype = "gable"\n', "mechanisms[0].type"),
     ("unknown type", BASE + '[[mechanisms]]\ntype = "arch"\n', "mechanisms[0].type"),
-    ("thrust overturns it", BASE + '[[thrusts]]\nforce = 200.0\nheight = 4.0\n'
-     'direction = "positive"\n[[mechanisms]]\ntype = "overturning"\n', "thrusts"),
+    (
+        "thrust overturns it",
+        BASE + "[[thrusts]]\nforce = 200.0\nheight = 4.0\n"
+        'direction = "positive"\n[[mechanisms]]\ntype = "overturning"\n',
+        "thrusts",
+    ),
     (
         "crushing f_m",
         BASE + "[masonry]\nf_m = 1.0e5\n[[loads]]\nname = 'heavy'\nweight = 60.0\nheight = 4.0\n",
