@@ -13,11 +13,11 @@ Doherty et al. 2002, EESD 31:833–850 (vertical flexure).
 from __future__ import annotations
 
 import math
-from enum import StrEnum
 from typing import Any
 
 from pydantic import Field, model_validator
 
+from rockcli.mechanisms.wall import MechanismType
 from rockcli.model.bounds import MAX_LENGTH, MAX_STOREYS, MIN_LENGTH
 from rockcli.model.rules import number, rule_error
 from rockcli.model.schema_base import Table
@@ -36,13 +36,8 @@ EACH_FLOOR = "each-floor"
 OPTIMAL = "optimal"
 
 
-class MechanismKind(StrEnum):
-    """The mechanisms of the catalogue."""
-
-    OVERTURNING = "overturning"
-    WEDGE = "wedge"
-    VERTICAL_FLEXURE = "vertical-flexure"
-    GABLE = "gable"
+#: The mechanism types of the catalogue, the core's own (one list for the file and the core).
+MechanismKind = MechanismType
 
 
 class Storey(Table):
