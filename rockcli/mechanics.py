@@ -187,6 +187,13 @@ class Block:
         restrainers: the horizontal springs.
         loads: weights carried by or pushing on the block (mass required).
         thrusts: horizontal forces independent of the earthquake (mass required).
+        body: a rigid body of any shape in place of the rectangle (a mechanism of the
+            catalogue: a storey above a floor, a wall with its wedge, a gable), as
+            (x_pos, x_neg, z, I_G): its centroid's distances from pivot O and O′ and height
+            [m], and its moment of inertia about the centroid [kg·m²]. R and α are then its
+            centroid's about O (the amplitude ratio's α) and the loaded equation of motion
+            runs with the body as a rigid point mass plus I_G (docs/physics.md). None: the
+            rectangle 2R sin α × 2R cos α.
     """
 
     R: float
@@ -202,6 +209,7 @@ class Block:
     restrainers: tuple[Restrainer, ...] = field(default_factory=tuple)
     loads: tuple[Load, ...] = field(default_factory=tuple)
     thrusts: tuple[Thrust, ...] = field(default_factory=tuple)
+    body: tuple[float, float, float, float] | None = None
 
     @property
     def b(self) -> float:
@@ -215,7 +223,10 @@ class Block:
 
     @property
     def p2(self) -> float:
-        """p² = m g R / I0 = 3g/(4R) [rad²/s²] (paper Eq. 2, rectangular block)."""
+        """p² = m g R / I0 = 3g/(4R) [rad²/s²] (paper Eq. 2, rectangular block); a body of
+        another shape: m g R / I_O with its own I_O about O (Housner 1963's definition)."""
+        if self.body is not None:
+            return self.weight * self.R / self.inertia
         return frequency_parameter_sq(self.R, self.g)
 
     @property
@@ -225,10 +236,22 @@ class Block:
 
     @property
     def inertia(self) -> float:
-        """I0 = 4/3·m·R² [kg·m²], polar moment about a base corner (rectangular block)."""
+        """I0 = 4/3·m·R² [kg·m²], polar moment about a base corner (rectangular block); a body
+        of another shape: I_G + m·R² about pivot O (parallel axes)."""
         if self.mass is None:
             raise ValueError("the block has no mass")
+        if self.body is not None:
+            return self.body[3] + self.mass * self.R * self.R
         return polar_inertia(self.mass, self.R)
+
+    @property
+    def own_inertia(self) -> float:
+        """The inertia the equation of motion adds to the point table's J [kg·m²]: the
+        rectangle's I0 (its row of the table carries no mass), or a body's I_G (its row
+        carries its mass, so that J holds m·r_G² about either pivot)."""
+        if self.body is not None:
+            return self.body[3]
+        return self.inertia
 
     @property
     def weight(self) -> float:
@@ -244,8 +267,9 @@ class Block:
 
     @property
     def loaded(self) -> bool:
-        """True when loads or thrusts act on the block (the general equation of motion)."""
-        return bool(self.loads or self.thrusts)
+        """True when loads or thrusts act on the block, or it is a body of another shape (the
+        general equation of motion)."""
+        return bool(self.loads or self.thrusts) or self.body is not None
 
     def restitution(self, s: int) -> float:
         """Coefficient of restitution of an impact that ends a phase on side s [-]."""
@@ -558,6 +582,9 @@ def mirrored(block: Block) -> Block:
             for r in block.restrainers
         ),
         loads=tuple(replace(ld, x_pos=ld.x_neg, x_neg=ld.x_pos) for ld in block.loads),
+        body=None
+        if block.body is None
+        else (block.body[1], block.body[0], block.body[2], block.body[3]),
         thrusts=tuple(
             replace(th, x_pos=th.x_neg, x_neg=th.x_pos, direction=-th.direction)
             for th in block.thrusts
@@ -588,7 +615,9 @@ def mirror_symmetric(block: Block) -> bool:
         and r.phi_pos == r.phi_neg
         and r.yield_pos == r.yield_neg
         for r in block.restrainers
-    ) and all(ld.x_pos == ld.x_neg for ld in block.loads)
+    ) and all(ld.x_pos == ld.x_neg for ld in block.loads) and (
+        block.body is None or block.body[0] == block.body[1]
+    )
 
 
 # Columns of a row of the point table (point_table): the block at its centroid, each load,
@@ -611,6 +640,9 @@ def point_table(block: Block) -> tuple[float, ...]:
     """
     w = block.weight
     rows: list[float] = [w, w, 0.0, block.b, block.b, block.h, 0.0, 0.0, 0.0]
+    if block.body is not None:  # a rigid body of its own shape: a point mass at G, plus I_G
+        x_pos, x_neg, z, _ = block.body
+        rows = [w, w, 0.0, x_pos, x_neg, z, block.mass or 0.0, 0.0, 0.0]
     for ld in block.loads:
         m = ld.weight / block.g
         rows += [
@@ -713,6 +745,11 @@ def impact_restitution(block: Block, s: int) -> float:
     assert m is not None
     num = m * (4.0 * h * h - 2.0 * b * b) / 3.0
     den = i0
+    if block.body is not None:  # I_G + m(z² − x·x′) over I_G + m(x′² + z²), as a load below
+        x_pos, x_neg, z, i_g = block.body
+        x, x_new = (x_pos, x_neg) if s > 0 else (x_neg, x_pos)
+        num = i_g + m * (z * z - x * x_new)
+        den = i_g + m * (x_new * x_new + z * z)
     for ld in block.loads:
         mass = ld.weight / block.g
         x, x_new = (ld.x_pos, ld.x_neg) if s > 0 else (ld.x_neg, ld.x_pos)

@@ -57,6 +57,14 @@ EXIT_OVERTURNS = EXIT_GATE
     is_flag=True,
     help=f"Exit with code {EXIT_OVERTURNS} when the block overturns (for CI gates).",
 )
+@click.option(
+    "--mechanism",
+    "mechanism_name",
+    default=None,
+    metavar="NAME",
+    help="A wall's mechanism to rock (one rigid body: overturning, wedge, gable; default: "
+    "the governing one of the code check, under the model's demand or else the record's).",
+)
 @plot_option
 @force_option
 @output_format
@@ -77,6 +85,7 @@ def assess(
     ground,
     history_path,
     fail_on_overturn,
+    mechanism_name,
     plot_path,
     force,
     output,
@@ -96,7 +105,9 @@ def assess(
     check_outputs(force, history=history_path, plot=plot_path)
     record = load_record(record_path, record_format, dt, units, scale, pga)
     history = history_path is not None or plot_path is not None
-    out = run_assessment_output(model_path, record, engine, history=history, ground=ground)
+    out = run_assessment_output(
+        model_path, record, engine, history=history, ground=ground, mechanism=mechanism_name
+    )
     shaking = out.shaking or record
     doc = assessment_output_document(out, record)
     if history_path:

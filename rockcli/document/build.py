@@ -67,9 +67,9 @@ def build_document(
         raise ValueError("the report of one record needs its record (a suite: document.suite)")
     sections = (
         identification(inputs, w),
-        model_section(inputs, doc["rocking"]["model"], w),
+        model_section(inputs, doc["rocking"]["model"], w, doc["rocking"].get("mechanism")),
         demand_section(inputs, doc, record, w),
-        kinematic_section(inputs, doc["kinematic"], w),
+        kinematic_section(inputs, doc["kinematic"], w, out.rocking.block),
         rocking_section(doc["rocking"], out, record, w),
         comparison_section(doc, w),
         software_section(inputs.casebook, w),
@@ -128,17 +128,26 @@ def identification(inputs: Inputs, w: Words) -> Section:
 # --- model ----------------------------------------------------------------------------------
 
 
-def model_section(inputs: Inputs, m: Mapping[str, Any], w: Words) -> Section:
+def model_section(
+    inputs: Inputs, m: Mapping[str, Any], w: Words, mechanism: Mapping[str, str] | None = None
+) -> Section:
+    """The model as both analyses read it: the block (or the wall's mechanism rocked, a body
+    of its own shape: its centroid instead of 2b × 2h, and no rectangle drawn)."""
     from rockcli.document.figures import block_sketch
 
     n = w.number
+    shape = [("2b", n(2 * m["b"]), "m"), ("2h", n(2 * m["h"]), "m")]
+    intro = w("model.intro", file=inputs.model_path)
+    if mechanism is not None:
+        shape = [(w("model.centroid_x"), n(m["b"]), "m"), (w("model.centroid_z"), n(m["h"]), "m")]
+        intro = w("model.intro_mechanism", file=inputs.model_path, name=mechanism["name"],
+                  type=mechanism["type"])  # fmt: skip
     rows = [
         (w("model.name"), m["name"], ""),
         (w("model.kind"), m["kind"], ""),
         ("R", n(m["R"]), "m"),
         ("α", n(m["alpha"]), "rad"),
-        ("2b", n(2 * m["b"]), "m"),
-        ("2h", n(2 * m["h"]), "m"),
+        *shape,
         ("p", n(m["p"]), "rad/s"),
         (w("model.mass"), n(m["mass"], "{:.1f}") if m["mass"] else "—", "kg"),
         (w("model.restitution"), f"{n(m['e'])} ({m['e_rule']})", ""),
@@ -146,7 +155,7 @@ def model_section(inputs: Inputs, m: Mapping[str, Any], w: Words) -> Section:
         (w("model.uplift"), n(m["uplift_acceleration_g"]), "g"),
     ]
     blocks: list[Block] = [
-        Paragraph(w("model.intro", file=inputs.model_path)),
+        Paragraph(intro),
         Grid(
             w("model.geometry_caption"),
             (w("col.quantity"), w("col.value"), w("col.unit")),
@@ -156,7 +165,8 @@ def model_section(inputs: Inputs, m: Mapping[str, Any], w: Words) -> Section:
     if inputs.model.notes:
         blocks.insert(1, Paragraph(inputs.model.notes, "note"))
     blocks += loads_grids(m, w)
-    blocks.append(figure("sketch", block_sketch(m, w), w("figure.sketch_caption")))
+    if mechanism is None:  # the rectangle to scale; a wall's mechanism is not a rectangle
+        blocks.append(figure("sketch", block_sketch(m, w), w("figure.sketch_caption")))
     return Section("model", w("section.model"), tuple(blocks))
 
 
@@ -301,14 +311,16 @@ def record_demand_grids(demand: Mapping[str, Any], w: Words) -> list[Block]:
 # --- kinematic analysis ---------------------------------------------------------------------
 
 
-def kinematic_section(inputs: Inputs, kin: Mapping[str, Any], w: Words) -> Section:
+def kinematic_section(
+    inputs: Inputs, kin: Mapping[str, Any], w: Words, block: Any = None
+) -> Section:
     from rockcli.document.figures import capacity
 
     n = w.number
     blocks: list[Block] = [Paragraph(w(f"kin.intro_{kin['edition']}"))]
     if len(kin.get("mechanisms", ())) > 1:
         blocks.append(catalogue_grid(kin, w))
-    mechs = mechanisms(inputs.model, kin)
+    mechs = mechanisms(inputs.model, kin, block)
     blocks.append(activation_grid(mechs, w))
     quantities = [
         ("M*", participating_mass_of(mechs, kin), "kg", "kin.M_star"),
@@ -363,22 +375,28 @@ def catalogue_grid(kin: Mapping[str, Any], w: Words) -> Grid:
                 (False, *([True] * 8)))  # fmt: skip
 
 
-def mechanisms(model: Model, kin: Mapping[str, Any]) -> dict[int, Any]:
+def mechanisms(model: Model, kin: Mapping[str, Any], block: Any = None) -> dict[int, Any]:
     """The check's mechanism on each side it looks at (studies.kinematic.mechanism: the block,
-    its loads and thrusts as the check took them), keyed by side."""
+    its loads and thrusts as the check took them), keyed by side. ``block``: the body the
+    time history rocked (a wall's mechanism as a block of its shape; default: the model's)."""
     from rockcli.model.derive import to_block
     from rockcli.studies.kinematic import check_settings, mechanism
 
-    block, settings = to_block(model), check_settings(model, kin["edition"])
+    block = to_block(model) if block is None else block
+    settings = check_settings(model, kin["edition"])
     sides = {int(s) for s in kin.get("alpha0_by_side", {})} | {int(kin["side"])}
     return {side: mechanism(block, settings, side) for side in sorted(sides, reverse=True)}
 
 
 def participating_mass_of(mechs: Mapping[int, Any], kin: Mapping[str, Any]) -> float:
     """M* of the side the check governs (Circolare 617/2009 Eq. C8A.4.2; Circolare 7/2019
-    Eq. C8.7.1.2), by codecheck.kinematic.participating_mass, the function e* comes from."""
+    Eq. C8.7.1.2), by codecheck.kinematic.participating_mass, the function e* comes from; a
+    wall's mechanism: the catalogue's own (each body lumped at its centroid)."""
     from rockcli.codecheck.kinematic import participating_mass
 
+    for entry in kin.get("mechanisms", ()):
+        if entry["name"] == kin.get("mechanism") and len(kin["mechanisms"]) > 1:
+            return float(entry["M_star"])
     return participating_mass(mechs[int(kin["side"])])
 
 

@@ -53,9 +53,9 @@ def build_suite_document(
     first = records[0][1]
     sections = (
         identification(inputs, w),
-        model_section(inputs, first["model"], w),
+        model_section(inputs, first["model"], w, first.get("mechanism")),
         suite_demand_section(inputs, doc, check, w),
-        kinematic_section(inputs, doc["kinematic"], w),
+        kinematic_section(inputs, doc["kinematic"], w, records[0][0].block),
         suite_rocking_section(doc, records, w),
         suite_comparison_section(doc, w, named(doc, records)),
         software_section(inputs.casebook, w),

@@ -134,7 +134,7 @@ def pack_parameters(block: Block, settings: SolverSettings, rtol: float, atol: f
     par[L.P_INV_I0] = 1.0 / block.inertia if block.mass is not None else 0.0
     par[L.P_MAX_EVENTS] = float(settings.max_events)
     par[L.P_MAX_STEPS] = float(settings.max_steps)
-    par[L.P_I0] = block.inertia if block.mass is not None else 0.0
+    par[L.P_I0] = block.own_inertia if block.mass is not None else 0.0
     par[L.P_UPLIFT_POS], par[L.P_UPLIFT_NEG] = uplift_accelerations(block)
     par[L.P_E_NEG] = block.restitution(NEGATIVE)
     for s, scale, inertia in (
@@ -157,7 +157,7 @@ def rest_terms(block: Block, s: int) -> tuple[float, float]:
         return 0.0, 0.0
     if block.loaded:
         _, h, _, j, _ = point_moments(point_table(block), s, 0.0, 1.0)
-        return 1.0 / h, block.inertia + j
+        return 1.0 / h, block.own_inertia + j
     h = block.mass * block.g * block.R * (1.0 if block.linearized else math.cos(block.alpha))
     return 1.0 / h, block.inertia
 

@@ -347,6 +347,8 @@ def assessment_output_document(out: AssessmentOutput, record: Record) -> dict[st
     info = model_document(out.name, out.kind, out.block, out.e_rule)
     doc = assessment_document(info, record, out.block, out.result, out.warnings)
     doc["record"] = {**doc["record"], **input_document(out)}
+    if out.mechanism is not None:
+        doc["mechanism"] = {"name": out.mechanism[0], "type": out.mechanism[1]}
     return doc
 
 
@@ -469,12 +471,18 @@ EFFECT_COLUMNS = (
 def assessment_report(doc: dict[str, Any]) -> Report:
     """The terminal report of an assessment document."""
     m, rec, eng = doc["model"], doc["record"], doc["engine"]
+    mechanism = doc.get("mechanism")
+    title = f"Block: {m['name']} ({m['kind']})"
+    shape = ("thickness 2b × height 2h", f"{2 * m['b']:.3f} × {2 * m['h']:.3f}", "m", "")
+    if mechanism is not None:  # a wall's mechanism: a body of its own shape about its hinge
+        title = f"Mechanism: {m['name']}, {mechanism['name']} ({mechanism['type']})"
+        shape = ("centroid from pivot O: x, z", f"{m['b']:.3f}, {m['h']:.3f}", "m", "")
     block = key_value(
-        f"Block: {m['name']} ({m['kind']})",
+        title,
         [
             ("semi-diagonal R", m["R"], "m", "{:.4g}"),
             ("slenderness α", m["alpha"], "rad", "{:.4g}"),
-            ("thickness 2b × height 2h", f"{2 * m['b']:.3f} × {2 * m['h']:.3f}", "m", ""),
+            shape,
             ("frequency parameter p", m["p"], "rad/s", "{:.4g}"),
             ("restitution e", f"{m['e']:.4f} ({m['e_rule']})", "", ""),
             ("impact rule", m["impact_rule"], "", ""),

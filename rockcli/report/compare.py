@@ -65,7 +65,50 @@ def comparison_output_document(out: ComparisonOutput, record: Record) -> dict[st
 
     kin = kinematic_document(out.rocking.name, out.kinematic, out.rocking.warnings)
     roc = assessment_output_document(out.rocking, record)
-    return comparison_document(kin, roc, str(out.classification), str(out.code_demand))
+    doc = comparison_document(kin, roc, str(out.classification), str(out.code_demand))
+    if out.mechanisms:
+        doc["mechanisms"] = [mechanism_comparison(m) for m in out.mechanisms]
+        doc["governing"] = out.kinematic.governing
+    return doc
+
+
+def mechanism_comparison(m: Any) -> dict[str, Any]:
+    """One mechanism of the catalogue under the record: its code verdicts, its rocking
+    (None: not rocked yet) and their classification."""
+    rocking = None
+    if m.rocking is not None:
+        rocking = {"verdict": str(m.rocking.verdict), "max_ratio": m.rocking.max_ratio}
+    return {
+        "name": m.name,
+        "type": m.type,
+        "classification": None if m.classification is None else str(m.classification),
+        "code": m.code.verdict(),
+        "rocking": rocking,
+    }
+
+
+MECHANISM_COLUMNS = (
+    Column("name", "mechanism", align="left"),
+    Column("code_uls", "code ULS", align="left"),
+    Column("max_ratio", "max θ/α", "", "{:.3f}"),
+    Column("rocking", "rocking", align="left"),
+    Column("classification", "classification", align="left"),
+)
+
+
+def mechanisms_table(doc: dict[str, Any]) -> Table:
+    """The classification of every mechanism of the catalogue, the governing one first."""
+    rows = tuple(
+        {
+            "name": m["name"],
+            "code_uls": _yes_no(m["code"].get("ULS"), "satisfied", "NOT satisfied"),
+            "max_ratio": None if m["rocking"] is None else m["rocking"]["max_ratio"],
+            "rocking": "not rocked yet" if m["rocking"] is None else m["rocking"]["verdict"],
+            "classification": m["classification"] or "—",
+        }
+        for m in doc["mechanisms"]
+    )
+    return Table("Every mechanism (governing first)", MECHANISM_COLUMNS, rows)
 
 
 COLUMNS = (
@@ -171,9 +214,14 @@ def comparison_report(doc: dict[str, Any]) -> Report:
         + roc["record"].get("input_note", "the record itself, at the block's base"),
     )
     actions = kin.get("restrainer_actions", [])
+    catalogue = (mechanisms_table(doc),) if doc.get("mechanisms") else ()
+    if doc.get("mechanisms"):
+        shown = [n for n in kin.get("notes", ()) if n.startswith("the comparison shows")]
+        notes = (*notes, f"governing mechanism: {doc['governing']}; the first table shows "
+                 f"'{kin.get('mechanism')}'", *shown)  # fmt: skip
     return Report(
         title="rock compare",
-        tables=(table, *((actions_table(actions),) if actions else ())),
+        tables=(table, *((actions_table(actions),) if actions else ()), *catalogue),
         notes=notes,
         verdict=comparison_verdict(doc),
         warnings=tuple(

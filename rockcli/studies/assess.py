@@ -30,6 +30,7 @@ class AssessmentOutput:
         floor: the floor whose motion shook the block (None: the record itself, at the base).
         ground: True when the user asked to run the record at the base of a block at height.
         shaking: the floor motion the block saw (None: the record itself).
+        mechanism: (name, type) of the wall's mechanism rocked (None: the model's block).
     """
 
     name: str
@@ -42,6 +43,7 @@ class AssessmentOutput:
     floor: Floor | None = None
     ground: bool = False
     shaking: Record | None = None
+    mechanism: tuple[str, str] | None = None
 
 
 def settings_from(options: Any) -> SolverSettings:
@@ -58,21 +60,21 @@ def assess_model_output(
     ground: bool = False,
     file: str | None = None,
     tolerance_check: bool = True,
+    mechanism: str | None = None,
 ) -> AssessmentOutput:
     """Both polarities of a validated model under a record: the record itself for a block on
     the ground (or with ``ground``), its floor motion for a block at height (studies.floor).
 
     tolerance_check: run each polarity again at tighter tolerances and attach the check to
     its run (dynamics.tolerance; the fast engine only: the reference engine is the accuracy
-    reference, its tolerances fixed).
+    reference, its tolerances fixed). mechanism: the wall's mechanism to rock (None: the
+    governing one; a model of one block has only its own, "overturning, whole wall").
     """
     from rockcli.dynamics.simulate import assess
-    from rockcli.model.derive import describe, solver_options, to_block
+    from rockcli.model.derive import describe, solver_options
     from rockcli.model.plausible import model_warnings
-    from rockcli.studies.floor import block_input
 
-    shaking, floor = block_input(model, record, ground=ground, file=file)
-    block = to_block(model)
+    block, shaking, floor, rocked = rocked_input(model, record, ground, file, mechanism)
     settings = settings_from(solver_options(model))
     result = assess(
         block,
@@ -98,7 +100,35 @@ def assess_model_output(
         floor=floor,
         ground=ground,
         shaking=shaking if floor is not None else None,
+        mechanism=rocked,
     )
+
+
+#: The one mechanism of a model of one block.
+BLOCK_MECHANISM = "overturning, whole wall"
+
+
+def rocked_input(model: Model, record: Record, ground: bool, file: str | None,
+                 mechanism: str | None):  # fmt: skip
+    """(block, the motion it sees, its floor, (name, type) of a wall's mechanism or None)."""
+    from rockcli.model.derive import to_block
+    from rockcli.model.derive_wall import is_wall
+    from rockcli.studies.floor import block_input, floor_record
+
+    if not is_wall(model):
+        if mechanism not in (None, BLOCK_MECHANISM):
+            from rockcli.errors import InputError
+
+            raise InputError("no such mechanism", where="--mechanism", value=mechanism,
+                             allowed=f"'{BLOCK_MECHANISM}' (the model's block)")  # fmt: skip
+        shaking, floor = block_input(model, record, ground=ground, file=file)
+        return to_block(model), shaking, floor, None
+    from rockcli.studies.rocked import rocked_mechanism
+
+    rocked = rocked_mechanism(model, record, mechanism)
+    floor = None if ground else rocked.floor
+    shaking = record if floor is None else floor_record(record, floor)
+    return rocked.block, shaking, floor, (rocked.name, rocked.type)
 
 
 def assess_model(model: Model, record: Record, engine: str, *, ground: bool = False) -> Assessment:
@@ -107,11 +137,18 @@ def assess_model(model: Model, record: Record, engine: str, *, ground: bool = Fa
 
 
 def run_assessment_output(
-    model_path: str, record: Record, engine: str, *, history: bool = False, ground: bool = False
+    model_path: str,
+    record: Record,
+    engine: str,
+    *,
+    history: bool = False,
+    ground: bool = False,
+    mechanism: str | None = None,
 ) -> AssessmentOutput:
     """Load the model file and run :func:`assess_model_output`."""
     from rockcli.model.load import load_model
 
     return assess_model_output(
-        load_model(model_path), record, engine, history=history, ground=ground, file=model_path
-    )
+        load_model(model_path), record, engine, history=history, ground=ground, file=model_path,
+        mechanism=mechanism,
+    )  # fmt: skip

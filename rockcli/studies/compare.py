@@ -16,7 +16,7 @@ from rockcli.codecheck.result import KinematicResult
 from rockcli.dynamics.result import Assessment, Verdict
 from rockcli.model.schema import Model
 from rockcli.records.record import Record
-from rockcli.studies.assess import AssessmentOutput
+from rockcli.studies.assess import AssessmentOutput, assess_model_output
 
 
 class Classification(StrEnum):
@@ -106,6 +106,26 @@ class ComparisonOutput:
     rocking: AssessmentOutput
     classification: Classification
     code_demand: CodeDemand = CodeDemand.RECORD
+    mechanisms: tuple[MechanismComparison, ...] = ()
+
+
+@dataclass(frozen=True)
+class MechanismComparison:
+    """One mechanism of a wall's catalogue under the record: its code check and, when the
+    time history rocks it, its rocking and the classification (None: not rocked yet).
+
+    Attributes:
+        name, type: the mechanism's.
+        code: its kinematic result.
+        rocking: both polarities (None: a vertical flexure, not rocked yet).
+        classification: how its two collapse verdicts relate (None: not rocked).
+    """
+
+    name: str
+    type: str
+    code: KinematicResult
+    rocking: Assessment | None
+    classification: Classification | None
 
 
 def compare_model_output(
@@ -130,7 +150,6 @@ def compare_model_output(
     motion of the record (the code check applies the code's at-height rules to the record's
     spectrum); ground: rock it on the record itself.
     """
-    from rockcli.studies.assess import assess_model_output
     from rockcli.studies.kinematic import kinematic_model
 
     check_code_demand(model, code_demand)
@@ -142,26 +161,62 @@ def compare_model_output(
         spectrum=spectrum if own else None,
         grid_file=grid_file,
     )
-    rocking = assess_model_output(model, record, engine, history=history, ground=ground, file=file)
-    kin = rocked_mechanism(kin)
+    main = main_mechanism(kin)
+    rocking = assess_model_output(
+        model, record, engine, history=history, ground=ground, file=file,
+        mechanism=None if main is None else main.name,
+    )  # fmt: skip
+    kin = shown_result(kin, main)
     kind = classify(code_collapse(kin), rocking_collapse(rocking.result))
-    return ComparisonOutput(kin, rocking, kind, CodeDemand(code_demand))
+    others = catalogue_comparisons(model, record, engine, kin, main, rocking, ground)
+    return ComparisonOutput(kin, rocking, kind, CodeDemand(code_demand), others)
 
 
-def rocked_mechanism(kin: KinematicResult) -> KinematicResult:
-    """The code check of the mechanism the time history rocks (the overturning of the whole
-    wall about its base), the catalogue kept; a note names the governing mechanism when it
-    is another one, which the time history does not rock yet (like with like)."""
+def main_mechanism(kin: KinematicResult) -> Any:
+    """The mechanism a wall's comparison shows in full: the governing one when the time
+    history rocks it, else the first one it rocks in the governing order; None for a model of
+    one block (or a wall with one mechanism)."""
+    from rockcli.mechanisms.wall import MechanismType
+
+    if len(kin.catalogue) < 2:
+        return None
+    rockable = [m for m in kin.catalogue if m.type != MechanismType.VERTICAL_FLEXURE.value]
+    return rockable[0] if rockable else kin.catalogue[0]
+
+
+def shown_result(kin: KinematicResult, main: Any) -> KinematicResult:
+    """The main mechanism's code check, the catalogue kept; a note names the governing one
+    when it is another, which the time history does not rock yet (like with like)."""
     from dataclasses import replace
 
-    rocked = [m for m in kin.catalogue if m.type == "overturning" and m.hinge_height == 0.0]
-    if not rocked or rocked[0].name == kin.mechanism:
+    if main is None or main.name == kin.mechanism:
         return kin
-    m = rocked[0]
-    note = (f"the comparison is made on '{m.name}', the mechanism the time history rocks; the "
-            f"governing mechanism '{kin.governing}' is checked by the code only")  # fmt: skip
-    return replace(m.result, catalogue=kin.catalogue, governing=kin.governing,
-                   notes=(*m.result.notes, note))  # fmt: skip
+    note = (f"the comparison shows '{main.name}', the first mechanism in the governing order "
+            f"that the time history rocks; the governing mechanism '{kin.governing}' is a "
+            "vertical flexure, checked by the code only")  # fmt: skip
+    return replace(main.result, catalogue=kin.catalogue, governing=kin.governing,
+                   notes=(*main.result.notes, note))  # fmt: skip
+
+
+def catalogue_comparisons(model, record, engine, kin, main, rocking, ground):
+    """Every mechanism of a wall's catalogue: the main one's comparison as made, each other
+    one the time history rocks run and classified, a vertical flexure not rocked."""
+    from rockcli.mechanisms.wall import MechanismType
+
+    if main is None:
+        return ()
+    out = []
+    for m in kin.catalogue:
+        if m.name == main.name:
+            run: Assessment | None = rocking.result
+        elif m.type == MechanismType.VERTICAL_FLEXURE.value:
+            run = None
+        else:
+            run = assess_model_output(model, record, engine, ground=ground, mechanism=m.name,
+                                      tolerance_check=False).result  # fmt: skip
+        kind = None if run is None else classify(code_collapse(m.result), rocking_collapse(run))
+        out.append(MechanismComparison(m.name, m.type, m.result, run, kind))
+    return tuple(out)
 
 
 def run_comparison_output(model_path: str, record: Record, **options: Any) -> ComparisonOutput:

@@ -1,0 +1,123 @@
+"""A mechanism that is one rigid body, as the rocking engine takes it: a Block of its shape.
+
+Overturning about a storey's base, the wedge and the gable each turn as one rigid body about
+the edge of their hinge section (rockcli.mechanisms.catalogue). The rocking engine's loaded
+equation of motion is already Lagrange's equation of one rigid body of any shape about a pivot
+on each side (rockcli.dynamics.rules.loaded_angular_acceleration: [I + J(a)]·ä + ½J′ȧ² =
+−G + s·T + s·üg·H − ΣM_k). So the mechanism enters the engine as a
+:class:`rockcli.mechanics.Block` whose ``body`` is the composite of its bodies: its weight at
+their centroid (a rigid point mass in the point table) plus its own moment of inertia about
+that centroid, I_G = Σ [I_Gi + m_i·|r_i − r_G|²] (parallel axes). The loads, thrusts and
+restrainers above the hinge go in from each pivot (x from O, x′ from O′, z above the hinge).
+Each side's coefficient of restitution is Housner's, from the angular momentum about the new
+pivot (mechanics.impact_restitution).
+
+Pure and silent: only :mod:`math`, :mod:`rockcli.mechanics` and the package's modules.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, replace
+
+from rockcli.mechanics import Block, Load, Restrainer, Thrust, point_polar
+from rockcli.mechanisms.bodies import Body
+from rockcli.mechanisms.catalogue import (
+    above,
+    gable_body,
+    hinge_of,
+    same_height,
+    set_back,
+    storey_bodies,
+    wedge_body,
+)
+from rockcli.mechanisms.wall import MechanismSpec, MechanismType, Wall
+
+
+@dataclass(frozen=True)
+class Composite:
+    """Bodies turning together: weight [N], mass [kg], centroid (x, z) [m], I_G [kg·m²]."""
+
+    weight: float
+    mass: float
+    x: float
+    z: float
+    inertia: float
+
+
+def composite(bodies: list[Body]) -> Composite:
+    """The bodies as one rigid body (centroid by weights; I_G by parallel axes)."""
+    weight = sum(b.weight for b in bodies)
+    mass = sum(b.mass for b in bodies)
+    x = sum(b.weight * b.x for b in bodies) / weight
+    z = sum(b.weight * b.z for b in bodies) / weight
+    inertia = sum(b.inertia + b.mass * ((b.x - x) ** 2 + (b.z - z) ** 2) for b in bodies)
+    return Composite(weight, mass, x, z, inertia)
+
+
+def rockable(spec: MechanismSpec) -> bool:
+    """True when the mechanism is one rigid body (the engine rocks it today)."""
+    return spec.type is not MechanismType.VERTICAL_FLEXURE
+
+
+def parts(wall: Wall, spec: MechanismSpec) -> tuple[list[Body], float, float]:
+    """(bodies, hinge height [m], thickness of the hinge section [m]) of a rigid mechanism."""
+    hinge = hinge_of(spec, wall)
+    if spec.type is MechanismType.GABLE:
+        return [gable_body(wall)], hinge, wall.storeys[-1].thickness
+    if spec.type is MechanismType.WEDGE:
+        assert spec.angle is not None and spec.sides is not None
+        bodies = [*storey_bodies(wall, 0), wedge_body(wall, spec.angle, spec.sides)]
+        return bodies, hinge, wall.storeys[0].thickness
+    bases = wall.storey_bases()
+    k = next(i for i, b in enumerate(bases) if same_height(b, hinge))
+    return storey_bodies(wall, k), hinge, wall.storeys[k].thickness
+
+
+def rigid_block(wall: Wall, spec: MechanismSpec, block: Block) -> Block:
+    """The rigid mechanism ``spec`` as a Block of its own shape; ``block`` gives the model's
+    settings the mechanism keeps (restitution rule through ``e``, motion, rebound)."""
+    bodies, hinge, thickness = parts(wall, spec)
+    a = set_back(wall, bodies, hinge, thickness, spec.name)
+    lo, hi = a, thickness - a  # the pivots O (outer edge) and O′ (inner edge) in x
+
+    def xs(x: float) -> tuple[float, float]:
+        return x - lo, hi - x
+
+    body = composite(bodies)
+    x_pos, x_neg = xs(body.x)
+    z = body.z - hinge
+    loads = tuple(
+        Load(ld.name, ld.weight, *xs(ld.x), ld.z - hinge, ld.bears, ld.moves)
+        for ld in wall.loads
+        if above(ld.z, hinge)
+    )
+    thrusts = tuple(
+        Thrust(th.name, th.force, th.direction, *xs(th.x), th.z - hinge)
+        for th in wall.thrusts
+        if above(th.z, hinge)
+    )
+    members = tuple(
+        placed(rs.member, *xs(rs.x), rs.z - hinge) for rs in wall.restrainers if above(rs.z, hinge)
+    )
+    one_sided = block.one_sided or spec.type is MechanismType.WEDGE
+    return replace(
+        block,
+        R=math.hypot(x_pos, z),
+        alpha=math.atan2(x_pos, z),
+        mass=body.mass,
+        one_sided=one_sided,
+        free_side=1 if spec.type is MechanismType.WEDGE else block.free_side,
+        linearized=False,
+        restrainers=members,
+        loads=loads,
+        thrusts=thrusts,
+        body=(x_pos, x_neg, z, body.inertia),
+        e_neg=None,
+    )
+
+
+def placed(member: Restrainer, x_pos: float, x_neg: float, z: float) -> Restrainer:
+    """The member attached at (x from O, x′ from O′, z above the hinge)."""
+    (r_pos, phi_pos), (r_neg, phi_neg) = point_polar(x_pos, z), point_polar(x_neg, z)
+    return replace(member, r_pos=r_pos, phi_pos=phi_pos, r_neg=r_neg, phi_neg=phi_neg)

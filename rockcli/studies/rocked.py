@@ -1,0 +1,111 @@
+"""Which mechanism of a wall the time history rocks, as a block, and on which floor motion.
+
+Composition only. A wall's rigid mechanisms (overturning about a storey's base, the wedge, the
+gable) rock as a Block of their own shape (rockcli.mechanisms.rigid); the mechanism is the one
+named (``--mechanism``) or the governing one of the code check on the same record (like with
+like: the code side's spectrum is the record's, as `rock compare` takes it). A storey
+mechanism rocks on the floor motion at its hinge, Z + the hinge's height, through the same
+first mode as the code check's floor spectrum (rockcli.studies.catalogue.spec_position).
+The two-block vertical flexure does not rock yet: asking for it is one clear error.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, replace
+
+from rockcli.errors import InputError
+from rockcli.mechanics import Block, impact_restitution
+from rockcli.mechanisms.wall import MechanismSpec, Wall
+from rockcli.model.schema import Model, RestitutionModel
+from rockcli.records.record import Record
+from rockcli.studies.floor import Floor
+
+
+@dataclass(frozen=True)
+class Rocked:
+    """The mechanism the time history rocks: its name and type, its block, its floor."""
+
+    name: str
+    type: str
+    block: Block
+    floor: Floor | None
+
+
+def named_spec(wall: Wall, name: str) -> MechanismSpec:
+    """The mechanism of that name (InputError listing the catalogue's names)."""
+    for spec in wall.mechanisms:
+        if spec.name == name:
+            return spec
+    raise InputError(
+        "no such mechanism",
+        where="--mechanism",
+        value=name,
+        allowed="one of: " + "; ".join(f"'{s.name}'" for s in wall.mechanisms),
+    )
+
+
+def governing_spec(model: Model, wall: Wall, record: Record) -> MechanismSpec:
+    """The governing mechanism of the code check: under the model's own demand when it sets
+    one (so that every record of a suite rocks the same mechanism), else under the record's
+    spectrum (`rock compare` names the mechanism it rocks itself)."""
+    from rockcli.studies.kinematic import kinematic_model
+
+    own = model.ntc is not None and model.ntc.demand is not None  # a site needs the grid
+    kin = kinematic_model(model) if own else kinematic_model(model, record=record)
+    return named_spec(wall, kin.governing or wall.mechanisms[0].name)
+
+
+def rockable_spec(wall: Wall, spec: MechanismSpec) -> MechanismSpec:
+    """The spec, or InputError when the time history cannot rock it yet (vertical flexure)."""
+    from rockcli.mechanisms.rigid import rockable
+
+    if rockable(spec):
+        return spec
+    rigid = [s.name for s in wall.mechanisms if rockable(s)]
+    raise InputError(
+        f"the time history cannot yet rock '{spec.name}' (a vertical flexure: two blocks); "
+        "rock kinematic checks it",
+        where="--mechanism",
+        value=spec.name,
+        allowed="a mechanism of one rigid body: " + "; ".join(f"'{n}'" for n in rigid)
+        if rigid
+        else "none in this model: rock kinematic",
+    )
+
+
+def system_restitution(block: Block, model: Model) -> Block:
+    """Housner's e of the mechanism's body with its loads, per side, times the model's factor
+    (an explicit e as given): mechanics.impact_restitution, angular momentum about the new
+    pivot (docs/physics.md, "Impacts")."""
+    table = model.restitution
+    if table.rule is RestitutionModel.EXPLICIT:
+        return block
+    factor = 1.0 if table.factor is None else table.factor
+    e_pos, e_neg = (max(impact_restitution(block, s), 0.0) * factor for s in (1, -1))
+    return replace(block, e=e_pos, e_neg=e_neg)
+
+
+def rocked_mechanism(model: Model, record: Record, name: str | None) -> Rocked:
+    """The mechanism of a wall model the time history rocks, its block and its floor."""
+    from rockcli.mechanisms.rigid import rigid_block
+    from rockcli.model.derive import block_of
+    from rockcli.model.derive_wall import to_wall
+
+    wall = to_wall(model)
+    spec = named_spec(wall, name) if name is not None else governing_spec(model, wall, record)
+    spec = rockable_spec(wall, spec)
+    block = system_restitution(rigid_block(wall, spec, block_of(model)), model)
+    return Rocked(spec.name, spec.type.value, block, mechanism_floor(model, wall, spec))
+
+
+def mechanism_floor(model: Model, wall: Wall, spec: MechanismSpec) -> Floor | None:
+    """The floor at the mechanism's base hinge (None on the ground)."""
+    from rockcli.studies.catalogue import spec_position
+    from rockcli.studies.kinematic import check_settings
+
+    pos = spec_position(wall, spec, check_settings(model))
+    if not pos.at_height:
+        return None
+    assert pos.T1 is not None
+    b = model.building
+    return Floor(Z=pos.Z, T1=pos.T1, psi=pos.psi, gamma=pos.gamma, xi=b.damping, notes=pos.notes)
