@@ -609,14 +609,16 @@ def mirror_symmetric(block: Block) -> bool:
         return False
     # mirrored(block) == block, field by field without building the mirror (once per case of
     # a study): each restrainer and load the same from either pivot.
-    return all(
-        r.k_pos == r.k_neg
-        and r.r_pos == r.r_neg
-        and r.phi_pos == r.phi_neg
-        and r.yield_pos == r.yield_neg
-        for r in block.restrainers
-    ) and all(ld.x_pos == ld.x_neg for ld in block.loads) and (
-        block.body is None or block.body[0] == block.body[1]
+    return (
+        all(
+            r.k_pos == r.k_neg
+            and r.r_pos == r.r_neg
+            and r.phi_pos == r.phi_neg
+            and r.yield_pos == r.yield_neg
+            for r in block.restrainers
+        )
+        and all(ld.x_pos == ld.x_neg for ld in block.loads)
+        and (block.body is None or block.body[0] == block.body[1])
     )
 
 
