@@ -65,6 +65,12 @@ EXIT_OVERTURNS = EXIT_GATE
     help="A wall's mechanism to rock (one rigid body: overturning, wedge, gable; default: "
     "the governing one of the code check, under the model's demand or else the record's).",
 )
+@click.option(
+    "--all",
+    "all_mechanisms",
+    is_flag=True,
+    help="Rock every mechanism of a wall that is one rigid body, one after the other.",
+)
 @plot_option
 @force_option
 @output_format
@@ -86,6 +92,7 @@ def assess(
     history_path,
     fail_on_overturn,
     mechanism_name,
+    all_mechanisms,
     plot_path,
     force,
     output,
@@ -104,6 +111,11 @@ def assess(
         )  # fmt: skip
     check_outputs(force, history=history_path, plot=plot_path)
     record = load_record(record_path, record_format, dt, units, scale, pga)
+    if all_mechanisms:
+        singles = (mechanism_name, history_path, plot_path)
+        return assess_every_mechanism(
+            model_path, record, engine, ground, output, fail_on_overturn, singles
+        )
     history = history_path is not None or plot_path is not None
     out = run_assessment_output(
         model_path, record, engine, history=history, ground=ground, mechanism=mechanism_name
@@ -133,6 +145,41 @@ def assess(
     show(doc, output, assessment_report)
     exit_if_non_finite(doc["runs"])
     if fail_on_overturn and doc["verdict"] == "overturns":
+        raise SystemExit(EXIT_OVERTURNS)
+
+
+def assess_every_mechanism(
+    model_path, record, engine, ground, output, fail_on_overturn, single_options
+) -> None:
+    """--all: each mechanism the time history rocks, a document each (JSON ``mechanisms``)."""
+    from rockcli.errors import InputError
+    from rockcli.report.assess import assessment_output_document, assessment_report
+    from rockcli.report.table import console_for, render
+    from rockcli.studies.assess import run_assessment_output
+    from rockcli.studies.rocked import rockable_names
+
+    for option, value in zip(("--mechanism", "--history", "--plot"), single_options, strict=True):
+        if value is not None:
+            raise InputError("not with --all (one mechanism's option)", where=option,
+                             value=value, allowed=f"either --all or {option}")  # fmt: skip
+    docs = [
+        assessment_output_document(
+            run_assessment_output(model_path, record, engine, ground=ground, mechanism=name),
+            record,
+        )
+        for name in rockable_names(model_path)
+    ]
+    if output == "json":
+        import json
+
+        print(json.dumps({"mechanisms": docs}, indent=2, allow_nan=False))
+    else:
+        console = console_for()
+        for doc in docs:
+            render(assessment_report(doc), console)
+    for doc in docs:
+        exit_if_non_finite(doc["runs"])
+    if fail_on_overturn and any(doc["verdict"] == "overturns" for doc in docs):
         raise SystemExit(EXIT_OVERTURNS)
 
 

@@ -109,3 +109,16 @@ def mechanism_floor(model: Model, wall: Wall, spec: MechanismSpec) -> Floor | No
     assert pos.T1 is not None
     b = model.building
     return Floor(Z=pos.Z, T1=pos.T1, psi=pos.psi, gamma=pos.gamma, xi=b.damping, notes=pos.notes)
+
+
+def rockable_names(model_path: str) -> list[str | None]:
+    """The mechanisms of the model file the time history rocks, in the catalogue's order
+    ([None]: a model of one block, its own)."""
+    from rockcli.mechanisms.rigid import rockable
+    from rockcli.model.derive_wall import is_wall, to_wall
+    from rockcli.model.load import load_model
+
+    model = load_model(model_path)
+    if not is_wall(model):
+        return [None]
+    return [spec.name for spec in to_wall(model).mechanisms if rockable(spec)]

@@ -136,6 +136,18 @@ def test_assess_refuses_a_vertical_flexure_in_one_line() -> None:
     assert "'gable'" in err  # the mechanisms it can rock are named
 
 
+def test_assess_all_rocks_every_rigid_mechanism() -> None:
+    code, out, err = run("assess", str(FACADE), "--record", str(RICKER), "--all",
+                         "--format", "json")  # fmt: skip
+    assert code == 0, err
+    names = [d["mechanism"]["name"] for d in json.loads(out)["mechanisms"]]
+    assert names == ["overturning, whole wall", "overturning, storey 2",
+                     "wedge 30°, both return walls", "gable"]  # fmt: skip
+    code, _, err = run("assess", str(FACADE), "--record", str(RICKER), "--all",
+                       "--mechanism", "gable")  # fmt: skip
+    assert code == 2 and "not with --all" in err
+
+
 def test_compare_lists_every_mechanism() -> None:
     code, out, err = run("compare", str(FACADE), "--record", str(RICKER), "--format", "json")
     assert code == 0, err
