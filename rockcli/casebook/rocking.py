@@ -58,9 +58,30 @@ def model_settings(model: Model, block: Block, **changes: object) -> SolverSetti
     return replace(settings, tail=TAIL_OVER_P / block.p, **changes)  # type: ignore[arg-type]
 
 
-def release(model: Model, theta0: float, omega0: float, **changes: object) -> RockingRun:
-    """Free rocking from θ0 [rad] with θ̇0 [rad/s], no ground motion."""
-    block = to_block(model)
+def case_block(model: Model, mechanism: str | None = None) -> Block:
+    """The block a case rocks: the model's, or a wall's mechanism of one rigid body as a block
+    of its own shape (the named one, else the first such; rockcli.studies.rocked)."""
+    from rockcli.model.derive_wall import is_wall
+
+    if not is_wall(model):
+        return to_block(model)
+    from rockcli.mechanisms.rigid import rigid_block, rockable
+    from rockcli.model.derive import block_of
+    from rockcli.model.derive_wall import to_wall
+    from rockcli.studies.rocked import named_spec, rockable_spec, system_restitution
+
+    wall = to_wall(model)
+    first = next((s for s in wall.mechanisms if rockable(s)), wall.mechanisms[0])
+    spec = rockable_spec(wall, first if mechanism is None else named_spec(wall, mechanism))
+    return system_restitution(rigid_block(wall, spec, block_of(model)), model)
+
+
+def release(
+    model: Model, theta0: float, omega0: float, block: Block | None = None, **changes: object
+) -> RockingRun:
+    """Free rocking from θ0 [rad] with θ̇0 [rad/s], no ground motion (``block``: the case's,
+    default the model's)."""
+    block = to_block(model) if block is None else block
     time, accel = np.array([0.0, QUIET_DT]), np.zeros(2)
     settings = model_settings(model, block, **changes)
     return simulate(block, time, accel, QUIET_DT, settings=settings, theta0=theta0, omega0=omega0)
@@ -68,15 +89,16 @@ def release(model: Model, theta0: float, omega0: float, **changes: object) -> Ro
 
 def free_period(model: Model, inputs: FreeRockingInput) -> float:
     """The time from the first to the third impact [s]: one full cycle (e = 1)."""
-    theta0 = inputs.phi0 * to_block(model).alpha
-    first = release(model, theta0, 0.0, max_events=1).t_end
-    third = release(model, theta0, 0.0, max_events=3).t_end
+    block = case_block(model, inputs.mechanism)
+    theta0 = inputs.phi0 * block.alpha
+    first = release(model, theta0, 0.0, block, max_events=1).t_end
+    third = release(model, theta0, 0.0, block, max_events=3).t_end
     return third - first
 
 
 def free_amplitude(model: Model, inputs: FreeRockingInput) -> float:
     """|θ| at the peak of the half-cycle after the given number of impacts [rad]."""
-    block = to_block(model)
+    block = case_block(model, inputs.mechanism)
     theta0 = inputs.phi0 * block.alpha
     time = np.arange(0.0, QUIET_DT + inputs.dt / 2, inputs.dt)
     settings = model_settings(model, block, max_events=inputs.impacts + 1)

@@ -152,13 +152,17 @@ class KinematicInput(Table):
 
 
 class FreeRockingInput(Table):
-    """``free-rocking``: released from rest at θ0 = φ0·α; the amplitude after n impacts."""
+    """``free-rocking``: released from rest at θ0 = φ0·α; the amplitude after n impacts. A
+    wall's model names the mechanism rocked (one rigid body; default: its first such)."""
 
     phi0: float = Field(strict=True, gt=0, lt=1, description="θ0/α [-]")
     impacts: int = Field(
         strict=True, default=1, ge=1, le=20, description="impacts before the amplitude"
     )
     dt: SampleInterval = 1e-3
+    mechanism: str | None = Field(
+        None, min_length=1, description="a wall's mechanism of one rigid body, by name"
+    )
 
 
 class ImpulseInput(Table):

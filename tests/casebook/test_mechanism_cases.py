@@ -67,6 +67,8 @@ def test_mechanism_cases_pass(tmp_path: Path) -> None:
 def test_every_mechanism_type_has_a_case() -> None:
     types = set()
     for loaded in load_case_file(CASE_FILE):
+        if loaded.case.kind != "kinematic":  # the rocking of a rigid mechanism (issue 22)
+            continue
         assert loaded.model is not None and isinstance(loaded.input, KinematicInput)
         result = kinematic_model(loaded.model, edition=loaded.input.edition)
         types.add(catalogue_entry(result, loaded.input.mechanism).type)
