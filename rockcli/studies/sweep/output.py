@@ -84,16 +84,33 @@ RESULT_COLUMNS: dict[str, type] = {
 TOLERANCE_COLUMNS: dict[str, type] = {"sensitive": bool}
 
 
+#: Result columns of a study whose base model is a wall with its mechanism catalogue, after
+#: the others: the mechanism each case rocks and checks (a study of a block writes the header
+#: it always did).
+MECHANISM_COLUMNS: dict[str, type] = {"mechanism": str}
+
+
+def is_wall_study(plan: StudyPlan) -> bool:
+    """True when the study's base model is a wall of storeys or lists mechanisms."""
+    geometry = plan.base.get("geometry")
+    storeys = isinstance(geometry, dict) and "storeys" in geometry
+    return storeys or bool(plan.base.get("mechanisms"))
+
+
 def columns(plan: StudyPlan) -> list[str]:
     """The header of cases.csv."""
-    extra = TOLERANCE_COLUMNS if plan.check_tolerance else {}
+    extra = {
+        **(TOLERANCE_COLUMNS if plan.check_tolerance else {}),
+        **(MECHANISM_COLUMNS if is_wall_study(plan) else {}),
+    }
     return ["case", "record", *(a.name for a in plan.axes), *RESULT_COLUMNS, *extra]
 
 
 def result_kinds(header: Sequence[str]) -> dict[str, type]:
     """The result columns of a header and their types (RESULT_COLUMNS, and the tolerance
-    check's when the header has them)."""
-    extra = {k: v for k, v in TOLERANCE_COLUMNS.items() if k in header}
+    check's and the mechanism's when the header has them)."""
+    optional = {**TOLERANCE_COLUMNS, **MECHANISM_COLUMNS}
+    extra = {k: v for k, v in optional.items() if k in header}
     return {**RESULT_COLUMNS, **extra}
 
 

@@ -165,22 +165,6 @@ def run_case(
     R, alpha = model.geometry.polar
     row: dict[str, Any] = {"block_R": R, "block_alpha": alpha}
     roc = kin = None
-    if "rocking" in plan.analyses and record is not None:
-        from rockcli.studies.assess import assess_model_output
-        from rockcli.studies.floor import model_floor
-
-        ground = plan.ground and model_floor(model) is not None
-        out = assess_model_output(
-            model, record, plan.engine, ground=ground, tolerance_check=plan.check_tolerance
-        )
-        roc = out.result
-        row["input"] = "ground" if out.floor is None else "floor"
-        row.update(rocking_columns(roc))
-        if plan.check_tolerance:
-            from rockcli.dynamics.tolerance import sensitive
-
-            row["sensitive"] = sensitive(roc.runs)
-        row["utilisation"] = max_utilisation(out.block, roc)
     if "kinematic" in plan.analyses:
         from rockcli.studies.kinematic import kinematic_model
 
@@ -191,10 +175,48 @@ def run_case(
             spectrum=spectrum if own else None,
             grid_file=plan.grid_file,
         )
+    mechanism, kin = case_mechanism(kin)
+    if "rocking" in plan.analyses and record is not None:
+        from rockcli.studies.assess import assess_model_output
+        from rockcli.studies.floor import model_floor
+
+        ground = plan.ground and model_floor(model) is not None
+        out = assess_model_output(
+            model, record, plan.engine, ground=ground, tolerance_check=plan.check_tolerance,
+            mechanism=mechanism,
+        )  # fmt: skip
+        roc = out.result
+        if out.mechanism is not None:  # a wall: the rocked body's R and α, its name
+            row.update(block_R=out.block.R, block_alpha=out.block.alpha)
+            mechanism = out.mechanism[0]
+        row["input"] = "ground" if out.floor is None else "floor"
+        row.update(rocking_columns(roc))
+        if plan.check_tolerance:
+            from rockcli.dynamics.tolerance import sensitive
+
+            row["sensitive"] = sensitive(roc.runs)
+        row["utilisation"] = max_utilisation(out.block, roc)
+    if kin is not None:
         row.update(kinematic_columns(kin))
+    if mechanism is not None:
+        row["mechanism"] = mechanism
     if roc is not None and kin is not None:
         row["classification"] = str(classify(code_collapse(kin), rocking_collapse(roc)))
     return row
+
+
+def case_mechanism(kin: KinematicResult | None) -> tuple[str | None, KinematicResult | None]:
+    """(the mechanism a wall's case rocks and checks, its code check): as `rock compare`, the
+    governing one when the time history rocks it, else the first it rocks (None, kin
+    unchanged: a model of one block, or no code check)."""
+    from rockcli.studies.compare import main_mechanism, shown_result
+
+    if kin is None:
+        return None, None
+    main = main_mechanism(kin)
+    if main is None:
+        return None, kin
+    return main.name, shown_result(kin, main)
 
 
 def max_utilisation(block: Block, result: Assessment) -> float | None:
