@@ -201,8 +201,21 @@ def make_plan(
     """The plan of a retrofit of a validated model (``base``: its table as read).
 
     The rod: a new one at ``placement`` (added to the restrainers), else the model's tie-rod
-    (``name`` picks one of several). InputError for a rod that cannot be found or placed.
+    (``name`` picks one of several). InputError for a rod that cannot be found or placed, and
+    for a wall with its mechanism catalogue: the rod sizes the rocking of one body, and a
+    wall's mechanisms each carry the members above their own hinge (not built yet).
     """
+    from rockcli.model.derive_wall import is_wall
+
+    if is_wall(model):
+        raise InputError(
+            "rock retrofit sizes a tie-rod for a model of one block; a wall with its "
+            "mechanism catalogue is not sized yet",
+            file=file,
+            where="mechanisms" if model.mechanisms else "geometry.storeys",
+            allowed="a model of one block (thickness + height, or R + alpha); for a wall, "
+            "rock compare with the tie in the model, one diameter at a time",
+        )
     if placement is not None:
         if name is not None:
             raise InputError(
