@@ -578,10 +578,31 @@ def comparison_section(doc: Mapping[str, Any], w: Words) -> Section:
     ]
     if act.get("t_uplift") is not None:
         blocks.insert(2, Paragraph(w("cmp.uplift_at", t=n(act["t_uplift"], "{:.2f}"))))
+    if doc.get("mechanisms"):
+        blocks.append(mechanisms_grid(doc, w))
     blocks.append(Paragraph(w("cmp.unlike")))
     warnings = other_warnings(doc.get("warnings", []), doc["rocking"])
     blocks += [Paragraph(text, "warning") for text in warnings]
     return Section("comparison", w("section.comparison"), tuple(blocks))
+
+
+def mechanisms_grid(doc: Mapping[str, Any], w: Words) -> Grid:
+    """Every mechanism of a wall under the record (rockcli.report.compare's document): its
+    code ULS verdict, its rocking and their classification, the governing one first."""
+    rows = []
+    for m in doc["mechanisms"]:
+        rocking = m["rocking"]
+        rows.append((
+            m["name"],
+            w.passed(m["code"].get("ULS")),
+            "—" if rocking is None else w.number(rocking["max_ratio"], "{:.3f}"),
+            w("cmp.not_rocked") if rocking is None else w(f"cmp.rocked_{rocking['verdict']}"),
+            "—" if m["classification"] is None else m["classification"],
+        ))  # fmt: skip
+    headers = (w("cmp.mechanism"), w("cmp.code_uls"), w("cmp.max_ratio"),
+               w("cmp.rocking_verdict"), w("cmp.classification"))  # fmt: skip
+    caption = w("cmp.mechanisms_caption", shown=doc["kinematic"].get("mechanism", ""))
+    return Grid(caption, headers, tuple(rows), (False, False, True, False, False))
 
 
 # --- the software (NTC 2018 §10.2) ----------------------------------------------------------
