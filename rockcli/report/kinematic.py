@@ -255,7 +255,7 @@ SUMMARY_COLUMNS = (
     Column("d0_star", "d0*", "m", "{:.4f}"),
     Column("zeta_dls", "ζ_E DLS", "", "{:.3f}", short="ζ DLS"),
     Column("zeta_uls", "ζ_E ULS", "", "{:.3f}", short="ζ ULS"),
-    Column("verdict_text", "verdict", align="left"),
+    Column("verdict_text", "DLS/ULS", align="left"),
 )
 
 
@@ -275,9 +275,9 @@ def summary_table(doc: dict[str, Any]) -> Table:
 
 
 def short_verdict(verdict: dict[str, bool | None]) -> str:
-    """'DLS ok, ULS fails' in a few words."""
+    """'ok/fails': the DLS and ULS verdicts in a few letters (n/e: not evaluated)."""
     word = {True: "ok", False: "fails", None: "n/e"}
-    return ", ".join(f"{ls} {word[verdict[ls]]}" for ls in ("DLS", "ULS"))
+    return "/".join(word[verdict[ls]] for ls in ("DLS", "ULS"))
 
 
 def catalogue_reports(doc: dict[str, Any], all_mechanisms: bool) -> list[Report]:
@@ -290,7 +290,8 @@ def catalogue_reports(doc: dict[str, Any], all_mechanisms: bool) -> list[Report]
     head = Report(
         title=f"rock kinematic — {doc['model']['name']}",
         tables=(summary_table(doc),),
-        notes=(shown, "ζ_E = capacity/demand of the deciding checks (< 1: not satisfied)"),
+        notes=(shown, "ζ_E = capacity/demand of the deciding checks (< 1: not satisfied); "
+               "DLS/ULS: the verdicts (n/e: not evaluated)"),
     )
     return [head, first]
 
