@@ -92,6 +92,14 @@ def refuse_record_demand(record_demand: bool) -> None:
     help=f"Exit with code {EXIT_FAIL_ON} when the classification is this one (repeatable), "
     "so CI can gate on it.",
 )
+@click.option(
+    "--mechanism",
+    "mechanism_name",
+    default=None,
+    metavar="NAME",
+    help="A wall's mechanism to compare in full (one rigid body; default: the governing one "
+    "when the time history rocks it); every mechanism is listed either way.",
+)
 @plot_option
 @force_option
 @output_format
@@ -114,6 +122,7 @@ def compare(
     record_demand,
     grid_file,
     fail_on,
+    mechanism_name,
     plot_path,
     force,
     output,
@@ -135,6 +144,11 @@ def compare(
     code_demand = demand_for(code_demand, with_suite)
     if with_suite:
         check_record_options(None, record_format, dt, units, scale, pga)
+        if mechanism_name is not None:
+            from rockcli.errors import InputError
+
+            raise InputError("not with --suite yet", where="--mechanism", value=mechanism_name,
+                             allowed="--mechanism with --record")  # fmt: skip
         doc = compare_with_suite(
             model_path, (suite_path, target, allow_outside), grid_file, code_demand, edition,
             engine, ground, jobs, output,
@@ -156,6 +170,7 @@ def compare(
         code_demand=code_demand,
         history=plot_path is not None,
         ground=ground,
+        mechanism=mechanism_name,
     )
     doc, rocking = comparison_output_document(out, record), out.rocking
     doc["warnings"] = comparison_warnings(doc)

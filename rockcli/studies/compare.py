@@ -140,6 +140,7 @@ def compare_model_output(
     history: bool = False,
     ground: bool = False,
     file: str | None = None,
+    mechanism: str | None = None,
 ) -> ComparisonOutput:
     """Both analyses of a validated model under a record, and their classification.
 
@@ -161,7 +162,7 @@ def compare_model_output(
         spectrum=spectrum if own else None,
         grid_file=grid_file,
     )
-    main = main_mechanism(kin)
+    main = main_mechanism(kin, mechanism)
     rocking = assess_model_output(
         model, record, engine, history=history, ground=ground, file=file,
         mechanism=None if main is None else main.name,
@@ -172,16 +173,35 @@ def compare_model_output(
     return ComparisonOutput(kin, rocking, kind, CodeDemand(code_demand), others)
 
 
-def main_mechanism(kin: KinematicResult) -> Any:
-    """The mechanism a wall's comparison shows in full: the governing one when the time
-    history rocks it, else the first one it rocks in the governing order; None for a model of
-    one block (or a wall with one mechanism)."""
+def main_mechanism(kin: KinematicResult, name: str | None = None) -> Any:
+    """The mechanism a wall's comparison shows in full: the one named, else the governing one
+    when the time history rocks it, else the first one it rocks in the governing order; None
+    for a model of one block (or a wall with one mechanism, and no name)."""
     from rockcli.mechanisms.wall import MechanismType
 
+    if name is not None:
+        return named_result(kin, name)
     if len(kin.catalogue) < 2:
         return None
     rockable = [m for m in kin.catalogue if m.type != MechanismType.VERTICAL_FLEXURE.value]
     return rockable[0] if rockable else kin.catalogue[0]
+
+
+def named_result(kin: KinematicResult, name: str) -> Any:
+    """The catalogue's entry of that name (InputError naming the catalogue's names; a
+    vertical flexure: the time history cannot rock it yet)."""
+    from rockcli.errors import InputError
+
+    entry = next((m for m in kin.catalogue if m.name == name), None)
+    if entry is None:
+        names = "; ".join(f"'{m.name}'" for m in kin.catalogue)
+        raise InputError("no such mechanism", where="--mechanism", value=name,
+                         allowed=f"one of: {names}")  # fmt: skip
+    if entry.type == "vertical-flexure":
+        raise InputError(f"the time history cannot yet rock '{name}' (a vertical flexure: two "
+                         "blocks); rock kinematic checks it", where="--mechanism", value=name,
+                         allowed="a mechanism of one rigid body")  # fmt: skip
+    return entry
 
 
 def shown_result(kin: KinematicResult, main: Any) -> KinematicResult:
@@ -191,9 +211,10 @@ def shown_result(kin: KinematicResult, main: Any) -> KinematicResult:
 
     if main is None or main.name == kin.mechanism:
         return kin
-    note = (f"the comparison shows '{main.name}', the first mechanism in the governing order "
-            f"that the time history rocks; the governing mechanism '{kin.governing}' is a "
-            "vertical flexure, checked by the code only")  # fmt: skip
+    note = (f"the comparison shows '{main.name}'; the governing mechanism is "
+            f"'{kin.governing}'")  # fmt: skip
+    if kin.catalogue and kin.catalogue[0].type == "vertical-flexure":
+        note += " (a vertical flexure, checked by the code only)"
     return replace(main.result, catalogue=kin.catalogue, governing=kin.governing,
                    notes=(*main.result.notes, note))  # fmt: skip
 

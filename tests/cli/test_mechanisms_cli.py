@@ -312,3 +312,17 @@ def test_retrofit_of_a_wall_is_one_line_of_bad_input() -> None:
     code, _, err = run("retrofit", str(FACADE), "--record", str(RICKER))
     assert code == 2 and "not sized yet" in err
     assert len(err.strip().splitlines()) == 1 and "Traceback" not in err
+
+
+def test_compare_one_named_mechanism() -> None:
+    name = "overturning, whole wall"
+    code, out, err = run("compare", str(FACADE), "--record", str(RICKER), "--mechanism", name,
+                         "--format", "json")  # fmt: skip
+    assert code == 0, err
+    doc = json.loads(out)
+    assert doc["kinematic"]["mechanism"] == name == doc["rocking"]["mechanism"]["name"]
+    assert doc["governing"] == "gable"  # still named, and still listed first
+    entry = next(m for m in doc["mechanisms"] if m["name"] == name)
+    assert entry["classification"] == doc["classification"]
+    code, _, err = run("compare", str(FACADE), "--record", str(RICKER), "--mechanism", "nope")
+    assert code == 2 and "no such mechanism" in err and len(err.strip().splitlines()) == 1
