@@ -34,6 +34,10 @@ BISECTION_STEPS = 60
 FAILURE_DROP = 0.5
 #: Rotation at which the capacity curve is cut when α never vanishes [rad].
 CURVE_END = math.pi / 4
+#: Share of a chain's range of motion the curve is drawn to when α never vanishes: at the
+#: end of the range the two-block chain locks and its virtual displacements grow without
+#: bound (the block's range, π/2, leaves π/4 as it was).
+LOCK_SHARE = 0.95
 
 
 @dataclass(frozen=True)
@@ -407,7 +411,11 @@ def curve_points(cap: Capacity, n: int = 11) -> list[dict[str, float]]:
     halves its growth limit, π/4, when there is no d0*).
     """
     mech = cap.mech
-    d_end = cap.d0_star if cap.d0_star is not None else cap.d_star_at(CURVE_END)
+    d_end = (
+        cap.d0_star
+        if cap.d0_star is not None
+        else cap.d_star_at(min(CURVE_END, LOCK_SHARE * mech.view.limit))
+    )
     rows = []
     for k in range(n):
         d_star = d_end * k / (n - 1)

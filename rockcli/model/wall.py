@@ -160,6 +160,9 @@ def check_mechanisms(model: Any) -> None:
         if model.mass is None:
             raise rule_error("mass", "required for a wall of storeys or with [[mechanisms]]",
                              "a [mass] table with unit_weight [kN/m³] or weight [kN]")  # fmt: skip
+    check_set_backs(storeys)
+    if model.geometry.storeys is not None or model.mechanisms:
+        check_wall_points(model, storeys)
     for i, entry in enumerate(model.mechanisms):
         where = ("mechanisms", i)
         if entry.type is MechanismKind.WEDGE and model.return_walls is None:
@@ -198,9 +201,18 @@ def _check_flexure(model: Any, entry: MechanismEntry, storeys: tuple, where: tup
         raise rule_error((*where, "storey"), "no such storey",
                          f"1 to {len(storeys)} (1 = ground)", entry.storey)  # fmt: skip
     base = storey_bases(storeys)[entry.storey - 1]
-    top = base + storeys[entry.storey - 1].height
+    storey = storeys[entry.storey - 1]
+    top = base + storey.height
+    if 2.0 * storey.thickness >= storey.height:
+        raise rule_error(
+            (*where, "storey"), "a storey at least half as thick as it is high has no slender "
+            "blocks to bend in vertical flexure",
+            "a storey higher than twice its thickness", entry.storey,
+        )  # fmt: skip
     value = entry.hinge_height
-    if isinstance(value, float) and not base < value < top:
+    near = any(math.isclose(value, z, rel_tol=1e-9, abs_tol=1e-9) for z in (base, top)) if (
+        isinstance(value, float)) else False  # fmt: skip
+    if isinstance(value, float) and (not base < value < top or near):
         raise rule_error((*where, "hinge_height"), "not inside the storey",
                          f"above {base:g} and below {top:g} [m], or 'optimal'", value)  # fmt: skip
     wall_top = sum(s.height for s in storeys)
@@ -225,3 +237,47 @@ def point_height(table: Any, wall_top: float) -> float | None:
     if radius is not None and angle is not None:
         return radius * math.cos(angle)
     return None
+
+
+def check_set_backs(storeys: tuple[Storey, ...]) -> None:
+    """Each storey at most as thick as the one below (the outer face plumb, set-backs on the
+    inner face: a storey that overhangs the one below has no section to turn about)."""
+    for i in range(1, len(storeys)):
+        if storeys[i].thickness > storeys[i - 1].thickness * (1.0 + 1e-9):
+            raise rule_error(
+                ("geometry", "storeys", i, "thickness"), "thicker than the storey below",
+                f"at most {storeys[i - 1].thickness:g} m (set-backs are on the inner face)",
+                storeys[i].thickness,
+            )  # fmt: skip
+
+
+def check_wall_points(model: Any, storeys: tuple[Storey, ...]) -> None:
+    """Every load's, thrust's and restrainer's point inside the wall's section: not above the
+    storeys and the gable, not inward of the inner face at its height."""
+    wall_top = sum(s.height for s in storeys)
+    apex = wall_top + (model.geometry.gable_height or 0.0)
+    for key in ("loads", "thrusts", "restrainers"):
+        for i, table in enumerate(getattr(model, key)):
+            z = point_height(table, wall_top)
+            if z is None:
+                continue
+            if z > apex * (1.0 + 1e-9):
+                raise rule_error((key, i, "height"), "above the wall",
+                                 f"at most {apex:g} m (the storeys and the gable)", z)  # fmt: skip
+            x = getattr(table, "from_pivot", None)
+            limit = thickness_at(storeys, z)
+            if x is not None and x > limit * (1.0 + 1e-9):
+                raise rule_error((key, i, "from_pivot"), "inward of the wall's inner face",
+                                 f"at most {limit:g} m, the thickness at its height",
+                                 x)  # fmt: skip
+
+
+def thickness_at(storeys: tuple[Storey, ...], z: float) -> float:
+    """The thickness of the storey at height z (at a storey's top: that storey's; above the
+    storeys: the last one's, the gable's)."""
+    base = 0.0
+    for s in storeys:
+        if z <= base + s.height * (1.0 + 1e-12):
+            return s.thickness
+        base += s.height
+    return storeys[-1].thickness

@@ -132,7 +132,9 @@ def spec_position(wall: Wall, spec: MechanismSpec, settings: NtcSettings) -> Pos
     if base == 0.0:
         return position(b.Z, b.H, b.N, b.T1, b.gamma, b.psi, b.damping)
     H = b.H if b.H is not None else b.Z + wall.height
-    N = b.N if b.N is not None else len(wall.storeys)
+    # The wall's storeys stand for the building's only when the wall is the building (H
+    # taken from it); a building's H without N keeps the block's default, γ of N = 1.
+    N = b.N if b.N is not None else (len(wall.storeys) if b.H is None else None)
     if Z > H * (1.0 + 1e-9):
         raise InputError(
             f"below the base of mechanism '{spec.name}' (Z + its hinge = {Z:g} m): ψ = Z/H "

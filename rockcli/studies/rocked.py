@@ -48,11 +48,13 @@ def governing_spec(model: Model, wall: Wall, record: Record) -> MechanismSpec:
     """The governing mechanism of the code check: under the model's own demand when it sets
     one (so that every record of a suite rocks the same mechanism), else under the record's
     spectrum (`rock compare` names the mechanism it rocks itself)."""
+    from rockcli.studies.compare import main_mechanism
     from rockcli.studies.kinematic import kinematic_model
 
     own = model.ntc is not None and model.ntc.demand is not None  # a site needs the grid
     kin = kinematic_model(model) if own else kinematic_model(model, record=record)
-    return named_spec(wall, kin.governing or wall.mechanisms[0].name)
+    main = main_mechanism(kin)  # the governing one when it rocks, else the first that does
+    return named_spec(wall, main.name if main is not None else kin.governing or "")
 
 
 def rockable_spec(wall: Wall, spec: MechanismSpec) -> MechanismSpec:
@@ -65,7 +67,7 @@ def rockable_spec(wall: Wall, spec: MechanismSpec) -> MechanismSpec:
     raise InputError(
         f"the time history cannot yet rock '{spec.name}' (a vertical flexure: two blocks); "
         "rock kinematic checks it",
-        where="--mechanism",
+        where="--mechanism" if rigid else "mechanisms",
         value=spec.name,
         allowed="a mechanism of one rigid body: " + "; ".join(f"'{n}'" for n in rigid)
         if rigid
@@ -81,8 +83,16 @@ def system_restitution(block: Block, model: Model) -> Block:
     if table.rule is RestitutionModel.EXPLICIT:
         return block
     factor = 1.0 if table.factor is None else table.factor
-    e_pos, e_neg = (max(impact_restitution(block, s), 0.0) * factor for s in (1, -1))
+    e_pos, e_neg = (
+        min(max(impact_restitution(block, s), 0.0), MAX_RESTITUTION) * factor for s in (1, -1)
+    )
     return replace(block, e=e_pos, e_neg=e_neg)
+
+
+#: The largest Housner e a mechanism takes: an impact cannot give energy. A body whose
+#: centroid lies beyond the other pivot (the wedge, inward of the façade's inner edge) gives
+#: e > 1 by the momentum balance about that pivot, about which it never turns (one-sided).
+MAX_RESTITUTION = 1.0
 
 
 def rocked_mechanism(model: Model, record: Record, name: str | None) -> Rocked:
