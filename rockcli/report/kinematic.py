@@ -290,8 +290,11 @@ def catalogue_reports(doc: dict[str, Any], all_mechanisms: bool) -> list[Report]
     head = Report(
         title=f"rock kinematic — {doc['model']['name']}",
         tables=(summary_table(doc),),
-        notes=(shown, "ζ_E = capacity/demand of the deciding checks (< 1: not satisfied); "
-               "DLS/ULS: the verdicts (n/e: not evaluated)"),
+        notes=(
+            shown,
+            "ζ_E = capacity/demand of the deciding checks (< 1: not satisfied); "
+            "DLS/ULS: the verdicts (n/e: not evaluated)",
+        ),
     )
     return [head, first]
 
