@@ -105,16 +105,12 @@ def catalogue_entry(result: KinematicResult, name: str | None) -> MechanismResul
     As `rock kinematic --mechanism` (rockcli.report.kinematic.chosen_result); an unknown
     name is an InputError listing the catalogue.
     """
+    from rockcli.studies.catalogue import named
+
     if name is None:
         return result.catalogue[0]
-    for entry in result.catalogue:
-        if entry.name == name:
-            return entry
-    raise InputError(
-        "no such mechanism in the model's catalogue",
-        where="input.mechanism",
-        value=name,
-        allowed="one of: " + "; ".join(f"'{m.name}'" for m in result.catalogue),
+    return named(
+        result.catalogue, name, "input.mechanism", "no such mechanism in the model's catalogue"
     )
 
 

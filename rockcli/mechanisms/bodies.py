@@ -18,7 +18,6 @@ Pure and silent: only :mod:`math`.
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 
 
@@ -145,22 +144,3 @@ def gable(
         var_z=var_z,
         mass=mass,
     )
-
-
-def mirrored_x(body: Body, about: float) -> Body:
-    """The body seen from a pivot at x = ``about`` looking inward: x → about − x."""
-    from dataclasses import replace
-
-    return replace(body, x=about - body.x)
-
-
-def shifted(body: Body, dx: float, dz: float) -> Body:
-    """The body with its centroid moved by (dx, dz) (a change of origin)."""
-    from dataclasses import replace
-
-    return replace(body, x=body.x + dx, z=body.z + dz)
-
-
-def polar_about(body: Body, x0: float, z0: float) -> tuple[float, float]:
-    """(R, α) of the centroid about the point (x0, z0): distance and angle from the vertical."""
-    return math.hypot(body.x - x0, body.z - z0), math.atan2(body.x - x0, body.z - z0)

@@ -162,21 +162,42 @@ def attach(wall: Wall, frame: Frame, motion, bodies, link_of: Callable[[float], 
                      anchors=tuple(anchors))  # fmt: skip
 
 
+def storey_at(wall: Wall, hinge: float) -> int:
+    """The index (0-based) of the storey whose base is at ``hinge`` [m]."""
+    return next(i for i, b in enumerate(wall.storey_bases()) if same_height(b, hinge))
+
+
+def rigid_parts(wall: Wall, spec: MechanismSpec) -> tuple[list[Body], float, float]:
+    """(bodies, hinge height [m], thickness of the hinge section [m]) of a mechanism of one
+    rigid body: the storeys above the hinge and the gable (overturning), the whole wall and
+    the return walls' wedge (wedge), the gable alone (gable)."""
+    hinge = hinge_of(spec, wall)
+    if spec.type is MechanismType.GABLE:
+        return [gable_body(wall)], hinge, wall.storeys[-1].thickness
+    if spec.type is MechanismType.WEDGE:
+        assert spec.angle is not None and spec.sides is not None
+        bodies = [*storey_bodies(wall, 0), wedge_body(wall, spec.angle, spec.sides)]
+        return bodies, hinge, wall.storeys[0].thickness
+    k = storey_at(wall, hinge)
+    return storey_bodies(wall, k), hinge, wall.storeys[k].thickness
+
+
 def overturning(wall: Wall, hinge: float, side: int, name: str) -> ChainSide:
     """The part of the wall above a storey's base at ``hinge`` [m], about that section."""
-    k = wall.storey_bases().index(next(b for b in wall.storey_bases() if same_height(b, hinge)))
-    return rigid(wall, storey_bodies(wall, k), hinge, wall.storeys[k].thickness, side, name)
+    spec = MechanismSpec(name, MechanismType.OVERTURNING, hinge)
+    return rigid(wall, *rigid_parts(wall, spec), side, name)
 
 
 def wedge(wall: Wall, angle: float, sides: int, name: str) -> ChainSide:
     """The whole wall and its return walls' wedge about the façade's outer base edge."""
-    bodies = [*storey_bodies(wall, 0), wedge_body(wall, angle, sides)]
-    return rigid(wall, bodies, 0.0, wall.storeys[0].thickness, 1, name)
+    spec = MechanismSpec(name, MechanismType.WEDGE, angle=angle, sides=sides)
+    return rigid(wall, *rigid_parts(wall, spec), 1, name)
 
 
 def gable_mechanism(wall: Wall, side: int, name: str) -> ChainSide:
     """The gable about its base on the last storey."""
-    return rigid(wall, [gable_body(wall)], wall.height, wall.storeys[-1].thickness, side, name)
+    spec = MechanismSpec(name, MechanismType.GABLE)
+    return rigid(wall, *rigid_parts(wall, spec), side, name)
 
 
 def flexure(wall: Wall, storey: int, hinge: float, side: int, name: str) -> ChainSide:
@@ -250,14 +271,6 @@ def half_block(wall: Wall, weight: float, thickness: float, name: str) -> float:
     if depth >= thickness:
         raise CrushingError(name, depth, thickness)
     return 0.5 * depth
-
-
-def restrained_top(wall: Wall, storey: int) -> bool:
-    """True when something holds the top of ``storey``: a floor (a load at its top) or a
-    restrainer there (vertical flexure needs it)."""
-    top = wall.storey_bases()[storey - 1] + wall.storeys[storey - 1].height
-    points = [ld.z for ld in wall.loads] + [r.z for r in wall.restrainers]
-    return any(same_height(z, top) for z in points)
 
 
 def sides_of(spec: MechanismSpec, one_sided: int | None) -> tuple[int, ...]:

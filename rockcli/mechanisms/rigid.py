@@ -22,15 +22,8 @@ from dataclasses import dataclass, replace
 
 from rockcli.mechanics import Block, Load, Restrainer, Thrust, point_polar
 from rockcli.mechanisms.bodies import Body
-from rockcli.mechanisms.catalogue import (
-    above,
-    gable_body,
-    hinge_of,
-    same_height,
-    set_back,
-    storey_bodies,
-    wedge_body,
-)
+from rockcli.mechanisms.catalogue import above, set_back
+from rockcli.mechanisms.catalogue import rigid_parts as parts
 from rockcli.mechanisms.wall import MechanismSpec, MechanismType, Wall
 
 
@@ -58,20 +51,6 @@ def composite(bodies: list[Body]) -> Composite:
 def rockable(spec: MechanismSpec) -> bool:
     """True when the mechanism is one rigid body (the engine rocks it today)."""
     return spec.type is not MechanismType.VERTICAL_FLEXURE
-
-
-def parts(wall: Wall, spec: MechanismSpec) -> tuple[list[Body], float, float]:
-    """(bodies, hinge height [m], thickness of the hinge section [m]) of a rigid mechanism."""
-    hinge = hinge_of(spec, wall)
-    if spec.type is MechanismType.GABLE:
-        return [gable_body(wall)], hinge, wall.storeys[-1].thickness
-    if spec.type is MechanismType.WEDGE:
-        assert spec.angle is not None and spec.sides is not None
-        bodies = [*storey_bodies(wall, 0), wedge_body(wall, spec.angle, spec.sides)]
-        return bodies, hinge, wall.storeys[0].thickness
-    bases = wall.storey_bases()
-    k = next(i for i, b in enumerate(bases) if same_height(b, hinge))
-    return storey_bodies(wall, k), hinge, wall.storeys[k].thickness
 
 
 def rigid_block(wall: Wall, spec: MechanismSpec, block: Block) -> Block:

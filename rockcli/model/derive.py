@@ -194,18 +194,22 @@ def derive_block(model: Model) -> Block:
     return with_system_restitution(block, model)
 
 
-def with_system_restitution(block: Block, model: Model) -> Block:
-    """The block with Housner's e of the block and its loads, per side (loads only).
+def with_system_restitution(block: Block, model: Model, most: float = math.inf) -> Block:
+    """The block with Housner's e of the block and its loads (or of a wall's mechanism as a
+    body of its own shape), per side.
 
     Source: mechanics.impact_restitution (Housner 1963, angular momentum about the new pivot,
     written for the block with its loads; docs/physics.md, "Impacts"). The factor and the clip
-    at 0 apply as for the lone block; an explicit e stays as given on both sides.
+    at 0 apply as for the lone block, and at ``most`` above (a mechanism's impact gives no
+    energy: rockcli.studies.rocked); an explicit e stays as given on both sides.
     """
     table = model.restitution
-    if table.rule is RestitutionModel.EXPLICIT or not block.loads or block.mass is None:
+    if table.rule is RestitutionModel.EXPLICIT or block.mass is None:
+        return block
+    if not block.loads and block.body is None:
         return block
     factor = 1.0 if table.factor is None else table.factor
-    e_pos, e_neg = (max(impact_restitution(block, s), 0.0) * factor for s in (1, -1))
+    e_pos, e_neg = (min(max(impact_restitution(block, s), 0.0), most) * factor for s in (1, -1))
     return replace(block, e=e_pos, e_neg=e_neg)
 
 

@@ -25,7 +25,7 @@ from rockcli.mechanisms.wall import (
 from rockcli.model.derive import NEWTONS_PER_KILONEWTON, to_restrainer
 from rockcli.model.physical import Direction
 from rockcli.model.schema import Model, Position
-from rockcli.model.wall import EACH_FLOOR, MechanismEntry, point_height
+from rockcli.model.wall import EACH_FLOOR, MechanismEntry, point_height, thickness_at
 
 
 def is_wall(model: Model) -> bool:
@@ -70,21 +70,14 @@ def unit_weight(model: Model, storeys: tuple[Storey, ...], width: float) -> floa
     return model.mass.weight * NEWTONS_PER_KILONEWTON / volume
 
 
-def thickness_at(wall: Wall, z: float) -> float:
-    """The wall's thickness at height z (at a storey's base: the storey below's) [m]."""
-    for base, s in zip(wall.storey_bases(), wall.storeys, strict=True):
-        if z <= base + s.height:
-            return s.thickness
-    return wall.storeys[-1].thickness
-
-
 def _xz(model: Model, wall: Wall, table) -> tuple[float, float]:
     """(x, z) of a load's or thrust's point: from_pivot (default mid-thickness at its height),
     its height (``position = "top"``: the storeys' top)."""
     z = point_height(table, wall.height)
     assert z is not None
-    x = table.from_pivot if table.from_pivot is not None else thickness_at(wall, z) / 2.0
-    return float(x), z
+    if table.from_pivot is not None:
+        return float(table.from_pivot), z
+    return thickness_at(model.geometry.storey_list, z) / 2.0, z
 
 
 def wall_load(model: Model, wall: Wall, index: int) -> WallLoad:

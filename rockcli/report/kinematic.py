@@ -67,19 +67,9 @@ def kinematic_document(
 
 def chosen_result(result: KinematicResult, mechanism: str | None) -> KinematicResult:
     """The result of the mechanism named (InputError naming the catalogue when unknown)."""
-    if mechanism is None:
-        return result
-    for m in result.catalogue:
-        if m.name == mechanism:
-            return m.result
-    from rockcli.errors import InputError
+    from rockcli.studies.catalogue import named
 
-    raise InputError(
-        "no such mechanism",
-        where="--mechanism",
-        value=mechanism,
-        allowed="one of: " + "; ".join(f"'{m.name}'" for m in result.catalogue),
-    )
+    return result if mechanism is None else named(result.catalogue, mechanism).result
 
 
 def catalogue_entry(m: Any) -> dict[str, Any]:

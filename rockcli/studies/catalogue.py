@@ -32,6 +32,20 @@ from rockcli.mechanisms.wall import OPTIMAL, MechanismSpec, MechanismType, Wall
 from rockcli.model.derive_ntc import NtcSettings
 
 
+def named(items, name: str, where: str = "--mechanism", problem: str = "no such mechanism"):
+    """The item of ``items`` (mechanisms, specs, results: anything with a ``name``) called
+    ``name``; InputError naming ``where`` and every name there is otherwise."""
+    for item in items:
+        if item.name == name:
+            return item
+    raise InputError(
+        problem,
+        where=where,
+        value=name,
+        allowed="one of: " + "; ".join(f"'{item.name}'" for item in items),
+    )
+
+
 @dataclass(frozen=True)
 class MechanismResult:
     """One mechanism of the catalogue and its code check.

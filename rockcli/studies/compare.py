@@ -191,12 +191,9 @@ def named_result(kin: KinematicResult, name: str) -> Any:
     """The catalogue's entry of that name (InputError naming the catalogue's names; a
     vertical flexure: the time history cannot rock it yet)."""
     from rockcli.errors import InputError
+    from rockcli.studies.catalogue import named
 
-    entry = next((m for m in kin.catalogue if m.name == name), None)
-    if entry is None:
-        names = "; ".join(f"'{m.name}'" for m in kin.catalogue)
-        raise InputError("no such mechanism", where="--mechanism", value=name,
-                         allowed=f"one of: {names}")  # fmt: skip
+    entry = named(kin.catalogue, name)
     if entry.type == "vertical-flexure":
         raise InputError(f"the time history cannot yet rock '{name}' (a vertical flexure: two "
                          "blocks); rock kinematic checks it", where="--mechanism", value=name,

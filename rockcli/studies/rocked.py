@@ -11,12 +11,12 @@ The two-block vertical flexure does not rock yet: asking for it is one clear err
 
 from __future__ import annotations
 
-from dataclasses import dataclass, replace
+from dataclasses import dataclass
 
 from rockcli.errors import InputError
-from rockcli.mechanics import Block, impact_restitution
+from rockcli.mechanics import Block
 from rockcli.mechanisms.wall import MechanismSpec, Wall
-from rockcli.model.schema import Model, RestitutionModel
+from rockcli.model.schema import Model
 from rockcli.records.record import Record
 from rockcli.studies.floor import Floor
 
@@ -33,15 +33,9 @@ class Rocked:
 
 def named_spec(wall: Wall, name: str) -> MechanismSpec:
     """The mechanism of that name (InputError listing the catalogue's names)."""
-    for spec in wall.mechanisms:
-        if spec.name == name:
-            return spec
-    raise InputError(
-        "no such mechanism",
-        where="--mechanism",
-        value=name,
-        allowed="one of: " + "; ".join(f"'{s.name}'" for s in wall.mechanisms),
-    )
+    from rockcli.studies.catalogue import named
+
+    return named(wall.mechanisms, name)
 
 
 def governing_spec(model: Model, wall: Wall, record: Record) -> MechanismSpec:
@@ -79,14 +73,9 @@ def system_restitution(block: Block, model: Model) -> Block:
     """Housner's e of the mechanism's body with its loads, per side, times the model's factor
     (an explicit e as given): mechanics.impact_restitution, angular momentum about the new
     pivot (docs/physics.md, "Impacts")."""
-    table = model.restitution
-    if table.rule is RestitutionModel.EXPLICIT:
-        return block
-    factor = 1.0 if table.factor is None else table.factor
-    e_pos, e_neg = (
-        min(max(impact_restitution(block, s), 0.0), MAX_RESTITUTION) * factor for s in (1, -1)
-    )
-    return replace(block, e=e_pos, e_neg=e_neg)
+    from rockcli.model.derive import with_system_restitution
+
+    return with_system_restitution(block, model, MAX_RESTITUTION)
 
 
 #: The largest Housner e a mechanism takes: an impact cannot give energy. A body whose
