@@ -15,6 +15,7 @@ pivot side s = ±1, a = s·θ = |θ| the rotation about the active pivot.
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from dataclasses import dataclass, field
 
 #: Side of rotation / pivot: +1 for θ > 0 (pivot O), −1 for θ < 0 (pivot O′).
@@ -167,6 +168,116 @@ class Thrust:
     z: float
 
 
+# The table of a chain (Chain.table): a header (−n for n nodes per side: negative, so that the
+# engine tells a chain's table from a point table, whose first entry is a weight; the grid
+# step of side +1 and of side −1 [rad]), then side +1's n rows and side −1's n rows, each row the five terms of the
+# equation of motion at a = k·step and their five derivatives in a: G = V′ [N·m], H = g·Γ
+# [N·m per g], T (the thrusts' opening work) [N·m], M [kg·m²], M′ [kg·m²/rad].
+CH_N, CH_STEP_POS, CH_STEP_NEG = 0, 1, 2
+CH_HEAD = 3
+CH_TERMS = 5
+CH_COLS = 2 * CH_TERMS
+
+
+@dataclass(frozen=True)
+class Chain:
+    """A mechanism of several bodies with one degree of freedom, as the rocking engine reads
+    it: the terms of its equation of motion about each side's pivot tabulated on a uniform grid
+    of the rotation a = s·θ ∈ [0, end] (cubic Hermite between nodes: :func:`chain_terms`), and
+    the constants of each side at rest (index 0: side +1, index 1: side −1).
+
+    Attributes:
+        table: the flat table (CH_* layout above).
+        uplift: the ground acceleration that starts the motion from rest [g], per side: the
+            code check's α0 = (G − T)/H at rest, computed by the same expression.
+        restitution: θ̇⁺/θ̇⁻ of an impact that ends a phase on each side.
+        inertia: M(0) per side [kg·m²] (the kinetic energy ½·M(0)·θ̇² at an impact).
+        stiffness: d(G − T)/da at rest per side [N·m/rad] (negative: the weights' restoring
+            moment falls as the chain opens).
+        end: the largest rotation tabulated, where the run counts the mechanism collapsed [rad].
+        p2: G(0)/M(0)·(1 + (H(0)/G(0))²)^½ [rad²/s²]: a rigid block's m g R/I_O, the scale of
+            the free-vibration tail.
+        exact: the five terms at (s, a) from the configuration function itself, for the
+            reference engine (the table's error is measured against it).
+    """
+
+    table: tuple[float, ...]
+    uplift: tuple[float, float]
+    restitution: tuple[float, float]
+    inertia: tuple[float, float]
+    stiffness: tuple[float, float]
+    end: float
+    p2: float
+    exact: Callable[[int, float], tuple[float, float, float, float, float]] | None = field(
+        default=None, compare=False, hash=False
+    )
+
+    def side(self, s: int) -> int:
+        """The index of side s in the per-side pairs."""
+        return 0 if s > 0 else 1
+
+    def mirrored(self) -> Chain:
+        """The chain with its two sides swapped."""
+        n = -int(self.table[CH_N])
+        rows = self.table[CH_HEAD:]
+        half = n * CH_COLS
+        head = (self.table[CH_N], self.table[CH_STEP_NEG], self.table[CH_STEP_POS])
+        exact = self.exact
+
+        def swapped(s: int, a: float) -> tuple[float, float, float, float, float]:
+            assert exact is not None
+            return exact(-s, a)
+
+        def pair(v: tuple[float, float]) -> tuple[float, float]:
+            return v[1], v[0]
+
+        return Chain(
+            table=head + rows[half:] + rows[:half],
+            uplift=pair(self.uplift),
+            restitution=pair(self.restitution),
+            inertia=pair(self.inertia),
+            stiffness=pair(self.stiffness),
+            end=self.end,
+            p2=self.p2,
+            exact=None if exact is None else swapped,
+        )
+
+
+def chain_terms(table, s, a):
+    """(G, H, T, M, M′) of a chain (:class:`Chain`) on side s at rotation a [rad].
+
+    Cubic Hermite interpolation between the two nodes around a, from the values and the
+    derivatives stored at each (de Boor, *A Practical Guide to Splines*, 2001, ch. IV; error
+    h⁴·max|f⁗|/384 for a grid step h). At a node it returns the stored values exactly, so the
+    terms at rest are the configuration function's own. A rotation outside [0, end] (a step's
+    trial stage past the impact) is extrapolated by the end interval's cubic. ``table`` is any
+    flat sequence indexable by integers (a tuple, or a numpy array in the compiled engine).
+    """
+    n = -int(table[CH_N])
+    step = table[CH_STEP_POS] if s > 0 else table[CH_STEP_NEG]
+    base = CH_HEAD if s > 0 else CH_HEAD + n * CH_COLS
+    x = a / step
+    k = int(math.floor(x))
+    k = min(max(k, 0), n - 2)
+    u = x - k
+    u2 = u * u
+    u3 = u2 * u
+    h00 = 2.0 * u3 - 3.0 * u2 + 1.0
+    h10 = (u3 - 2.0 * u2 + u) * step
+    h01 = 3.0 * u2 - 2.0 * u3
+    h11 = (u3 - u2) * step
+    r0 = base + k * CH_COLS
+    r1 = r0 + CH_COLS
+    e0 = r0 + CH_TERMS
+    e1 = r1 + CH_TERMS
+    g = h00 * table[r0] + h10 * table[e0] + h01 * table[r1] + h11 * table[e1]
+    h = h00 * table[r0 + 1] + h10 * table[e0 + 1] + h01 * table[r1 + 1] + h11 * table[e1 + 1]
+    t = h00 * table[r0 + 2] + h10 * table[e0 + 2] + h01 * table[r1 + 2] + h11 * table[e1 + 2]
+    m = h00 * table[r0 + 3] + h10 * table[e0 + 3] + h01 * table[r1 + 3] + h11 * table[e1 + 3]
+    mp = h00 * table[r0 + 4] + h10 * table[e0 + 4] + h01 * table[r1 + 4] + h11 * table[e1 + 4]
+    return g, h, t, m, mp
+
+
 @dataclass(frozen=True)
 class Block:
     """A rigid rectangular block rocking on a rigid base, with its restrainers.
@@ -194,6 +305,11 @@ class Block:
             centroid's about O (the amplitude ratio's α) and the loaded equation of motion
             runs with the body as a rigid point mass plus I_G (docs/physics.md). None: the
             rectangle 2R sin α × 2R cos α.
+        chain: a mechanism of several bodies with one degree of freedom (the two-block
+            vertical flexure), tabulated (:class:`Chain`); R and α are then its bodies'
+            centroid's distance from O and its instability rotation on side +1 (where the
+            weights' restoring moment vanishes, as α for the rectangle), and ``body``, the
+            loads and the thrusts are inside the table.
     """
 
     R: float
@@ -210,6 +326,7 @@ class Block:
     loads: tuple[Load, ...] = field(default_factory=tuple)
     thrusts: tuple[Thrust, ...] = field(default_factory=tuple)
     body: tuple[float, float, float, float] | None = None
+    chain: Chain | None = None
 
     @property
     def b(self) -> float:
@@ -225,6 +342,8 @@ class Block:
     def p2(self) -> float:
         """p² = m g R / I0 = 3g/(4R) [rad²/s²] (paper Eq. 2, rectangular block); a body of
         another shape: m g R / I_O with its own I_O about O (Housner 1963's definition)."""
+        if self.chain is not None:
+            return self.chain.p2
         if self.body is not None:
             return self.weight * self.R / self.inertia
         return frequency_parameter_sq(self.R, self.g)
@@ -240,6 +359,8 @@ class Block:
         of another shape: I_G + m·R² about pivot O (parallel axes)."""
         if self.mass is None:
             raise ValueError("the block has no mass")
+        if self.chain is not None:
+            return self.chain.inertia[0]
         if self.body is not None:
             return self.body[3] + self.mass * self.R * self.R
         return polar_inertia(self.mass, self.R)
@@ -248,7 +369,10 @@ class Block:
     def own_inertia(self) -> float:
         """The inertia the equation of motion adds to the point table's J [kg·m²]: the
         rectangle's I0 (its row of the table carries no mass), or a body's I_G (its row
-        carries its mass, so that J holds m·r_G² about either pivot)."""
+        carries its mass, so that J holds m·r_G² about either pivot); 0 for a chain (its
+        table holds the whole generalised mass)."""
+        if self.chain is not None:
+            return 0.0
         if self.body is not None:
             return self.body[3]
         return self.inertia
@@ -269,7 +393,7 @@ class Block:
     def loaded(self) -> bool:
         """True when loads or thrusts act on the block, or it is a body of another shape (the
         general equation of motion)."""
-        return bool(self.loads or self.thrusts) or self.body is not None
+        return bool(self.loads or self.thrusts) or self.body is not None or self.chain is not None
 
     def restitution(self, s: int) -> float:
         """Coefficient of restitution of an impact that ends a phase on side s [-]."""
@@ -532,7 +656,9 @@ def linear_global_stiffness(
     −m g R cos α + Σ K r² cos²φ (the spring's u is r cos φ·θ, its arm r cos φ, at θ = 0).
     With loads and thrusts the weights' part is :func:`loaded_stiffness`.
     """
-    if block.loaded:
+    if block.chain is not None:
+        total = block.chain.stiffness[block.chain.side(s)]
+    elif block.loaded:
         total = loaded_stiffness(point_table(block), s)
     else:
         total = -block.weight * block.R * (1.0 if block.linearized else math.cos(block.alpha))
@@ -589,6 +715,7 @@ def mirrored(block: Block) -> Block:
             replace(th, x_pos=th.x_neg, x_neg=th.x_pos, direction=-th.direction)
             for th in block.thrusts
         ),
+        chain=None if block.chain is None else block.chain.mirrored(),
     )
 
 
@@ -603,7 +730,7 @@ def mirror_symmetric(block: Block) -> bool:
     restitution after impacts on either side, and no thrust (a thrust pushes one way). Exact
     equality: a difference in the last digit makes the block asymmetric.
     """
-    if block.one_sided or block.thrusts:
+    if block.one_sided or block.thrusts or block.chain is not None:
         return False
     if block.e_neg is not None and block.e_neg != block.e:
         return False
@@ -719,6 +846,8 @@ def uplift_accelerations(block: Block) -> tuple[float, float]:
     with the thrust as an external force F_h, the same expression by construction.
     A restrainer with no initial force does not change it.
     """
+    if block.chain is not None:
+        return block.chain.uplift
     if not block.loaded:
         a0 = uplift_threshold(block.alpha, block.linearized)
         return a0, a0
@@ -739,8 +868,11 @@ def impact_restitution(block: Block, s: int) -> float:
     block horizontally only, −x·x′ if vertically only); after the impact the whole turns about
     O′ with the inertia J′(0) = I0 + Σ m(x′² + z²) (its horizontal and vertical parts likewise).
     The block alone gives (I0 − 2 m b²)/I0 = 1 − 1.5 sin²α. Returns the ratio θ̇⁺/θ̇⁻
-    (may be ≤ 0 for squat systems; the model clips it at 0).
+    (may be ≤ 0 for squat systems; the model clips it at 0). A chain: its own
+    (Chain.restitution, the projection of rockcli.mechanisms.motion.impact_ratio).
     """
+    if block.chain is not None:
+        return block.chain.restitution[block.chain.side(s)]
     i0 = block.inertia
     b, h = block.b, block.h
     m = block.mass

@@ -59,21 +59,18 @@ def model_settings(model: Model, block: Block, **changes: object) -> SolverSetti
 
 
 def case_block(model: Model, mechanism: str | None = None) -> Block:
-    """The block a case rocks: the model's, or a wall's mechanism of one rigid body as a block
-    of its own shape (the named one, else the first such; rockcli.studies.rocked)."""
+    """The block a case rocks: the model's, or a wall's mechanism as the engine rocks it (the
+    named one, else the first; rockcli.studies.rocked.mechanism_block)."""
     from rockcli.model.derive_wall import is_wall
 
     if not is_wall(model):
         return to_block(model)
-    from rockcli.mechanisms.rigid import rigid_block, rockable
-    from rockcli.model.derive import block_of
     from rockcli.model.derive_wall import to_wall
-    from rockcli.studies.rocked import named_spec, rockable_spec, system_restitution
+    from rockcli.studies.rocked import mechanism_block, named_spec
 
     wall = to_wall(model)
-    first = next((s for s in wall.mechanisms if rockable(s)), wall.mechanisms[0])
-    spec = rockable_spec(wall, first if mechanism is None else named_spec(wall, mechanism))
-    return system_restitution(rigid_block(wall, spec, block_of(model)), model)
+    spec = wall.mechanisms[0] if mechanism is None else named_spec(wall, mechanism)
+    return mechanism_block(model, wall, spec)
 
 
 def release(

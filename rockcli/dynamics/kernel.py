@@ -50,6 +50,7 @@ for _fn in (
     mechanics.spring_elongation,
     mechanics.spring_failure_rotation,
     mechanics.point_moments,  # loaded blocks only; numba's IR inlining of its loop misfires
+    mechanics.chain_terms,  # chains only
 ):
     register_jitable(_fn)
 for _array_fn in (
@@ -62,6 +63,7 @@ register_jitable(rules.member_force)
 register_jitable(rules.member_moment)
 register_jitable(rules.side_index)
 register_jitable(rules.spring_arm)
+register_jitable(rules.chain_balance)
 # The member laws' state changes: called at events only.
 for _law_fn in (
     rules.rotation_at_elongation,
@@ -88,6 +90,7 @@ _rhs = njit(cache=CACHE, inline="always")(rules.angular_acceleration)
 _loaded_rhs = njit(cache=CACHE)(
     rules.loaded_angular_acceleration
 )  # not inlined: keeps the free path lean
+_chain_rhs = njit(cache=CACHE)(rules.chain_angular_acceleration)
 _ground = njit(cache=CACHE, inline="always")(rules.ground_acceleration)
 _uplift_in_interval = njit(cache=CACHE, inline="always")(rules.uplift_in_interval)
 _after_impact = njit(cache=CACHE, inline="always")(rules.velocity_after_impact)
@@ -163,8 +166,11 @@ DENSE_P = np.array(
 def _accel(a, s, om, ag, alpha, sin_alpha, cos_alpha, p2, lin, springs, alive, inv_i0, i0, points):
     """θ̈ at rotation a = s·θ, velocity θ̇ = om, ground ag [g]: the free block's equation (paper
     Eq. 2, unchanged bit for bit) or, with loads or thrusts (a non-empty point table), the
-    general one (rules.loaded_angular_acceleration)."""
+    general one (rules.loaded_angular_acceleration), or a chain's (a table whose first entry
+    is negative: rules.chain_angular_acceleration)."""
     if points.size > 0:
+        if points[0] < 0.0:
+            return _chain_rhs(a, s, om, ag, points, springs, alive)
         return _loaded_rhs(a, s, om, ag, points, i0, springs, alive)
     return _rhs(a, s, ag, alpha, sin_alpha, cos_alpha, p2, lin, springs, alive, inv_i0)
 
@@ -183,6 +189,14 @@ def _loaded_accel(
 ):
     """θ̈ with loads or thrusts (rules.loaded_angular_acceleration), same signature."""
     return _loaded_rhs(a, s, om, ag, points, i0, springs, alive)
+
+
+@njit(cache=CACHE, inline=INLINE)
+def _chain_accel(
+    a, s, om, ag, alpha, sin_alpha, cos_alpha, p2, lin, springs, alive, inv_i0, i0, points
+):
+    """θ̈ of a chain (rules.chain_angular_acceleration), same signature."""
+    return _chain_rhs(a, s, om, ag, points, springs, alive)
 
 
 @njit(cache=CACHE, inline=INLINE)
@@ -828,6 +842,7 @@ def integrate(
         out_i[r] = 0
     lin = par[L.P_LINEAR] != 0.0
     loaded = points.size > 0
+    chain = loaded and points[0] < 0.0
     max_events = int(par[L.P_MAX_EVENTS])
     max_steps = int(par[L.P_MAX_STEPS])
     t = times[0]
@@ -897,7 +912,11 @@ def integrate(
         clipped = h_try < h
         gs = pol * slopes[i]
         g0 = pol * accel[i] + gs * (t - times[i])
-        if loaded:  # one specialisation of the step each: the free one stays lean
+        if chain:  # one specialisation of the step each: the free one stays lean
+            th1, om1, f1, err = _dp5_step(
+                th, om, f, h_try, s, g0, gs, par, springs, alive, points, k_th, k_om, _chain_accel
+            )
+        elif loaded:
             th1, om1, f1, err = _dp5_step(
                 th, om, f, h_try, s, g0, gs, par, springs, alive, points, k_th, k_om, _loaded_accel
             )

@@ -16,6 +16,7 @@ Slow (hundreds of Python calls per second of record): meant for checks, not stud
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 
 import numpy as np
 from scipy.integrate import solve_ivp
@@ -55,6 +56,8 @@ class _Phase:
         self.evals = 0
         self.max_evals = int(par[L.P_MAX_STEPS]) * EVALS_PER_STEP
         self.memory = bool(np.any(springs[:, rules.COL_MEMORY] != 0.0)) if springs.size else False
+        #: A chain's terms from its configuration function (mechanics.Chain.exact), or None.
+        self.exact: Callable[[int, float], tuple[float, float, float, float, float]] | None = None
 
 
 def _rhs(phase: _Phase, t0: float, g0: float, gs: float):
@@ -72,6 +75,12 @@ def _acceleration(phase: _Phase, ag: float, th: float, om: float) -> float:
     """θ̈ at rotation θ, velocity θ̇ under ground acceleration ag [g]; NaN where math refuses."""
     par = phase.par
     try:
+        if phase.exact is not None:
+            a = phase.s * th
+            g, h, t, m, mp = phase.exact(phase.s, a)
+            return float(
+                rules.chain_balance(g, h, t, m, mp, a, phase.s, om, ag, phase.springs, phase.alive)
+            )
         if phase.points.size:
             return float(
                 rules.loaded_angular_acceleration(
@@ -398,8 +407,11 @@ def integrate_reference(
     out_f,
     out_i,
     spring_out,
+    exact=None,
 ):
-    """Same contract as :func:`rockcli.dynamics.kernel.integrate` (arrays filled in place).
+    """Same contract as :func:`rockcli.dynamics.kernel.integrate` (arrays filled in place);
+    ``exact``: a chain's terms from its configuration function (mechanics.Chain.exact), read
+    in place of its table.
 
     Overflows and NaNs are not warnings here: they end the run with status "non-finite".
     """
@@ -418,6 +430,7 @@ def integrate_reference(
             out_f,
             out_i,
             spring_out,
+            exact,
         )
 
 
@@ -435,8 +448,10 @@ def _integrate(
     out_f,
     out_i,
     spring_out,
+    exact,
 ):
     phase = _Phase(par, springs, points, alive)
+    phase.exact = exact
     out_f[:] = 0.0
     out_f[L.O_T_OVERTURN] = math.nan
     out_f[L.O_T_UPLIFT] = math.nan

@@ -29,6 +29,7 @@ from __future__ import annotations
 import math
 
 from rockcli.mechanics import (
+    chain_terms,
     cos_minus,
     gravity_moment_ratio_trig,
     ground_moment_ratio_trig,
@@ -417,6 +418,46 @@ def loaded_angular_acceleration(a, s, om, ag, points, i0, springs, alive):
                     springs, k, s, kk, r, sin_phi, cos_phi, a, sin_a, cos_a, False
                 )
     return s * moment / (i0 + j)
+
+
+def chain_angular_acceleration(a, s, om, ag, table, springs, alive):
+    """θ̈ of a chain of bodies (the two-block vertical flexure) on side s at rotation a = s·θ,
+    velocity θ̇ = om, its terms read from the chain's table (mechanics.chain_terms):
+    :func:`chain_balance`.
+
+    Args:
+        a: rotation about the active pivot [rad]. s: pivot side ±1. om: θ̇ [rad/s].
+        ag: ground acceleration, polarity applied [g]. table: the chain's flat table.
+        springs, alive: as in :func:`angular_acceleration`.
+    """
+    g, h, t, m, mp = chain_terms(table, s, a)
+    return chain_balance(g, h, t, m, mp, a, s, om, ag, springs, alive)
+
+
+def chain_balance(g, h, t, m, mp, a, s, om, ag, springs, alive):
+    """θ̈ of a chain from its terms at a: G = V′ [N·m], H = g·Γ [N·m per g], T the thrusts'
+    opening work [N·m] (signed for side s), M [kg·m²] and M′ [kg·m²/rad].
+
+    Lagrange's equation of the one-degree-of-freedom mechanism (rockcli.mechanisms.motion;
+    Sorrentino, Masiani & Griffith 2008 for the two-block wall):
+
+        M(a)·ä + ½ M′(a)·ȧ² = −G(a) + T(a) + s·üg·H(a) − Σ_k M_k(a),   θ̈ = s·ä
+
+    with M_k the moments of the restrainers, all on the lower block, which turns rigidly about
+    the pivot (their polar arm is exact: :func:`member_moment`).
+    """
+    moment = -g + t + s * ag * h - 0.5 * mp * om * om
+    if springs.shape[0] > 0:
+        sin_a = math.sin(a)
+        cos_a = math.cos(a)
+        for k in range(springs.shape[0]):
+            if alive[k] != 0:
+                kk, r, sin_phi, cos_phi = spring_trig_on_side(springs, k, s)
+                if kk != 0.0:
+                    moment -= member_moment(
+                        springs, k, s, kk, r, sin_phi, cos_phi, a, sin_a, cos_a, False
+                    )
+    return s * moment / m
 
 
 def ground_acceleration(t, i, times, accel, polarity):

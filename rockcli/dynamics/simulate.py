@@ -31,6 +31,7 @@ from rockcli.mechanics import (
     NEGATIVE,
     Block,
     Restrainer,
+    chain_terms,
     mirror_symmetric,
     point_moments,
     point_table,
@@ -128,6 +129,8 @@ def pack_parameters(block: Block, settings: SolverSettings, rtol: float, atol: f
     par[L.P_REBOUND] = block.rebound
     par[L.P_LINEAR] = 1.0 if block.linearized else 0.0
     par[L.P_OVERTURN] = settings.overturn_angle
+    if block.chain is not None:  # a chain collapses where its table ends
+        par[L.P_OVERTURN] = min(settings.overturn_angle, block.chain.end)
     par[L.P_RTOL] = rtol
     par[L.P_ATOL] = atol
     par[L.P_REST] = settings.rest_velocity
@@ -155,6 +158,9 @@ def rest_terms(block: Block, s: int) -> tuple[float, float]:
     """
     if block.mass is None:
         return 0.0, 0.0
+    if block.chain is not None:  # the table's node 0: the terms at rest
+        g, h, _, m, _ = chain_terms(block.chain.table, s, 0.0)
+        return 1.0 / h, m
     if block.loaded:
         _, h, _, j, _ = point_moments(point_table(block), s, 0.0, 1.0)
         return 1.0 / h, block.own_inertia + j
@@ -170,6 +176,8 @@ def pack_points(block: Block) -> np.ndarray:
     """
     if not block.loaded:
         return np.zeros(0)
+    if block.chain is not None:
+        return np.ascontiguousarray(block.chain.table, dtype=np.float64)
     if block.linearized:
         raise ValueError("the linearized equation does not take loads or thrusts")
     return np.ascontiguousarray(point_table(block), dtype=np.float64)
@@ -253,12 +261,9 @@ def simulate(
     times, acc, first_free = samples_with_tail(time, np.asarray(accel, float), dt,
                                                settings.tail_for(block.p))  # fmt: skip
     if engine is Engine.REFERENCE:
-        from rockcli.dynamics.reference import integrate_reference as run
-
         rtol, atol = _reference_tolerances()
     else:
         from rockcli import jitcache
-        from rockcli.dynamics.kernel import integrate as run
         from rockcli.dynamics.warmup import warmup
 
         jitcache.ensure_compiled(warmup)
@@ -283,9 +288,14 @@ def simulate(
     arrays = (times, acc, float(polarity), par, springs, points, alive)
     outputs = (hist_th, hist_om, hist_f, out_f, out_i, spring_out)
     if engine is Engine.REFERENCE:  # Python: Ctrl-C stops it where it is
-        run(*arrays, *outputs)
+        from rockcli.dynamics.reference import integrate_reference
+
+        exact = block.chain.exact if block.chain is not None else None
+        integrate_reference(*arrays, *outputs, exact=exact)
     else:  # compiled: Ctrl-C deferred to the end of the run (rockcli.interrupts)
-        interrupts.call(run, *arrays, *outputs)
+        from rockcli.dynamics.kernel import integrate
+
+        interrupts.call(integrate, *arrays, *outputs)
     hist = _history(times, hist_th, hist_om, hist_f, out_f[L.O_T_END], origin) if history else None
     if origin:
         out_f[[L.O_T_END, L.O_T_OVERTURN, L.O_T_UPLIFT]] += origin

@@ -116,3 +116,48 @@ def mass_slope(side: ChainSide, theta: float) -> float:
         return (generalised_mass(side, theta + h) - generalised_mass(side, theta - h)) / (2 * h)
     m0, m1, m2 = (generalised_mass(side, theta - k * h) for k in range(3))
     return (3.0 * m0 - 4.0 * m1 + m2) / (2.0 * h)
+
+
+def velocities(side: ChainSide) -> list[tuple[float, float, float, float, float, float]]:
+    """Every mass of the mechanism at rest with its velocity per unit opening rate ȧ = 1:
+    (m following X [kg], m following Z [kg], I_G [kg·m²], ∂X/∂a, ∂Z/∂a [m], ∂φ/∂a), in the
+    side frame; the bodies first, then the loads, in the mechanism's order."""
+    states = side.states(0.0)
+    out = []
+    for link, body in side.bodies:
+        st = states[link]
+        _, _, dx, dz = st.place(body.x, body.z)
+        out.append((body.mass, body.mass, body.inertia, dx, dz, st.dphi))
+    for ld in side.loads:
+        m = ld.weight / side.g
+        _, _, dx, dz = states[ld.at.link].place(ld.at.x, ld.at.z)
+        out.append((m if ld.moves else 0.0, m if ld.bears else 0.0, 0.0, dx, dz, 0.0))
+    return out
+
+
+def impact_ratio(before: ChainSide, after: ChainSide) -> float:
+    """θ̇⁺/θ̇⁻ of an impact at θ = 0 that ends a phase on ``before``'s side and starts one on
+    ``after``'s (the same masses, in the same order, seen from the other pivot).
+
+    Every hinge changes face: the velocity field per unit rate of the side frame is w_s(P) =
+    (s·∂X_s/∂a, ∂Z_s/∂a) in the wall's frame and the bodies turn at s·∂φ_s/∂a (the side frame of
+    side −1 is the mirror image). The impulsive reactions act at the new hinges — the new pivot
+    (at rest), the intermediate hinge (equal and opposite on the two blocks, which share its
+    velocity) and the held top (no horizontal velocity) — so they do no work in the
+    post-impact field w⁺, and the balance of momentum projected on it gives
+    ∫ w⁻·w⁺ dm · ȧ⁻ = ∫ |w⁺|² dm · ȧ⁺ (Sorrentino, Masiani & Griffith 2008, who write it as the
+    angular momentum of each block about its new hinge; for one rigid body it is Housner's
+    balance about the new pivot, mechanics.impact_restitution). With θ̇ = s·ȧ on each side:
+
+        θ̇⁺/θ̇⁻ = Σ [m_x X′_s X′_s′ − m_z Z′_s Z′_s′ + I_G φ′_s φ′_s′] / Σ [m_x X′_s′² + m_z Z′_s′²
+        + I_G φ′_s′²]
+
+    (one rectangle: (I_G + m(z² − x·x′))/(I_G + m(x′² + z²)) = 1 − 1.5 sin²α).
+    """
+    num = den = 0.0
+    for (mx, mz, i_g, dx, dz, dp), (_, _, _, dx2, dz2, dp2) in zip(
+        velocities(before), velocities(after), strict=True
+    ):
+        num += mx * dx * dx2 - mz * dz * dz2 + i_g * dp * dp2
+        den += mx * dx2 * dx2 + mz * dz2 * dz2 + i_g * dp2 * dp2
+    return num / den

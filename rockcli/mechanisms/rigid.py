@@ -48,11 +48,6 @@ def composite(bodies: list[Body]) -> Composite:
     return Composite(weight, mass, x, z, inertia)
 
 
-def rockable(spec: MechanismSpec) -> bool:
-    """True when the mechanism is one rigid body (the engine rocks it today)."""
-    return spec.type is not MechanismType.VERTICAL_FLEXURE
-
-
 def rigid_block(wall: Wall, spec: MechanismSpec, block: Block) -> Block:
     """The rigid mechanism ``spec`` as a Block of its own shape; ``block`` gives the model's
     settings the mechanism keeps (restitution rule through ``e``, motion, rebound)."""

@@ -206,7 +206,7 @@ def with_system_restitution(block: Block, model: Model, most: float = math.inf) 
     table = model.restitution
     if table.rule is RestitutionModel.EXPLICIT or block.mass is None:
         return block
-    if not block.loads and block.body is None:
+    if not block.loads and block.body is None and block.chain is None:
         return block
     factor = 1.0 if table.factor is None else table.factor
     e_pos, e_neg = (min(max(impact_restitution(block, s), 0.0), most) * factor for s in (1, -1))

@@ -174,61 +174,44 @@ def compare_model_output(
 
 
 def main_mechanism(kin: KinematicResult, name: str | None = None) -> Any:
-    """The mechanism a wall's comparison shows in full: the one named, else the governing one
-    when the time history rocks it, else the first one it rocks in the governing order; None
-    for a model of one block (or a wall with one mechanism, and no name)."""
-    from rockcli.mechanisms.wall import MechanismType
-
+    """The mechanism a wall's comparison shows in full: the one named, else the governing one;
+    None for a model of one block (or a wall with one mechanism, and no name)."""
     if name is not None:
         return named_result(kin, name)
     if len(kin.catalogue) < 2:
         return None
-    rockable = [m for m in kin.catalogue if m.type != MechanismType.VERTICAL_FLEXURE.value]
-    return rockable[0] if rockable else kin.catalogue[0]
+    return kin.catalogue[0]
 
 
 def named_result(kin: KinematicResult, name: str) -> Any:
-    """The catalogue's entry of that name (InputError naming the catalogue's names; a
-    vertical flexure: the time history cannot rock it yet)."""
-    from rockcli.errors import InputError
+    """The catalogue's entry of that name (InputError naming the catalogue's names)."""
     from rockcli.studies.catalogue import named
 
-    entry = named(kin.catalogue, name)
-    if entry.type == "vertical-flexure":
-        raise InputError(f"the time history cannot yet rock '{name}' (a vertical flexure: two "
-                         "blocks); rock kinematic checks it", where="--mechanism", value=name,
-                         allowed="a mechanism of one rigid body")  # fmt: skip
-    return entry
+    return named(kin.catalogue, name)
 
 
 def shown_result(kin: KinematicResult, main: Any) -> KinematicResult:
     """The main mechanism's code check, the catalogue kept; a note names the governing one
-    when it is another, which the time history does not rock yet (like with like)."""
+    when it is another (like with like)."""
     from dataclasses import replace
 
     if main is None or main.name == kin.mechanism:
         return kin
     note = (f"the comparison shows '{main.name}'; the governing mechanism is "
             f"'{kin.governing}'")  # fmt: skip
-    if kin.catalogue and kin.catalogue[0].type == "vertical-flexure":
-        note += " (a vertical flexure, checked by the code only)"
     return replace(main.result, catalogue=kin.catalogue, governing=kin.governing,
                    notes=(*main.result.notes, note))  # fmt: skip
 
 
 def catalogue_comparisons(model, record, engine, kin, main, rocking, ground):
     """Every mechanism of a wall's catalogue: the main one's comparison as made, each other
-    one the time history rocks run and classified, a vertical flexure not rocked."""
-    from rockcli.mechanisms.wall import MechanismType
-
+    one run and classified."""
     if main is None:
         return ()
     out = []
     for m in kin.catalogue:
         if m.name == main.name:
             run: Assessment | None = rocking.result
-        elif m.type == MechanismType.VERTICAL_FLEXURE.value:
-            run = None
         else:
             run = assess_model_output(model, record, engine, ground=ground, mechanism=m.name,
                                       tolerance_check=False).result  # fmt: skip

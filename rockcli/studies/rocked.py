@@ -5,8 +5,10 @@ gable) rock as a Block of their own shape (rockcli.mechanisms.rigid); the mechan
 named (``--mechanism``) or the governing one of the code check on the same record (like with
 like: the code side's spectrum is the record's, as `rock compare` takes it). A storey
 mechanism rocks on the floor motion at its hinge, Z + the hinge's height, through the same
-first mode as the code check's floor spectrum (rockcli.studies.catalogue.spec_position).
-The two-block vertical flexure does not rock yet: asking for it is one clear error.
+first mode as the code check's floor spectrum (rockcli.studies.catalogue.spec_position); a
+vertical flexure on the motion of its storey's base (the floor above, which holds its top,
+moves otherwise: docs/interpretations.md). The two-block vertical flexure rocks as its chain
+(rockcli.mechanisms.flexure).
 """
 
 from __future__ import annotations
@@ -51,22 +53,34 @@ def governing_spec(model: Model, wall: Wall, record: Record) -> MechanismSpec:
     return named_spec(wall, main.name if main is not None else kin.governing or "")
 
 
-def rockable_spec(wall: Wall, spec: MechanismSpec) -> MechanismSpec:
-    """The spec, or InputError when the time history cannot rock it yet (vertical flexure)."""
-    from rockcli.mechanisms.rigid import rockable
+def mechanism_block(model: Model, wall: Wall, spec: MechanismSpec) -> Block:
+    """The mechanism as the engine rocks it, with Housner's e of its bodies per side: one
+    rigid body as a Block of its own shape (rockcli.mechanisms.rigid), a vertical flexure as
+    a Block carrying its two-block chain (rockcli.mechanisms.flexure; its hinge resolved as
+    the code check resolves it)."""
+    from rockcli.mechanisms.flexure import UpperMemberError, flexure_block
+    from rockcli.mechanisms.rigid import rigid_block
+    from rockcli.mechanisms.wall import MechanismType
+    from rockcli.model.derive import block_of
+    from rockcli.studies.catalogue import resolved
+    from rockcli.studies.kinematic import check_settings
 
-    if rockable(spec):
-        return spec
-    rigid = [s.name for s in wall.mechanisms if rockable(s)]
-    raise InputError(
-        f"the time history cannot yet rock '{spec.name}' (a vertical flexure: two blocks); "
-        "rock kinematic checks it",
-        where="--mechanism" if rigid else "mechanisms",
-        value=spec.name,
-        allowed="a mechanism of one rigid body: " + "; ".join(f"'{n}'" for n in rigid)
-        if rigid
-        else "none in this model: rock kinematic",
-    )
+    block = block_of(model)
+    if spec.type is not MechanismType.VERTICAL_FLEXURE:
+        return system_restitution(rigid_block(wall, spec, block), model)
+    spec, _ = resolved(wall, spec, (1, -1), check_settings(model))
+    try:
+        return system_restitution(flexure_block(wall, spec, block), model)
+    except UpperMemberError as exc:
+        raise InputError(
+            f"the time history cannot rock '{spec.name}' with restrainer '{exc.member}' on its "
+            f"upper block ({exc.z:g} m above the storey's base, between the intermediate hinge "
+            f"at {exc.hinge:.3f} m and the held top at {exc.top:g} m)",
+            where="restrainers",
+            value=exc.member,
+            allowed="restrainers of a vertical flexure at or below its intermediate hinge, or "
+            "at its storey's top; rock kinematic checks it as given",
+        ) from None
 
 
 def system_restitution(block: Block, model: Model) -> Block:
@@ -86,14 +100,11 @@ MAX_RESTITUTION = 1.0
 
 def rocked_mechanism(model: Model, record: Record, name: str | None) -> Rocked:
     """The mechanism of a wall model the time history rocks, its block and its floor."""
-    from rockcli.mechanisms.rigid import rigid_block
-    from rockcli.model.derive import block_of
     from rockcli.model.derive_wall import to_wall
 
     wall = to_wall(model)
     spec = named_spec(wall, name) if name is not None else governing_spec(model, wall, record)
-    spec = rockable_spec(wall, spec)
-    block = system_restitution(rigid_block(wall, spec, block_of(model)), model)
+    block = mechanism_block(model, wall, spec)
     return Rocked(spec.name, spec.type.value, block, mechanism_floor(model, wall, spec))
 
 
@@ -111,13 +122,12 @@ def mechanism_floor(model: Model, wall: Wall, spec: MechanismSpec) -> Floor | No
 
 
 def rockable_names(model_path: str) -> list[str | None]:
-    """The mechanisms of the model file the time history rocks, in the catalogue's order
-    ([None]: a model of one block, its own)."""
-    from rockcli.mechanisms.rigid import rockable
+    """The mechanisms of the model file the time history rocks: every one, in the catalogue's
+    order ([None]: a model of one block, its own)."""
     from rockcli.model.derive_wall import is_wall, to_wall
     from rockcli.model.load import load_model
 
     model = load_model(model_path)
     if not is_wall(model):
         return [None]
-    return [spec.name for spec in to_wall(model).mechanisms if rockable(spec)]
+    return [spec.name for spec in to_wall(model).mechanisms]

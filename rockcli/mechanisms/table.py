@@ -1,0 +1,129 @@
+"""A mechanism of several bodies as the rocking engine reads it: a table of its equation of
+motion (mechanics.Chain).
+
+The two-block vertical flexure's terms M(θ), M′(θ), V′(θ) = G, g·Γ(θ) = H and the thrusts'
+T(θ) come from its configuration function (rockcli.mechanisms.motion), which walks the chain
+link by link — too slow to call inside the compiled step. They are evaluated once per
+mechanism on a uniform grid of each side's rotation, with their derivatives, and the engine
+interpolates them by cubic Hermite polynomials (mechanics.chain_terms). The grid of
+:data:`NODES` nodes keeps the interpolation error h⁴·|f⁗|/384 far below the engine's tolerance
+(measured against the configuration function in tests/mechanisms/test_chain_table.py); the
+reference engine reads the configuration function itself (Chain.exact), so the agreement of
+the two engines measures the table's error too.
+
+Pure and silent: only :mod:`math` and the package's own modules.
+"""
+
+from __future__ import annotations
+
+import math
+from functools import lru_cache
+
+from rockcli.mechanics import CH_HEAD, Chain
+from rockcli.mechanisms.motion import (
+    MASS_STEP,
+    generalised_mass,
+    impact_ratio,
+    mass_slope,
+)
+from rockcli.mechanisms.side import ChainSide
+
+#: Nodes of the grid of each side (the interpolation error falls as the fourth power of the
+#: step: tests/mechanisms/test_chain_table.py measures it below 1e-11 of each term).
+NODES = 1025
+#: The table, and the run, end at this share of the motion's limit (where the upper block's
+#: chord lies flat and M grows without bound): a chain that opens so far has collapsed.
+END_SHARE = 0.9
+#: Step of the central differences of G, H and T [rad] (as motion.MASS_STEP: truncation and
+#: rounding balance near (3ε)^(1/3)).
+SLOPE_STEP = MASS_STEP
+#: Step of the central difference of M′ [rad]: M′ is itself a difference, with rounding
+#: ε·|M|/MASS_STEP, so its own difference needs a longer step.
+CURVATURE_STEP = 1e-3
+#: Bisection steps of the instability rotation.
+BISECTION_STEPS = 80
+
+
+def terms(side: ChainSide, a: float) -> tuple[float, float, float, float, float]:
+    """(G, H, T, M, M′) at rotation a: the weights' V′, g·Γ (per g), the thrusts' opening
+    work, the generalised mass and its slope (rockcli.mechanisms.motion)."""
+    g, t, h = side.work_terms(a)
+    return g, h, t, generalised_mass(side, a), mass_slope(side, a)
+
+
+def slopes(side: ChainSide, a: float, mp: float) -> tuple[float, float, float, float, float]:
+    """d/da of (G, H, T, M, M′) at a, by central differences (M′ is M's slope ``mp``)."""
+    hs, hc = SLOPE_STEP, CURVATURE_STEP
+    (g1, t1, h1), (g0, t0, h0) = side.work_terms(a + hs), side.work_terms(a - hs)
+    curvature = (mass_slope(side, a + hc) - mass_slope(side, a - hc)) / (2.0 * hc)
+    return (g1 - g0) / (2 * hs), (h1 - h0) / (2 * hs), (t1 - t0) / (2 * hs), mp, curvature
+
+
+def rows(side: ChainSide, end: float) -> tuple[float, ...]:
+    """The side's NODES rows of the table on [0, end]."""
+    out: list[float] = []
+    for k in range(NODES):
+        a = end * k / (NODES - 1)
+        values = terms(side, a)
+        out += [*values, *slopes(side, a, values[4])]
+    return tuple(out)
+
+
+def instability(side: ChainSide, end: float) -> float:
+    """The rotation at which the weights' and thrusts' restoring moment G − T vanishes (the
+    capacity curve's zero without restrainers; for a rectangle, α) [rad]; ``end`` if it does
+    not within [0, end]."""
+
+    def restoring(a: float) -> float:
+        g, t, _ = side.work_terms(a)
+        return g - t
+
+    if restoring(end) > 0.0:
+        return end
+    lo, hi = 0.0, end
+    for _ in range(BISECTION_STEPS):
+        mid = 0.5 * (lo + hi)
+        lo, hi = (mid, hi) if restoring(mid) > 0.0 else (lo, mid)
+    return 0.5 * (lo + hi)
+
+
+def uplift(side: ChainSide) -> float:
+    """α0 = (G − T)/H at rest [g]: the code check's expression (rockcli.codecheck.kinematic
+    .activation_terms without a pretension), so that the two agree bit for bit."""
+    g, t, h = side.work_terms(0.0)
+    return (g - t) / h
+
+
+def end_of(plus: ChainSide, minus: ChainSide) -> float:
+    """The rotation the table reaches on both sides [rad]."""
+    return END_SHARE * min(plus.limit, minus.limit)
+
+
+@lru_cache(maxsize=64)
+def tabulate(plus: ChainSide, minus: ChainSide) -> Chain:
+    """The chain whose side +1 is ``plus`` and side −1 ``minus`` (the same bodies and loads,
+    seen from each pivot) as the engine reads it."""
+    end = end_of(plus, minus)
+    step = end / (NODES - 1)
+    g0, h0, _, m0, _ = terms(plus, 0.0)
+
+    def exact(s: int, a: float) -> tuple[float, float, float, float, float]:
+        return terms(plus if s > 0 else minus, a)
+
+    def stiffness(side: ChainSide) -> float:
+        g, h, t, _, mp = terms(side, 0.0)
+        dg, _, dt, _, _ = slopes(side, 0.0, mp)
+        return dg - dt
+
+    table = (-float(NODES), step, step, *rows(plus, end), *rows(minus, end))
+    assert len(table) == CH_HEAD + 2 * NODES * 10
+    return Chain(
+        table=table,
+        uplift=(uplift(plus), uplift(minus)),
+        restitution=(impact_ratio(plus, minus), impact_ratio(minus, plus)),
+        inertia=(m0, generalised_mass(minus, 0.0)),
+        stiffness=(stiffness(plus), stiffness(minus)),
+        end=end,
+        p2=math.hypot(g0, h0) / m0,
+        exact=exact,
+    )
