@@ -170,9 +170,10 @@ class Thrust:
 
 # The table of a chain (Chain.table): a header (−n for n nodes per side: negative, so that the
 # engine tells a chain's table from a point table, whose first entry is a weight; the grid
-# step of side +1 and of side −1 [rad]), then side +1's n rows and side −1's n rows, each row the five terms of the
-# equation of motion at a = k·step and their five derivatives in a: G = V′ [N·m], H = g·Γ
-# [N·m per g], T (the thrusts' opening work) [N·m], M [kg·m²], M′ [kg·m²/rad].
+# step of side +1 and of side −1 [rad]), then side +1's n rows and side −1's n rows, each row
+# the five terms of the equation of motion at a = k·step and their five derivatives in a:
+# G = V′ [N·m], H = g·Γ [N·m per g], T (the thrusts' opening work) [N·m], M [kg·m²],
+# M′ [kg·m²/rad].
 CH_N, CH_STEP_POS, CH_STEP_NEG = 0, 1, 2
 CH_HEAD = 3
 CH_TERMS = 5
