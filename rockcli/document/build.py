@@ -595,9 +595,9 @@ def mechanisms_grid(doc: Mapping[str, Any], w: Words) -> Grid:
         rows.append((
             m["name"],
             w.passed(m["code"].get("ULS")),
-            "—" if rocking is None else w.number(rocking["max_ratio"], "{:.3f}"),
-            w("cmp.not_rocked") if rocking is None else w(f"cmp.rocked_{rocking['verdict']}"),
-            "—" if m["classification"] is None else m["classification"],
+            w.number(rocking["max_ratio"], "{:.3f}"),
+            w(f"cmp.rocked_{rocking['verdict']}"),
+            m["classification"],
         ))  # fmt: skip
     headers = (w("cmp.mechanism"), w("cmp.code_uls"), w("cmp.max_ratio"),
                w("cmp.rocking_verdict"), w("cmp.classification"))  # fmt: skip

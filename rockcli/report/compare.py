@@ -73,17 +73,14 @@ def comparison_output_document(out: ComparisonOutput, record: Record) -> dict[st
 
 
 def mechanism_comparison(m: Any) -> dict[str, Any]:
-    """One mechanism of the catalogue under the record: its code verdicts, its rocking
-    (None: not rocked yet) and their classification."""
-    rocking = None
-    if m.rocking is not None:
-        rocking = {"verdict": str(m.rocking.verdict), "max_ratio": m.rocking.max_ratio}
+    """One mechanism of the catalogue under the record: its code verdicts, its rocking and
+    their classification."""
     return {
         "name": m.name,
         "type": m.type,
-        "classification": None if m.classification is None else str(m.classification),
+        "classification": str(m.classification),
         "code": m.code.verdict(),
-        "rocking": rocking,
+        "rocking": {"verdict": str(m.rocking.verdict), "max_ratio": m.rocking.max_ratio},
     }
 
 
@@ -102,9 +99,9 @@ def mechanisms_table(doc: dict[str, Any]) -> Table:
         {
             "name": m["name"],
             "code_uls": _yes_no(m["code"].get("ULS"), "satisfied", "NOT satisfied"),
-            "max_ratio": None if m["rocking"] is None else m["rocking"]["max_ratio"],
-            "rocking": "not rocked yet" if m["rocking"] is None else m["rocking"]["verdict"],
-            "classification": m["classification"] or "—",
+            "max_ratio": m["rocking"]["max_ratio"],
+            "rocking": m["rocking"]["verdict"],
+            "classification": m["classification"],
         }
         for m in doc["mechanisms"]
     )

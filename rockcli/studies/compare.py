@@ -111,21 +111,21 @@ class ComparisonOutput:
 
 @dataclass(frozen=True)
 class MechanismComparison:
-    """One mechanism of a wall's catalogue under the record: its code check and, when the
-    time history rocks it, its rocking and the classification (None: not rocked yet).
+    """One mechanism of a wall's catalogue under the record: its code check, its rocking and
+    the classification.
 
     Attributes:
         name, type: the mechanism's.
         code: its kinematic result.
-        rocking: both polarities (None: a vertical flexure, not rocked yet).
-        classification: how its two collapse verdicts relate (None: not rocked).
+        rocking: both polarities.
+        classification: how its two collapse verdicts relate.
     """
 
     name: str
     type: str
     code: KinematicResult
-    rocking: Assessment | None
-    classification: Classification | None
+    rocking: Assessment
+    classification: Classification
 
 
 def compare_model_output(
@@ -211,11 +211,11 @@ def catalogue_comparisons(model, record, engine, kin, main, rocking, ground):
     out = []
     for m in kin.catalogue:
         if m.name == main.name:
-            run: Assessment | None = rocking.result
+            run: Assessment = rocking.result
         else:
             run = assess_model_output(model, record, engine, ground=ground, mechanism=m.name,
                                       tolerance_check=False).result  # fmt: skip
-        kind = None if run is None else classify(code_collapse(m.result), rocking_collapse(run))
+        kind = classify(code_collapse(m.result), rocking_collapse(run))
         out.append(MechanismComparison(m.name, m.type, m.result, run, kind))
     return tuple(out)
 

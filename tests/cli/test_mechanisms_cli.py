@@ -128,21 +128,43 @@ def test_assess_rocks_the_governing_rigid_mechanism() -> None:
     assert doc["model"]["uplift_acceleration_by_side_g"] == kin["alpha0_by_side"]
 
 
-def test_assess_refuses_a_vertical_flexure_in_one_line() -> None:
-    name = "vertical flexure, storey 1"
-    code, _, err = run("assess", str(FACADE), "--record", str(RICKER), "--mechanism", name)
-    assert code == 2
-    assert "cannot yet rock" in err and len(err.strip().splitlines()) == 1
-    assert "'gable'" in err  # the mechanisms it can rock are named
+def test_assess_rocks_a_vertical_flexure_on_its_storeys_base() -> None:
+    name = "vertical flexure, storey 2"
+    code, out, err = run("assess", str(FACADE), "--record", str(RICKER), "--mechanism", name,
+                         "--format", "json")  # fmt: skip
+    assert code == 0, err
+    doc = json.loads(out)
+    assert doc["mechanism"] == {"name": name, "type": "vertical-flexure"}
+    # On the floor motion at the storey's base (4 m), not at its hinge.
+    assert doc["record"]["floor"]["Z"] == 4.0
+    # Like with like: each side's uplift acceleration is the code check's α0, bit for bit.
+    kin = kinematic_json(FACADE, "--mechanism", name)
+    assert doc["model"]["uplift_acceleration_by_side_g"] == kin["alpha0_by_side"]
+    assert all(0.0 <= e <= 1.0 for e in doc["model"]["e_by_side"].values())
 
 
-def test_assess_all_rocks_every_rigid_mechanism() -> None:
+def test_assess_refuses_a_member_on_the_upper_block_in_one_line(tmp_path: Path) -> None:
+    # A restrainer between a flexure's hinge and its held top cannot be a polar spring of
+    # the chain: one line naming the member and the key, exit 2.
+    text = FACADE.read_text(encoding="utf-8").replace("height = 7.5         # m, at the top floor",
+                                                      "height = 7.0         # m")
+    path = tmp_path / "mid.toml"
+    path.write_text(text, encoding="utf-8")
+    code, _, err = run("assess", str(path), "--record", str(RICKER), "--mechanism",
+                       "vertical flexure, storey 2")  # fmt: skip
+    assert code == 2, err
+    assert "restrainers" in err and "tie-rod" in err
+    assert len(err.strip().splitlines()) == 1 and "Traceback" not in err
+
+
+def test_assess_all_rocks_every_mechanism() -> None:
     code, out, err = run("assess", str(FACADE), "--record", str(RICKER), "--all",
                          "--format", "json")  # fmt: skip
     assert code == 0, err
     names = [d["mechanism"]["name"] for d in json.loads(out)["mechanisms"]]
     assert names == ["overturning, whole wall", "overturning, storey 2",
-                     "wedge 30°, both return walls", "gable"]  # fmt: skip
+                     "wedge 30°, both return walls", "vertical flexure, storey 1",
+                     "vertical flexure, storey 2", "gable"]  # fmt: skip
     code, _, err = run("assess", str(FACADE), "--record", str(RICKER), "--all",
                        "--mechanism", "gable")  # fmt: skip
     assert code == 2 and "not with --all" in err
@@ -154,12 +176,10 @@ def test_compare_lists_every_mechanism() -> None:
     doc = json.loads(out)
     names = [m["name"] for m in doc["mechanisms"]]
     assert doc["governing"] == names[0] == doc["kinematic"]["mechanism"]
+    assert "vertical-flexure" in {m["type"] for m in doc["mechanisms"]}
     for m in doc["mechanisms"]:
-        if m["type"] == "vertical-flexure":
-            assert m["rocking"] is None and m["classification"] is None
-        else:
-            assert m["rocking"]["verdict"] in ("survives", "overturns")
-            assert m["classification"] is not None
+        assert m["rocking"]["verdict"] in ("survives", "overturns")
+        assert m["classification"] is not None
     assert doc["classification"] == doc["mechanisms"][0]["classification"]
 
 
@@ -284,13 +304,12 @@ def test_compare_on_a_one_storey_wall_compares_the_rocked_mechanism(tmp_path: Pa
     code, out, err = run("compare", str(path), "--record", str(RICKER), "--format", "json")
     assert code == 0, err
     kin = json.loads(out)["kinematic"]
-    # Like with like: the code side of the comparison is the governing mechanism when the
-    # time history rocks it (every one here but the flexure), the catalogue listed with it.
+    # Like with like: the code side of the comparison is the governing mechanism, the
+    # catalogue listed with it.
     assert len(kin["mechanisms"]) == 3
     shown = next(m for m in kin["mechanisms"] if m["name"] == kin["mechanism"])
-    assert kin["alpha0"] == shown["alpha0"] and shown["type"] != "vertical-flexure"
-    if kin["governing"] != kin["mechanism"]:
-        assert any("the comparison shows" in n for n in kin["notes"])
+    assert kin["alpha0"] == shown["alpha0"]
+    assert kin["governing"] == kin["mechanism"]
 
 
 def test_report_shows_the_catalogue_table(tmp_path: Path) -> None:
@@ -303,9 +322,9 @@ def test_report_shows_the_catalogue_table(tmp_path: Path) -> None:
     assert code == 0, err
     text = html.read_text(encoding="utf-8")
     assert "The mechanisms of the catalogue" in text
-    # The comparison section lists every mechanism with its rocking (the flexure not yet).
+    # The comparison section lists every mechanism with its rocking, the flexure's too.
     assert "Every mechanism of the catalogue under the record" in text
-    assert "not rocked yet (two blocks)" in text
+    assert "not rocked yet" not in text
     for name in ("overturning, whole wall", "wedge 30°, one return wall",
                  "vertical flexure, storey 1"):  # fmt: skip
         assert name in text
@@ -370,11 +389,9 @@ def test_the_wedge_gains_no_energy_at_its_impacts() -> None:
     assert all(r["impact_energy_loss"] >= 0.0 for r in doc["runs"])
 
 
-def test_assess_rocks_the_first_rigid_mechanism_when_a_flexure_governs(tmp_path: Path) -> None:
-    # A one-storey wall whose governing mechanism is its vertical flexure (a heavy load at
-    # the top outside the flexure's reach makes the overturning strong): `rock assess`
-    # rocks the first mechanism in the governing order that is one rigid body, as
-    # `rock compare` does, instead of refusing the flexure nobody asked for.
+def test_assess_rocks_the_governing_mechanism(tmp_path: Path) -> None:
+    # A one-storey wall with a vertical flexure and an overturning: `rock assess` rocks the
+    # governing mechanism under the model's demand, whichever it is.
     text = (
         BASE
         + """
@@ -391,6 +408,5 @@ type = "overturning"
     kin = kinematic_json(path)
     code, out, err = run("assess", str(path), "--record", str(RICKER), "--format", "json")
     assert code == 0, err
-    rocked = json.loads(out)["mechanism"]["name"]
-    rigid = [m["name"] for m in kin["mechanisms"] if m["type"] != "vertical-flexure"]
-    assert rocked == rigid[0]
+    rocked = json.loads(out)["mechanism"]
+    assert rocked["name"] == kin["governing"]
