@@ -159,7 +159,8 @@ def restrainer_peak(run: RockingRun, number: int) -> RestrainerPeak:
 def ramp_uplift(model: Model, inputs: UpliftRampInput, quantity: str) -> float:
     """The ground acceleration |üg| [g] at the first uplift under the ramp, or its time [s]."""
     time = np.arange(0.0, inputs.duration + inputs.dt / 2, inputs.dt)
-    t_uplift = first_uplift(model, time, inputs.direction * inputs.slope * time, inputs.dt)
+    accel = inputs.direction * inputs.slope * time
+    t_uplift = first_uplift(model, time, accel, inputs.dt, inputs.mechanism)
     return t_uplift if quantity == "uplift_time" else inputs.slope * t_uplift
 
 
@@ -171,16 +172,19 @@ def sine_uplift(model: Model, inputs: UpliftSineInput) -> float:
     return first_uplift(model, time, accel, dt)
 
 
-def first_uplift(model: Model, time: np.ndarray, accel: np.ndarray, dt: float) -> float:
-    """The first uplift [s] of the model's block under the ground motion, which reaches a block
-    at height through its floor as in `rock assess` (the run stops at the first impact).
+def first_uplift(
+    model: Model, time: np.ndarray, accel: np.ndarray, dt: float, mechanism: str | None = None
+) -> float:
+    """The first uplift [s] of the model's block (a wall's mechanism: ``mechanism``, else its
+    first) under the ground motion, which reaches a block at height through its floor as in
+    `rock assess` (the run stops at the first impact).
 
     Raises:
         NotObtained: the block does not uplift.
     """
     ground = Record("casebook ground motion", "generated", "pulse", time, accel, dt)
     motion, _ = block_input(model, ground)
-    block = to_block(model)
+    block = case_block(model, mechanism)
     settings = model_settings(model, block, max_events=1)
     run = simulate(block, motion.time, motion.accel, motion.dt, settings=settings)
     if run.t_uplift is None:

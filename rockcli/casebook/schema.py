@@ -153,16 +153,15 @@ class KinematicInput(Table):
 
 class FreeRockingInput(Table):
     """``free-rocking``: released from rest at θ0 = φ0·α; the amplitude after n impacts. A
-    wall's model names the mechanism rocked (one rigid body; default: its first such)."""
+    wall's model names the mechanism rocked (default: its first; α of a vertical flexure is
+    its instability rotation, where the weights' restoring moment vanishes)."""
 
     phi0: float = Field(strict=True, gt=0, lt=1, description="θ0/α [-]")
     impacts: int = Field(
         strict=True, default=1, ge=1, le=20, description="impacts before the amplitude"
     )
     dt: SampleInterval = 1e-3
-    mechanism: str | None = Field(
-        None, min_length=1, description="a wall's mechanism of one rigid body, by name"
-    )
+    mechanism: str | None = Field(None, min_length=1, description="a wall's mechanism, by name")
 
 
 class ImpulseInput(Table):
@@ -250,6 +249,7 @@ class UpliftRampInput(Table):
     duration: Seconds = Field(description="the ramp's length [s]")
     dt: SampleInterval = 1e-3
     direction: Literal[1, -1] = Field(default=1, description="the ramp's sign")
+    mechanism: str | None = Field(None, min_length=1, description="a wall's mechanism, by name")
 
 
 class UpliftSineInput(Table):
