@@ -62,14 +62,14 @@ EXIT_OVERTURNS = EXIT_GATE
     "mechanism_name",
     default=None,
     metavar="NAME",
-    help="A wall's mechanism to rock (one rigid body: overturning, wedge, gable; default: "
+    help="A wall's mechanism to rock (overturning, wedge, vertical flexure, gable; default: "
     "the governing one of the code check, under the model's demand or else the record's).",
 )
 @click.option(
     "--all",
     "all_mechanisms",
     is_flag=True,
-    help="Rock every mechanism of a wall that is one rigid body, one after the other.",
+    help="Rock every mechanism of a wall, one after the other.",
 )
 @plot_option
 @force_option
@@ -105,9 +105,17 @@ def assess(
     check_allow_outside(allow_outside, suite_path)
     if one_record_or_suite(record_path, suite_path, history_path, plot_path, grid_file, target):
         check_record_options(None, record_format, dt, units, scale, pga)
+        if all_mechanisms:
+            from rockcli.errors import InputError
+
+            raise InputError(
+                "is one record's: not with --suite",
+                where="--all",
+                allowed="--record FILE --all, or --suite with --mechanism NAME",
+            )
         return assess_with_suite(
             model_path, (suite_path, target, allow_outside), grid_file, engine, ground, jobs,
-            output,
+            output, mechanism_name,
         )  # fmt: skip
     check_outputs(force, history=history_path, plot=plot_path)
     record = load_record(record_path, record_format, dt, units, scale, pga)
@@ -225,7 +233,9 @@ def one_record_or_suite(
     return True
 
 
-def assess_with_suite(model_path, suite, grid_file, engine, ground, jobs, output) -> None:
+def assess_with_suite(
+    model_path, suite, grid_file, engine, ground, jobs, output, mechanism=None
+) -> None:
     """Every record of the suite through the time history, the code's rule, the report.
 
     suite: (the suite file or folder, the --target of a folder, --allow-outside)."""
@@ -237,6 +247,6 @@ def assess_with_suite(model_path, suite, grid_file, engine, ground, jobs, output
     with progress_bar(None) as bar:
         result = assess_suite(
             model_path, suite[0], grid_file, engine=engine, ground=ground, jobs=jobs,
-            progress=bar, target=suite[1], allow_outside=suite[2],
+            progress=bar, target=suite[1], allow_outside=suite[2], mechanism=mechanism,
         )  # fmt: skip
     show(suite_assessment_document(result), output, suite_assessment_report)

@@ -235,7 +235,9 @@ def suite_assessment_document(sa: SuiteAssessment) -> dict[str, Any]:
         "suite": history_document(sa.measure, sa.rows, sa.compatibility),
         "warnings": list(sa.warnings),
     }
-
+    names = list(dict.fromkeys(r["mechanism"] for r in sa.rows if r.get("mechanism")))
+    if names:  # a wall: the mechanism rocked (one name; a list when records differ)
+        doc["mechanism"] = names[0] if len(names) == 1 else names
     return with_tolerance_check(doc, sa.rows)
 
 
@@ -266,6 +268,12 @@ def suite_assessment_report(doc: dict[str, Any]) -> Report:
         "overturning angle over α",
         f"input: {INPUT_TEXT[doc['input']]}",
     )
+    if "mechanism" in doc:
+        rocked = doc["mechanism"]
+        names = rocked if isinstance(rocked, list) else [rocked]
+        notes += ("mechanism rocked: " + ", ".join(f"'{n}'" for n in names)
+                  + ("" if len(names) == 1 else " (the governing one of each record: "
+                     "--mechanism NAME rocks one under all)"),)  # fmt: skip
     return Report(
         title=f"rock assess — {doc['model']['name']} under the suite {doc['suite_name']}",
         tables=(history_records_table(suite),),

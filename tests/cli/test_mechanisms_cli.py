@@ -410,3 +410,22 @@ type = "overturning"
     assert code == 0, err
     rocked = json.loads(out)["mechanism"]
     assert rocked["name"] == kin["governing"]
+
+
+GRID = ROOT.parent / "shared" / "ntc" / "AllegatoB.txt"
+SUITE = ROOT / "examples" / "suites" / "laquila-slv.toml"
+
+
+@pytest.mark.skipif(not GRID.is_file(), reason="the NTC hazard grid (../shared/ntc) is absent")
+def test_a_suite_rocks_the_mechanism_named_under_every_record() -> None:
+    # --mechanism with --suite: every record rocks that mechanism (not each record's
+    # governing one), and the document says which.
+    name = "vertical flexure, storey 2"
+    code, out, err = run("assess", str(FACADE), "--suite", str(SUITE), "--allow-outside",
+                         "--hazard-grid", str(GRID), "--mechanism", name, "--jobs", "2",
+                         "--format", "json")  # fmt: skip
+    assert code == 0, err
+    assert json.loads(out)["mechanism"] == name
+    code, _, err = run("assess", str(FACADE), "--suite", str(SUITE), "--allow-outside",
+                       "--hazard-grid", str(GRID), "--all")  # fmt: skip
+    assert code == 2 and "--all" in err and len(err.strip().splitlines()) == 1

@@ -80,6 +80,7 @@ def assess_suite(
     progress: Callable[[int, int], None] | None = None,
     target: str | None = None,
     allow_outside: bool = False,
+    mechanism: str | None = None,
 ) -> SuiteAssessment:
     """Both polarities of the model under every record of the suite (its scales applied), on
     ``jobs`` local workers, and the suite measure by the code's rule (rule.suite_measure)
@@ -88,7 +89,8 @@ def assess_suite(
     The compatibility check runs first: a suite that fails it still runs, and says so.
     """
     loaded = load_suite_and_model(model_path, suite_path, grid_file, target, allow_outside)
-    return assess_loaded(loaded, engine=engine, ground=ground, jobs=jobs, progress=progress)
+    return assess_loaded(loaded, engine=engine, ground=ground, jobs=jobs, progress=progress,
+                         mechanism=mechanism)  # fmt: skip
 
 
 def assess_loaded(
@@ -98,8 +100,10 @@ def assess_loaded(
     ground: bool = False,
     jobs: int = 1,
     progress: Callable[[int, int], None] | None = None,
+    mechanism: str | None = None,
 ) -> SuiteAssessment:
-    """:func:`assess_suite` on a model and suite already read."""
+    """:func:`assess_suite` on a model and suite already read (``mechanism``: a wall's
+    mechanism rocked under every record; None: the governing one)."""
     from rockcli.model.plausible import model_warnings
     from rockcli.studies.sweep.executor import local_executor
     from rockcli.suites.run import check_numbers
@@ -112,7 +116,7 @@ def assess_loaded(
     with local_executor(min(jobs, len(items))) as lanes:
         rows = run_suite(
             loaded.table, items, lanes, engine=engine, ground=ground, file=loaded.model_path,
-            progress=progress,
+            progress=progress, mechanism=mechanism,
         )  # fmt: skip
     limit = limit_for(model, settings.target.limit_state.value)
     measure = suite_measure(outcomes(rows), limit)  # ValueError: a worker died twice

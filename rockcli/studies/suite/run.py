@@ -48,6 +48,7 @@ class SuiteChunk:
         ground: a block at height rocks on the record itself, not its floor motion.
         cases: the records, each with its place in the suite.
         tolerance_check: run each record's polarities again at tighter tolerances.
+        mechanism: a wall's mechanism to rock under every record (None: the governing one).
     """
 
     table: Mapping[str, Any]
@@ -56,6 +57,7 @@ class SuiteChunk:
     ground: bool
     cases: tuple[SuiteCase, ...]
     tolerance_check: bool = True
+    mechanism: str | None = None
 
 
 def run_suite_chunk(chunk: SuiteChunk) -> list[dict[str, Any]]:
@@ -67,7 +69,15 @@ def run_suite_chunk(chunk: SuiteChunk) -> list[dict[str, Any]]:
     return [
         {
             "case": c.id,
-            **record_row(model, c.item, engine, ground, chunk.file, tolerance_check=check),
+            **record_row(
+                model,
+                c.item,
+                engine,
+                ground,
+                chunk.file,
+                tolerance_check=check,
+                mechanism=chunk.mechanism,
+            ),  # fmt: skip
         }
         for c in chunk.cases
     ]
@@ -81,17 +91,18 @@ def record_row(
     file: str | None,
     *,
     tolerance_check: bool = True,
+    mechanism: str | None = None,
 ) -> dict:
     """Both polarities of the model under one record: max θ/α (overturn angle/α when it
     overturned), whether it overturned, the status of each run; with ``tolerance_check``,
     whether it is tolerance-sensitive (``sensitive``, rockcli.dynamics.tolerance) and each
-    polarity's check (``tolerance``)."""
+    polarity's check (``tolerance``); a wall's ``mechanism`` rocked (None: the model's
+    block)."""
     from rockcli.dynamics.tolerance import sensitive
     from rockcli.studies.assess import assess_model_output
 
-    out = assess_model_output(
-        model, item.record, engine, ground=ground, file=file, tolerance_check=tolerance_check
-    )
+    out = assess_model_output(model, item.record, engine, ground=ground, file=file,
+                              tolerance_check=tolerance_check, mechanism=mechanism)  # fmt: skip
     result = out.result
     return {
         "name": item.name,
@@ -104,6 +115,7 @@ def record_row(
         "statuses": [str(r.status) for r in result.runs],
         "sensitive": sensitive(result.runs),
         "tolerance": [run_check(r) for r in result.runs],
+        "mechanism": None if out.mechanism is None else out.mechanism[0],
     }
 
 
@@ -133,13 +145,16 @@ def run_suite(
     file: str | None = None,
     progress: Callable[[int, int], None] | None = None,
     tolerance_check: bool = True,
+    mechanism: str | None = None,
 ) -> list[dict[str, Any]]:
     """Every record's row in the suite's order, each record a chunk on the lanes. A record
     whose worker died twice is a row with an ``error`` (rockcli.studies.sweep.run)."""
     from rockcli.studies.sweep.run import run_chunks
 
     chunks = [
-        SuiteChunk(table, file, engine, ground, (SuiteCase(k, item),), tolerance_check)
+        SuiteChunk(
+            table, file, engine, ground, (SuiteCase(k, item),), tolerance_check, mechanism
+        )  # fmt: skip
         for k, item in enumerate(records)
     ]
     rows: list[dict[str, Any]] = []
