@@ -264,6 +264,7 @@ def simulate(
         rtol, atol = _reference_tolerances()
     else:
         from rockcli import jitcache
+        from rockcli.dynamics import kernel  # noqa: F401  (configures the cache first)
         from rockcli.dynamics.warmup import warmup
 
         jitcache.ensure_compiled(warmup)

@@ -259,7 +259,7 @@ def suite_assessment_report(doc: dict[str, Any]) -> Report:
     suite = doc["suite"]
     compat = suite["compatibility"]
     lo, hi = compat["period_range"]
-    notes = (
+    notes: tuple[str, ...] = (
         f"suite {doc['suite_name']!r}: mean spectrum / target from {compat['min_ratio']:.3f} to "
         f"{compat['max_ratio']:.3f} over {lo:g}–{hi:g} s: "
         + ("compatible" if compat["passed"] else "NOT compatible")

@@ -146,8 +146,9 @@ def test_assess_rocks_a_vertical_flexure_on_its_storeys_base() -> None:
 def test_assess_refuses_a_member_on_the_upper_block_in_one_line(tmp_path: Path) -> None:
     # A restrainer between a flexure's hinge and its held top cannot be a polar spring of
     # the chain: one line naming the member and the key, exit 2.
-    text = FACADE.read_text(encoding="utf-8").replace("height = 7.5         # m, at the top floor",
-                                                      "height = 7.0         # m")
+    text = FACADE.read_text(encoding="utf-8").replace(
+        "height = 7.5         # m, at the top floor", "height = 7.0         # m"
+    )
     path = tmp_path / "mid.toml"
     path.write_text(text, encoding="utf-8")
     code, _, err = run("assess", str(path), "--record", str(RICKER), "--mechanism",

@@ -90,7 +90,8 @@ def test_the_terms_at_rest_are_the_hand_derivations() -> None:
 def test_the_table_interpolates_the_configuration_function() -> None:
     # Cubic Hermite on NODES nodes: error h⁴·|f⁗|/384 with h ≈ 6e-4 rad; G, H, T, M measured
     # to about 1e-11 of their size, M′ (itself a central difference, its slope another: the
-    # table's CURVATURE_STEP) to 1e-7 of M per radian near the table's end; at a node the stored values themselves.
+    # table's CURVATURE_STEP) to 1e-7 of M per radian near the table's end; at a node the
+    # stored values themselves.
     _, wall, spec = flexure(FACADE, "vertical flexure, storey 2")
     from rockcli.studies.catalogue import resolved
     from rockcli.studies.kinematic import check_settings
