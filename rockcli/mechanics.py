@@ -198,6 +198,7 @@ class Chain:
         end: the largest rotation tabulated, where the run counts the mechanism collapsed [rad].
         p2: G(0)/M(0)·(1 + (H(0)/G(0))²)^½ [rad²/s²]: a rigid block's m g R/I_O, the scale of
             the free-vibration tail.
+        centroid: the bodies' centroid at rest from pivot O, (x, z) [m] (for reports).
         exact: the five terms at (s, a) from the configuration function itself, for the
             reference engine (the table's error is measured against it).
     """
@@ -209,6 +210,7 @@ class Chain:
     stiffness: tuple[float, float]
     end: float
     p2: float
+    centroid: tuple[float, float] = (0.0, 0.0)
     exact: Callable[[int, float], tuple[float, float, float, float, float]] | None = field(
         default=None, compare=False, hash=False
     )
@@ -240,6 +242,7 @@ class Chain:
             stiffness=pair(self.stiffness),
             end=self.end,
             p2=self.p2,
+            centroid=self.centroid,
             exact=None if exact is None else swapped,
         )
 

@@ -66,8 +66,8 @@ def flexure_block(wall: Wall, spec: MechanismSpec, block: Block) -> Block:
     """The vertical flexure ``spec`` (its hinge height resolved) as a Block carrying its chain;
     ``block`` gives the model's settings the mechanism keeps (motion, rebound, e's rule)."""
     plus, minus = build(wall, spec, 1), build(wall, spec, -1)
-    chain = tabulate(plus, minus)
     x, z = centroid(plus)
+    chain = replace(tabulate(plus, minus), centroid=(x, z))
     assert spec.storey is not None
     top = wall.storeys[spec.storey - 1].height  # in the side frame: above the storey's base
     return replace(

@@ -220,8 +220,8 @@ def model_document(name: str, kind: str, block: Block, e_rule: str) -> dict[str,
         "kind": kind,
         "R": block.R,
         "alpha": block.alpha,
-        "b": block.b,
-        "h": block.h,
+        "b": block.b if block.chain is None else block.chain.centroid[0],
+        "h": block.h if block.chain is None else block.chain.centroid[1],
         "p": block.p,
         "e": block.e,
         "e_rule": e_rule,
@@ -237,6 +237,7 @@ def model_document(name: str, kind: str, block: Block, e_rule: str) -> dict[str,
             zip(("1", "-1"), uplift_accelerations(block), strict=True)
         ),
         "e_by_side": {"1": block.restitution(1), "-1": block.restitution(-1)},
+        "chain": chain_document(block),
         "loads": [
             {
                 "name": ld.name,
@@ -283,6 +284,21 @@ def model_document(name: str, kind: str, block: Block, e_rule: str) -> dict[str,
             }
             for r in block.restrainers
         ],
+    }
+
+
+def chain_document(block: Block) -> dict[str, Any] | None:
+    """A chain's constants (JSON; None for a single body): M(0), the impact ratio by
+    projection before the model's factor, d(V′ − T)/dθ at rest, per side, and the rotation
+    at which the run counts it collapsed."""
+    chain = block.chain
+    if chain is None:
+        return None
+    return {
+        "inertia_by_side": {"1": chain.inertia[0], "-1": chain.inertia[1]},
+        "impact_ratio_by_side": {"1": chain.restitution[0], "-1": chain.restitution[1]},
+        "stiffness_by_side": {"1": chain.stiffness[0], "-1": chain.stiffness[1]},
+        "collapse_rotation": chain.end,
     }
 
 
@@ -474,14 +490,23 @@ def assessment_report(doc: dict[str, Any]) -> Report:
     mechanism = doc.get("mechanism")
     title = f"Block: {m['name']} ({m['kind']})"
     shape = ("thickness 2b × height 2h", f"{2 * m['b']:.3f} × {2 * m['h']:.3f}", "m", "")
+    geometry = [
+        ("semi-diagonal R", m["R"], "m", "{:.4g}"),
+        ("slenderness α", m["alpha"], "rad", "{:.4g}"),
+    ]
     if mechanism is not None:  # a wall's mechanism: a body of its own shape about its hinge
         title = f"Mechanism: {m['name']}, {mechanism['name']} ({mechanism['type']})"
         shape = ("centroid from pivot O: x, z", f"{m['b']:.3f}, {m['h']:.3f}", "m", "")
+    if m.get("chain") is not None:  # two blocks: no rectangle, α is where V′ vanishes
+        geometry = [
+            ("instability rotation α", m["alpha"], "rad", "{:.4g}"),
+            ("generalised mass M(0)", m["chain"]["inertia_by_side"]["1"], "kg·m²", "{:.4g}"),
+        ]
+        shape = ("centroid of both blocks from O: x, z", f"{m['b']:.3f}, {m['h']:.3f}", "m", "")
     block = key_value(
         title,
         [
-            ("semi-diagonal R", m["R"], "m", "{:.4g}"),
-            ("slenderness α", m["alpha"], "rad", "{:.4g}"),
+            *geometry,
             shape,
             ("frequency parameter p", m["p"], "rad/s", "{:.4g}"),
             ("restitution e", f"{m['e']:.4f} ({m['e_rule']})", "", ""),

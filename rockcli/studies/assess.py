@@ -93,7 +93,7 @@ def assess_model_output(
         model.name,
         str(model.kind),
         block,
-        describe(model).e_rule,
+        restitution_rule(describe(model).e_rule, block, rocked),
         result,
         settings.overturn_angle,
         warnings=(*model_warnings(model), *record.warnings),
@@ -102,6 +102,19 @@ def assess_model_output(
         shaking=shaking if floor is not None else None,
         mechanism=rocked,
     )
+
+
+def restitution_rule(rule: str, block: Block, rocked: tuple[str, str] | None) -> str:
+    """How e was obtained, said for what is rocked: the model's rule for its block; for a
+    wall's mechanism, Housner's balance about the new pivot of its body (one rigid body) or
+    the projection on the motion after the impact (a chain), times the model's factor (an
+    explicit e as given)."""
+    if rocked is None or rule == "explicit":
+        return rule
+    factor = rule.split(" × ", 1)[0] + " × " if " × " in rule else ""
+    if block.chain is not None:
+        return f"{factor}projection of the chain's motion on the motion after the impact"
+    return f"{factor}Housner of the mechanism's body about the new pivot"
 
 
 #: The one mechanism of a model of one block.
