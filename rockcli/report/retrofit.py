@@ -42,6 +42,8 @@ def retrofit_document(
     from rockcli.studies.floor import model_floor
 
     floor = model_floor(model) is not None and not ground
+    if rows and "input" in rows[0]:  # a wall's mechanism at height rocks on its floor
+        floor = any(r["input"] == "floor" for r in rows)
     return {
         "schema": SCHEMA,
         "rock_version": __version__,
@@ -97,7 +99,7 @@ def table_row(row: dict[str, Any]) -> dict[str, Any]:
         "strength": None if row["strength"] is None else row["strength"] / N_PER_KN,
         "code_uls": "not evaluated" if passed is None else ("pass" if passed else "fail"),
         "max_ratio": OVERTURNED if row["overturned"] else row["max_ratio"],
-        "max_force": row["max_force"] / N_PER_KN,
+        "max_force": None if row["max_force"] is None else row["max_force"] / N_PER_KN,
         "elongation": elongation_text(row.get("ductility")),
         "overstrength": None if not row.get("anchor") else row["anchor"]["demand"] / N_PER_KN,
         "why": "; ".join(failures(row)) or "passes",
@@ -122,6 +124,17 @@ def retrofit_report(doc: dict[str, Any]) -> Report:
         f" m from the pivot, {rod['placed']['length']:g} m long"
     )
     chosen = doc["chosen"]
+    columns, notes = COLUMNS, ()
+    names = list(dict.fromkeys(r["mechanism"] for r in doc["candidates"] if r.get("mechanism")))
+    if len(names) > 1:  # a wall whose governing mechanism changes with the rod
+        columns = (*COLUMNS[:-1], Column("mechanism", "governing mechanism", align="left"),
+                   COLUMNS[-1])  # fmt: skip
+    if names:
+        notes = ("a wall: each diameter is checked by the code on the record's spectrum and "
+                 "rocked for the governing mechanism of that check (a stronger rod can hand it "
+                 "to another); no peak force where the rod is not on that mechanism (below its "
+                 "hinge, or at a vertical flexure's held top)"
+                 + (f"; governing: '{names[0]}'" if len(names) == 1 else ""),)  # fmt: skip
     verdict = (
         f"{doc['reason']} ({doc['count']} bar(s) of {doc['grade']})"
         if chosen is not None
@@ -130,13 +143,14 @@ def retrofit_report(doc: dict[str, Any]) -> Report:
     return Report(
         title=f"rock retrofit — {doc['model']['name']} under {doc['record']['name']} "
         f"(PGA {doc['record']['pga_g']:.3f} g)",
-        tables=(Table(f"'{rod['name']}': {where}", COLUMNS, rows),),
+        tables=(Table(f"'{rod['name']}': {where}", columns, rows),),
         notes=(
             f"{doc['count']} bar(s) of {doc['grade']} per diameter; code ULS ζ = capacity/"
             "demand on the record's spectrum; max θ/α, peak force and utilisation over both "
             "polarities; the rod's largest elongation against ε_u·L/γ_ε, and γov·A·fy, the force "
             "its anchorage must exceed (capacity design, NTC 2018 §7.5.1)",
             INPUTS[doc["record"]["input"]],
+            *notes,
         ),
         warnings=tuple(doc["warnings"]),
         verdict=verdict,

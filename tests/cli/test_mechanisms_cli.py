@@ -355,12 +355,14 @@ def test_fail_on_uls_gates_on_every_mechanism(tmp_path: Path) -> None:
     assert code == 1 and "ULS NOT satisfied" in err, err
 
 
-def test_retrofit_of_a_wall_is_one_line_of_bad_input() -> None:
-    # A wall's mechanisms carry the members above their own hinge: the sizing of one rod for
-    # one block does not apply yet (before: an IndexError, exit 3).
-    code, _, err = run("retrofit", str(FACADE), "--record", str(RICKER))
-    assert code == 2 and "not sized yet" in err
-    assert len(err.strip().splitlines()) == 1 and "Traceback" not in err
+def test_retrofit_of_a_wall_refuses_a_rod_outside_it_in_one_line() -> None:
+    # --at on a wall: within its storeys (7.5 m high here) and inside the section at that
+    # height (0.45 m thick above the first floor).
+    for at in ("8.0,0.2", "6.0,0.5"):
+        code, _, err = run("retrofit", str(FACADE), "--record", str(RICKER), "--at", at,
+                           "--length", "6")  # fmt: skip
+        assert code == 2 and "--at" in err, (at, err)
+        assert len(err.strip().splitlines()) == 1 and "Traceback" not in err
 
 
 def test_compare_one_named_mechanism() -> None:
@@ -430,3 +432,49 @@ def test_a_suite_rocks_the_mechanism_named_under_every_record() -> None:
     code, _, err = run("assess", str(FACADE), "--suite", str(SUITE), "--allow-outside",
                        "--hazard-grid", str(GRID), "--all")  # fmt: skip
     assert code == 2 and "--all" in err and len(err.strip().splitlines()) == 1
+
+
+#: The one-storey wall with a tie-rod at 3.5 m and its overturning about the base only.
+TIED = (
+    BASE
+    + """
+[[restrainers]]
+name = "tie"
+kind = "tie-rod"
+grade = "S275"
+diameter = 0.016
+length = 6.0
+height = 3.5
+from_pivot = 0.25
+[[mechanisms]]
+type = "overturning"
+"""
+)
+
+
+def test_retrofit_sizes_the_rod_for_the_walls_governing_mechanism(tmp_path: Path) -> None:
+    path = tmp_path / "tied.toml"
+    path.write_text(TIED, encoding="utf-8")
+    code, out, err = run("retrofit", str(path), "--record", str(RICKER), "--diameters",
+                         "10,20", "--format", "json")  # fmt: skip
+    assert code == 0, err
+    rows = json.loads(out)["candidates"]
+    for row in rows:
+        assert row["mechanism"] == "overturning, whole wall" and row["on_mechanism"]
+        assert row["max_force"] > 0.0  # the rod is a member of the mechanism rocked
+    # The stiffer rod holds the wall back more: a smaller rotation.
+    assert rows[1]["max_ratio"] <= rows[0]["max_ratio"]
+
+
+def test_retrofit_says_when_the_rod_is_not_on_the_governing_mechanism() -> None:
+    # The façade's tie at the top floor (7.5 m) is at the gable's hinge: not on the gable,
+    # which governs under this record; no force, and the reason says why nothing helps.
+    code, out, err = run("retrofit", str(FACADE), "--record", str(RICKER), "--diameters",
+                         "12", "--format", "json")  # fmt: skip
+    assert code == 0, err
+    doc = json.loads(out)
+    row = doc["candidates"][0]
+    assert row["mechanism"] == "gable" and row["on_mechanism"] is False
+    assert row["max_force"] is None and doc["record"]["input"] == "floor"
+    if doc["chosen"] is None:
+        assert "not on the governing mechanism 'gable'" in doc["reason"]

@@ -106,8 +106,19 @@ def parse_at(text: str) -> tuple[float, float]:
 
 
 def check_placement(model: Model, height: float, from_pivot: float, file: str | None) -> None:
-    """The point of a new rod on the block: 0 < height ≤ 2h, 0 ≤ from_pivot ≤ 2b (InputError)."""
-    b, h = model.geometry.half_sizes
+    """The point of a new rod on the block: 0 < height ≤ 2h, 0 ≤ from_pivot ≤ 2b (InputError);
+    on a wall, within its storeys: 0 < height ≤ their height, inside the storey's section."""
+    from rockcli.model.derive_wall import is_wall
+
+    if is_wall(model):
+        from rockcli.model.wall import thickness_at
+
+        storeys = model.geometry.storey_list
+        top = sum(s.height for s in storeys)
+        b = 0.5 * thickness_at(storeys, min(max(height, 0.0), top))
+        h = 0.5 * top
+    else:
+        b, h = model.geometry.half_sizes
     value = f"{height:g},{from_pivot:g}"
     if not 0.0 < height <= 2.0 * h:
         raise InputError(
@@ -201,21 +212,10 @@ def make_plan(
     """The plan of a retrofit of a validated model (``base``: its table as read).
 
     The rod: a new one at ``placement`` (added to the restrainers), else the model's tie-rod
-    (``name`` picks one of several). InputError for a rod that cannot be found or placed, and
-    for a wall with its mechanism catalogue: the rod sizes the rocking of one body, and a
-    wall's mechanisms each carry the members above their own hinge (not built yet).
+    (``name`` picks one of several). InputError for a rod that cannot be found or placed. A
+    wall's candidates are each checked and rocked for their governing mechanism
+    (rockcli.studies.retrofit.run).
     """
-    from rockcli.model.derive_wall import is_wall
-
-    if is_wall(model):
-        raise InputError(
-            "rock retrofit sizes a tie-rod for a model of one block; a wall with its "
-            "mechanism catalogue is not sized yet",
-            file=file,
-            where="mechanisms" if model.mechanisms else "geometry.storeys",
-            allowed="a model of one block (thickness + height, or R + alpha); for a wall, "
-            "rock compare with the tie in the model, one diameter at a time",
-        )
     if placement is not None:
         if name is not None:
             raise InputError(

@@ -27,8 +27,11 @@ def failures(row: dict[str, Any]) -> list[str]:
         why.append(f"the code ULS is not evaluated ({ULTIMATE_FIX})")
     elif not row["code_uls_passed"]:
         why.append(f"the code ULS fails (ζ = {_number(row['code_zeta'])})")
+    body = "the block" if not row.get("mechanism") else f"'{row['mechanism']}'"
+    if row.get("mechanism") and not row.get("on_mechanism", True):
+        why.append(f"the rod is not on the governing mechanism '{row['mechanism']}'")
     if row["overturned"]:
-        why.append("the block overturns")
+        why.append(f"{body} overturns")
     elif row["rocking"] != "survives":
         why.append(f"the time history is {row['rocking']}")
     if row["ruptured"]:

@@ -66,12 +66,17 @@ def run_candidate(
 ) -> dict[str, Any]:
     """Both analyses of the model with the rod of this diameter: the code check on the
     record's spectrum (one earthquake on both sides, as ``rock compare``) and the time
-    history of both polarities."""
+    history of both polarities. A wall: the governing mechanism of that code check (with this
+    rod: a stronger rod can hand the governing role to another mechanism), rocked as
+    ``rock compare`` rocks it; ``mechanism`` names it, ``on_mechanism`` says whether the rod
+    is one of its members (a rod below its hinge, or at a flexure's held top, is not)."""
+    from rockcli.model.derive_wall import is_wall
     from rockcli.studies.assess import assess_model_output
     from rockcli.studies.kinematic import kinematic_model
 
     model = build_candidate(plan, diameter_mm)
     kin = kinematic_model(model, edition=analyses.edition, record=record)
+    mechanism = kin.governing if is_wall(model) else None
     out = assess_model_output(
         model,
         record,
@@ -79,18 +84,32 @@ def run_candidate(
         ground=analyses.ground,
         file=plan.file,
         tolerance_check=False,  # assess, compare and report check it; the sizing does not
+        mechanism=mechanism,
     )
+    member = member_index(out, plan.name)
     return {
         "diameter_mm": diameter_mm,
-        **rod_columns(out, plan.index),
+        "mechanism": mechanism,
+        "on_mechanism": member is not None,
+        "input": "ground" if out.floor is None else "floor",
+        **rod_columns(model, plan.index),
         **code_columns(kin),
-        **rocking_columns(out, plan.index),
+        **rocking_columns(out, member),
     }
 
 
-def rod_columns(out: AssessmentOutput, index: int) -> dict[str, Any]:
-    """The rod as derived: its stiffness K [N/m] (the stiffer side) and strength [N]."""
-    rod = out.block.restrainers[index]
+def member_index(out: AssessmentOutput, name: str) -> int | None:
+    """The rod's place among the members of the body rocked (None: not one of them)."""
+    names = [r.name for r in out.block.restrainers]
+    return names.index(name) if name in names else None
+
+
+def rod_columns(model: Any, index: int) -> dict[str, Any]:
+    """The rod as derived from the candidate model: its stiffness K [N/m] (the stiffer side)
+    and strength [N]."""
+    from rockcli.model.derive import to_restrainer
+
+    rod = to_restrainer(model, index)
     return {"K": max(rod.k_pos, rod.k_neg), "strength": _finite(rod.strength)}
 
 
@@ -102,19 +121,26 @@ def code_columns(kin: KinematicResult) -> dict[str, Any]:
     return {"code_uls_passed": kin.verdict()["ULS"], "code_zeta": uls_ratio(kin.checks)}
 
 
-def rocking_columns(out: AssessmentOutput, index: int) -> dict[str, Any]:
+def rocking_columns(out: AssessmentOutput, index: int | None) -> dict[str, Any]:
     """The time history over both polarities: max θ/α, overturning, the rod's peak force,
-    its utilisation (rockcli.studies.strength) and whether it ruptured."""
+    its utilisation (rockcli.studies.strength) and whether it ruptured (``index``: the rod
+    among the members of the body rocked; None: not one of them, no force)."""
     result = out.result
-    peaks = [run.restrainers[index] for run in result.runs]
-    return {
+    common = {
         "rocking": str(result.verdict),
         "max_ratio": float(result.max_ratio),
         "overturned": any(r.overturned for r in result.runs),
+        "broken_runs": broken_runs(result),
+    }
+    if index is None:
+        return {**common, "max_force": None, "utilisation": None, "ductility": None,
+                "anchor": None, "ruptured": False}  # fmt: skip
+    peaks = [run.restrainers[index] for run in result.runs]
+    return {
+        **common,
         "max_force": max(float(p.max_force) for p in peaks),
         **rod_check(out, index),
         "ruptured": any(p.t_fail is not None for p in peaks),
-        "broken_runs": broken_runs(result),
     }
 
 
