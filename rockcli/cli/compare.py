@@ -97,8 +97,8 @@ def refuse_record_demand(record_demand: bool) -> None:
     "mechanism_name",
     default=None,
     metavar="NAME",
-    help="A wall's mechanism to compare in full (one rigid body; default: the governing one "
-    "when the time history rocks it); every mechanism is listed either way.",
+    help="A wall's mechanism to compare in full (default: the governing one); every mechanism "
+    "is listed either way.",
 )
 @plot_option
 @force_option

@@ -77,11 +77,19 @@ EXTRA = install_hint("report")
     "NTC Allegato B grid file: for a site in the model or the suite's target, and for the "
     "validation casebook's hazard-grid cases (default: $ROCK_HAZARD_GRID)."
 )
+@click.option(
+    "--mechanism",
+    "mechanism_name",
+    default=None,
+    metavar="NAME",
+    help="A wall's mechanism to report in full (default: the governing one); every mechanism "
+    "is listed either way.",
+)
 @force_option
 def report(
     model_path, record_path, record_format, dt, units, scale, pga, suite_path, target,
     allow_outside, html_path, pdf_path, lang, code_demand, edition, engine, ground, grid_file,
-    force,
+    mechanism_name, force,
 ):  # fmt: skip
     """The calculation report of MODEL under a record (or a record suite): identification
     and input digests, the model and its sketch, the site and demand, the kinematic
@@ -100,6 +108,11 @@ def report(
               "command": shlex.join(INVOKED)}  # fmt: skip
     if with_suite:
         check_record_options(None, record_format, dt, units, scale, pga)
+        if mechanism_name is not None:
+            from rockcli.errors import InputError
+
+            raise InputError("not with --suite yet", where="--mechanism", value=mechanism_name,
+                             allowed="--mechanism with --record")  # fmt: skip
         written = write_suite_report(
             model_path, suite_path, target, grid_file, **common, allow_outside=allow_outside,
             options={"code_demand": code_demand, "edition": edition, "engine": engine,
@@ -118,7 +131,7 @@ def report(
         files=(("model", model_path), ("record", record_path))
         + ((("hazard_grid", grid_file),) if grid_file else ()),
         options={"code_demand": code_demand, "edition": edition, "engine": engine,
-                 "ground": ground, "grid_file": grid_file},
+                 "ground": ground, "grid_file": grid_file, "mechanism": mechanism_name},
     )  # fmt: skip
     for path, detail in written:
         announce_written(path, detail)

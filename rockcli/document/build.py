@@ -142,11 +142,15 @@ def model_section(
         shape = [(w("model.centroid_x"), n(m["b"]), "m"), (w("model.centroid_z"), n(m["h"]), "m")]
         intro = w("model.intro_mechanism", file=inputs.model_path, name=mechanism["name"],
                   type=mechanism["type"])  # fmt: skip
+    geometry = [("R", n(m["R"]), "m"), ("α", n(m["alpha"]), "rad")]
+    if mechanism is not None and m.get("chain") is not None:  # two blocks: α where V′ = 0
+        intro = w("model.intro_flexure", file=inputs.model_path, name=mechanism["name"])
+        geometry = [(w("model.instability"), n(m["alpha"]), "rad"),
+                    ("M(0)", n(m["chain"]["inertia_by_side"]["1"]), "kg·m²")]  # fmt: skip
     rows = [
         (w("model.name"), m["name"], ""),
         (w("model.kind"), m["kind"], ""),
-        ("R", n(m["R"]), "m"),
-        ("α", n(m["alpha"]), "rad"),
+        *geometry,
         *shape,
         ("p", n(m["p"]), "rad/s"),
         (w("model.mass"), n(m["mass"], "{:.1f}") if m["mass"] else "—", "kg"),
@@ -483,8 +487,11 @@ def rocking_section(
 
     n = w.number
     engine = rocking["engine"]
-    blocks: list[Block] = [Paragraph(w("rock.intro", rtol=n(engine["rtol"], "{:.0e}"),
-                                       rest=n(engine["rest_velocity"], "{:.0e}")))]  # fmt: skip
+    chain = rocking["model"].get("chain")
+    key, extra = ("rock.intro", {}) if chain is None else (
+        "rock.intro_chain", {"collapse": n(out.rocking.overturn_angle, "{:.3f}")})  # fmt: skip
+    rest = n(engine["rest_velocity"], "{:.0e}")
+    blocks: list[Block] = [Paragraph(w(key, rtol=n(engine["rtol"], "{:.0e}"), rest=rest, **extra))]
     rows = tuple(
         (polarity_label(r, w), w(f"status.{r['status']}"), n(r["max_ratio"]),
          n(r["t_uplift"], "{:.3f}"), n(r["t_overturn"], "{:.3f}"), str(r["impacts"]),
@@ -511,7 +518,30 @@ def rocking_section(
     blocks += [Paragraph(text, "warning") for text in warnings]
     blocks.append(Paragraph(w(f"rock.verdict_{rocking['verdict']}",
                               ratio=n(rocking["max_ratio"])), "verdict"))  # fmt: skip
+    blocks += other_mechanisms(out, w)
     return Section("rocking", w("section.rocking"), tuple(blocks))
+
+
+def other_mechanisms(out: ComparisonOutput, w: Words) -> list[Block]:
+    """A wall's other mechanisms' time histories (rockcli.studies.compare.catalogue_comparisons):
+    each polarity's status, max θ/α, first uplift, overturning and impacts."""
+    shown = out.kinematic.mechanism
+    others = [m for m in out.mechanisms if m.name != shown]
+    if not others:
+        return []
+    n = w.number
+    rows = tuple(
+        (m.name, polarity_label({"polarity": r.polarity, "mirror_of": r.mirror_of}, w),
+         w(f"status.{r.status}"), n(r.max_ratio), n(r.t_uplift, "{:.3f}"),
+         n(r.t_overturn, "{:.3f}"), str(r.impacts))
+        for m in others
+        for r in m.rocking.runs
+    )  # fmt: skip
+    headers = (w("cmp.mechanism"), w("col.polarity"), w("col.status"), "max θ/α",
+               w("col.t_uplift"), w("col.t_overturn"), w("col.impacts"))  # fmt: skip
+    return [Paragraph(w("rock.others_intro")),
+            Grid(w("rock.others_caption"), headers, rows,
+                 (False, False, False, True, True, True, True))]  # fmt: skip
 
 
 def polarity_label(run: Mapping[str, Any], w: Words) -> str:

@@ -124,7 +124,8 @@ def retrofit_report(doc: dict[str, Any]) -> Report:
         f" m from the pivot, {rod['placed']['length']:g} m long"
     )
     chosen = doc["chosen"]
-    columns, notes = COLUMNS, ()
+    columns: tuple[Column, ...] = COLUMNS
+    notes: tuple[str, ...] = ()
     names = list(dict.fromkeys(r["mechanism"] for r in doc["candidates"] if r.get("mechanism")))
     if len(names) > 1:  # a wall whose governing mechanism changes with the rod
         columns = (*COLUMNS[:-1], Column("mechanism", "governing mechanism", align="left"),

@@ -25,7 +25,8 @@ class AssessmentOutput:
         block: the block as analysed.
         e_rule: how the coefficient of restitution was chosen.
         result: both polarities (with θ(t), θ̇(t) when asked for).
-        overturn_angle: |θ| at which a run counts as overturned [rad] (the model's setting).
+        overturn_angle: |θ| at which a run counts as overturned [rad] (the model's setting, or
+            a chain's collapse rotation when smaller).
         warnings: magnitudes of the model and the record that look like unit slips.
         floor: the floor whose motion shook the block (None: the record itself, at the base).
         ground: True when the user asked to run the record at the base of a block at height.
@@ -95,13 +96,21 @@ def assess_model_output(
         block,
         restitution_rule(describe(model).e_rule, block, rocked),
         result,
-        settings.overturn_angle,
+        overturn_angle(settings, block),
         warnings=(*model_warnings(model), *record.warnings),
         floor=floor,
         ground=ground,
         shaking=shaking if floor is not None else None,
         mechanism=rocked,
     )
+
+
+def overturn_angle(settings: SolverSettings, block: Block) -> float:
+    """The rotation at which a run counts as overturned [rad]: the model's setting, or a
+    chain's collapse rotation when smaller (rockcli.dynamics.simulate.pack_parameters)."""
+    if block.chain is None:
+        return settings.overturn_angle
+    return min(settings.overturn_angle, block.chain.end)
 
 
 def restitution_rule(rule: str, block: Block, rocked: tuple[str, str] | None) -> str:

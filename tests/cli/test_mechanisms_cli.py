@@ -478,3 +478,22 @@ def test_retrofit_says_when_the_rod_is_not_on_the_governing_mechanism() -> None:
     assert row["max_force"] is None and doc["record"]["input"] == "floor"
     if doc["chosen"] is None:
         assert "not on the governing mechanism 'gable'" in doc["reason"]
+
+
+def test_report_of_a_flexure_and_of_every_other_mechanism(tmp_path: Path) -> None:
+    pytest.importorskip("jinja2")
+    path = tmp_path / "wall.toml"
+    path.write_text(ONE_STOREY, encoding="utf-8")
+    html = tmp_path / "r.html"
+    name = "vertical flexure, storey 1"
+    code, _, err = run("report", str(path), "--record", str(RICKER), "--mechanism", name,
+                       "-o", str(html), "--lang", "en")  # fmt: skip
+    assert code == 0, err
+    text = html.read_text(encoding="utf-8")
+    # The model and rocking sections speak of the chain, not of a rectangle.
+    assert "a vertical flexure: the storey as two blocks" in text
+    assert "Instability rotation α" in text and "The two-block chain of the vertical" in text
+    # Every other mechanism's time history, both polarities, in the rocking section.
+    assert "The time history of every other mechanism, both polarities" in text
+    for other in ("overturning, whole wall", "wedge 30°, one return wall"):
+        assert text.count(other) >= 2, other
