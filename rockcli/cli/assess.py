@@ -170,21 +170,26 @@ def assess_every_mechanism(
         if value is not None:
             raise InputError("not with --all (one mechanism's option)", where=option,
                              value=value, allowed=f"either --all or {option}")  # fmt: skip
-    docs = [
-        assessment_output_document(
-            run_assessment_output(model_path, record, engine, ground=ground, mechanism=name),
-            record,
-        )
-        for name in rockable_names(model_path)
-    ]
+    docs, refused = [], []
+    for name in rockable_names(model_path):
+        try:
+            out = run_assessment_output(model_path, record, engine, ground=ground, mechanism=name)
+        except InputError as exc:  # this mechanism only (a member on a flexure's upper block)
+            refused.append({"name": name, "not_rocked": exc.render().removeprefix("error: ")})
+            continue
+        docs.append(assessment_output_document(out, record))
     if output == "json":
         import json
 
-        print(json.dumps({"mechanisms": docs}, indent=2, allow_nan=False))
+        print(json.dumps({"mechanisms": docs, "not_rocked": refused}, indent=2,
+                         allow_nan=False))  # fmt: skip
     else:
         console = console_for()
         for doc in docs:
             render(assessment_report(doc), console)
+        for item in refused:
+            console.print(f"note: '{item['name']}' is not rocked: {item['not_rocked']}",
+                          markup=False, highlight=False)  # fmt: skip
     for doc in docs:
         exit_if_non_finite(doc["runs"])
     if fail_on_overturn and any(doc["verdict"] == "overturns" for doc in docs):

@@ -526,16 +526,16 @@ def other_mechanisms(out: ComparisonOutput, w: Words) -> list[Block]:
     """A wall's other mechanisms' time histories (rockcli.studies.compare.catalogue_comparisons):
     each polarity's status, max θ/α, first uplift, overturning and impacts."""
     shown = out.kinematic.mechanism
-    others = [m for m in out.mechanisms if m.name != shown]
+    others = [(m.name, m.rocking) for m in out.mechanisms if m.name != shown and m.rocking]
     if not others:
         return []
     n = w.number
     rows = tuple(
-        (m.name, polarity_label({"polarity": r.polarity, "mirror_of": r.mirror_of}, w),
+        (name, polarity_label({"polarity": r.polarity, "mirror_of": r.mirror_of}, w),
          w(f"status.{r.status}"), n(r.max_ratio), n(r.t_uplift, "{:.3f}"),
          n(r.t_overturn, "{:.3f}"), str(r.impacts))
-        for m in others
-        for r in m.rocking.runs
+        for name, rocking in others
+        for r in rocking.runs
     )  # fmt: skip
     headers = (w("cmp.mechanism"), w("col.polarity"), w("col.status"), "max θ/α",
                w("col.t_uplift"), w("col.t_overturn"), w("col.impacts"))  # fmt: skip
@@ -610,6 +610,9 @@ def comparison_section(doc: Mapping[str, Any], w: Words) -> Section:
         blocks.insert(2, Paragraph(w("cmp.uplift_at", t=n(act["t_uplift"], "{:.2f}"))))
     if doc.get("mechanisms"):
         blocks.append(mechanisms_grid(doc, w))
+        blocks += [Paragraph(w("cmp.not_rocked_why", name=m["name"], reason=m["not_rocked"]),
+                             "note")
+                   for m in doc["mechanisms"] if m.get("not_rocked")]  # fmt: skip
     blocks.append(Paragraph(w("cmp.unlike")))
     warnings = other_warnings(doc.get("warnings", []), doc["rocking"])
     blocks += [Paragraph(text, "warning") for text in warnings]
@@ -625,9 +628,9 @@ def mechanisms_grid(doc: Mapping[str, Any], w: Words) -> Grid:
         rows.append((
             m["name"],
             w.passed(m["code"].get("ULS")),
-            w.number(rocking["max_ratio"], "{:.3f}"),
-            w(f"cmp.rocked_{rocking['verdict']}"),
-            m["classification"],
+            "—" if rocking is None else w.number(rocking["max_ratio"], "{:.3f}"),
+            w("cmp.not_rocked") if rocking is None else w(f"cmp.rocked_{rocking['verdict']}"),
+            m["classification"] or "—",
         ))  # fmt: skip
     headers = (w("cmp.mechanism"), w("cmp.code_uls"), w("cmp.max_ratio"),
                w("cmp.rocking_verdict"), w("cmp.classification"))  # fmt: skip

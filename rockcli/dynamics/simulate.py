@@ -291,7 +291,11 @@ def simulate(
     if engine is Engine.REFERENCE:  # Python: Ctrl-C stops it where it is
         from rockcli.dynamics.reference import integrate_reference
 
-        exact = block.chain.exact if block.chain is not None else None
+        exact = None
+        if block.chain is not None:
+            if block.chain.exact is None:
+                raise ValueError("the reference engine needs the chain's configuration function")
+            exact = block.chain.exact
         integrate_reference(*arrays, *outputs, exact=exact)
     else:  # compiled: Ctrl-C deferred to the end of the run (rockcli.interrupts)
         from rockcli.dynamics.kernel import integrate

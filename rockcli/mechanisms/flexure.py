@@ -64,16 +64,21 @@ def members(plus: ChainSide, minus: ChainSide, top: float):
 
 def flexure_block(wall: Wall, spec: MechanismSpec, block: Block) -> Block:
     """The vertical flexure ``spec`` (its hinge height resolved) as a Block carrying its chain;
-    ``block`` gives the model's settings the mechanism keeps (motion, rebound, e's rule)."""
+    ``block`` gives the model's settings the mechanism keeps (motion, rebound, e's rule).
+
+    Its α, which max θ/α divides by, is the instability rotation of the side it can open to
+    (one-sided), or the smaller of the two sides' (two-sided: a ratio of 1 on either side is
+    then never past that side's instability)."""
     plus, minus = build(wall, spec, 1), build(wall, spec, -1)
     x, z = centroid(plus)
     chain = replace(tabulate(plus, minus), centroid=(x, z))
     assert spec.storey is not None
     top = wall.storeys[spec.storey - 1].height  # in the side frame: above the storey's base
+    sides = (plus, minus) if not block.one_sided else ((plus,) if block.free_side > 0 else (minus,))
     return replace(
         block,
         R=math.hypot(x, z),
-        alpha=instability(plus, chain.end),
+        alpha=min(instability(side, chain.end) for side in sides),
         mass=sum(b.mass for _, b in plus.bodies),
         linearized=False,
         restrainers=members(plus, minus, top),

@@ -74,13 +74,18 @@ def comparison_output_document(out: ComparisonOutput, record: Record) -> dict[st
 
 def mechanism_comparison(m: Any) -> dict[str, Any]:
     """One mechanism of the catalogue under the record: its code verdicts, its rocking and
-    their classification."""
+    their classification (rocking and classification null, and ``not_rocked`` the reason,
+    for one the time history cannot rock)."""
+    rocking = None
+    if m.rocking is not None:
+        rocking = {"verdict": str(m.rocking.verdict), "max_ratio": m.rocking.max_ratio}
     return {
         "name": m.name,
         "type": m.type,
-        "classification": str(m.classification),
+        "classification": None if m.classification is None else str(m.classification),
         "code": m.code.verdict(),
-        "rocking": {"verdict": str(m.rocking.verdict), "max_ratio": m.rocking.max_ratio},
+        "rocking": rocking,
+        "not_rocked": m.not_rocked,
     }
 
 
@@ -99,9 +104,9 @@ def mechanisms_table(doc: dict[str, Any]) -> Table:
         {
             "name": m["name"],
             "code_uls": _yes_no(m["code"].get("ULS"), "satisfied", "NOT satisfied"),
-            "max_ratio": m["rocking"]["max_ratio"],
-            "rocking": m["rocking"]["verdict"],
-            "classification": m["classification"],
+            "max_ratio": None if m["rocking"] is None else m["rocking"]["max_ratio"],
+            "rocking": "not rocked" if m["rocking"] is None else m["rocking"]["verdict"],
+            "classification": m["classification"] or "—",
         }
         for m in doc["mechanisms"]
     )
@@ -204,7 +209,7 @@ def comparison_report(doc: dict[str, Any]) -> Report:
         COLUMNS,
         comparison_rows(doc),
     )
-    notes = (
+    notes: tuple[str, ...] = (
         f"code: {EDITION_TEXT[kin['edition']]}, Ts/T_SLV as in `rock kinematic`; demand: "
         + "; ".join(demand_line(k, v) for k, v in kin["demand"].items()),
         f"rocking: both polarities, engine {roc['engine']['name']}; input: "
@@ -216,6 +221,8 @@ def comparison_report(doc: dict[str, Any]) -> Report:
         shown = [n for n in kin.get("notes", ()) if n.startswith("the comparison shows")]
         notes = (*notes, f"governing mechanism: {doc['governing']}; the first table shows "
                  f"'{kin.get('mechanism')}'", *shown)  # fmt: skip
+        notes += tuple(f"'{m['name']}' is not rocked: {m['not_rocked']}"
+                       for m in doc["mechanisms"] if m.get("not_rocked"))  # fmt: skip
     return Report(
         title="rock compare",
         tables=(table, *((actions_table(actions),) if actions else ()), *catalogue),

@@ -117,15 +117,18 @@ class MechanismComparison:
     Attributes:
         name, type: the mechanism's.
         code: its kinematic result.
-        rocking: both polarities.
-        classification: how its two collapse verdicts relate.
+        rocking: both polarities (None: the time history cannot rock it, ``not_rocked``).
+        classification: how its two collapse verdicts relate (None: not rocked).
+        not_rocked: why the time history does not rock it (a vertical flexure with a
+            restrainer on its upper block), or None.
     """
 
     name: str
     type: str
     code: KinematicResult
-    rocking: Assessment
-    classification: Classification
+    rocking: Assessment | None
+    classification: Classification | None
+    not_rocked: str | None = None
 
 
 def compare_model_output(
@@ -205,7 +208,9 @@ def shown_result(kin: KinematicResult, main: Any) -> KinematicResult:
 
 def catalogue_comparisons(model, record, engine, kin, main, rocking, ground):
     """Every mechanism of a wall's catalogue: the main one's comparison as made, each other
-    one run and classified."""
+    one run and classified (one the time history refuses is listed with the reason)."""
+    from rockcli.errors import InputError
+
     if main is None:
         return ()
     out = []
@@ -213,8 +218,13 @@ def catalogue_comparisons(model, record, engine, kin, main, rocking, ground):
         if m.name == main.name:
             run: Assessment = rocking.result
         else:
-            run = assess_model_output(model, record, engine, ground=ground, mechanism=m.name,
-                                      tolerance_check=False).result  # fmt: skip
+            try:
+                run = assess_model_output(model, record, engine, ground=ground, mechanism=m.name,
+                                          tolerance_check=False).result  # fmt: skip
+            except InputError as exc:
+                reason = exc.render().removeprefix("error: ")
+                out.append(MechanismComparison(m.name, m.type, m.result, None, None, reason))
+                continue
         kind = classify(code_collapse(m.result), rocking_collapse(run))
         out.append(MechanismComparison(m.name, m.type, m.result, run, kind))
     return tuple(out)

@@ -58,6 +58,7 @@ def mechanism_block(model: Model, wall: Wall, spec: MechanismSpec) -> Block:
     rigid body as a Block of its own shape (rockcli.mechanisms.rigid), a vertical flexure as
     a Block carrying its two-block chain (rockcli.mechanisms.flexure; its hinge resolved as
     the code check resolves it)."""
+    from rockcli.mechanisms.catalogue import sides_of
     from rockcli.mechanisms.flexure import UpperMemberError, flexure_block
     from rockcli.mechanisms.rigid import rigid_block
     from rockcli.mechanisms.wall import MechanismType
@@ -68,7 +69,9 @@ def mechanism_block(model: Model, wall: Wall, spec: MechanismSpec) -> Block:
     block = block_of(model)
     if spec.type is not MechanismType.VERTICAL_FLEXURE:
         return system_restitution(rigid_block(wall, spec, block), model)
-    spec, _ = resolved(wall, spec, (1, -1), check_settings(model))
+    # The hinge the code check finds: the optimum over the sides the wall can open to.
+    sides = sides_of(spec, block.free_side if block.one_sided else None)
+    spec, _ = resolved(wall, spec, sides, check_settings(model))
     try:
         return system_restitution(flexure_block(wall, spec, block), model)
     except UpperMemberError as exc:

@@ -158,6 +158,44 @@ def test_assess_refuses_a_member_on_the_upper_block_in_one_line(tmp_path: Path) 
     assert len(err.strip().splitlines()) == 1 and "Traceback" not in err
 
 
+def test_compare_lists_a_flexure_it_cannot_rock_with_the_reason(tmp_path: Path) -> None:
+    # The member between storey 2's hinge and its top: `rock compare` still classifies the
+    # other mechanisms and lists that flexure as not rocked, with the reason; --all too.
+    text = FACADE.read_text(encoding="utf-8").replace(
+        "height = 7.5         # m, at the top floor", "height = 7.0         # m"
+    )
+    path = tmp_path / "mid.toml"
+    path.write_text(text, encoding="utf-8")
+    code, out, err = run("compare", str(path), "--record", str(RICKER), "--format", "json")
+    assert code == 0, err
+    entries = {m["name"]: m for m in json.loads(out)["mechanisms"]}
+    refused = entries["vertical flexure, storey 2"]
+    assert refused["rocking"] is None and refused["classification"] is None
+    assert "upper block" in refused["not_rocked"]
+    assert all(m["rocking"] is not None for n, m in entries.items() if n != refused["name"])
+    code, out, err = run("assess", str(path), "--record", str(RICKER), "--all",
+                         "--format", "json")  # fmt: skip
+    assert code == 0, err
+    doc = json.loads(out)
+    assert [m["name"] for m in doc["not_rocked"]] == ["vertical flexure, storey 2"]
+    assert len(doc["mechanisms"]) == 5
+
+
+def test_a_one_sided_walls_flexure_uplifts_at_the_code_alpha0(tmp_path: Path) -> None:
+    # One-sided: the code check finds the optimal hinge over the free side only; the time
+    # history rocks that same chain (the same hinge), so its uplift is the code's α0.
+    text = FACADE.read_text(encoding="utf-8") + '\n[motion]\nsides = "one"\nstopped = "negative"\n'
+    path = tmp_path / "one.toml"
+    path.write_text(text, encoding="utf-8")
+    name = "vertical flexure, storey 1"
+    kin = kinematic_json(path, "--mechanism", name)
+    code, out, err = run("assess", str(path), "--record", str(RICKER), "--mechanism", name,
+                         "--format", "json")  # fmt: skip
+    assert code == 0, err
+    up = json.loads(out)["model"]["uplift_acceleration_by_side_g"]["1"]
+    assert up == kin["alpha0_by_side"]["1"]
+
+
 def test_assess_all_rocks_every_mechanism() -> None:
     code, out, err = run("assess", str(FACADE), "--record", str(RICKER), "--all",
                          "--format", "json")  # fmt: skip

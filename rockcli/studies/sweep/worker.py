@@ -207,8 +207,7 @@ def run_case(
 
 def case_mechanism(kin: KinematicResult | None) -> tuple[str | None, KinematicResult | None]:
     """(the mechanism a wall's case rocks and checks, its code check): as `rock compare`, the
-    governing one when the time history rocks it, else the first it rocks (None, kin
-    unchanged: a model of one block, or no code check)."""
+    governing one (None, kin unchanged: a model of one block, or no code check)."""
     from rockcli.studies.compare import main_mechanism, shown_result
 
     if kin is None:
