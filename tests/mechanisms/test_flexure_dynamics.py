@@ -228,6 +228,11 @@ def test_the_linearised_motion_about_rest(share: float) -> None:
     block = flexure_block(wall, spec, block_of(model))
     m0 = mid_height_mass()
     lam = math.sqrt(MASS * G * H / 2 / m0)
+    # M(0) = m·h²/12 + (4/3)·m·t²: the slender idealisation with horizontal inertia only (the
+    # rigid two-block wall of Doherty et al. 2002), m·h²/12, gives λ² = 6g/h; the thickness's
+    # share (the blocks' vertical motion and rotary inertia) divides it by 1 + 16 t²/h².
+    assert m0 == pytest.approx(MASS * H * H / 12 + 4 / 3 * MASS * T * T, rel=1e-12)
+    assert lam**2 == pytest.approx(6 * G / H / (1 + 16 * (T / H) ** 2), rel=1e-12)
     c = 2 * T / H
     theta0 = share * c
     t_star = math.acosh(c / (c - theta0)) / lam
