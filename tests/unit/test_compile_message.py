@@ -20,7 +20,7 @@ from rockcli.cli.main import cli
 ROOT = Path(__file__).resolve().parents[2]
 WALL = ROOT / "examples" / "wall.toml"
 PULSE = ROOT / "records" / "one-sine_Tp1s_0.35g.txt"
-MESSAGE = "compiling the rocking engine for this machine, once: ~40 s"
+MESSAGE = "compiling the rocking engine for this machine, once: ~45 s"
 
 
 def test_the_message_goes_to_stderr_and_json_stays_clean(monkeypatch: pytest.MonkeyPatch) -> None:
