@@ -14,9 +14,9 @@ from rockcli.model.schema import Kind
 @click.command(
     "init",
     cls=RockCommand,
-    short_help="Write a commented model-file template (wall, altar, facade).",
+    short_help="Write a commented template: a model (wall, altar, facade) or a report's project.",
 )
-@click.argument("kind", type=click.Choice([k.value for k in Kind]))
+@click.argument("kind", type=click.Choice([*(k.value for k in Kind), "project"]))
 @click.option(
     "-o",
     "--output",
@@ -27,13 +27,17 @@ from rockcli.model.schema import Kind
 def init(kind: str, output: Path | None, force: bool) -> None:
     """Write a commented model-file template.
 
-    KIND is wall, altar or facade (the altar and the facade are the source paper's cases).
-    The template loads unchanged; edit its values for your element.
+    KIND is wall, altar or facade (the altar and the facade are the source paper's cases),
+    or project: the project of a calculation report (rock report --project). The template
+    loads unchanged; edit its values for your element.
     """
     from rockcli.model.template import render_template
     from rockcli.outfile import check_writable, is_stdout, write_text
 
-    text = render_template(Kind(kind))
+    if kind == "project":
+        from rockcli.document.project import TEMPLATE as text
+    else:
+        text = render_template(Kind(kind))
     if output is None or is_stdout(output):
         click.echo(text, nl=False)
         return

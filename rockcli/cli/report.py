@@ -78,6 +78,24 @@ EXTRA = install_hint("report")
     "validation casebook's hazard-grid cases (default: $ROCK_HAZARD_GRID)."
 )
 @click.option(
+    "--project",
+    "project_path",
+    type=click.Path(dir_okay=False),
+    default=None,
+    help="A project file ([project]: client, subject, site, designer, date, your own "
+    "sections in Markdown; rock init project writes one): the cover, your sections and the "
+    "signature block.",
+)
+@click.option(
+    "--casebook",
+    "casebook_place",
+    type=click.Choice(["annex", "inline", "none"]),
+    default="annex",
+    show_default=True,
+    help="Where the validation casebook run on this install goes: an annex after the "
+    "signature, inline in the software's section, or not run (the report then says so).",
+)
+@click.option(
     "--mechanism",
     "mechanism_name",
     default=None,
@@ -89,7 +107,7 @@ EXTRA = install_hint("report")
 def report(
     model_path, record_path, record_format, dt, units, scale, pga, suite_path, target,
     allow_outside, html_path, pdf_path, lang, code_demand, edition, engine, ground, grid_file,
-    mechanism_name, force,
+    project_path, casebook_place, mechanism_name, force,
 ):  # fmt: skip
     """The calculation report of MODEL under a record (or a record suite): identification
     and input digests, the model and its sketch, the site and demand, the kinematic
@@ -104,8 +122,13 @@ def report(
     with_suite = one_record_or_suite(record_path, suite_path, None, None, None, target)
     code_demand = demand_for(code_demand, with_suite)
     check_report_paths(html_path, pdf_path, force)
+    front = {"project": None, "casebook": casebook_place}
+    if project_path is not None:  # before any analysis runs
+        from rockcli.document.project import load_project
+
+        front["project"] = load_project(project_path)
     common = {"html_path": html_path, "pdf_path": pdf_path, "lang": lang,
-              "command": shlex.join(INVOKED)}  # fmt: skip
+              "command": shlex.join(INVOKED), "front": front}  # fmt: skip
     if with_suite:
         check_record_options(None, record_format, dt, units, scale, pga)
         if mechanism_name is not None:

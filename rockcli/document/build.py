@@ -53,26 +53,34 @@ class Inputs:
     command: str
     date: str
     casebook: Any | None = None
+    #: The project (rockcli.document.project), or None.
+    project: Any | None = None
+    #: Where the casebook's cases go: "annex" (after the signature), "inline" (in §10.2).
+    casebook_place: str = "annex"
 
 
 def build_document(
     inputs: Inputs, out: ComparisonOutput, doc: Mapping[str, Any], lang: str
 ) -> Document:
     """The report of the comparison ``out`` (its JSON document ``doc``) in language ``lang``."""
-    from rockcli import __version__
 
     w = Words(lang)
     record = inputs.record
     if record is None:
         raise ValueError("the report of one record needs its record (a suite: document.suite)")
+    from rockcli.document.conclusions import conclusions_section
+    from rockcli.document.front import own_sections
+
     sections = (
         identification(inputs, w),
+        *own_sections(inputs.project),
         model_section(inputs, doc["rocking"]["model"], w, doc["rocking"].get("mechanism")),
         demand_section(inputs, doc, record, w),
         kinematic_section(inputs, doc["kinematic"], w, out.rocking.block),
         rocking_section(doc["rocking"], out, record, w),
         comparison_section(doc, w),
-        software_section(inputs.casebook, w),
+        conclusions_section(doc, w),
+        software_section(inputs.casebook, w, inputs.casebook_place),
     )
     name = doc["rocking"]["model"]["name"]
     return Document(
@@ -80,10 +88,24 @@ def build_document(
         title=w("report.title"),
         subtitle=w("report.subtitle", model=name, record=doc["rocking"]["record"]["name"]),
         sections=sections,
-        header=f"rock {__version__} — {name}",
-        footer=w("report.footer", date=inputs.date),
-        labels={k: w(f"label.{k}") for k in ("contents", "figure", "table", "page")},
+        **front_matter(inputs, name, w),
     )
+
+
+def front_matter(inputs: Inputs, name: str, w: Words) -> dict[str, Any]:
+    """The Document's running header and footer, labels, cover, signature and annexes."""
+    from rockcli import __version__
+    from rockcli.document.front import cover_rows, signature_lines
+
+    labels = ("contents", "figure", "table", "page", "annex")
+    return {
+        "header": f"rock {__version__} — {name}",
+        "footer": w("report.footer", date=inputs.date),
+        "labels": {k: w(f"label.{k}") for k in labels},
+        "cover": cover_rows(inputs.project, inputs.date, w),
+        "signature": signature_lines(inputs.project, inputs.date, w),
+        "annexes": annex_sections(inputs.casebook, w, inputs.casebook_place),
+    }
 
 
 # --- identification -------------------------------------------------------------------------
@@ -641,15 +663,29 @@ def mechanisms_grid(doc: Mapping[str, Any], w: Words) -> Grid:
 # --- the software (NTC 2018 §10.2) ----------------------------------------------------------
 
 
-def software_section(casebook: Any | None, w: Words) -> Section:
+def software_section(casebook: Any | None, w: Words, place: str = "inline") -> Section:
+    """NTC 2018 §10.2: the theory, the field of use and the validation casebook of this
+    install (its table here with ``place`` "inline"; with "annex" its summary here and the
+    cases in the annex)."""
     blocks: list[Block] = [Paragraph(w(f"soft.theory_{k}")) for k in range(1, 5)]
     blocks.append(Paragraph(w("soft.references")))
     blocks += [Paragraph(w(f"soft.limits_{k}")) for k in range(1, 5)]
     if casebook is None:
         blocks.append(Paragraph(w("soft.casebook_missing"), "warning"))
-    else:
+    elif place == "inline":
         blocks += casebook_blocks(casebook, w)
+    else:
+        blocks.append(casebook_blocks(casebook, w)[0])
+        blocks.append(Paragraph(w("soft.casebook_in_annex")))
     return Section("software", w("section.software"), tuple(blocks))
+
+
+def annex_sections(casebook: Any | None, w: Words, place: str) -> tuple[Section, ...]:
+    """The casebook's annex (none unless ``place`` is "annex" and it was run)."""
+    if casebook is None or place != "annex":
+        return ()
+    return (Section("annex-casebook", w("section.annex_casebook"),
+                    (casebook_blocks(casebook, w)[1],)),)  # fmt: skip
 
 
 def casebook_blocks(casebook: Mapping[str, Any], w: Words) -> list[Block]:

@@ -61,3 +61,9 @@ class Document:
     header: str = ""
     footer: str = ""
     labels: dict[str, str] = field(default_factory=dict)
+    #: The project's facts on the cover, (label, value) in order (none without a project).
+    cover: tuple[tuple[str, str], ...] = ()
+    #: The signature block's lines, after the last section (none without a project).
+    signature: tuple[str, ...] = ()
+    #: Sections after the signature (the validation casebook's annex).
+    annexes: tuple[Section, ...] = ()

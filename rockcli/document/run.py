@@ -35,6 +35,16 @@ def casebook_document(grid_file: str | None) -> dict[str, Any] | None:
         return None
 
 
+def report_front(front: dict[str, Any] | None, grid_file: str | None) -> dict[str, Any]:
+    """Inputs' project, casebook and its place: ``front`` gives "project" (None) and
+    "casebook" ("annex", "inline" or "none": the casebook is then not run)."""
+    front = front or {}
+    place = front.get("casebook", "annex")
+    casebook = None if place == "none" else casebook_document(grid_file)
+    return {"project": front.get("project"), "casebook": casebook,
+            "casebook_place": "inline" if place == "none" else place}  # fmt: skip
+
+
 def write_report(
     model_path: str,
     record: Record,
@@ -45,8 +55,10 @@ def write_report(
     command: str,
     files: Sequence[tuple[str, str]],
     options: dict[str, Any],
+    front: dict[str, Any] | None = None,
 ) -> list[tuple[str, str]]:
-    """Run both analyses of the model under the record, write the report; what was written."""
+    """Run both analyses of the model under the record, write the report; what was written
+    (``front``: the project and where the casebook goes, :func:`report_front`)."""
     from rockcli.document.build import Inputs, build_document
     from rockcli.model.load import load_model
     from rockcli.report.compare import comparison_output_document, comparison_warnings
@@ -57,8 +69,8 @@ def write_report(
     out = compare_model_output(model, record, file=model_path, history=True, **options)
     doc = comparison_output_document(out, record)
     doc["warnings"] = comparison_warnings(doc)
-    inputs = Inputs(model_path, model, record, tuple(files), command, report_date(),
-                    casebook_document(options.get("grid_file")))  # fmt: skip
+    front = report_front(front, options.get("grid_file"))
+    inputs = Inputs(model_path, model, record, tuple(files), command, report_date(), **front)
     document = build_document(inputs, out, doc, lang)
     return write_document(document, html_path, pdf_path, doc["classification"])
 
@@ -97,6 +109,7 @@ def write_suite_report(
     command: str,
     options: dict[str, Any],
     allow_outside: bool = False,
+    front: dict[str, Any] | None = None,
 ) -> list[tuple[str, str]]:
     """Compare the model under the suite (as `rock compare --suite`), keep each record's
     history for the figures, write the report; what was written (allow_outside: the
@@ -126,7 +139,7 @@ def write_suite_report(
         files.append(("suite", suite_path))
     files += [("record", str(entry.path)) for entry in loaded.settings.entries]
     files += [("hazard_grid", grid_file)] if grid_file else []
-    inputs = Inputs(model_path, loaded.model, None, tuple(files), command, report_date(),
-                    casebook_document(grid_file))  # fmt: skip
+    front = report_front(front, grid_file)
+    inputs = Inputs(model_path, loaded.model, None, tuple(files), command, report_date(), **front)
     document = build_suite_document(inputs, doc, suite_document(loaded.check), runs, lang)
     return write_document(document, html_path, pdf_path, doc["classification"])

@@ -48,6 +48,8 @@ def build_suite_document(
         lang: the report's language.
     """
     from rockcli import __version__
+    from rockcli.document.build import annex_sections
+    from rockcli.document.front import cover_rows, own_sections, signature_lines
 
     w = Words(lang)
     first = records[0][1]
@@ -58,17 +60,21 @@ def build_suite_document(
         kinematic_section(inputs, doc["kinematic"], w, records[0][0].block),
         suite_rocking_section(doc, records, w),
         suite_comparison_section(doc, w, named(doc, records)),
-        software_section(inputs.casebook, w),
+        software_section(inputs.casebook, w, inputs.casebook_place),
     )
+    ordered = (sections[0], *own_sections(inputs.project), *sections[1:])
     name = doc["model"]["name"]
     return Document(
         lang=lang,
         title=w("report.title"),
         subtitle=w("report.subtitle_suite", model=name, suite=doc["suite_name"]),
-        sections=sections,
+        sections=ordered,
+        cover=cover_rows(inputs.project, inputs.date, w),
+        signature=signature_lines(inputs.project, inputs.date, w),
+        annexes=annex_sections(inputs.casebook, w, inputs.casebook_place),
         header=f"rock {__version__} — {name}",
         footer=w("report.footer", date=inputs.date),
-        labels={k: w(f"label.{k}") for k in ("contents", "figure", "table", "page")},
+        labels={k: w(f"label.{k}") for k in ("contents", "figure", "table", "page", "annex")},
     )
 
 

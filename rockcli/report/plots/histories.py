@@ -84,19 +84,14 @@ def draw_histories(
     say: Say = english,
 ) -> None:
     """θ/α of both polarities against time, ±1 (θ = ±α) and the overturning level (drawn
-    when a run overturns, else named as off scale), the legend above the axes; say: the
-    figure's words (rockcli.report.plots.phrases)."""
+    only when a run overturns or comes near it: a survivor's figure carries no overturning
+    mark), the legend above the axes; say: the figure's words (rockcli.report.plots.phrases)."""
     alpha = model["alpha"]
     free_side = model["free_side"] if model["sides"] == "one" else None
     peak = _plot_runs(ax, runs, alpha, say)
     level = overturn_angle / alpha
     shown = level if any(r.overturned for r in runs) or peak >= level else None
     _mark_levels(ax, (free_side,) if free_side else (1, -1), shown, overturn_angle, say)
-    if shown is None:
-        ax.text(
-            0.99, 0.03, say("off_scale", level=level),
-            transform=ax.transAxes, ha="right", va="bottom", fontsize="small", color="tab:red",
-        )  # fmt: skip
     ax.set_ylim(*_ratio_limits(peak, shown, free_side))
     ax.set_ylabel("amplitude ratio θ/α [-]")
     word = say(f"verdict_{verdict}")

@@ -42,7 +42,6 @@ ENGLISH = {
     "run_overturns": "polarity {sign}1: overturns at {t:.2f} s",
     "alpha_level": "θ = ±α",
     "overturn_level": "overturning, |θ| = {angle:.3g} rad",
-    "off_scale": "overturning at |θ|/α = {level:.3g} (off scale)",
     "histories_title": "Rocking time history, both polarities: {verdict}",
     "histories_one_sided": (
         "Rocking time history, both polarities: {verdict} (one-sided: θ {sign} 0 stopped)"

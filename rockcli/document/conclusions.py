@@ -1,0 +1,76 @@
+"""The conclusions of a calculation report: what governs, the risk index per limit state, what
+the time history adds, the restrainers' verification and what to do next.
+
+Nothing is computed here that the analyses have not: the risk index of each limit state is
+the smallest capacity/demand ratio of the code's checks of that state (the kinematic
+document's ``checks``), which is ζ_E = PGA_C/PGA_D of Circ. 7/2019 §C8.3 because the demand of
+each check scales with the site's PGA at a given spectral shape; the time history's verdict,
+the classification and the restrainers' checks are the comparison's.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from typing import Any
+
+from rockcli.document.content import Block, Grid, Paragraph, Section
+from rockcli.document.words import Words
+
+#: The limit states of the verdict, in order (both editions' names).
+STATES = ("SLD", "SLV", "SLC", "DLS", "ULS")
+
+
+def risk_indices(kin: Mapping[str, Any]) -> list[tuple[str, float | None, bool | None]]:
+    """(limit state, ζ_E, its verdict) per limit state of the check: ζ_E the smallest
+    capacity/demand of the checks that decide the state's verdict — the non-linear ones where
+    the analysis has them, else the linear ones (rockcli.codecheck.result.deciding) — and the
+    verdict as the kinematic document gives it."""
+    out = []
+    verdicts = kin.get("verdict", {})
+    for state in STATES:
+        checks = [c for c in kin.get("checks", ()) if c.get("limit_state") == state]
+        if not checks:
+            continue
+        nonlinear = [c for c in checks if c.get("method") == "nonlinear"]
+        ratios = [c["ratio"] for c in nonlinear or checks if c.get("ratio") is not None]
+        out.append((state, min(ratios) if ratios else None, verdicts.get(state)))
+    return out
+
+
+def conclusions_section(doc: Mapping[str, Any], w: Words) -> Section:
+    """The conclusions, in the report's language."""
+    n = w.number
+    kin, rocking = doc["kinematic"], doc["rocking"]
+    blocks: list[Block] = []
+    if doc.get("mechanisms"):
+        blocks.append(Paragraph(w("concl.governing", name=doc.get("governing") or "")))
+    rows = tuple((state, n(ratio, "{:.3f}"), w.passed(passed))
+                 for state, ratio, passed in risk_indices(kin))  # fmt: skip
+    if rows:
+        blocks.append(Grid(w("concl.zeta_caption"),
+                           (w("concl.state"), "ζ_E", w("concl.verdict")), rows,
+                           (False, True, False)))  # fmt: skip
+    failing = [state for state, _, passed in risk_indices(kin) if passed is False]
+    blocks.append(Paragraph(w("concl.code_unsafe", states=", ".join(failing)) if failing
+                            else w("concl.code_safe")))  # fmt: skip
+    blocks.append(Paragraph(w(f"concl.rocking_{rocking['verdict']}",
+                              ratio=n(rocking["max_ratio"], "{:.3f}"))))  # fmt: skip
+    blocks.append(Paragraph(w(f"class.{doc['classification']}"), "verdict"))
+    blocks += [restrainer_sentence(c, w) for c in rocking.get("restrainer_checks", ())]
+    others = [m for m in doc.get("mechanisms", ()) if m["code"].get("ULS") is False]
+    if others:
+        names = ", ".join(f"'{m['name']}'" for m in others)
+        blocks.append(Paragraph(w("concl.mechanisms_unsafe", names=names)))
+    unsafe = bool(failing or others) or rocking["verdict"] == "overturns"
+    blocks.append(Paragraph(w("concl.next_unsafe" if unsafe else "concl.next_safe")))
+    return Section("conclusions", w("section.conclusions"), tuple(blocks))
+
+
+def restrainer_sentence(check: Mapping[str, Any], w: Words) -> Paragraph:
+    """One restrainer's verification in the time history, in a sentence."""
+    u = check.get("utilisation")
+    if check.get("passed"):
+        return Paragraph(w("concl.restrainer_ok", name=check["name"],
+                           use=w.number(u, "{:.2f}")))  # fmt: skip
+    return Paragraph(w("concl.restrainer_fail", name=check["name"], use=w.number(u, "{:.2f}")),
+                     "warning")  # fmt: skip

@@ -1,0 +1,163 @@
+"""The project a calculation report belongs to: client, subject, site, designer, the engineer's
+own text sections (``[project]`` of a project file, ``rock init project``).
+
+A *relazione di calcolo* filed with the Genio Civile or a municipality opens with who asked for
+it (*committente*), what it is about (*oggetto*), where (*comune*, address, coordinates with
+their datum) and who signs it (*progettista*, with the professional order and number), and
+carries the designer's own premises, survey, materials and knowledge level. rock reads them
+from a TOML file and places them: the cover, the sections before the analyses, the signature
+block at the end.
+
+Coordinates: the NTC hazard grid (DM 14/01/2008, Allegato B) is given in ED50; a phone or a
+map gives WGS84. ``datum`` says which; WGS84 coordinates are converted to ED50 with pyproj
+(PROJ's transformation between EPSG:4326 and EPSG:4230, the one PROJ picks for Italy), and the
+report gives both.
+"""
+
+from __future__ import annotations
+
+import datetime
+import os
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Literal
+
+from pydantic import BaseModel, ConfigDict, Field, ValidationError
+
+from rockcli.errors import InputError
+from rockcli.textfile import read_limited, reason
+
+#: The hazard grid's extent (DM 14/01/2008, Allegato B: nodes from 6.5 E to 18.5 E and from
+#: 36.6 N to 47.1 N), widened by a tenth of a degree: a site outside it has no hazard.
+LON_RANGE = (6.4, 18.6)
+LAT_RANGE = (36.5, 47.2)
+#: Markdown sections: each at most this size (a chapter of text, not a book).
+SECTION_LIMIT = 256 * 1024
+
+
+class _Table(BaseModel):
+    model_config = ConfigDict(extra="forbid", frozen=True)
+
+
+class SectionEntry(_Table):
+    """``[[project.sections]]``: a chapter of the engineer's own text."""
+
+    title: str = Field(min_length=1, max_length=200, description="the section's title")
+    file: str = Field(min_length=1, description="a Markdown file, relative to the project file")
+
+
+class ProjectTable(_Table):
+    """``[project]``: who, what, where, by whom."""
+
+    client: str = Field(min_length=1, max_length=300, description="committente")
+    subject: str = Field(min_length=1, max_length=600, description="oggetto")
+    comune: str = Field(min_length=1, max_length=200)
+    address: str | None = Field(None, max_length=300)
+    lon: float | None = Field(None, ge=LON_RANGE[0], le=LON_RANGE[1],
+                              description="longitude [degrees east], in its datum")  # fmt: skip
+    lat: float | None = Field(None, ge=LAT_RANGE[0], le=LAT_RANGE[1],
+                              description="latitude [degrees north], in its datum")  # fmt: skip
+    datum: Literal["WGS84", "ED50"] = "WGS84"
+    designer: str = Field(min_length=1, max_length=200, description="progettista")
+    designer_registration: str | None = Field(
+        None, max_length=300, description="the designer's order and number"
+    )
+    date: datetime.date | None = None
+    sections: tuple[SectionEntry, ...] = ()
+
+
+class ProjectFile(_Table):
+    """A project file: one ``[project]`` table."""
+
+    project: ProjectTable
+
+
+@dataclass(frozen=True)
+class Project:
+    """A project as the report uses it: the table, its sections' text and, for a site given
+    in WGS84, its ED50 coordinates (the hazard grid's)."""
+
+    table: ProjectTable
+    sections: tuple[tuple[str, str], ...]
+    ed50: tuple[float, float] | None
+
+
+def load_project(path: str | os.PathLike[str]) -> Project:
+    """Read and check a project file and its Markdown sections (InputError, one line each:
+    unknown keys, a datum that is neither WGS84 nor ED50, coordinates outside Italy's grid,
+    a section that is not a readable file)."""
+    from rockcli.model.load import read_toml, translate_errors
+
+    file = os.fspath(path)
+    data = read_toml(file)
+    try:
+        table = ProjectFile.model_validate(data).project
+    except ValidationError as exc:
+        raise translate_errors(exc.errors(), file) from None
+    if (table.lon is None) != (table.lat is None):
+        raise InputError("give both lon and lat, or neither", file=file,
+                         where="project.lon" if table.lon is None else "project.lat")  # fmt: skip
+    base = Path(file).parent
+    sections = tuple(
+        (entry.title, read_section(base / entry.file, file, k))
+        for k, entry in enumerate(table.sections)
+    )
+    ed50 = None
+    if table.lon is not None and table.lat is not None:
+        ed50 = (table.lon, table.lat) if table.datum == "ED50" else to_ed50(table.lon, table.lat)
+    return Project(table, sections, ed50)
+
+
+def read_section(path: Path, file: str, index: int) -> str:
+    """The Markdown text of section ``index`` (InputError naming its key)."""
+    try:
+        raw = read_limited(str(path), "Markdown file", SECTION_LIMIT)
+        return raw.decode("utf-8")
+    except (OSError, ValueError) as exc:
+        raise InputError(
+            f"cannot read the section's file: {reason(exc)}",
+            file=file,
+            where=f"project.sections[{index}].file",
+            value=str(path),
+            allowed="a Markdown file (UTF-8, at most 256 KiB), relative to the project file",
+        ) from None
+
+
+def to_ed50(lon: float, lat: float) -> tuple[float, float]:
+    """WGS84 (EPSG:4326) → ED50 (EPSG:4230) longitude and latitude [degrees] (pyproj)."""
+    try:
+        from pyproj import Transformer
+    except ImportError:
+        raise InputError(
+            "WGS84 coordinates need pyproj to be converted to ED50 (the hazard grid's datum)",
+            where="project.datum",
+            value="WGS84",
+            allowed="pip install 'rockcli[report]', or give the coordinates in ED50 "
+            '(datum = "ED50")',
+        ) from None
+    transformer = Transformer.from_crs("EPSG:4326", "EPSG:4230", always_xy=True)
+    x, y = transformer.transform(lon, lat)
+    return float(x), float(y)
+
+
+TEMPLATE = """\
+# The project of a calculation report (rock report --project project.toml).
+# Every key below is read; delete the optional ones you do not need.
+
+[project]
+client = "Parrocchia di San Pietro"             # committente
+subject = "Verifica dei meccanismi locali della facciata della chiesa di San Pietro"
+comune = "L'Aquila (AQ)"
+address = "Piazza San Pietro 1"                  # optional
+lon = 13.3995                                    # optional, degrees east
+lat = 42.3498                                    # optional, degrees north
+datum = "WGS84"                                  # "WGS84" (a phone, a map) or "ED50" (the grid)
+designer = "Ing. Maria Rossi"                    # progettista
+designer_registration = "Ordine degli Ingegneri della Provincia dell'Aquila, n. 1234"
+date = 2026-11-27                                # optional; default: the day of the report
+
+# The engineer's own text, in Markdown, placed before the analyses in this order.
+# [[project.sections]]
+# title = "Premessa"
+# file = "premessa.md"
+"""

@@ -1,0 +1,139 @@
+"""The project of a calculation report (issue 23): the project file, its checks, the cover,
+the engineer's sections, the conclusions, the signature and the casebook's annex."""
+
+from __future__ import annotations
+
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+from click.testing import CliRunner
+
+from rockcli.cli.main import cli
+from rockcli.document.front import markdown_paragraphs
+from rockcli.document.project import TEMPLATE, load_project
+
+ROOT = Path(__file__).resolve().parents[2]
+PROJECT = ROOT / "examples" / "project.toml"
+FACADE = ROOT / "examples" / "two-storey-facade.toml"
+RICKER = ROOT / "records" / "ricker_Tp0.5s_0.5g.txt"
+
+
+def run(*args: str) -> tuple[int, str, str]:
+    result = CliRunner().invoke(cli, list(args))
+    return result.exit_code, result.stdout, result.stderr
+
+
+def test_the_example_project_loads_with_its_sections_and_ed50_coordinates() -> None:
+    pytest.importorskip("pyproj")
+    project = load_project(PROJECT)
+    titles = [title for title, _ in project.sections]
+    assert titles == ["Premessa", "Materiali e livello di conoscenza"]
+    assert "LC1" in project.sections[1][1]
+    # WGS84 → ED50 in central Italy: ED50 coordinates lie some 100 m north-east (about 1e-3
+    # degrees in each), and the inverse transformation returns the input.
+    from pyproj import Transformer
+
+    lon, lat = project.ed50 or (0.0, 0.0)
+    t = project.table
+    assert t.lon is not None and t.lat is not None
+    assert 5e-4 < lon - t.lon < 2e-3 and 5e-4 < lat - t.lat < 2e-3
+    back = Transformer.from_crs("EPSG:4230", "EPSG:4326", always_xy=True).transform(lon, lat)
+    # PROJ's round trip through the Helmert transformation: within 1e-7 degrees (1 cm).
+    assert back == pytest.approx((t.lon, t.lat), abs=1e-7)
+
+
+def test_the_template_loads(tmp_path: Path) -> None:
+    pytest.importorskip("pyproj")
+    path = tmp_path / "project.toml"
+    path.write_text(TEMPLATE, encoding="utf-8")
+    project = load_project(path)
+    assert project.table.designer and project.sections == ()
+
+
+BAD = [
+    ("unknown key", 'colour = "red"\n', "project.colour"),
+    ("datum", 'datum = "NAD83"\n', "project.datum"),
+    ("outside the grid", "lon = 25.0\nlat = 42.0\n", "project.lon"),
+    ("lon without lat", "lon = 13.4\n", "project.lat"),
+    (
+        "missing section",
+        '[[project.sections]]\ntitle = "X"\nfile = "nowhere.md"\n',
+        "project.sections[0].file",
+    ),
+]
+
+HEAD = '[project]\nclient = "C"\nsubject = "S"\ncomune = "M"\ndesigner = "D"\n'
+
+
+@pytest.mark.parametrize(("label", "extra", "key"), BAD, ids=[b[0] for b in BAD])
+def test_a_bad_project_is_one_line_before_any_analysis(tmp_path: Path, label: str, extra: str,
+                                                       key: str) -> None:  # fmt: skip
+    pytest.importorskip("jinja2")
+    path = tmp_path / "project.toml"
+    if extra.startswith("[["):
+        path.write_text(HEAD + extra, encoding="utf-8")
+    else:
+        path.write_text(HEAD.replace('designer = "D"\n', 'designer = "D"\n' + extra),
+                        encoding="utf-8")  # fmt: skip
+    code, _, err = run("report", str(FACADE), "--record", str(RICKER), "--project", str(path),
+                       "-o", str(tmp_path / "r.html"))  # fmt: skip
+    assert code == 2, (label, err)
+    assert key in err and len(err.strip().splitlines()) == 1, (label, err)
+    assert not (tmp_path / "r.html").exists()
+
+
+def test_markdown_becomes_paragraphs() -> None:
+    text = "# Title\n\nSome *emphasis* and `code`.\n\n- one\n- two\n\n1. first\n2. second\n"
+    got = [(p.text, p.kind) for p in markdown_paragraphs(text)]
+    assert got == [("Title", "subheading"), ("Some emphasis and code.", ""), ("• one", ""),
+                   ("• two", ""), ("1. first", ""), ("2. second", "")]  # fmt: skip
+
+
+def test_the_report_with_a_project(tmp_path: Path) -> None:
+    pytest.importorskip("jinja2")
+    pytest.importorskip("pyproj")
+    html = tmp_path / "r.html"
+    code, _, err = run("report", str(FACADE), "--record", str(RICKER), "--project", str(PROJECT),
+                       "-o", str(html))  # fmt: skip
+    assert code == 0, err
+    text = html.read_text(encoding="utf-8")
+    # The cover, the engineer's sections, the conclusions, the signature, the annex.
+    for words in ("Committente", "Parrocchia di San Pietro", "ED50", "Premessa",
+                  "Materiali e livello di conoscenza", "Conclusioni", "Il progettista",
+                  "Ing. Maria Rossi", "firma e timbro", 'id="annex-casebook"'):  # fmt: skip
+        assert words in text, words
+    # The conclusions' risk index follows the verdict: a state shown "soddisfatta" there is
+    # satisfied in the kinematic document.
+    kin = CliRunner().invoke(cli, ["compare", str(FACADE), "--record", str(RICKER),
+                                   "--format", "json"])  # fmt: skip
+    import json
+
+    verdict = json.loads(kin.stdout)["kinematic"]["verdict"]
+    conclusions = text[text.index('id="conclusions"') : text.index('id="software"')]
+    for state in ("SLD", "SLV", "SLC"):
+        row = conclusions[conclusions.index(f"<td>{state}</td>") :]
+        row = row[: row.index("</tr>")]
+        assert ("non soddisfatta" not in row) == bool(verdict[state]), (state, row)
+
+
+def test_the_casebook_inline_or_not_run(tmp_path: Path) -> None:
+    pytest.importorskip("jinja2")
+    annex = 'id="annex-casebook"'
+    for place, present, absent in (("inline", "Tabella", annex),
+                                   ("none", "non sono stati eseguiti", annex)):  # fmt: skip
+        html = tmp_path / f"{place}.html"
+        code, _, err = run("report", str(FACADE), "--record", str(RICKER), "--casebook", place,
+                           "-o", str(html))  # fmt: skip
+        assert code == 0, err
+        text = html.read_text(encoding="utf-8")
+        assert present in text and absent not in text, place
+
+
+def test_init_project_writes_the_template(tmp_path: Path) -> None:
+    out = tmp_path / "p.toml"
+    done = subprocess.run([sys.executable, "-m", "rockcli", "init", "project", "-o", str(out)],
+                          capture_output=True, text=True, check=False)  # fmt: skip
+    assert done.returncode == 0, done.stderr
+    assert out.read_text(encoding="utf-8") == TEMPLATE
