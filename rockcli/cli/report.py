@@ -30,7 +30,8 @@ from rockcli.errors import install_hint
 #: imports nothing of the report), the filing language first.
 LANGUAGES = ("it", "en")
 #: What each output needs, and the extra that installs it.
-NEEDS = {"html": ("jinja2", "matplotlib"), "pdf": ("jinja2", "matplotlib", "typst")}
+NEEDS = {"html": ("jinja2", "matplotlib"), "pdf": ("jinja2", "matplotlib", "typst"),
+         "docx": ("matplotlib", "docx")}  # fmt: skip
 EXTRA = install_hint("report")
 
 
@@ -78,6 +79,14 @@ EXTRA = install_hint("report")
     "validation casebook's hazard-grid cases (default: $ROCK_HAZARD_GRID)."
 )
 @click.option(
+    "--docx",
+    "docx_path",
+    type=click.Path(dir_okay=False),
+    default=None,
+    help="Also the report as an editable Word document (.docx): headings, tables, figures "
+    "as images, captions.",
+)
+@click.option(
     "--project",
     "project_path",
     type=click.Path(dir_okay=False),
@@ -107,7 +116,7 @@ EXTRA = install_hint("report")
 def report(
     model_path, record_path, record_format, dt, units, scale, pga, suite_path, target,
     allow_outside, html_path, pdf_path, lang, code_demand, edition, engine, ground, grid_file,
-    project_path, casebook_place, mechanism_name, force,
+    docx_path, project_path, casebook_place, mechanism_name, force,
 ):  # fmt: skip
     """The calculation report of MODEL under a record (or a record suite): identification
     and input digests, the model and its sketch, the site and demand, the kinematic
@@ -121,14 +130,14 @@ def report(
     check_allow_outside(allow_outside, suite_path)
     with_suite = one_record_or_suite(record_path, suite_path, None, None, None, target)
     code_demand = demand_for(code_demand, with_suite)
-    check_report_paths(html_path, pdf_path, force)
+    check_report_paths(html_path, pdf_path, force, docx_path)
     front = {"project": None, "casebook": casebook_place}
     if project_path is not None:  # before any analysis runs
         from rockcli.document.project import load_project
 
         front["project"] = load_project(project_path)
     common = {"html_path": html_path, "pdf_path": pdf_path, "lang": lang,
-              "command": shlex.join(INVOKED), "front": front}  # fmt: skip
+              "command": shlex.join(INVOKED), "front": front, "docx_path": docx_path}  # fmt: skip
     if with_suite:
         check_record_options(None, record_format, dt, units, scale, pga)
         if mechanism_name is not None:
@@ -160,11 +169,14 @@ def report(
         announce_written(path, detail)
 
 
-def check_report_paths(html_path: str, pdf_path: str | None, force: bool) -> None:
+def check_report_paths(
+    html_path: str, pdf_path: str | None, force: bool, docx_path: str | None = None
+) -> None:
     """Before the analyses: the suffixes, the folders writable, the libraries installed."""
     from rockcli.errors import InputError
 
-    for option, path, suffix in (("--output", html_path, ".html"), ("--pdf", pdf_path, ".pdf")):
+    for option, path, suffix in (("--output", html_path, ".html"), ("--pdf", pdf_path, ".pdf"),
+                                 ("--docx", docx_path, ".docx")):  # fmt: skip
         if path is not None and not path.lower().endswith(suffix):
             raise InputError(
                 f"the file name must end in {suffix}",
@@ -172,9 +184,10 @@ def check_report_paths(html_path: str, pdf_path: str | None, force: bool) -> Non
                 value=path,
                 allowed=f"a path ending in {suffix}",
             )
-    check_outputs(force, output=html_path, pdf=pdf_path)
-    for kind, option in (("html", "--output"), ("pdf", "--pdf")):
-        if kind == "pdf" and pdf_path is None:
+    check_outputs(force, output=html_path, pdf=pdf_path, docx=docx_path)
+    for kind, option, path in (("html", "--output", html_path), ("pdf", "--pdf", pdf_path),
+                               ("docx", "--docx", docx_path)):  # fmt: skip
+        if path is None:
             continue
         missing = [name for name in NEEDS[kind] if importlib.util.find_spec(name) is None]
         if missing:

@@ -720,6 +720,7 @@ def error_text(error: float | None, w: Words) -> str:
 
 
 def figure(key: str, fig: MplFigure, caption: str) -> Figure:
-    from rockcli.document.figures import svg_markup
+    from rockcli.document.figures import rendered
 
-    return Figure(key, svg_markup(fig), caption)
+    svg, png = rendered(fig)
+    return Figure(key, svg, caption, png)

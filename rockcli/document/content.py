@@ -35,6 +35,8 @@ class Figure:
     key: str
     svg: str
     caption: str
+    #: The same figure as PNG (the Word copy's image).
+    png: bytes = b""
 
 
 Block = Paragraph | Grid | Figure

@@ -38,6 +38,21 @@ def new_figure(width: float, height: float) -> MplFigure:
     return Figure(figsize=(width, height), layout="constrained")
 
 
+#: Resolution of a figure's PNG (the Word copy) [dots per inch].
+PNG_DPI = 200
+
+
+def rendered(fig: MplFigure) -> tuple[str, bytes]:
+    """The figure as inline SVG (:func:`svg_markup`) and as PNG (PNG_DPI), the figure then
+    cleared."""
+    from rockcli.report.plots.files import clean_texts
+
+    clean_texts(fig)
+    buffer = io.BytesIO()
+    fig.savefig(buffer, format="png", dpi=PNG_DPI, metadata={"Software": None})
+    return svg_markup(fig), buffer.getvalue()
+
+
 def svg_markup(fig: MplFigure) -> str:
     """The figure as an <svg> element to inline in HTML (no XML prolog, no fixed size: it
     scales to the width of the page); its texts cleaned first

@@ -56,6 +56,7 @@ def write_report(
     files: Sequence[tuple[str, str]],
     options: dict[str, Any],
     front: dict[str, Any] | None = None,
+    docx_path: str | None = None,
 ) -> list[tuple[str, str]]:
     """Run both analyses of the model under the record, write the report; what was written
     (``front``: the project and where the casebook goes, :func:`report_front`)."""
@@ -72,15 +73,19 @@ def write_report(
     front = report_front(front, options.get("grid_file"))
     inputs = Inputs(model_path, model, record, tuple(files), command, report_date(), **front)
     document = build_document(inputs, out, doc, lang)
-    return write_document(document, html_path, pdf_path, doc["classification"])
+    return write_document(document, html_path, pdf_path, doc["classification"], docx_path)
 
 
 def write_document(
-    document: Document, html_path: str, pdf_path: str | None, classification: str
+    document: Document,
+    html_path: str,
+    pdf_path: str | None,
+    classification: str,
+    docx_path: str | None = None,
 ) -> list[tuple[str, str]]:
-    """Write the report as HTML (and PDF); what was written, for the "wrote" lines.
+    """Write the report as HTML (and PDF, and DOCX); what was written, for the "wrote" lines.
 
-    Both are made before either is written: when the PDF cannot be typeset, no HTML is left
+    All are made before any is written: when the PDF cannot be typeset, no HTML is left
     behind to be filed as if the run had ended well.
     """
     from rockcli.document.html import render_html
@@ -92,6 +97,11 @@ def write_document(
         from rockcli.document.pdf import render_pdf
 
         outputs.append((pdf_path, render_pdf(document), "--pdf", "the same report as PDF"))
+    if docx_path is not None:
+        from rockcli.document.docx import render_docx
+
+        outputs.append((docx_path, render_docx(document), "--docx",
+                        "the same report as an editable Word document"))  # fmt: skip
     for path, data, option, _ in outputs:
         write_bytes(path, data, where=option)
     return [(path, detail) for path, _, _, detail in outputs]
@@ -110,6 +120,7 @@ def write_suite_report(
     options: dict[str, Any],
     allow_outside: bool = False,
     front: dict[str, Any] | None = None,
+    docx_path: str | None = None,
 ) -> list[tuple[str, str]]:
     """Compare the model under the suite (as `rock compare --suite`), keep each record's
     history for the figures, write the report; what was written (allow_outside: the
@@ -142,4 +153,4 @@ def write_suite_report(
     front = report_front(front, grid_file)
     inputs = Inputs(model_path, loaded.model, None, tuple(files), command, report_date(), **front)
     document = build_suite_document(inputs, doc, suite_document(loaded.check), runs, lang)
-    return write_document(document, html_path, pdf_path, doc["classification"])
+    return write_document(document, html_path, pdf_path, doc["classification"], docx_path)

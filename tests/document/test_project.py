@@ -137,3 +137,31 @@ def test_init_project_writes_the_template(tmp_path: Path) -> None:
                           capture_output=True, text=True, check=False)  # fmt: skip
     assert done.returncode == 0, done.stderr
     assert out.read_text(encoding="utf-8") == TEMPLATE
+
+
+def test_the_word_copy_holds_the_same_report(tmp_path: Path) -> None:
+    # The DOCX from the same Document as the HTML: every section a numbered heading, the
+    # annex, the cover's facts, every table and figure, and the numbers as the HTML has them.
+    pytest.importorskip("docx")
+    pytest.importorskip("pyproj")
+    from docx import Document as Word
+
+    html, docx = tmp_path / "r.html", tmp_path / "r.docx"
+    code, _, err = run("report", str(FACADE), "--record", str(RICKER), "--project", str(PROJECT),
+                       "-o", str(html), "--docx", str(docx))  # fmt: skip
+    assert code == 0, err
+    text = html.read_text(encoding="utf-8")
+    word = Word(str(docx))
+    headings = [p.text for p in word.paragraphs if p.style.name == "Heading 1"]
+    assert headings[0] == "1. Identificazione" and headings[-1].startswith("Allegato A.")
+    assert all(h.split(". ", 1)[1] in text for h in headings)
+    assert text.count("<table") == len(word.tables)  # the cover and every grid
+    assert text.count("<figure") == len(word.inline_shapes) > 0
+    cells = {c.text for t in word.tables for row in t.rows for c in row.cells}
+    joined = " | ".join(cells)
+    assert "Parrocchia di San Pietro" in cells and "Ing. Maria Rossi" in joined
+    # A number of the report, the same in both: the first run's max θ/α in the runs table.
+    import re
+
+    ratio = re.search(r"<td class=\"num\">(0,\d{4})</td>", text)
+    assert ratio is not None and ratio.group(1) in cells

@@ -1,0 +1,138 @@
+"""The calculation report as a Word document (rock report --docx), from the same Document as
+the HTML and the PDF: Italian offices edit the *relazione* in Word.
+
+python-docx writes it: the title and subtitle, the cover's facts as a table, a numbered
+heading per section, paragraphs (notes, warnings and verdicts set apart by their style),
+tables with a header row, figures as PNG images with their captions, the signature block and
+the annexes. Numbers and words are the Document's own: nothing is computed here.
+"""
+
+from __future__ import annotations
+
+import io
+
+from rockcli.document.content import Document, Figure, Grid, Paragraph, Section
+
+#: Width of a figure on an A4 page with 2 cm margins [cm] (the sketch: 62 %, as in the HTML).
+FIGURE_WIDTH_CM = 16.5
+SKETCH_SHARE = 0.62
+ACCENT = (0x7A, 0x2E, 0x1D)
+
+
+def render_docx(document: Document) -> bytes:
+    """The report as the bytes of a .docx file."""
+    from docx import Document as Word
+    from docx.shared import Cm
+
+    word = Word()
+    for page in word.sections:
+        page.page_height, page.page_width = Cm(29.7), Cm(21.0)
+        page.left_margin = page.right_margin = Cm(2.0)
+        page.top_margin = page.bottom_margin = Cm(2.0)
+        page.header.paragraphs[0].text = document.header
+        page.footer.paragraphs[0].text = document.footer
+    word.core_properties.title = f"{document.title} — {document.subtitle}"
+    word.core_properties.language = document.lang
+    word.add_heading(document.title, level=0)
+    word.add_paragraph(document.subtitle)
+    if document.cover:
+        cover_table(word, document.cover)
+    counters = {"figure": 0, "table": 0}
+    for number, section in enumerate(document.sections, start=1):
+        add_section(word, section, f"{number}. {section.title}", document, counters)
+    if document.signature:
+        signature(word, document.signature)
+    for k, annex in enumerate(document.annexes):
+        word.add_page_break()
+        title = f"{document.labels.get('annex', 'Annex')} {'ABCDEFGH'[k]}. {annex.title}"
+        add_section(word, annex, title, document, counters)
+    buffer = io.BytesIO()
+    word.save(buffer)
+    return buffer.getvalue()
+
+
+def cover_table(word, rows: tuple[tuple[str, str], ...]) -> None:
+    """The project's facts, label and value, two columns."""
+    table = word.add_table(rows=0, cols=2)
+    table.style = "Table Grid"
+    for label, value in rows:
+        cells = table.add_row().cells
+        cells[0].paragraphs[0].add_run(label).bold = True
+        cells[1].text = value
+
+
+def add_section(word, section: Section, title: str, document: Document, counters) -> None:
+    """One section: its heading, then its blocks in order."""
+    word.add_heading(title, level=1)
+    for block in section.blocks:
+        if isinstance(block, Figure):
+            counters["figure"] += 1
+            add_figure(word, block, f"{document.labels.get('figure', 'Figure')} "
+                       f"{counters['figure']}. {block.caption}")  # fmt: skip
+        elif isinstance(block, Grid):
+            counters["table"] += 1
+            add_grid(word, block, f"{document.labels.get('table', 'Table')} "
+                     f"{counters['table']}. {block.caption}")  # fmt: skip
+        else:
+            add_paragraph(word, block)
+
+
+def add_paragraph(word, block: Paragraph) -> None:
+    """A paragraph; a subheading as a level-2 heading, a verdict in bold, a note and a warning
+    in smaller (the warning in red) type."""
+    from docx.shared import Pt, RGBColor
+
+    if block.kind == "subheading":
+        word.add_heading(block.text, level=2)
+        return
+    run = word.add_paragraph().add_run(block.text)
+    if block.kind == "verdict":
+        run.bold = True
+    elif block.kind in ("note", "warning"):
+        run.font.size = Pt(9)
+        if block.kind == "warning":
+            run.font.color.rgb = RGBColor(0x8A, 0x1C, 0x00)
+
+
+def add_grid(word, grid: Grid, caption: str) -> None:
+    """A table with its caption above and its header row; numbers right-aligned."""
+    from docx.enum.text import WD_ALIGN_PARAGRAPH
+    from docx.shared import Pt
+
+    word.add_paragraph(caption, style="Caption")
+    table = word.add_table(rows=1, cols=len(grid.headers))
+    table.style = "Table Grid"
+    for cell, header in zip(table.rows[0].cells, grid.headers, strict=True):
+        cell.paragraphs[0].add_run(header).bold = True
+    numeric = grid.numeric or (False,) * len(grid.headers)
+    for row in grid.rows:
+        cells = table.add_row().cells
+        for cell, text, right in zip(cells, row, numeric, strict=True):
+            paragraph = cell.paragraphs[0]
+            paragraph.add_run(text)
+            if right:
+                paragraph.alignment = WD_ALIGN_PARAGRAPH.RIGHT
+    for row in table.rows:
+        for cell in row.cells:
+            for run in cell.paragraphs[0].runs:
+                run.font.size = Pt(8)
+
+
+def add_figure(word, figure: Figure, caption: str) -> None:
+    """The figure as its PNG image, full width (the sketch narrower), its caption below."""
+    from docx.shared import Cm
+
+    share = SKETCH_SHARE if figure.key == "sketch" else 1.0
+    word.add_picture(io.BytesIO(figure.png), width=Cm(FIGURE_WIDTH_CM * share))
+    word.add_paragraph(caption, style="Caption")
+
+
+def signature(word, lines: tuple[str, ...]) -> None:
+    """The signature block, right-aligned, with room for the stamp."""
+    from docx.enum.text import WD_ALIGN_PARAGRAPH
+
+    word.add_paragraph()
+    for line in lines:
+        word.add_paragraph(line).alignment = WD_ALIGN_PARAGRAPH.RIGHT
+    for _ in range(4):
+        word.add_paragraph()
