@@ -102,7 +102,7 @@ def kinematic_quantity(model: Model, inputs: KinematicInput, quantity: str) -> f
 def catalogue_entry(result: KinematicResult, name: str | None) -> MechanismResult:
     """The mechanism of the catalogue named, the governing one (listed first) for None.
 
-    As `rock kinematic --mechanism` (rockcli.report.kinematic.chosen_result); an unknown
+    As `rock kinematic --mechanism` (rockcli.terminal.kinematic.chosen_result); an unknown
     name is an InputError listing the catalogue.
     """
     from rockcli.studies.catalogue import named

@@ -99,8 +99,8 @@ def assess(
 ):
     """Rocking time history of MODEL under a record (or every record of a suite), both
     polarities, with the verdict."""
-    from rockcli.report.assess import assessment_output_document
     from rockcli.studies.assess import run_assessment_output
+    from rockcli.terminal.assess import assessment_output_document
 
     check_allow_outside(allow_outside, suite_path)
     if one_record_or_suite(record_path, suite_path, history_path, plot_path, grid_file, target):
@@ -132,7 +132,7 @@ def assess(
     doc = assessment_output_document(out, record)
     if history_path:
         from rockcli.outfile import write_text
-        from rockcli.report.assess import history_csv
+        from rockcli.terminal.assess import history_csv
 
         write_text(
             history_path,
@@ -141,14 +141,14 @@ def assess(
         )
         announce_written(history_path)
     if plot_path:
-        from rockcli.report.plots import plot_assessment
+        from rockcli.plots import plot_assessment
 
         plot_assessment(
             doc, out.result.runs, plot_path, record=shaking, overturn_angle=out.overturn_angle
         )
         announce_written(plot_path)
-    from rockcli.report.assess import assessment_report
-    from rockcli.report.table import show
+    from rockcli.terminal.assess import assessment_report
+    from rockcli.terminal.table import show
 
     show(doc, output, assessment_report)
     exit_if_non_finite(doc["runs"])
@@ -161,10 +161,10 @@ def assess_every_mechanism(
 ) -> None:
     """--all: each mechanism the time history rocks, a document each (JSON ``mechanisms``)."""
     from rockcli.errors import InputError
-    from rockcli.report.assess import assessment_output_document, assessment_report
-    from rockcli.report.table import console_for, render
     from rockcli.studies.assess import run_assessment_output
     from rockcli.studies.rocked import rockable_names
+    from rockcli.terminal.assess import assessment_output_document, assessment_report
+    from rockcli.terminal.table import console_for, render
 
     for option, value in zip(("--mechanism", "--history", "--plot"), single_options, strict=True):
         if value is not None:
@@ -244,10 +244,10 @@ def assess_with_suite(
     """Every record of the suite through the time history, the code's rule, the report.
 
     suite: (the suite file or folder, the --target of a folder, --allow-outside)."""
-    from rockcli.report.suite import suite_assessment_document, suite_assessment_report
-    from rockcli.report.sweep import progress_bar
-    from rockcli.report.table import show
     from rockcli.studies.suite.assess import assess_suite
+    from rockcli.terminal.suite import suite_assessment_document, suite_assessment_report
+    from rockcli.terminal.sweep import progress_bar
+    from rockcli.terminal.table import show
 
     with progress_bar(None) as bar:
         result = assess_suite(

@@ -130,13 +130,13 @@ def compare(
     """Kinematic check and rocking time history of MODEL on the same record (or suite of
     records), side by side."""
     from rockcli.cli.assess import one_record_or_suite
-    from rockcli.report.compare import (
+    from rockcli.studies.compare import run_comparison_output
+    from rockcli.terminal.compare import (
         comparison_output_document,
         comparison_report,
         comparison_warnings,
     )
-    from rockcli.report.table import show
-    from rockcli.studies.compare import run_comparison_output
+    from rockcli.terminal.table import show
 
     refuse_record_demand(record_demand)
     check_allow_outside(allow_outside, suite_path)
@@ -175,7 +175,7 @@ def compare(
     doc, rocking = comparison_output_document(out, record), out.rocking
     doc["warnings"] = comparison_warnings(doc)
     if plot_path:
-        from rockcli.report.plots import plot_comparison
+        from rockcli.plots import plot_comparison
 
         runs = rocking.result.runs
         shaking = rocking.shaking or record
@@ -211,10 +211,10 @@ def compare_with_suite(
     """The code check and every record of the suite, side by side; the document shown.
 
     suite: (the suite file or folder, the --target of a folder, --allow-outside)."""
-    from rockcli.report.suite import suite_comparison_document, suite_comparison_report
-    from rockcli.report.sweep import progress_bar
-    from rockcli.report.table import show
     from rockcli.studies.suite.compare import compare_suite
+    from rockcli.terminal.suite import suite_comparison_document, suite_comparison_report
+    from rockcli.terminal.sweep import progress_bar
+    from rockcli.terminal.table import show
 
     with progress_bar(None) as bar:
         result = compare_suite(

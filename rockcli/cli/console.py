@@ -12,7 +12,7 @@ from __future__ import annotations
 import codecs
 import sys
 
-from rockcli.report.text import spell_ascii
+from rockcli.terminal.text import spell_ascii
 
 #: Name of the codecs error handler registered below.
 HANDLER = "rock-ascii"

@@ -97,8 +97,8 @@ def kinematic(
     output,
 ):
     """NTC kinematic analysis of MODEL: α0, e*, a0*, capacity curve, DLS and ULS checks."""
-    from rockcli.report.kinematic import kinematic_document
     from rockcli.studies.kinematic import run_kinematic
+    from rockcli.terminal.kinematic import kinematic_document
 
     check_record_options(record_path, record_format, dt, units, scale, pga)
     lon_lat = _site(site, record_path)
@@ -113,7 +113,7 @@ def kinematic(
     )
     doc = kinematic_document(out.name, out.result, out.warnings, mechanism_name)
     if plot_path:
-        from rockcli.report.plots import plot_kinematic
+        from rockcli.plots import plot_kinematic
 
         plot_kinematic(doc, plot_path)
         announce_written(plot_path)
@@ -125,8 +125,8 @@ def kinematic(
 def show_catalogue(doc, out, output: str, all_mechanisms: bool) -> None:
     """JSON, or the summary of the catalogue and the detail of one mechanism (every one with
     ``all_mechanisms``) in the terminal."""
-    from rockcli.report.kinematic import catalogue_reports, kinematic_document, kinematic_report
-    from rockcli.report.table import console_for, render, show
+    from rockcli.terminal.kinematic import catalogue_reports, kinematic_document, kinematic_report
+    from rockcli.terminal.table import console_for, render, show
 
     if output == "json" or len(doc.get("mechanisms", ())) < 2:
         show(doc, output, kinematic_report)
@@ -154,7 +154,7 @@ def catalogue_uls(doc) -> bool | None:
 
 def gate_uls(uls: bool | None) -> None:
     """--fail-on-uls: exit 1 unless the ULS verdict is satisfied (one line on stderr)."""
-    from rockcli.report.kinematic import ULTIMATE_FIX
+    from rockcli.terminal.kinematic import ULTIMATE_FIX
 
     if uls is True:
         return

@@ -1,4 +1,4 @@
-"""The `--plot FILE` option of assess, kinematic and compare (rockcli.report.plots)."""
+"""The `--plot FILE` option of assess, kinematic and compare (rockcli.plots)."""
 
 from __future__ import annotations
 
@@ -8,7 +8,7 @@ import click
 def _check(ctx: click.Context, param: click.Parameter, value: str | None) -> str | None:
     """Refuse a bad suffix or a missing matplotlib before the run, not after it."""
     if value is not None:
-        from rockcli.report.plots import check_plot_path
+        from rockcli.plots import check_plot_path
 
         check_plot_path(value)
     return value

@@ -90,8 +90,8 @@ def info(
     component when the file's header names them, then each record's warnings and notes.
     """
     from rockcli.records.files import read_record
-    from rockcli.report.records import info_document, info_report
-    from rockcli.report.table import show
+    from rockcli.terminal.records import info_document, info_report
+    from rockcli.terminal.table import show
 
     records = [read_record(file, fmt=record_format, dt=dt, units=units) for file in files]
     show(info_document(records), output, info_report)

@@ -84,12 +84,12 @@ def retrofit(model_path, record_path, record_format, dt, units, scale, pga, name
     """Size a tie-rod of MODEL: for each diameter, the code's ULS check and the time history
     under the record; the smallest diameter that passes both and holds the rod's force."""
     from rockcli.cli.sweep import worker_count
-    from rockcli.report.retrofit import retrofit_document, retrofit_report
-    from rockcli.report.sweep import progress_bar
-    from rockcli.report.table import show
     from rockcli.studies.retrofit.choose import choose
     from rockcli.studies.retrofit.run import Analyses, run_retrofit
     from rockcli.studies.sweep.executor import local_executor
+    from rockcli.terminal.retrofit import retrofit_document, retrofit_report
+    from rockcli.terminal.sweep import progress_bar
+    from rockcli.terminal.table import show
 
     plan, model = retrofit_plan(model_path, name, at, length, diameters, grade, count)
     check_outputs(force, plot=plot_path)
@@ -101,7 +101,7 @@ def retrofit(model_path, record_path, record_format, dt, units, scale, pga, name
     chosen, reason = choose(rows)
     doc = retrofit_document(plan, model, record, rows, chosen, reason, ground=ground)
     if plot_path:
-        from rockcli.report.plots.retrofit import plot_retrofit
+        from rockcli.plots.retrofit import plot_retrofit
 
         plot_retrofit(doc, plot_path)
         announce_written(plot_path)

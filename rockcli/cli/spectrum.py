@@ -75,7 +75,7 @@ def spectrum(files, record_format, dt, units, scale, pga, damping, periods, outp
     from rockcli.cli.options import load_record
     from rockcli.codecheck.response import response_spectrum
     from rockcli.records.periods import parse_periods
-    from rockcli.report.spectrum import spectrum_document, unique_names
+    from rockcli.terminal.spectrum import spectrum_document, unique_names
 
     _check_damping(damping)
     grid = parse_periods(periods)
@@ -87,7 +87,7 @@ def spectrum(files, record_format, dt, units, scale, pga, damping, periods, outp
     ]
     doc = spectrum_document(unique_names(records), damping, grid, spectra)
     if plot_path:
-        from rockcli.report.plots.spectrum import plot_spectra
+        from rockcli.plots.spectrum import plot_spectra
 
         plot_spectra(doc, plot_path)
         announce_written(plot_path)
@@ -105,7 +105,7 @@ def _check_damping(damping: float) -> None:
 def _check_table_size(output: str, count: int) -> None:
     """A table shows at most MAX_TABLE_RECORDS records (InputError otherwise)."""
     from rockcli.errors import InputError
-    from rockcli.report.spectrum import MAX_TABLE_RECORDS
+    from rockcli.terminal.spectrum import MAX_TABLE_RECORDS
 
     if output == "table" and count > MAX_TABLE_RECORDS:
         raise InputError(
@@ -118,8 +118,8 @@ def _check_table_size(output: str, count: int) -> None:
 
 def _show(doc, records, output: str) -> None:
     """The spectra on stdout as a table, JSON or CSV; with JSON or CSV warnings on stderr."""
-    from rockcli.report.spectrum import spectrum_csv, spectrum_report
-    from rockcli.report.table import show
+    from rockcli.terminal.spectrum import spectrum_csv, spectrum_report
+    from rockcli.terminal.table import show
 
     if output != "table":
         for rec in records:

@@ -63,10 +63,10 @@ def check(
     (NTC §3.2.3.6: nowhere below −10 %, and in NTC 2018 nowhere above +30 %).
 
     SUITE is a suite file (TOML), or a folder of records with --target."""
-    from rockcli.report.suite import suite_report
-    from rockcli.report.table import show
     from rockcli.suites.load import load_suite
     from rockcli.suites.run import run_suite_check, suite_document
+    from rockcli.terminal.suite import suite_report
+    from rockcli.terminal.table import show
 
     settings = load_suite(suite_path, period=period, target=target, allow_outside=allow_outside)
     check_grid_option(grid_file, settings.target.site is not None, suite_path)
@@ -75,7 +75,7 @@ def check(
     result = run_suite_check(settings, grid_file, scale_auto=scale_mode == "auto", floor=floor)
     doc = suite_document(result)
     if plot_path:
-        from rockcli.report.plots.suite import plot_suite
+        from rockcli.plots.suite import plot_suite
 
         plot_suite(doc, plot_path)
         announce_written(plot_path)

@@ -195,12 +195,12 @@ def sweep(
     which no case succeeds exits 2.
     """
     from rockcli.process import interrupted
-    from rockcli.report.sweep import progress_bar, sweep_report
-    from rockcli.report.table import show
     from rockcli.studies.sweep.cases import expand
     from rockcli.studies.sweep.executor import dask_executor, local_executor
     from rockcli.studies.sweep.run import SweepInterrupted, run_sweep
     from rockcli.studies.sweep.study import load_study
+    from rockcli.terminal.sweep import progress_bar, sweep_report
+    from rockcli.terminal.table import show
 
     started = time.perf_counter()
     if resume and overwrite:
@@ -246,7 +246,7 @@ def sweep(
     for name in (*names, "summary.json"):
         announce_written(os.path.join(result.out, name))
     if plot_path:
-        from rockcli.report.plots import plot_sweep
+        from rockcli.plots import plot_sweep
         from rockcli.studies.sweep.run import plot_rows
 
         plot_sweep(plot_rows(plan, result.out), plot_path, by=result.split)

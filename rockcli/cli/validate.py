@@ -32,8 +32,8 @@ def validate(folder, grid_file, output):
     value rock obtains, the error and the tolerance. Exit 1 when a case fails; the hazard-grid
     cases are skipped without a grid."""
     from rockcli.casebook.run import run_casebook
-    from rockcli.report.table import show
-    from rockcli.report.validate import summary, validate_document, validate_report
+    from rockcli.terminal.table import show
+    from rockcli.terminal.validate import summary, validate_document, validate_report
 
     doc = validate_document(run_casebook(folder, grid_file))
     show(doc, output, validate_report)

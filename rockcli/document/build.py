@@ -642,7 +642,7 @@ def comparison_section(doc: Mapping[str, Any], w: Words) -> Section:
 
 
 def mechanisms_grid(doc: Mapping[str, Any], w: Words) -> Grid:
-    """Every mechanism of a wall under the record (rockcli.report.compare's document): its
+    """Every mechanism of a wall under the record (rockcli.terminal.compare's document): its
     code ULS verdict, its rocking and their classification, the governing one first."""
     rows = []
     for m in doc["mechanisms"]:

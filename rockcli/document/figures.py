@@ -1,7 +1,7 @@
 """The report's figures as SVG markup: the block to scale, the spectra, the capacity curve,
 θ/α(t) over the record, the restrainer forces against their strength.
 
-The plots of the terminal commands (rockcli.report.plots) draw the capacity curve and the
+The plots of the terminal commands (rockcli.plots) draw the capacity curve and the
 time histories; this module puts them on the report's pages with the report's axis labels.
 matplotlib writes SVG with its text as paths (``svg.fonttype = "path"``, its default), so the
 figures look the same in every browser and in the PDF.
@@ -16,7 +16,7 @@ from collections.abc import Callable, Mapping, Sequence
 from typing import TYPE_CHECKING, Any
 
 from rockcli.document.words import Words
-from rockcli.report.plots.phrases import Say
+from rockcli.plots.phrases import Say
 
 if TYPE_CHECKING:
     from matplotlib.axes import Axes
@@ -45,7 +45,7 @@ PNG_DPI = 200
 def rendered(fig: MplFigure) -> tuple[str, bytes]:
     """The figure as inline SVG (:func:`svg_markup`) and as PNG (PNG_DPI), the figure then
     cleared."""
-    from rockcli.report.plots.files import clean_texts
+    from rockcli.plots.files import clean_texts
 
     clean_texts(fig)
     buffer = io.BytesIO()
@@ -56,8 +56,8 @@ def rendered(fig: MplFigure) -> tuple[str, bytes]:
 def svg_markup(fig: MplFigure) -> str:
     """The figure as an <svg> element to inline in HTML (no XML prolog, no fixed size: it
     scales to the width of the page); its texts cleaned first
-    (:func:`rockcli.report.plots.files.clean_texts`)."""
-    from rockcli.report.plots.files import clean_texts
+    (:func:`rockcli.plots.files.clean_texts`)."""
+    from rockcli.plots.files import clean_texts
 
     buffer = io.StringIO()
     try:
@@ -189,7 +189,7 @@ def on_page(
 
 def capacity(kin: Mapping[str, Any], words: Words) -> MplFigure:
     """The capacity curve with a0*, d0*, the edition's quantities and the demands."""
-    from rockcli.report.plots.capacity import draw_capacity
+    from rockcli.plots.capacity import draw_capacity
 
     labels = (words("figure.d_star"), words("figure.a_star"))
     fig = on_page(draw_capacity, kin, 5.4, labels, words)
@@ -200,7 +200,7 @@ def capacity(kin: Mapping[str, Any], words: Words) -> MplFigure:
 
 def compatibility(check: Mapping[str, Any], words: Words) -> MplFigure:
     """A suite's spectra, their mean, the target and its band (`rock suite check`'s plot)."""
-    from rockcli.report.plots.suite import draw_suite
+    from rockcli.plots.suite import draw_suite
 
     return on_page(draw_suite, check, 4.2, (words("figure.period"), words("figure.sa")), words)
 
@@ -210,7 +210,7 @@ def histories(
     words: Words,
 ) -> MplFigure:  # fmt: skip
     """θ/α of both polarities against time, the record's acceleration beneath."""
-    from rockcli.report.plots.histories import draw_time_panels
+    from rockcli.plots.histories import draw_time_panels
 
     fig = new_figure(PAGE_WIDTH, 4.4)
     spec = fig.add_gridspec(2, 1, height_ratios=(3, 1))

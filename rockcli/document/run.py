@@ -27,7 +27,7 @@ def casebook_document(grid_file: str | None) -> dict[str, Any] | None:
     run when the report has the grid, else they are skipped, as in `rock validate`."""
     from rockcli.casebook.run import run_casebook
     from rockcli.errors import InputError
-    from rockcli.report.validate import validate_document
+    from rockcli.terminal.validate import validate_document
 
     try:
         return validate_document(run_casebook(grid_file=grid_file))
@@ -62,8 +62,8 @@ def write_report(
     (``front``: the project and where the casebook goes, :func:`report_front`)."""
     from rockcli.document.build import Inputs, build_document
     from rockcli.model.load import load_model
-    from rockcli.report.compare import comparison_output_document, comparison_warnings
     from rockcli.studies.compare import check_code_demand, compare_model_output
+    from rockcli.terminal.compare import comparison_output_document, comparison_warnings
 
     model = load_model(model_path)
     check_code_demand(model, options["code_demand"], file=model_path)
@@ -127,12 +127,12 @@ def write_suite_report(
     suite's records may lie outside its folder, --allow-outside)."""
     from rockcli.document.build import Inputs
     from rockcli.document.suite import build_suite_document
-    from rockcli.report.assess import assessment_output_document
-    from rockcli.report.suite import suite_comparison_document
     from rockcli.studies.assess import assess_model_output
     from rockcli.studies.suite.assess import load_suite_and_model
     from rockcli.studies.suite.compare import compare_loaded
     from rockcli.suites.run import suite_document
+    from rockcli.terminal.assess import assessment_output_document
+    from rockcli.terminal.suite import suite_comparison_document
 
     loaded = load_suite_and_model(model_path, suite_path, grid_file, target, allow_outside)
     comparison = compare_loaded(loaded, grid_file, **options)

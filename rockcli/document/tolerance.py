@@ -9,7 +9,7 @@ from typing import Any
 from rockcli.document.content import Paragraph
 from rockcli.document.words import Words
 from rockcli.dynamics.tolerance import relative_change
-from rockcli.report.tolerance import tolerance_warnings
+from rockcli.terminal.tolerance import tolerance_warnings
 
 
 def tolerance_paragraphs(rocking: Mapping[str, Any], w: Words) -> list[Paragraph]:
@@ -85,7 +85,7 @@ def other_suite_warnings(
     texts: Sequence[str], records: Sequence[tuple[str, Mapping[str, Any]]]
 ) -> list[str]:
     """A suite's warnings without the tolerance check's of its records (as
-    rockcli.report.suite.suite_tolerance_warnings words them: the report says those in its
+    rockcli.terminal.suite.suite_tolerance_warnings words them: the report says those in its
     own words)."""
     said = {
         f"record {name}, {text}"

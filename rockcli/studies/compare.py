@@ -2,7 +2,7 @@
 
 The point of rock (paper §3.3, §4.4): one element, one record, the two verdicts side by side,
 and a one-word classification of their agreement. Results only: the command layer builds the
-document (rockcli.report.compare).
+document (rockcli.terminal.compare).
 """
 
 from __future__ import annotations

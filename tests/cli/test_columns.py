@@ -30,9 +30,9 @@ from click.testing import CliRunner
 from rich.cells import cell_len
 
 from rockcli.cli.main import cli
-from rockcli.report import table as table_module
-from rockcli.report.layout import NUMBER_WORD, ColumnText, fit, wrap_text
-from rockcli.report.table import FILE_WIDTH, Column, Report, Table, format_value, render
+from rockcli.terminal import table as table_module
+from rockcli.terminal.layout import NUMBER_WORD, ColumnText, fit, wrap_text
+from rockcli.terminal.table import FILE_WIDTH, Column, Report, Table, format_value, render
 from tests.cli.conftest import PULSES, ROOT
 
 EXAMPLES = ROOT / "examples"

@@ -11,8 +11,8 @@ from click.testing import CliRunner
 from rockcli.cli.compare import CLASSIFICATIONS
 from rockcli.cli.main import cli
 from rockcli.model.load import load_model
-from rockcli.report.compare import DIFFERENT_EARTHQUAKES
 from rockcli.studies.compare import Classification, classify, code_sets_demand
+from rockcli.terminal.compare import DIFFERENT_EARTHQUAKES
 from tests.cli.conftest import PULSES, ROOT
 
 ALTAR = ROOT / "examples" / "altar.toml"

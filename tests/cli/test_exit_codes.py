@@ -92,8 +92,8 @@ def _with_status(real, status: str):
 @pytest.mark.parametrize(
     ("command", "target"),
     [
-        ("assess", "rockcli.report.assess.assessment_output_document"),
-        ("compare", "rockcli.report.compare.comparison_output_document"),
+        ("assess", "rockcli.terminal.assess.assessment_output_document"),
+        ("compare", "rockcli.terminal.compare.comparison_output_document"),
     ],
 )
 def test_a_non_finite_run_prints_the_report_then_exits_3(

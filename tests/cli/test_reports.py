@@ -11,8 +11,8 @@ import pytest
 from click.testing import CliRunner
 
 from rockcli.cli.main import cli
-from rockcli.report.compare import comparison_report
-from rockcli.report.kinematic import kinematic_report
+from rockcli.terminal.compare import comparison_report
+from rockcli.terminal.kinematic import kinematic_report
 from tests.cli.conftest import PULSES, ROOT
 
 ALTAR = str(ROOT / "examples" / "altar.toml")

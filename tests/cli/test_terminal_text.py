@@ -17,12 +17,12 @@ from rich.console import Console
 
 from rockcli.cli.main import cli
 from rockcli.errors import printable
-from rockcli.report.assess import assessment_report
-from rockcli.report.compare import comparison_report
-from rockcli.report.kinematic import kinematic_report
-from rockcli.report.layout import ColumnText, fit
-from rockcli.report.table import FILE_WIDTH, Report, console_for, format_value, render
-from rockcli.report.text import encodable
+from rockcli.terminal.assess import assessment_report
+from rockcli.terminal.compare import comparison_report
+from rockcli.terminal.kinematic import kinematic_report
+from rockcli.terminal.layout import ColumnText, fit
+from rockcli.terminal.table import FILE_WIDTH, Report, console_for, format_value, render
+from rockcli.terminal.text import encodable
 from tests.cli.conftest import EXAMPLES, PULSES, ROOT
 
 ALTAR = ROOT / "examples" / "altar.toml"

@@ -1,4 +1,4 @@
-"""The words of the tolerance check (rockcli.report.tolerance) for the cases a real record
+"""The words of the tolerance check (rockcli.terminal.tolerance) for the cases a real record
 rarely gives: an overturning verdict that changes with the tolerance, a check that is not
 known, a surviving block whose envelope moves; and how tolerances are written.
 
@@ -12,7 +12,7 @@ from typing import Any
 
 import pytest
 
-from rockcli.report.tolerance import (
+from rockcli.terminal.tolerance import (
     compare_rows,
     sensitive_warning,
     tol,

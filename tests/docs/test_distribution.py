@@ -52,7 +52,7 @@ def test_every_extra_hint_works_from_a_clone():
 def test_the_install_hint_names_the_clone():
     from rockcli.cli.report import EXTRA
     from rockcli.errors import install_hint
-    from rockcli.report.plots.files import MISSING
+    from rockcli.plots.files import MISSING
 
     assert install_hint("report") == "pip install '.[report]' from the repository's folder"
     assert EXTRA == install_hint("report") and MISSING.endswith(install_hint("plot"))

@@ -1,6 +1,6 @@
 """The user guide in docs/ cannot drift from the code.
 
-- docs/model-reference.md is exactly what :func:`rockcli.report.schema_doc.model_reference`
+- docs/model-reference.md is exactly what :func:`rockcli.terminal.schema_doc.model_reference`
   generates from the pydantic schema, and every key of every table of the model file is in
   its table's section;
 - every relative link of docs/*.md points to a file that exists (and to an anchor that exists
@@ -26,7 +26,7 @@ from pydantic import BaseModel
 
 from rockcli.cli.main import cli
 from rockcli.model.schema import Model
-from rockcli.report.schema_doc import REGENERATE, model_reference
+from rockcli.terminal.schema_doc import REGENERATE, model_reference
 
 ROOT = Path(__file__).resolve().parents[2]
 DOCS = ROOT / "docs"
@@ -67,7 +67,7 @@ def test_reference_is_generated_from_the_schema() -> None:
 
 def test_reference_entry_point_prints_the_reference() -> None:
     done = subprocess.run(
-        [sys.executable, "-m", "rockcli.report.schema_doc"],
+        [sys.executable, "-m", "rockcli.terminal.schema_doc"],
         cwd=ROOT,
         capture_output=True,
         check=True,
@@ -76,9 +76,9 @@ def test_reference_entry_point_prints_the_reference() -> None:
 
 
 def test_reference_generator_does_not_import_numpy() -> None:
-    code = "import sys, rockcli.report.schema_doc; sys.exit('numpy' in sys.modules)"
+    code = "import sys, rockcli.terminal.schema_doc; sys.exit('numpy' in sys.modules)"
     done = subprocess.run([sys.executable, "-c", code], cwd=ROOT, capture_output=True, text=True)
-    assert done.returncode == 0, "rockcli.report.schema_doc imports numpy: " + done.stderr
+    assert done.returncode == 0, "rockcli.terminal.schema_doc imports numpy: " + done.stderr
 
 
 def _table_of(annotation: Any) -> type[BaseModel] | None:

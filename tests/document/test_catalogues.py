@@ -58,8 +58,8 @@ def test_the_code_terms_in_italian() -> None:
 
 def test_the_figures_english_words_are_the_terminal_plots() -> None:
     # The report's English figures say what the terminal commands' plots say
-    # (rockcli.report.plots.phrases), and every phrase is in every language.
-    from rockcli.report.plots.phrases import ENGLISH
+    # (rockcli.plots.phrases), and every phrase is in every language.
+    from rockcli.plots.phrases import ENGLISH
 
     plot = {k.removeprefix("plot."): v for k, v in catalogue("en").items() if k.startswith("plot.")}
     assert plot == ENGLISH

@@ -4,7 +4,7 @@ On main a record whose file name holds an escape (ESC, 0x1b) or a model named wi
 (0x07) made matplotlib warn "UserWarning: Glyph 27 () missing from font(s) DejaVu Sans." on
 stderr, with the absolute path of rock's source and a line of its code, and the SVG of the
 report carried the raw byte. Every text of a figure now shows them as the terminal does,
-``\\x1b`` (rockcli.report.plots.files.printable_text). pytest turns any warning into an
+``\\x1b`` (rockcli.plots.files.printable_text). pytest turns any warning into an
 error here (pyproject: filterwarnings = error), so a warning fails the run.
 """
 

@@ -101,8 +101,8 @@ def test_the_lower_panel_names_the_motion_that_shook_the_block() -> None:
     needs_matplotlib()
     from matplotlib.figure import Figure
 
+    from rockcli.plots.histories import draw_record
     from rockcli.records.files import read_record
-    from rockcli.report.plots.histories import draw_record
 
     rec = read_record(str(PULSES[0]))
     for floor, label in ((True, "floor acc. [g]"), (False, "ground acc. [g]")):
@@ -120,9 +120,9 @@ def test_a_yielded_restrainer_gets_its_force_elongation_loop() -> None:
     from rockcli.dynamics.simulate import assess
     from rockcli.model.derive import to_block
     from rockcli.model.load import load_model
+    from rockcli.plots.loops import acted, draw_loops
     from rockcli.records.files import read_record
-    from rockcli.report.assess import model_document
-    from rockcli.report.plots.loops import acted, draw_loops
+    from rockcli.terminal.assess import model_document
 
     block = to_block(load_model(ROOT / "examples" / "facade.toml"))
     rec = read_record(str(ROOT / "records" / "ricker_Tp0.5s_0.5g.txt"))

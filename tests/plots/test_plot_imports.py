@@ -31,6 +31,6 @@ def test_help_does_not_import_matplotlib(args: list[str]) -> None:
 
 
 def test_the_plot_module_imports_no_matplotlib() -> None:
-    mods = imported_by("import sys, rockcli.report.plots\nprint(' '.join(sys.modules))")
+    mods = imported_by("import sys, rockcli.plots\nprint(' '.join(sys.modules))")
     assert "matplotlib" not in mods
     assert "numpy" not in mods

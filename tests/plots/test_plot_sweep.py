@@ -7,7 +7,7 @@ from pathlib import Path
 
 import pytest
 
-from rockcli.report.plots import outcome, plot_sweep
+from rockcli.plots import outcome, plot_sweep
 from tests.plots.conftest import assert_png, assert_svg, needs_matplotlib
 
 # The paper's first systemic grid (§3.3): R = 1.5, 3.5, 7, 10 m; α = 0.05 … 0.25 rad.

@@ -21,8 +21,8 @@ from rich.console import Console
 from rockcli.cli.main import cli
 from rockcli.records.files import read_record
 from rockcli.records.periods import ROUND_PERIODS, default_periods
-from rockcli.report.spectrum import spectrum_report
-from rockcli.report.table import render
+from rockcli.terminal.spectrum import spectrum_report
+from rockcli.terminal.table import render
 from rockcli.units import DEFAULT_GRAVITY
 
 RECORDS = Path(__file__).resolve().parents[2] / "records"

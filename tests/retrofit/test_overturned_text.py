@@ -15,9 +15,9 @@ from types import SimpleNamespace
 from click.testing import CliRunner
 
 from rockcli.cli.main import cli
-from rockcli.report.plots.histories import _run_label
-from rockcli.report.plots.phrases import english
-from rockcli.report.retrofit import retrofit_report
+from rockcli.plots.histories import _run_label
+from rockcli.plots.phrases import english
+from rockcli.terminal.retrofit import retrofit_report
 from tests.cli.conftest import ROOT
 
 FACADE = ROOT / "examples" / "facade.toml"

@@ -2,8 +2,8 @@
 
 from __future__ import annotations
 
-from rockcli.report.suite import history_document, history_records_table, history_verdict
 from rockcli.studies.suite.rule import RecordOutcome, suite_measure
+from rockcli.terminal.suite import history_document, history_records_table, history_verdict
 
 ROWS = [
     {"case": k, "name": f"r{k}", "scale": 1.0, "pga_g": 0.3, "max_ratio": 0.1 * (k + 1),

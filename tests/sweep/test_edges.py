@@ -15,12 +15,12 @@ from click.testing import CliRunner
 from rockcli.cli.main import cli
 from rockcli.cli.sweep import OUT_NAME_MAX, default_out
 from rockcli.errors import InputError
-from rockcli.report.sweep import _cell, printable
 from rockcli.studies.sweep.executor import check_address, local_executor
 from rockcli.studies.sweep.output import cell, escape, unescape
 from rockcli.studies.sweep.run import run_sweep
 from rockcli.studies.sweep.study import load_study
 from rockcli.studies.sweep.summary import tally
+from rockcli.terminal.sweep import _cell, printable
 from tests.sweep.conftest import STUDY, WriteStudy
 
 N_CASES = 16  # conftest.STUDY
@@ -273,7 +273,7 @@ def test_the_collapse_map_marks_failed_and_undetermined_cases() -> None:
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    from rockcli.report.plots.collapse import _draw_map, outcome
+    from rockcli.plots.collapse import _draw_map, outcome
 
     base = {"R": 1.5, "alpha": 0.1, "record": "r"}
     rows = [
@@ -323,8 +323,8 @@ def test_an_out_folder_name_longer_than_name_max_is_one_error(
 def test_a_failed_case_without_a_block_is_grouped_and_shown() -> None:
     # Before: TypeError ('<' between float and None) sorting the groups by α, when a case
     # failed before its block was known (found by running 40 mutated studies).
-    from rockcli.report.sweep import pivot
     from rockcli.studies.sweep.summary import grouped
+    from rockcli.terminal.sweep import pivot
 
     rows = [
         {"record": "r", "_alpha": 0.1, "code_uls": "fail", "rocking": "survives"},

@@ -12,11 +12,11 @@ import pytest
 ROOT = Path(__file__).resolve().parents[2] / "rockcli"
 STUDIES = sorted((ROOT / "studies").rglob("*.py"))
 #: What a study module may not import: the document and terminal layers, the command line.
-FORBIDDEN = ("rockcli.report", "rockcli.cli", "click", "rich")
+FORBIDDEN = ("rockcli.terminal", "rockcli.plots", "rockcli.cli", "click", "rich")
 
 
 def imported_modules(path: Path, root: Path = ROOT) -> set[str]:
-    """Every module a file imports, absolute (``from rockcli import report`` → rockcli.report)."""
+    """Every module a file imports, absolute (``from rockcli import terminal`` included)."""
     package = ".".join(path.relative_to(root.parent).with_suffix("").parts[:-1])
     names = set()
     for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
@@ -42,11 +42,11 @@ def test_the_check_sees_every_form_of_import(tmp_path: Path) -> None:
     folder.mkdir(parents=True)
     sample = folder / "x.py"
     sample.write_text(
-        "import rich.console\nfrom rockcli import report\nfrom ..cli import main\n"
-        "def f():\n    from rockcli.report.assess import assessment_document\n"
+        "import rich.console\nfrom rockcli import terminal\nfrom ..cli import main\n"
+        "def f():\n    from rockcli.terminal.assess import assessment_document\n"
     )
     found = forbidden(imported_modules(sample, tmp_path / "rockcli"))
-    assert {"rich.console", "rockcli.report", "rockcli.cli", "rockcli.report.assess"} <= found
+    assert {"rich.console", "rockcli.terminal", "rockcli.cli", "rockcli.terminal.assess"} <= found
 
 
 def test_studies_has_its_sweep_package() -> None:

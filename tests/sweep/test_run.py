@@ -18,7 +18,6 @@ import pytest
 from rockcli.errors import InputError
 from rockcli.model.load import validate_model
 from rockcli.records.files import read_record
-from rockcli.report.compare import comparison_output_document
 from rockcli.studies.compare import compare_model_output
 from rockcli.studies.sweep import run as sweep_run
 from rockcli.studies.sweep.cases import case_table, expand
@@ -27,6 +26,7 @@ from rockcli.studies.sweep.output import RESULT_COLUMNS
 from rockcli.studies.sweep.run import SweepResult, run_sweep
 from rockcli.studies.sweep.study import StudyPlan, load_study
 from rockcli.studies.sweep.worker import Chunk
+from rockcli.terminal.compare import comparison_output_document
 from tests.sweep.conftest import STUDY, WriteStudy
 
 N_CASES = 16

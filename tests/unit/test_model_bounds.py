@@ -23,7 +23,7 @@ from rockcli.model.bounds import MIN_FORCE, MIN_WEIGHT
 from rockcli.model.derived_checks import check_block
 from rockcli.model.load import load_model, validate_model
 from rockcli.model.schema import FORCE_KEYS, MAX_ANCHOR
-from rockcli.report.schema_doc import bounds, sections, table_class
+from rockcli.terminal.schema_doc import bounds, sections, table_class
 
 #: A valid wall with a spring at the top (needs a mass).
 VALID: dict[str, Any] = {

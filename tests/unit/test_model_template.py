@@ -18,7 +18,7 @@ from rockcli.model.derive import to_block
 from rockcli.model.load import load_model, validate_model
 from rockcli.model.schema import Kind
 from rockcli.model.template import TEMPLATES, render_template
-from rockcli.report.schema_doc import sections, table_class
+from rockcli.terminal.schema_doc import sections, table_class
 
 KINDS = [k.value for k in Kind]
 _KEY_LINE = re.compile(r"^[A-Za-z0-9_-]+ = ")

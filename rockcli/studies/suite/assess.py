@@ -1,5 +1,5 @@
 """A model under a record suite: the suite's compatibility with its target, every record
-through the time history, and the code's rule — as data (rendered by rockcli.report.suite).
+through the time history, and the code's rule — as data (rendered by rockcli.terminal.suite).
 """
 
 from __future__ import annotations

@@ -10,7 +10,7 @@ still runs every limit state its edition has: the other states take their spectr
 target's site (same soil, topography, VN, CU), or from the model's [ntc] when the target gives
 parameters of one state only (docs/interpretations.md, "Record suites").
 
-Results only: rockcli.report.suite renders them.
+Results only: rockcli.terminal.suite renders them.
 """
 
 from __future__ import annotations

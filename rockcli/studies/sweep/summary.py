@@ -264,7 +264,7 @@ def _row(plan: StudyPlan, case: Case, result: Mapping[str, Any]) -> dict[str, An
 def case_rows(
     plan: StudyPlan, cases: Sequence[Case], results: Mapping[int, Mapping[str, Any]]
 ) -> list[dict[str, Any]]:
-    """Every case as the collapse map draws it (rockcli.report.plots.plot_sweep): the block's
+    """Every case as the collapse map draws it (rockcli.plots.plot_sweep): the block's
     R and α, the record, the two collapse verdicts, and the axis values by axis name."""
     rows = []
     for case in cases:

@@ -20,8 +20,8 @@ from rich.table import Table as RichTable
 from rich.text import Text
 
 from rockcli.errors import printable
-from rockcli.report.layout import ColumnText, Layout, fit, wrap_text
-from rockcli.report.text import encodable
+from rockcli.terminal.layout import ColumnText, Layout, fit, wrap_text
+from rockcli.terminal.text import encodable
 
 
 @dataclass(frozen=True)
@@ -83,7 +83,7 @@ def render(report: Report, console: Console) -> None:
 
     Every text is made safe for the terminal first (control characters escaped, symbols the
     console's encoding cannot carry spelled in ASCII); every table fits the console's width
-    with no number cut (:mod:`rockcli.report.layout`), and the notes, warnings and verdict
+    with no number cut (:mod:`rockcli.terminal.layout`), and the notes, warnings and verdict
     wrap at spaces, their later lines indented under the first.
     """
     text = _terminal_text(console)
@@ -124,7 +124,7 @@ def _print_labelled(console: Console, label: str, style: str, body: str) -> None
 
 
 def _print_table(console: Console, table: Table, text: Callable[[str], str]) -> None:
-    """One table fitted to the console's width (:func:`rockcli.report.layout.fit`): wider
+    """One table fitted to the console's width (:func:`rockcli.terminal.layout.fit`): wider
     only when its numbers alone are, and then the terminal wraps, no digit is lost."""
     columns = [_column_text(column, table.rows, text) for column in table.columns]
     layout = fit(columns, console.width)

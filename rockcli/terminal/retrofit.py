@@ -8,9 +8,9 @@ from typing import Any
 from rockcli import __version__
 from rockcli.model.schema import Model
 from rockcli.records.record import Record
-from rockcli.report.table import Column, Report, Table
 from rockcli.studies.retrofit.candidates import RetrofitPlan
 from rockcli.studies.retrofit.choose import failures
+from rockcli.terminal.table import Column, Report, Table
 
 SCHEMA = 1
 #: What shook the block in the time history (record.input).

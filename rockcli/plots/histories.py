@@ -7,8 +7,8 @@ from collections.abc import Mapping, Sequence
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-from rockcli.report.plots.files import new_figure, save
-from rockcli.report.plots.phrases import Say, english
+from rockcli.plots.files import new_figure, save
+from rockcli.plots.phrases import Say, english
 
 if TYPE_CHECKING:
     from matplotlib.axes import Axes
@@ -85,7 +85,7 @@ def draw_histories(
 ) -> None:
     """θ/α of both polarities against time, ±1 (θ = ±α) and the overturning level (drawn
     only when a run overturns or comes near it: a survivor's figure carries no overturning
-    mark), the legend above the axes; say: the figure's words (rockcli.report.plots.phrases)."""
+    mark), the legend above the axes; say: the figure's words (rockcli.plots.phrases)."""
     alpha = model["alpha"]
     free_side = model["free_side"] if model["sides"] == "one" else None
     peak = _plot_runs(ax, runs, alpha, say)
@@ -159,7 +159,7 @@ def plot_assessment(
         record: the record the runs were computed with (acceleration [g]).
         overturn_angle: |θ| at which a run counts as overturned [rad].
     """
-    from rockcli.report.plots.loops import acted, draw_loops
+    from rockcli.plots.loops import acted, draw_loops
 
     loops = acted(runs)
     if not loops:

@@ -6,7 +6,7 @@ from typing import Any
 
 from rockcli import __version__
 from rockcli.codecheck.result import Check, KinematicResult, RestrainerAction
-from rockcli.report.table import Column, Report, Table, key_value
+from rockcli.terminal.table import Column, Report, Table, key_value
 
 SCHEMA = 1
 

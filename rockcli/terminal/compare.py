@@ -6,11 +6,11 @@ from typing import TYPE_CHECKING, Any
 
 from rockcli import __version__
 from rockcli.records.record import Record
-from rockcli.report.assess import strength_caveat
-from rockcli.report.kinematic import EDITION_TEXT, ULTIMATE_FIX, actions_table, demand_line
-from rockcli.report.table import Column, Report, Table, format_value
-from rockcli.report.tolerance import compare_rows as tolerance_rows
-from rockcli.report.tolerance import verdict_caveat
+from rockcli.terminal.assess import strength_caveat
+from rockcli.terminal.kinematic import EDITION_TEXT, ULTIMATE_FIX, actions_table, demand_line
+from rockcli.terminal.table import Column, Report, Table, format_value
+from rockcli.terminal.tolerance import compare_rows as tolerance_rows
+from rockcli.terminal.tolerance import verdict_caveat
 
 if TYPE_CHECKING:
     from rockcli.studies.compare import ComparisonOutput
@@ -60,8 +60,8 @@ def comparison_document(
 
 def comparison_output_document(out: ComparisonOutput, record: Record) -> dict[str, Any]:
     """The `rock compare --format json` document of a comparison's results."""
-    from rockcli.report.assess import assessment_output_document
-    from rockcli.report.kinematic import kinematic_document
+    from rockcli.terminal.assess import assessment_output_document
+    from rockcli.terminal.kinematic import kinematic_document
 
     kin = kinematic_document(out.rocking.name, out.kinematic, out.rocking.warnings)
     roc = assessment_output_document(out.rocking, record)

@@ -6,9 +6,9 @@ from collections.abc import Mapping, Sequence
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-from rockcli.report.plots.capacity import draw_capacity
-from rockcli.report.plots.files import new_figure, save
-from rockcli.report.plots.histories import OVERTURN_ANGLE, draw_time_panels
+from rockcli.plots.capacity import draw_capacity
+from rockcli.plots.files import new_figure, save
+from rockcli.plots.histories import OVERTURN_ANGLE, draw_time_panels
 
 if TYPE_CHECKING:
     from rockcli.dynamics.result import RockingRun

@@ -9,7 +9,7 @@ tests/docs/test_docs.py checks that the committed file equals :func:`model_refer
 
 Regenerate with::
 
-    python -m rockcli.report.schema_doc > docs/model-reference.md
+    python -m rockcli.terminal.schema_doc > docs/model-reference.md
 
 Pure: pydantic and the schema only (no numpy, so it runs as fast as model validation).
 """
@@ -32,7 +32,7 @@ from pydantic.fields import FieldInfo
 from rockcli.model.schema import Model
 
 #: The command that writes docs/model-reference.md (quoted in the file and in test failures).
-REGENERATE = "python -m rockcli.report.schema_doc > docs/model-reference.md"
+REGENERATE = "python -m rockcli.terminal.schema_doc > docs/model-reference.md"
 
 _UNIT = re.compile(r"\s*\[(?P<unit>[^\]]+)\]\s*$")
 #: Internal references in the docstrings ("(spec/ntc.md)", "; spec/rocking.md)"): the user

@@ -6,7 +6,7 @@ from collections.abc import Mapping, Sequence
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-from rockcli.report.plots.files import new_figure, save
+from rockcli.plots.files import new_figure, save
 
 if TYPE_CHECKING:
     from matplotlib.axes import Axes

@@ -6,8 +6,8 @@ from collections.abc import Mapping
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-from rockcli.report.plots.files import new_figure, save
-from rockcli.report.plots.phrases import Say, english
+from rockcli.plots.files import new_figure, save
+from rockcli.plots.phrases import Say, english
 
 if TYPE_CHECKING:
     from matplotlib.axes import Axes
@@ -159,8 +159,8 @@ def _verdict_text(kin: Mapping[str, Any], say: Say) -> str:
 
 def draw_capacity(ax: Axes, kin: Mapping[str, Any], say: Say = english) -> None:
     """The capacity curve a*–d* with a0*, d0*, the edition's quantities and the demands
-    (paper Fig. 6); say: the figure's words (rockcli.report.plots.phrases)."""
-    from rockcli.report.kinematic import CIRCOLARE
+    (paper Fig. 6); say: the figure's words (rockcli.plots.phrases)."""
+    from rockcli.terminal.kinematic import CIRCOLARE
 
     ds, as_ = _curve(kin)
     ax.plot(ds, as_, color="k", lw=2.0, label=say("curve"))

@@ -15,10 +15,10 @@ from __future__ import annotations
 from collections.abc import Mapping, Sequence
 from typing import Any
 
-from rockcli.report.table import Column, Report, Table, key_value
 from rockcli.studies.suite.assess import SuiteAssessment
 from rockcli.studies.suite.compare import SuiteComparison
 from rockcli.studies.suite.rule import SuiteMeasure
+from rockcli.terminal.table import Column, Report, Table, key_value
 
 #: What the code does with a suite of this size (NTC §3.2.3.6).
 COUNT_TEXT = {
@@ -187,7 +187,7 @@ def history_records_table(doc: Mapping[str, Any]) -> Table:
 
 def suite_tolerance_warnings(rows: Sequence[Mapping[str, Any]]) -> list[str]:
     """The tolerance check's warning of every record whose result depends on it, named."""
-    from rockcli.report.tolerance import sensitive_warning
+    from rockcli.terminal.tolerance import sensitive_warning
 
     found = []
     for row in rows:
@@ -296,7 +296,7 @@ def suite_comparison_document(sc: SuiteComparison) -> dict[str, Any]:
     """The whole `rock compare MODEL --suite SUITE --format json` document: the suite
     section of assess --suite, the code check's document, the limit state both verdicts are
     of, the classification and what the code check saw."""
-    from rockcli.report.kinematic import kinematic_document
+    from rockcli.terminal.kinematic import kinematic_document
 
     doc = suite_assessment_document(sc.assessment)
     passed = sc.kinematic.verdict()[sc.verdict_key]
@@ -317,8 +317,8 @@ def suite_comparison_document(sc: SuiteComparison) -> dict[str, Any]:
 
 def suite_comparison_rows(doc: Mapping[str, Any]) -> tuple[dict[str, str], ...]:
     """The side-by-side rows: the limit state's verdict, its amplitude, the classification."""
-    from rockcli.report.compare import code_cell, governing_check
-    from rockcli.report.table import format_value
+    from rockcli.terminal.compare import code_cell, governing_check
+    from rockcli.terminal.table import format_value
 
     kin, suite, col = doc["kinematic"], doc["suite"], doc["collapse"]
     states = (col["code_verdict"],)
@@ -345,8 +345,8 @@ def suite_comparison_rows(doc: Mapping[str, Any]) -> tuple[dict[str, str], ...]:
 
 def suite_comparison_report(doc: dict[str, Any]) -> Report:
     """The terminal report of a model under a suite against the code check."""
-    from rockcli.report.compare import COLUMNS
-    from rockcli.report.kinematic import EDITION_TEXT, demand_line
+    from rockcli.terminal.compare import COLUMNS
+    from rockcli.terminal.kinematic import EDITION_TEXT, demand_line
 
     suite, kin = doc["suite"], doc["kinematic"]
     base = suite_assessment_report(doc)

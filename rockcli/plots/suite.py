@@ -6,8 +6,8 @@ from collections.abc import Mapping
 from pathlib import Path
 from typing import Any
 
-from rockcli.report.plots.files import new_figure, save
-from rockcli.report.plots.phrases import Say, english
+from rockcli.plots.files import new_figure, save
+from rockcli.plots.phrases import Say, english
 
 #: Colours of the records: matplotlib's tab10 without its red, which marks the target.
 RECORD_COLORS = tuple(
@@ -34,7 +34,7 @@ def plot_suite(doc: Mapping[str, Any], path: str | Path) -> None:
 
 def draw_suite(ax: Any, doc: Mapping[str, Any], say: Say = english) -> None:
     """The records' spectra, their mean, the target and its band on one axes (plot_suite);
-    say: the figure's words (rockcli.report.plots.phrases)."""
+    say: the figure's words (rockcli.plots.phrases)."""
     T = doc["periods"]
     for i, rec in enumerate(doc["records"]):
         color = RECORD_COLORS[i % len(RECORD_COLORS)]

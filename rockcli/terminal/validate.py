@@ -14,7 +14,7 @@ from typing import Any
 
 from rockcli import __version__
 from rockcli.casebook.run import CasebookResult, CaseResult, Status
-from rockcli.report.table import Column, Report, Table
+from rockcli.terminal.table import Column, Report, Table
 
 SCHEMA = 1
 

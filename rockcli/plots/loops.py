@@ -14,7 +14,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from rockcli.mechanics import spring_elongation
-from rockcli.report.plots.histories import POLARITY_COLORS
+from rockcli.plots.histories import POLARITY_COLORS
 
 if TYPE_CHECKING:
     from matplotlib.axes import Axes

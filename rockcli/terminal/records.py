@@ -5,7 +5,7 @@ from __future__ import annotations
 from typing import Any
 
 from rockcli.records.record import Record
-from rockcli.report.table import Report, Table, key_value
+from rockcli.terminal.table import Report, Table, key_value
 from rockcli.units import AccelUnit
 
 #: Version of the JSON written by ``rock record info --format json`` (2: a list of records,

@@ -6,7 +6,7 @@ from collections.abc import Mapping
 from pathlib import Path
 from typing import Any
 
-from rockcli.report.plots.files import new_figure, save
+from rockcli.plots.files import new_figure, save
 
 FIGURE_SIZE = (6.4, 4.4)
 #: Line width of the mean of several records, against 1.0 for each record.

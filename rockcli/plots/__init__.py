@@ -13,12 +13,12 @@ numeric core never load it; the modules here import only the standard library at
 
 from __future__ import annotations
 
-from rockcli.report.plots.capacity import plot_kinematic
-from rockcli.report.plots.collapse import outcome, plot_sweep
-from rockcli.report.plots.comparison import plot_comparison
-from rockcli.report.plots.files import MISSING, OPTION, check_plot_path, plot_format
-from rockcli.report.plots.histories import plot_assessment
-from rockcli.report.plots.suite import plot_suite
+from rockcli.plots.capacity import plot_kinematic
+from rockcli.plots.collapse import outcome, plot_sweep
+from rockcli.plots.comparison import plot_comparison
+from rockcli.plots.files import MISSING, OPTION, check_plot_path, plot_format
+from rockcli.plots.histories import plot_assessment
+from rockcli.plots.suite import plot_suite
 
 __all__ = [
     "MISSING",

@@ -15,7 +15,7 @@ from typing import Any
 import numpy as np
 
 from rockcli.records.record import Record
-from rockcli.report.table import Column, Report, Table
+from rockcli.terminal.table import Column, Report, Table
 
 #: A terminal table shows at most this many records (period + 2 columns each: 7 columns fit
 #: in 100 characters); more records: JSON or CSV.

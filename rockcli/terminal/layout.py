@@ -1,7 +1,7 @@
 """Fitting a table to a width without cutting a number (issue 19, item 7).
 
 A table must fit the terminal (80 columns by default) and a piped or redirected report must
-stay within :data:`rockcli.report.table.FILE_WIDTH` columns. The reporter tries, in order,
+stay within :data:`rockcli.terminal.table.FILE_WIDTH` columns. The reporter tries, in order,
 until the columns fit:
 
 1. the boxed table (rich's default frame), each column its natural width;

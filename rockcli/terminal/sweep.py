@@ -1,7 +1,7 @@
 """The `rock sweep` summary as tables: the paper's Fig. 8 counts and the inconsistencies.
 
 Built from the summary document only (rockcli.studies.sweep.summary), rendered by the one
-generic renderer (:mod:`rockcli.report.table`).
+generic renderer (:mod:`rockcli.terminal.table`).
 """
 
 from __future__ import annotations
@@ -11,7 +11,7 @@ from collections.abc import Callable, Iterator, Sequence
 from contextlib import contextmanager
 from typing import Any
 
-from rockcli.report.table import Column, Report, Table
+from rockcli.terminal.table import Column, Report, Table
 
 COUNT_COLUMNS = (
     Column("cases", "cases", "", "{:d}"),

@@ -19,9 +19,10 @@ from rockcli.mechanics import (
     uplift_accelerations,
 )
 from rockcli.records.record import Record
-from rockcli.report.records import record_document, record_report
-from rockcli.report.table import Column, Report, Table, format_value, key_value
-from rockcli.report.tolerance import (
+from rockcli.studies.strength import restrainer_checks
+from rockcli.terminal.records import record_document, record_report
+from rockcli.terminal.table import Column, Report, Table, format_value, key_value
+from rockcli.terminal.tolerance import (
     check_document,
     engine_document,
     table_rows,
@@ -29,7 +30,6 @@ from rockcli.report.tolerance import (
     tolerance_warnings,
     verdict_caveat,
 )
-from rockcli.studies.strength import restrainer_checks
 
 if TYPE_CHECKING:
     from rockcli.studies.assess import AssessmentOutput
