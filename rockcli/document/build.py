@@ -171,7 +171,7 @@ def model_section(
                     ("M(0)", n(m["chain"]["inertia_by_side"]["1"]), "kg·m²")]  # fmt: skip
     rows = [
         (w("model.name"), m["name"], ""),
-        (w("model.kind"), m["kind"], ""),
+        (w("model.kind"), w(f"model.kind_{m['kind']}"), ""),
         *geometry,
         *shape,
         ("p", n(m["p"]), "rad/s"),

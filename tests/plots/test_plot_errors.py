@@ -9,7 +9,7 @@ from pathlib import Path
 import pytest
 
 from rockcli.errors import InputError
-from rockcli.terminal import plots
+from rockcli import plots
 from tests.cli.conftest import PULSES, ROOT
 from tests.plots.conftest import needs_matplotlib, run
 
