@@ -8,8 +8,8 @@ from pathlib import Path
 
 import pytest
 
-from rockcli.errors import InputError
 from rockcli import plots
+from rockcli.errors import InputError
 from tests.cli.conftest import PULSES, ROOT
 from tests.plots.conftest import needs_matplotlib, run
 
