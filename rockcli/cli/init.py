@@ -14,7 +14,7 @@ from rockcli.model.schema import Kind
 @click.command(
     "init",
     cls=RockCommand,
-    short_help="Write a commented template: a model (wall, altar, facade) or a report's project.",
+    short_help="Write a commented template: a model or a report's project.",
 )
 @click.argument("kind", type=click.Choice([*(k.value for k in Kind), "project"]))
 @click.option(

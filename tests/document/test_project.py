@@ -15,7 +15,7 @@ from rockcli.document.front import markdown_paragraphs
 from rockcli.document.project import TEMPLATE, load_project
 
 ROOT = Path(__file__).resolve().parents[2]
-PROJECT = ROOT / "examples" / "project.toml"
+PROJECT = ROOT / "examples" / "project" / "project.toml"
 FACADE = ROOT / "examples" / "two-storey-facade.toml"
 RICKER = ROOT / "records" / "ricker_Tp0.5s_0.5g.txt"
 
