@@ -134,8 +134,7 @@ def to_ed50(lon: float, lat: float) -> tuple[float, float]:
             "WGS84 coordinates need pyproj to be converted to ED50 (the hazard grid's datum)",
             where="project.datum",
             value="WGS84",
-            allowed=f"{install_hint('report')}, or give the coordinates in ED50 "
-            '(datum = "ED50")',
+            allowed=f'{install_hint("report")}, or give the coordinates in ED50 (datum = "ED50")',
         ) from None
     transformer = Transformer.from_crs("EPSG:4326", "EPSG:4230", always_xy=True)
     x, y = transformer.transform(lon, lat)
