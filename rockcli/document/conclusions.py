@@ -66,6 +66,32 @@ def conclusions_section(doc: Mapping[str, Any], w: Words) -> Section:
     return Section("conclusions", w("section.conclusions"), tuple(blocks))
 
 
+def suite_conclusions_section(doc: Mapping[str, Any], w: Words) -> Section:
+    """The conclusions of a suite's report: the code's risk index per limit state on the
+    suite's target, the suite's time histories by the code's rule (NTC 2018 §7.3.5), the
+    classification and what to do next."""
+    n = w.number
+    kin, suite = doc["kinematic"], doc["suite"]
+    blocks: list[Block] = []
+    rows = tuple((state, n(ratio, "{:.3f}"), w.passed(passed))
+                 for state, ratio, passed in risk_indices(kin))  # fmt: skip
+    if rows:
+        blocks.append(Grid(w("concl.zeta_caption"),
+                           (w("concl.state"), "ζ_E", w("concl.verdict")), rows,
+                           (False, True, False)))  # fmt: skip
+    failing = [state for state, _, passed in risk_indices(kin) if passed is False]
+    blocks.append(Paragraph(w("concl.code_unsafe", states=", ".join(failing)) if failing
+                            else w("concl.code_safe")))  # fmt: skip
+    blocks.append(Paragraph(w(f"concl.suite_{suite['verdict']}", n=suite["n"],
+                              measure=n(suite["measure"], "{:.3f}"),
+                              limit=n(suite["limit_ratio"], "{:.3g}"),
+                              overturned=suite["overturned_records"])))  # fmt: skip
+    blocks.append(Paragraph(w(f"class.{doc['classification']}"), "verdict"))
+    unsafe = bool(failing) or suite["verdict"] != "passes"
+    blocks.append(Paragraph(w("concl.next_unsafe" if unsafe else "concl.next_safe")))
+    return Section("conclusions", w("section.conclusions"), tuple(blocks))
+
+
 def restrainer_sentence(check: Mapping[str, Any], w: Words) -> Paragraph:
     """One restrainer's verification in the time history, in a sentence."""
     u = check.get("utilisation")

@@ -49,6 +49,7 @@ def build_suite_document(
     """
     from rockcli import __version__
     from rockcli.document.build import annex_sections
+    from rockcli.document.conclusions import suite_conclusions_section
     from rockcli.document.front import cover_rows, own_sections, signature_lines
 
     w = Words(lang)
@@ -60,6 +61,7 @@ def build_suite_document(
         kinematic_section(inputs, doc["kinematic"], w, records[0][0].block),
         suite_rocking_section(doc, records, w),
         suite_comparison_section(doc, w, named(doc, records)),
+        suite_conclusions_section(doc, w),
         software_section(inputs.casebook, w, inputs.casebook_place),
     )
     ordered = (sections[0], *own_sections(inputs.project), *sections[1:])

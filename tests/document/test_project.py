@@ -165,3 +165,19 @@ def test_the_word_copy_holds_the_same_report(tmp_path: Path) -> None:
 
     ratio = re.search(r"<td class=\"num\">(0,\d{4})</td>", text)
     assert ratio is not None and ratio.group(1) in cells
+
+
+@pytest.mark.skipif(not (ROOT.parent / "shared" / "ntc" / "AllegatoB.txt").is_file(),
+                    reason="the NTC hazard grid (../shared/ntc) is absent")  # fmt: skip
+def test_a_suites_report_has_its_conclusions(tmp_path: Path) -> None:
+    pytest.importorskip("jinja2")
+    grid = ROOT.parent / "shared" / "ntc" / "AllegatoB.txt"
+    suite = ROOT / "examples" / "suites" / "laquila-slv-scaled.toml"
+    html = tmp_path / "s.html"
+    code, _, err = run("report", str(ROOT / "examples" / "altar.toml"), "--suite", str(suite),
+                       "--allow-outside", "--hazard-grid", str(grid), "--casebook", "none",
+                       "-o", str(html))  # fmt: skip
+    assert code == 0, err
+    text = html.read_text(encoding="utf-8")
+    conclusions = text[text.index('id="conclusions"') : text.index('id="software"')]
+    assert "NTC 2018 §7.3.5" in conclusions and "Classificazione" in conclusions
