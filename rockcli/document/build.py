@@ -705,7 +705,7 @@ def casebook_blocks(casebook: Mapping[str, Any], w: Words) -> list[Block]:
                 skipped=casebook.get("skipped", 0))  # fmt: skip
     return [Paragraph(summary, "verdict" if not casebook["failed"] else "warning"),
             Grid(w("soft.casebook_caption"), headers, rows,
-                 (False, False, False, True, True, True, True, False))]  # fmt: skip
+                 (False, False, False, True, True, True, False, False))]  # fmt: skip
 
 
 #: Errors below this are shown as "< TINY_ERROR" (rounding; their digits differ by machine).

@@ -23,7 +23,19 @@ def render_html(doc: Document) -> str:
         trim_blocks=False,
         finalize=_shown,
     )
+    env.tests["token"] = is_token
     return env.get_template("report.html.j2").render(doc=doc)
+
+
+#: A run of characters without a space longer than this is an identifier, a path or a digest
+#: (a case id, a file, a SHA-256), not a word: its cell may break it anywhere, while every
+#: other cell breaks between words only (an Italian word is shorter).
+TOKEN_LENGTH = 18
+
+
+def is_token(cell: object) -> bool:
+    """True when a table cell holds a run longer than TOKEN_LENGTH without a space."""
+    return isinstance(cell, str) and any(len(part) > TOKEN_LENGTH for part in cell.split())
 
 
 def _shown(value: object) -> object:
