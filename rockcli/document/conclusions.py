@@ -37,6 +37,23 @@ def risk_indices(kin: Mapping[str, Any]) -> list[tuple[str, float | None, bool |
     return out
 
 
+def code_blocks(kin: Mapping[str, Any], w: Words) -> tuple[list[Block], list[str]]:
+    """The code's part of the conclusions: the risk index per limit state and the verdict in
+    a sentence; and the limit states it fails."""
+    indices = risk_indices(kin)
+    rows = tuple((state, w.number(ratio, "{:.3f}"), w.passed(passed))
+                 for state, ratio, passed in indices)  # fmt: skip
+    blocks: list[Block] = []
+    if rows:
+        blocks.append(Grid(w("concl.zeta_caption"),
+                           (w("concl.state"), "ζ_E", w("concl.verdict")), rows,
+                           (False, True, False)))  # fmt: skip
+    failing = [state for state, _, passed in indices if passed is False]
+    blocks.append(Paragraph(w("concl.code_unsafe", states=", ".join(failing)) if failing
+                            else w("concl.code_safe")))  # fmt: skip
+    return blocks, failing
+
+
 def conclusions_section(doc: Mapping[str, Any], w: Words) -> Section:
     """The conclusions, in the report's language."""
     n = w.number
@@ -44,15 +61,8 @@ def conclusions_section(doc: Mapping[str, Any], w: Words) -> Section:
     blocks: list[Block] = []
     if doc.get("mechanisms"):
         blocks.append(Paragraph(w("concl.governing", name=doc.get("governing") or "")))
-    rows = tuple((state, n(ratio, "{:.3f}"), w.passed(passed))
-                 for state, ratio, passed in risk_indices(kin))  # fmt: skip
-    if rows:
-        blocks.append(Grid(w("concl.zeta_caption"),
-                           (w("concl.state"), "ζ_E", w("concl.verdict")), rows,
-                           (False, True, False)))  # fmt: skip
-    failing = [state for state, _, passed in risk_indices(kin) if passed is False]
-    blocks.append(Paragraph(w("concl.code_unsafe", states=", ".join(failing)) if failing
-                            else w("concl.code_safe")))  # fmt: skip
+    code, failing = code_blocks(kin, w)
+    blocks += code
     blocks.append(Paragraph(w(f"concl.rocking_{rocking['verdict']}",
                               ratio=n(rocking["max_ratio"], "{:.3f}"))))  # fmt: skip
     blocks.append(Paragraph(w(f"class.{doc['classification']}"), "verdict"))
@@ -73,15 +83,8 @@ def suite_conclusions_section(doc: Mapping[str, Any], w: Words) -> Section:
     n = w.number
     kin, suite = doc["kinematic"], doc["suite"]
     blocks: list[Block] = []
-    rows = tuple((state, n(ratio, "{:.3f}"), w.passed(passed))
-                 for state, ratio, passed in risk_indices(kin))  # fmt: skip
-    if rows:
-        blocks.append(Grid(w("concl.zeta_caption"),
-                           (w("concl.state"), "ζ_E", w("concl.verdict")), rows,
-                           (False, True, False)))  # fmt: skip
-    failing = [state for state, _, passed in risk_indices(kin) if passed is False]
-    blocks.append(Paragraph(w("concl.code_unsafe", states=", ".join(failing)) if failing
-                            else w("concl.code_safe")))  # fmt: skip
+    code, failing = code_blocks(kin, w)
+    blocks += code
     blocks.append(Paragraph(w(f"concl.suite_{suite['verdict']}", n=suite["n"],
                               measure=n(suite["measure"], "{:.3f}"),
                               limit=n(suite["limit_ratio"], "{:.3g}"),

@@ -28,7 +28,7 @@ from dataclasses import replace
 from rockcli.mechanics import Block
 from rockcli.mechanisms.catalogue import build, same_height
 from rockcli.mechanisms.chain import TwoBlock
-from rockcli.mechanisms.rigid import placed
+from rockcli.mechanisms.rigid import composite, placed
 from rockcli.mechanisms.side import ChainSide
 from rockcli.mechanisms.table import instability, tabulate
 from rockcli.mechanisms.wall import MechanismSpec, Wall
@@ -40,14 +40,6 @@ class UpperMemberError(ValueError):
     def __init__(self, member: str, z: float, hinge: float, top: float):
         super().__init__(member)
         self.member, self.z, self.hinge, self.top = member, z, hinge, top
-
-
-def centroid(side: ChainSide) -> tuple[float, float]:
-    """The bodies' centroid at rest in the side frame (x, z) [m]."""
-    weight = sum(b.weight for _, b in side.bodies)
-    x = sum(b.weight * b.x for _, b in side.bodies) / weight
-    z = sum(b.weight * b.z for _, b in side.bodies) / weight
-    return x, z
 
 
 def members(plus: ChainSide, minus: ChainSide, top: float):
@@ -70,7 +62,8 @@ def flexure_block(wall: Wall, spec: MechanismSpec, block: Block) -> Block:
     (one-sided), or the smaller of the two sides' (two-sided: a ratio of 1 on either side is
     then never past that side's instability)."""
     plus, minus = build(wall, spec, 1), build(wall, spec, -1)
-    x, z = centroid(plus)
+    body = composite([b for _, b in plus.bodies])  # in the side frame of side +1
+    x, z = body.x, body.z
     chain = replace(tabulate(plus, minus), centroid=(x, z))
     assert spec.storey is not None
     top = wall.storeys[spec.storey - 1].height  # in the side frame: above the storey's base
@@ -79,7 +72,7 @@ def flexure_block(wall: Wall, spec: MechanismSpec, block: Block) -> Block:
         block,
         R=math.hypot(x, z),
         alpha=min(instability(side, chain.end) for side in sides),
-        mass=sum(b.mass for _, b in plus.bodies),
+        mass=body.mass,
         linearized=False,
         restrainers=members(plus, minus, top),
         loads=(),
