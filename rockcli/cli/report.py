@@ -1,4 +1,5 @@
-"""`rock report MODEL --record FILE -o REPORT.html [--pdf REPORT.pdf]`: the calculation report."""
+"""`rock report MODEL... --record FILE -o REPORT.html [--pdf REPORT.pdf]`: the calculation
+report (of several models, a building's walls, in one)."""
 
 from __future__ import annotations
 
@@ -35,8 +36,10 @@ NEEDS = {"html": ("jinja2", "matplotlib"), "pdf": ("jinja2", "matplotlib", "typs
 EXTRA = install_hint("report")
 
 
-@click.command(cls=RockCommand, short_help="The calculation report of MODEL, as HTML (and PDF).")
-@click.argument("model_path", metavar="MODEL", type=InputPath())
+@click.command(
+    cls=RockCommand, short_help="The calculation report of one model or more, as HTML (and PDF)."
+)
+@click.argument("model", nargs=-1, required=True, type=InputPath())
 @with_record_options(required=False)
 @suite_option(
     "A record suite file (TOML; rock suite check), or a folder of records with --target: the "
@@ -109,23 +112,42 @@ EXTRA = install_hint("report")
     "mechanism_name",
     default=None,
     metavar="NAME",
-    help="A wall's mechanism to report in full (default: the governing one); every mechanism "
+    help="A wall's mechanism to compare first (default: the governing one); every mechanism "
     "is listed either way.",
+)
+@click.option(
+    "--retrofit",
+    is_flag=True,
+    help="Where an element needs an intervention, size its tie-rod as rock retrofit does "
+    "(its defaults, the same record) and give the smallest diameter in the conclusions.",
+)
+@click.option(
+    "--mechanisms",
+    "mechanisms_shown",
+    type=click.Choice(["all", "governing"]),
+    default="all",
+    show_default=True,
+    help="A wall's mechanisms in full: all (a section each after the governing one's) or only "
+    "the governing one (the summary table lists every one either way).",
 )
 @force_option
 def report(
-    model_path, record_path, record_format, dt, units, scale, pga, suite_path, target,
+    model, record_path, record_format, dt, units, scale, pga, suite_path, target,
     allow_outside, html_path, pdf_path, lang, code_demand, edition, engine, ground, grid_file,
-    docx_path, project_path, casebook_place, mechanism_name, force,
+    docx_path, project_path, casebook_place, mechanism_name, retrofit, mechanisms_shown, force,
 ):  # fmt: skip
     """The calculation report of MODEL under a record (or a record suite): identification
-    and input digests, the model and its sketch, the site and demand, the kinematic
-    analysis, the rocking analysis, the comparison, and the software's section (theory,
-    field of use, the validation casebook run on this install), in Italian or English."""
+    and input digests, a summary of every mechanism, the model and its sketch, the site and
+    demand, the kinematic analysis, the rocking analysis, the comparison, every other
+    mechanism in full, the conclusions and the software's section (theory, field of use, the
+    validation casebook run on this install), in Italian or English. Several models (a
+    building's walls, under --record) make one report with one summary over all."""
     from rockcli.cli.assess import one_record_or_suite
     from rockcli.cli.compare import demand_for
     from rockcli.cli.main import INVOKED
     from rockcli.document.run import write_report, write_suite_report
+
+    model_paths = model  # MODEL... in the usage, MODEL in a message
 
     check_allow_outside(allow_outside, suite_path)
     with_suite = one_record_or_suite(record_path, suite_path, None, None, None, target)
@@ -140,13 +162,23 @@ def report(
               "command": shlex.join(INVOKED), "front": front, "docx_path": docx_path}  # fmt: skip
     if with_suite:
         check_record_options(None, record_format, dt, units, scale, pga)
-        if mechanism_name is not None:
-            from rockcli.errors import InputError
+        from rockcli.errors import InputError
 
+        if mechanism_name is not None:
             raise InputError("not with --suite yet", where="--mechanism", value=mechanism_name,
                              allowed="--mechanism with --record")  # fmt: skip
+        if retrofit:
+            raise InputError("not with --suite yet", where="--retrofit",
+                             allowed="--retrofit with --record")  # fmt: skip
+        if len(model_paths) > 1:
+            raise InputError(
+                "one model with --suite",
+                where="MODEL",
+                value=" ".join(model_paths),
+                allowed="one model with --suite; several models with --record",
+            )
         written = write_suite_report(
-            model_path, suite_path, target, grid_file, **common, allow_outside=allow_outside,
+            model_paths[0], suite_path, target, grid_file, **common, allow_outside=allow_outside,
             options={"code_demand": code_demand, "edition": edition, "engine": engine,
                      "ground": ground},
         )  # fmt: skip
@@ -155,15 +187,20 @@ def report(
         return
     # No check_hazard_grid: besides a site of the model, the grid serves the casebook's
     # hazard-grid cases in the report's §10.2 section.
+    if mechanism_name is not None and len(model_paths) > 1:
+        from rockcli.errors import InputError
+
+        raise InputError("names a mechanism of one model", where="--mechanism",
+                         value=mechanism_name, allowed="--mechanism with one model")  # fmt: skip
     record = load_record(record_path, record_format, dt, units, scale, pga)
     written = write_report(
-        model_path,
+        model_paths,
         record,
         **common,
-        files=(("model", model_path), ("record", record_path))
-        + ((("hazard_grid", grid_file),) if grid_file else ()),
+        files=(("record", record_path),) + ((("hazard_grid", grid_file),) if grid_file else ()),
         options={"code_demand": code_demand, "edition": edition, "engine": engine,
-                 "ground": ground, "grid_file": grid_file, "mechanism": mechanism_name},
+                 "ground": ground, "grid_file": grid_file, "mechanism": mechanism_name,
+                 "mechanisms": mechanisms_shown, "retrofit": retrofit},
     )  # fmt: skip
     for path, detail in written:
         announce_written(path, detail)

@@ -41,6 +41,7 @@ from typing import NamedTuple
 import numpy as np
 
 from rockcli.errors import InputError
+from rockcli.notes import Note
 from rockcli.numbers import ascii_float
 from rockcli.textfile import GRID_LIMIT, read_text
 
@@ -233,6 +234,11 @@ def _is_number(token: str) -> bool:
     except ValueError:
         return False
     return True
+
+
+def grid_source(site: tuple[float, float]) -> Note:
+    """Where a spectrum's ag, F0 and Tc* come from: the grid at the site (lon, lat)."""
+    return Note("grid_source", "hazard grid at {lon:.4f} E, {lat:.4f} N", lon=site[0], lat=site[1])
 
 
 def site_parameters(grid: HazardGrid, lon: float, lat: float, TR: float) -> SiteHazard:

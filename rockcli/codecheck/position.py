@@ -5,6 +5,8 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
+from rockcli.notes import Note
+
 #: C1 of the building period estimate T1 = C1·H^(3/4) for masonry and other buildings
 #: (NTC 2008 §7.3.3.2 and NTC 2018 §7.3.3.2, Eq. 7.3.5: C1 = 0.050).
 PERIOD_C1 = 0.050
@@ -76,7 +78,8 @@ def position(
     notes = []
     if T1 is None:
         T1 = building_period(H)
-        notes.append(f"T1 = 0.05·H^0.75 = {T1:.3f} s (NTC §7.3.3.2), not given")
+        notes.append(Note("T1_default", "T1 = 0.05·H^0.75 = {T1:.3f} s (NTC §7.3.3.2), not given",
+                          T1=float(T1)))  # fmt: skip
     g = gamma_ if gamma_ is not None else gamma(N or 1)
     p = psi_ if psi_ is not None else psi(Z, H)
     return Position(Z=Z, H=H, T1=T1, gamma=g, psi=p, notes=tuple(notes), damping=damping)

@@ -22,6 +22,7 @@ from rockcli.codecheck.kinematic import (
 )
 from rockcli.codecheck.result import Check, Method, RestrainerAction
 from rockcli.mechanics import Restrainer
+from rockcli.notes import Note
 
 #: The clause of the members' strength.
 STRENGTH_CLAUSE = "NTC 2018 §4.2.4.1.2"
@@ -85,11 +86,15 @@ def restrainer_action(
 
 
 #: The basis of the check of a member known only by its failure elongation (the paper's vault).
-DISPLACEMENT_BASIS = "its failure elongation fails_at (the paper's §4.2, Eq. 9–10)"
+DISPLACEMENT_BASIS = Note(
+    "basis_elongation", "its failure elongation fails_at (the paper's §4.2, Eq. 9–10)"
+)
 #: The basis of a member's given strength (yield forces, anchor capacity), not a steel's.
-GIVEN_BASIS = "its strength as given in the model (yield_pos/yield_neg, anchor_capacity)"
+GIVEN_BASIS = Note(
+    "basis_given", "its strength as given in the model (yield_pos/yield_neg, anchor_capacity)"
+)
 #: A member with neither a strength nor a failure elongation: nothing to verify it against.
-NO_BASIS = "no strength and no failure elongation in the model: not verified"
+NO_BASIS = Note("basis_none", "no strength and no failure elongation in the model: not verified")
 
 
 def member_clause(sp: Restrainer) -> str:

@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import math
 
-from rockcli.codecheck.demand import LimitStateDemand, range_maximum
+from rockcli.codecheck.demand import LimitStateDemand, Spectrum, range_maximum
 from rockcli.codecheck.kinematic import Capacity, failure_rotations
 from rockcli.codecheck.position import Position, height_amplification
 from rockcli.codecheck.result import Check, Location, Method, SpectralDemand
@@ -135,7 +135,7 @@ def nonlinear_checks(
     ]
     if pos.at_height:
         assert pos.T1 is not None
-        demand = spec.SDe(pos.T1) * pos.psi * pos.gamma * height_amplification(Ts, pos.T1)
+        demand = height_displacement(spec, pos, Ts)
         out.append(
             Check(
                 "ULS",
@@ -152,6 +152,13 @@ def nonlinear_checks(
             )
         )
     return out
+
+
+def height_displacement(spec: Spectrum, pos: Position, Ts: float) -> float:
+    """The displacement demand at height SDe(T1)·ψ·γ·(Ts/T1)²/√[(1 − Ts/T1)² + 0.02·Ts/T1] [m]
+    of a mechanism of secant period Ts [s] (Circolare 617/2009 §C8A.4.2.3), 5 % damping."""
+    assert pos.T1 is not None
+    return spec.SDe(pos.T1) * pos.psi * pos.gamma * height_amplification(Ts, pos.T1)
 
 
 def ground_demand(Ts: float, dem: LimitStateDemand) -> SpectralDemand:

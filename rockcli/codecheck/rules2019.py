@@ -23,6 +23,7 @@ from rockcli.codecheck.demand import (
 from rockcli.codecheck.kinematic import FAILURE_DROP, Capacity, failure_rotations
 from rockcli.codecheck.position import Position
 from rockcli.codecheck.result import Check, Location, Method, SpectralDemand
+from rockcli.notes import Note
 
 CLAUSE = "§C8.7.1.2.1"
 #: The clause of the displacement demand of a record or a site response: the maximum of the
@@ -51,10 +52,11 @@ BUILDING_DAMPING = 5.0
 PLATEAU_A, PLATEAU_B = 0.8, 1.1
 #: Reading adopted for ξ_k (spec/ntc.md, "Ambiguity"): a fraction in 1.1·ξ_k^−0.5, a
 #: percentage in √(1 + 0.0004·ξ_k²).
-FLOOR_READING = (
+FLOOR_READING = Note(
+    "floor_reading",
     "floor spectrum: ξ_k as a fraction (0.05) in 1.1·ξ_k^−0.5 (plateau factor 4.92 at 5 %) and "
     "in percent (5) in √(1 + 0.0004·ξ_k²); the text says percent for both, which would give a "
-    "plateau factor of 0.49 (docs/interpretations.md)"
+    "plateau factor of 0.49, not the amplification the clause intends",
 )
 
 
@@ -113,13 +115,14 @@ def limit_displacements(
 ) -> tuple[float | None, float | None, str]:
     """(d_SLV, d_SLC, note): 0.4·d0 and 0.6·d0 capped by a restrainer failure that removes more
     than half the capacity (d_SLV) and by the given local limit (both) [m] (§C8.7.1.2.1)."""
-    note = ""
+    note: str = ""
     slv = [] if cap.d0_star is None else [SLV_SHARE * cap.d0_star]
     slc = [] if cap.d0_star is None else [SLC_SHARE * cap.d0_star]
     for name, theta_f, drop in failure_rotations(cap.mech):
         if drop > FAILURE_DROP:
             slv.append(cap.d_star_at(theta_f))
-            note = f"d_SLV capped by the failure of {name} ({100 * drop:.0f} % capacity drop)"
+            note = Note("slv_capped", "d_SLV capped by the failure of {name} ({drop:.0f} % "
+                        "capacity drop)", name=name, drop=100 * drop)  # fmt: skip
     if limit is not None:
         slv.append(limit)
         slc.append(limit)

@@ -11,12 +11,13 @@ from __future__ import annotations
 
 import hashlib
 from collections.abc import Mapping, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from rockcli.document.content import Block, Document, Figure, Grid, Paragraph, Section
 from rockcli.document.tolerance import other_warnings, tolerance_paragraphs
+from rockcli.document.walls import Part, rekeyed
 from rockcli.document.words import Words
 
 #: The limit states of the code's verdict per edition (2019's verdict also sums them up as
@@ -29,6 +30,7 @@ RECORD_FACTS = ("name", "event", "station", "component", "npts", "dt", "duration
 if TYPE_CHECKING:
     from matplotlib.figure import Figure as MplFigure
 
+    from rockcli.codecheck.position import Position
     from rockcli.model.schema import Model
     from rockcli.records.record import Record
     from rockcli.studies.compare import ComparisonOutput
@@ -59,37 +61,80 @@ class Inputs:
     casebook_place: str = "annex"
 
 
-def build_document(
-    inputs: Inputs, out: ComparisonOutput, doc: Mapping[str, Any], lang: str
-) -> Document:
-    """The report of the comparison ``out`` (its JSON document ``doc``) in language ``lang``."""
+def build_document(parts: Sequence[Part], lang: str) -> Document:
+    """The report of the comparisons of one wall or several (``parts``: each its inputs, its
+    comparison, its JSON document and its other mechanisms in full) in language ``lang``."""
+    from rockcli.document.front import own_sections
+    from rockcli.document.walls import summary_section
 
     w = Words(lang)
-    record = inputs.record
-    if record is None:
+    inputs = parts[0].inputs
+    if inputs.record is None:
         raise ValueError("the report of one record needs its record (a suite: document.suite)")
-    from rockcli.document.conclusions import conclusions_section
-    from rockcli.document.front import own_sections
-
-    sections = (
-        identification(inputs, w),
-        *own_sections(inputs.project),
-        model_section(inputs, doc["rocking"]["model"], w, doc["rocking"].get("mechanism")),
-        demand_section(inputs, doc, record, w),
-        kinematic_section(inputs, doc["kinematic"], w, out.rocking.block),
-        rocking_section(doc["rocking"], out, record, w),
-        comparison_section(doc, w),
-        conclusions_section(doc, w),
-        software_section(inputs.casebook, w, inputs.casebook_place),
-    )
-    name = doc["rocking"]["model"]["name"]
+    many = len(parts) > 1
+    if many:
+        files = tuple(dict.fromkeys(f for part in parts for f in part.inputs.files))
+        inputs = replace(inputs, files=files)
+    summary = (summary_section(parts, w),) if many or parts[0].doc.get("mechanisms") else ()
+    body = [
+        rekeyed(s, f"w{i}", part.doc["rocking"]["model"]["name"]) if many else s
+        for i, part in enumerate(parts, 1)
+        for s in wall_sections(part, w)
+    ]
+    record = parts[0].doc["rocking"]["record"]["name"]
+    names = [part.doc["rocking"]["model"]["name"] for part in parts]
+    subtitle = (w("report.subtitle_many", n=len(parts), record=record) if many
+                else w("report.subtitle", model=names[0], record=record))  # fmt: skip
     return Document(
         lang=lang,
         title=w("report.title"),
-        subtitle=w("report.subtitle", model=name, record=doc["rocking"]["record"]["name"]),
-        sections=sections,
-        **front_matter(inputs, name, w),
+        subtitle=subtitle,
+        sections=(
+            identification(inputs, w),
+            *own_sections(inputs.project),
+            *summary,
+            *body,
+            software_section(inputs.casebook, w, inputs.casebook_place),
+        ),  # fmt: skip
+        **front_matter(inputs, ", ".join(names), w),
     )
+
+
+def mechanism_sections(part: Part, record: Any, w: Words) -> list[Section]:
+    """Each other mechanism of the wall in full, one section each: the body as rocked, its
+    code check, its time history and their classification."""
+    sections = []
+    for i, (out, doc) in enumerate(part.others, 1):
+        name = w.note(doc["kinematic"]["mechanism"])
+        body = model_section(part.inputs, doc["rocking"]["model"], w,
+                             doc["rocking"].get("mechanism"))  # fmt: skip
+        own = part.inputs.model.notes
+        blocks: list[Block] = [Paragraph(w("summary.mechanism_intro", name=name))]
+        blocks += [b for b in body.blocks[1:] if not (isinstance(b, Paragraph) and b.text == own)]
+        blocks += kinematic_section(part.inputs, doc["kinematic"], w, out.rocking.block).blocks
+        blocks += rocking_section(doc["rocking"], out, record, w).blocks
+        blocks.append(Paragraph(w(f"class.{doc['classification']}"), "verdict"))
+        section = Section(f"mechanism-{i}", w("section.mechanism", name=name), tuple(blocks))
+        sections.append(replace(rekeyed(section, f"m{i}"), key=section.key))
+    return sections
+
+
+def wall_sections(part: Part, w: Words) -> list[Section]:
+    """One wall's sections: its model, demand, code check, time history and their comparison
+    for the mechanism shown, the other mechanisms in full, the conclusions."""
+    from rockcli.document.conclusions import conclusions_section
+
+    inputs, out, doc = part.inputs, part.out, part.doc
+    record = inputs.record
+    return [
+        model_section(inputs, doc["rocking"]["model"], w, doc["rocking"].get("mechanism")),
+        demand_section(inputs, doc, record, w, out),
+        kinematic_section(inputs, doc["kinematic"], w, out.rocking.block),
+        rocking_section(doc["rocking"], out, record, w),
+        comparison_section(doc, w),
+        *mechanism_sections(part, record, w),
+        conclusions_section(doc, w, part.sizing),
+    ]
 
 
 def front_matter(inputs: Inputs, name: str, w: Words) -> dict[str, Any]:
@@ -162,11 +207,11 @@ def model_section(
     intro = w("model.intro", file=inputs.model_path)
     if mechanism is not None:
         shape = [(w("model.centroid_x"), n(m["b"]), "m"), (w("model.centroid_z"), n(m["h"]), "m")]
-        intro = w("model.intro_mechanism", file=inputs.model_path, name=mechanism["name"],
-                  type=mechanism["type"])  # fmt: skip
+        intro = w("model.intro_mechanism", file=inputs.model_path, name=w.note(mechanism["name"]),
+                  type=w(f"mtype.{mechanism['type']}"))  # fmt: skip
     geometry = [("R", n(m["R"]), "m"), ("α", n(m["alpha"]), "rad")]
     if mechanism is not None and m.get("chain") is not None:  # two blocks: α where V′ = 0
-        intro = w("model.intro_flexure", file=inputs.model_path, name=mechanism["name"])
+        intro = w("model.intro_flexure", file=inputs.model_path, name=w.note(mechanism["name"]))
         geometry = [(w("model.instability"), n(m["alpha"]), "rad"),
                     ("M(0)", n(m["chain"]["inertia_by_side"]["1"]), "kg·m²")]  # fmt: skip
     rows = [
@@ -176,7 +221,7 @@ def model_section(
         *shape,
         ("p", n(m["p"]), "rad/s"),
         (w("model.mass"), n(m["mass"], "{:.1f}") if m["mass"] else "—", "kg"),
-        (w("model.restitution"), f"{n(m['e'])} ({m['e_rule']})", ""),
+        (w("model.restitution"), f"{n(m['e'])} ({w.note(m['e_rule'])})", ""),
         (w("model.sides"), w(f"model.sides_{m['sides']}"), ""),
         (w("model.uplift"), n(m["uplift_acceleration_g"]), "g"),
     ]
@@ -227,7 +272,9 @@ def loads_grids(m: Mapping[str, Any], w: Words) -> list[Block]:
             (False, False, True, True, True, True, True, False),
         ))  # fmt: skip
         rules = [
-            f"{r['name']}: {r['strength_rule']}" for r in m["restrainers"] if r["strength_rule"]
+            f"{r['name']}: {w.note(r['strength_rule'])}"
+            for r in m["restrainers"]
+            if r["strength_rule"]
         ]
         grids += [Paragraph(w("model.strength_rule", rule=rule), "note") for rule in rules]
     return grids
@@ -247,8 +294,11 @@ def restrainer_row(r: Mapping[str, Any], w: Words) -> tuple[str, ...]:
 # --- site and demand ------------------------------------------------------------------------
 
 
-def demand_section(inputs: Inputs, doc: Mapping[str, Any], record: Record, w: Words) -> Section:
-    """The record, the code's hazard, the spectral values the check used, the spectra."""
+def demand_section(
+    inputs: Inputs, doc: Mapping[str, Any], record: Record, w: Words, out: ComparisonOutput
+) -> Section:
+    """The record, the code's hazard, the spectral values the check used, the spectra (and the
+    spectra at the mechanism's height when it stands above the ground: :func:`floor_figure`)."""
     from rockcli.codecheck.response import RecordSpectrum
     from rockcli.document.figures import spectra
 
@@ -263,7 +313,7 @@ def demand_section(inputs: Inputs, doc: Mapping[str, Any], record: Record, w: Wo
         tuple((w(f"record.{k}"), n(v) if isinstance(v, float) else str(v)) for k, v in shown),
     ))  # fmt: skip
     if rec.get("input_note"):
-        blocks.append(Paragraph(rec["input_note"], "note"))
+        blocks.append(Paragraph(w.note(rec["input_note"]), "note"))
     code_spectra = code_spectra_of(inputs.model, kin)
     if code_spectra:
         blocks.append(hazard_grid(code_spectra, kin, w))
@@ -272,13 +322,59 @@ def demand_section(inputs: Inputs, doc: Mapping[str, Any], record: Record, w: Wo
     blocks += record_demand_grids(kin["demand"], w)
     record_spectrum = RecordSpectrum.from_record(record, g=rocking["model"]["g"])
     marks = {"Ts": kin["Ts"]} if kin.get("Ts") else {}
+    code = [(st, sp) for st, sp, _ in code_spectra]
+    pos = check_position(inputs.model, kin["edition"], out.kinematic.mechanism)
     blocks.append(figure(
         "spectra",
-        spectra([(st, sp) for st, sp, _ in code_spectra], record_spectrum, record.name,
-                marks, w),
-        w("figure.spectra_caption"),
+        spectra(code, record_spectrum, record.name, marks, w),
+        w("figure.spectra_ground_caption" if pos.at_height else "figure.spectra_caption"),
     ))  # fmt: skip
+    if pos.at_height:
+        shaking = out.rocking.shaking  # the floor motion rocked; None: the record (--ground)
+        blocks.append(floor_figure(code, pos, kin["edition"], shaking, record.name,
+                                   rocking["model"]["g"], marks, w))  # fmt: skip
     return Section("demand", w("section.demand"), tuple(blocks))
+
+
+def check_position(model: Model, edition: str, mechanism: str | None) -> Position:
+    """Where the code check put the mechanism shown, by the check's own functions: the
+    model's [building] for its block (codecheck.position.position, as studies.kinematic.analyse
+    calls it), Z + the base hinge for a wall's mechanism (studies.catalogue.spec_position)."""
+    from rockcli.codecheck.position import position
+    from rockcli.model.derive_wall import is_wall, to_wall
+    from rockcli.studies.kinematic import check_settings
+
+    settings = check_settings(model, edition)
+    if is_wall(model) and mechanism is not None:
+        from rockcli.studies.catalogue import spec_position
+        from rockcli.studies.rocked import named_spec
+
+        wall = to_wall(model)
+        return spec_position(wall, named_spec(wall, mechanism), settings)
+    b = settings.building
+    return position(b.Z, b.H, b.N, b.T1, b.gamma, b.psi, b.damping)
+
+
+def floor_figure(
+    code: Sequence[tuple[str, Any]], pos: Position, edition: str, shaking: Record | None,
+    record_name: str, g: float, marks: Mapping[str, float], w: Words,
+) -> Figure:  # fmt: skip
+    """The spectra at the mechanism's height (figures.floor_spectra): the code's demand there
+    per limit state, and the response spectrum of the floor motion ``shaking`` the rocking
+    analysis used (None: it used the record itself, --ground, whose spectrum is at the ground)."""
+    from rockcli.codecheck import rules2019
+    from rockcli.codecheck.response import RecordSpectrum
+    from rockcli.document.figures import floor_spectra
+
+    n = w.number
+    motion = None if shaking is None else RecordSpectrum.from_record(shaking, g=g)
+    damping = ", ".join(f"{n(xi, '{:g}')} % {ls}" for ls, xi in rules2019.DAMPING.items())
+    where = w(f"figure.floor_caption_{edition}", Z=n(pos.Z, "{:g}"), T1=n(pos.T1, "{:.3g}"),
+              psi=n(pos.psi, "{:.3g}"), gamma=n(pos.gamma, "{:.3g}"),
+              xi_k=n(100.0 * pos.damping, "{:g}"), damping=damping)  # fmt: skip
+    rocked = "figure.floor_caption_motion" if motion is not None else "figure.floor_caption_ground"
+    fig = floor_spectra(code, pos, edition, motion, record_name, marks, w)
+    return figure("floor_spectra", fig, f"{where} {w(rocked)}")
 
 
 def code_spectra_of(model: Model, kin: Mapping[str, Any]) -> list[tuple[str, Any, str]]:
@@ -313,7 +409,8 @@ def hazard_grid(spectra: Sequence[tuple[str, Any, str]], kin: Mapping[str, Any],
         rows.append((state, w.number(TR, "{:.0f}"), w.number(sp.ag, "{:.4f}"),
                      w.number(sp.F0, "{:.3f}"), w.number(sp.Tc_star, "{:.3f}"),
                      w.number(sp.S, "{:.3f}"), w.number(sp.TB, "{:.3f}"),
-                     w.number(sp.TC, "{:.3f}"), w.number(sp.TD, "{:.3f}"), source))  # fmt: skip
+                     w.number(sp.TC, "{:.3f}"), w.number(sp.TD, "{:.3f}"),
+                     w.note(source)))  # fmt: skip
     headers = (w("col.limit_state"), "TR [a]", "ag [g]", "F0", "Tc* [s]", "S", "TB [s]",
                "TC [s]", "TD [s]", w("col.source"))  # fmt: skip
     return Grid(w("demand.hazard_caption"), headers, tuple(rows), (False, *([True] * 8), False))
@@ -322,8 +419,8 @@ def hazard_grid(spectra: Sequence[tuple[str, Any, str]], kin: Mapping[str, Any],
 def record_demand_grids(demand: Mapping[str, Any], w: Words) -> list[Block]:
     """The record's spectral values the check used, per limit state."""
     rows = [
-        (state, s["at"], w.number(s["T"]), w.number(s["damping"], "{:g}"), w.number(s["Se"]),
-         w.number(s["SDe"]))
+        (state, w.note(s["at"]), w.number(s["T"]), w.number(s["damping"], "{:g}"),
+         w.number(s["Se"]), w.number(s["SDe"]))
         for state, d in demand.items()
         for s in d.get("spectral_values", [])
     ]  # fmt: skip
@@ -373,8 +470,8 @@ def kinematic_section(
         blocks += [demand, Paragraph(w(f"kin.periods_{kin['edition']}"), "note")]
     if kin.get("restrainer_actions"):
         blocks.append(actions_grid(kin["restrainer_actions"], w))
-    blocks += [Paragraph(note, "note") for note in kin.get("notes", [])]
-    blocks += [Paragraph(text, "warning") for text in kin.get("warnings", [])]
+    blocks += [Paragraph(w.note(note), "note") for note in kin.get("notes", [])]
+    blocks += [Paragraph(w.note(text), "warning") for text in kin.get("warnings", [])]
     verdict = kin["verdict"]
     states = VERDICT_STATES[kin["edition"]]
     blocks.append(Paragraph(
@@ -389,7 +486,7 @@ def catalogue_grid(kin: Mapping[str, Any], w: Words) -> Grid:
     ULS, the governing one first (rockcli.studies.catalogue)."""
     n = w.number
     rows = tuple(
-        (m["name"], n(m["hinge_height"], "{:.3g}"), n(m["alpha0"]), n(m["M_star"] / 1e3),
+        (w.note(m["name"]), n(m["hinge_height"], "{:.3g}"), n(m["alpha0"]), n(m["M_star"] / 1e3),
          n(m["e_star"], "{:.3f}"), n(m["a0_star"], "{:.3f}"), n(m["d0_star"]),
          n(m["zeta"]["DLS"], "{:.3f}"), n(m["zeta"]["ULS"], "{:.3f}"))
         for m in kin["mechanisms"]
@@ -397,7 +494,7 @@ def catalogue_grid(kin: Mapping[str, Any], w: Words) -> Grid:
     uls = "ζ SLU" if w.lang == "it" else "ζ ULS"
     headers = (w("kin.catalogue_mechanism"), w("kin.catalogue_hinge"), "α0", "M* [t]", "e*",
                "a0* [m/s²]", "d0* [m]", "ζ SLD", uls)  # fmt: skip
-    return Grid(w("kin.catalogue_caption", shown=kin["mechanism"]), headers, rows,
+    return Grid(w("kin.catalogue_caption", shown=w.note(kin["mechanism"])), headers, rows,
                 (False, *([True] * 8)))  # fmt: skip
 
 
@@ -449,7 +546,7 @@ def checks_grid(kin: Mapping[str, Any], w: Words) -> Grid:
     rows = tuple(
         (w(f"ls.{c['limit_state']}"), w(f"kin.method_{c['method']}"), w(f"where.{c['location']}"),
          w.number(c["demand"]), w.number(c["capacity"]), c["unit"], w.number(c["ratio"], "{:.3f}"),
-         w.passed(c["passed"]), c["clause"])
+         w.passed(c["passed"]), w.note(c["clause"]))
         for c in kin["checks"]
     )  # fmt: skip
     headers = (w("col.limit_state"), w("col.method"), w("col.location"), w("col.demand"),
@@ -485,7 +582,7 @@ def actions_grid(actions: Sequence[Mapping[str, Any]], w: Words) -> Grid:
     rows = tuple(
         (a["name"], w(f"model.action_{a['code_action']}"), n(_kn(a["demand"])),
          n(_kn(a["strength"])), n(a["utilisation"], "{:.3f}"), w.yes_no(a["lost"]),
-         w.passed(a["passed"]), a["clause"])
+         w.passed(a["passed"]), w.note(a["clause"]))
         for a in actions
     )  # fmt: skip
     headers = (w("col.name"), w("col.code_action"), w("col.demand_kn"), w("col.strength_kn"),
@@ -537,7 +634,7 @@ def rocking_section(
     if forces is not None:
         blocks.append(figure("forces", forces, w("figure.forces_caption")))
     warnings = other_warnings(rocking.get("warnings", []), rocking)
-    blocks += [Paragraph(text, "warning") for text in warnings]
+    blocks += [Paragraph(w.note(text), "warning") for text in warnings]
     blocks.append(Paragraph(w(f"rock.verdict_{rocking['verdict']}",
                               ratio=n(rocking["max_ratio"])), "verdict"))  # fmt: skip
     blocks += other_mechanisms(out, w)
@@ -553,7 +650,7 @@ def other_mechanisms(out: ComparisonOutput, w: Words) -> list[Block]:
         return []
     n = w.number
     rows = tuple(
-        (name, polarity_label({"polarity": r.polarity, "mirror_of": r.mirror_of}, w),
+        (w.note(name), polarity_label({"polarity": r.polarity, "mirror_of": r.mirror_of}, w),
          w(f"status.{r.status}"), n(r.max_ratio), n(r.t_uplift, "{:.3f}"),
          n(r.t_overturn, "{:.3f}"), str(r.impacts))
         for name, rocking in others
@@ -598,9 +695,9 @@ def restrainer_check_notes(checks: Sequence[Mapping[str, Any]], w: Words) -> lis
     for c in checks:
         duct, anchor = c["ductility"], c["anchor"]
         key = "rock.check_strength" if c["strength"] is not None else "rock.check_displacement"
-        parts = [w(key, name=c["name"], rule=c["rule"])]
+        parts = [w(key, name=c["name"], rule=w.note(c["rule"]))]
         if duct["capacity"] is not None and duct["rule"] != c["rule"]:
-            parts.append(w("rock.check_ductility", rule=duct["rule"]))
+            parts.append(w("rock.check_ductility", rule=w.note(duct["rule"])))
         if anchor is not None:
             key = "rock.check_anchor_missing" if anchor["capacity"] is None else "rock.check_anchor"
             parts.append(w(key, force=w.number(anchor["demand"] / 1e3)))
@@ -631,33 +728,13 @@ def comparison_section(doc: Mapping[str, Any], w: Words) -> Section:
     if act.get("t_uplift") is not None:
         blocks.insert(2, Paragraph(w("cmp.uplift_at", t=n(act["t_uplift"], "{:.2f}"))))
     if doc.get("mechanisms"):
-        blocks.append(mechanisms_grid(doc, w))
-        blocks += [Paragraph(w("cmp.not_rocked_why", name=m["name"], reason=m["not_rocked"]),
-                             "note")
+        blocks += [Paragraph(w("cmp.not_rocked_why", name=w.note(m["name"]),
+                               reason=w.note(m["not_rocked"])), "note")
                    for m in doc["mechanisms"] if m.get("not_rocked")]  # fmt: skip
     blocks.append(Paragraph(w("cmp.unlike")))
     warnings = other_warnings(doc.get("warnings", []), doc["rocking"])
-    blocks += [Paragraph(text, "warning") for text in warnings]
+    blocks += [Paragraph(w.note(text), "warning") for text in warnings]
     return Section("comparison", w("section.comparison"), tuple(blocks))
-
-
-def mechanisms_grid(doc: Mapping[str, Any], w: Words) -> Grid:
-    """Every mechanism of a wall under the record (rockcli.terminal.compare's document): its
-    code ULS verdict, its rocking and their classification, the governing one first."""
-    rows = []
-    for m in doc["mechanisms"]:
-        rocking = m["rocking"]
-        rows.append((
-            m["name"],
-            w.passed(m["code"].get("ULS")),
-            "—" if rocking is None else w.number(rocking["max_ratio"], "{:.3f}"),
-            w("cmp.not_rocked") if rocking is None else w(f"cmp.rocked_{rocking['verdict']}"),
-            m["classification"] or "—",
-        ))  # fmt: skip
-    headers = (w("cmp.mechanism"), w("cmp.code_uls"), w("cmp.max_ratio"),
-               w("cmp.rocking_verdict"), w("cmp.classification"))  # fmt: skip
-    caption = w("cmp.mechanisms_caption", shown=doc["kinematic"].get("mechanism", ""))
-    return Grid(caption, headers, tuple(rows), (False, False, True, False, False))
 
 
 # --- the software (NTC 2018 §10.2) ----------------------------------------------------------
@@ -688,12 +765,26 @@ def annex_sections(casebook: Any | None, w: Words, place: str) -> tuple[Section,
                     (casebook_blocks(casebook, w)[1],)),)  # fmt: skip
 
 
+#: The project's documents a case's source may point to, and their names in a report (a
+#: reviewer has the report, not the repository).
+GUIDES = {"docs/validation.md": "validation", "docs/physics.md": "physics",
+          "docs/mechanisms.md": "mechanisms"}  # fmt: skip
+
+
+def cited(source: str, w: Words) -> str:
+    """A case's source with the project's documents named, not given as repository paths."""
+    for path, guide in GUIDES.items():
+        source = source.replace(path, w(f"case.guide_{guide}"))
+    return source
+
+
 def casebook_blocks(casebook: Mapping[str, Any], w: Words) -> list[Block]:
     """The validation casebook's cases as run on this install (`rock validate`'s document),
     and the count."""
     n = w.number
     rows = tuple(
-        (c["id"], c["source"], f"{c['quantity']} [{c['unit']}]" if c.get("unit") else c["quantity"],
+        (c["id"], cited(c["source"], w),
+         f"{c['quantity']} [{c['unit']}]" if c.get("unit") else c["quantity"],
          n(c["expected"], "{:.6g}"), n(c["obtained"], "{:.6g}"), error_text(c.get("error"), w),
          f"{n(c['tolerance'], '{:.1e}')} ({w('tol.' + c['tolerance_type'])})",
          w(f"case.{c['status']}"))

@@ -54,13 +54,23 @@ def code_blocks(kin: Mapping[str, Any], w: Words) -> tuple[list[Block], list[str
     return blocks, failing
 
 
-def conclusions_section(doc: Mapping[str, Any], w: Words) -> Section:
-    """The conclusions, in the report's language."""
+def is_unsafe(doc: Mapping[str, Any]) -> bool:
+    """Whether the comparison asks for an intervention: a limit state of the code check of the
+    mechanism shown fails, another mechanism fails the ULS, or the time history overturns."""
+    failing = [state for state, _, passed in risk_indices(doc["kinematic"]) if passed is False]
+    others = [m for m in doc.get("mechanisms", ()) if m["code"].get("ULS") is False]
+    return bool(failing or others) or doc["rocking"]["verdict"] == "overturns"
+
+
+def conclusions_section(doc: Mapping[str, Any], w: Words, sizing: Any = None) -> Section:
+    """The conclusions, in the report's language; ``sizing``: what rock retrofit found for
+    the model's tie-rod (rockcli.studies.retrofit.run.Sizing; "not needed" when the element
+    is safe, None when not asked)."""
     n = w.number
     kin, rocking = doc["kinematic"], doc["rocking"]
     blocks: list[Block] = []
     if doc.get("mechanisms"):
-        blocks.append(Paragraph(w("concl.governing", name=doc.get("governing") or "")))
+        blocks.append(Paragraph(w("concl.governing", name=w.note(doc.get("governing") or ""))))
     code, failing = code_blocks(kin, w)
     blocks += code
     blocks.append(Paragraph(w(f"concl.rocking_{rocking['verdict']}",
@@ -69,11 +79,29 @@ def conclusions_section(doc: Mapping[str, Any], w: Words) -> Section:
     blocks += [restrainer_sentence(c, w) for c in rocking.get("restrainer_checks", ())]
     others = [m for m in doc.get("mechanisms", ()) if m["code"].get("ULS") is False]
     if others:
-        names = ", ".join(f"'{m['name']}'" for m in others)
+        names = ", ".join(f"'{w.note(m['name'])}'" for m in others)
         blocks.append(Paragraph(w("concl.mechanisms_unsafe", names=names)))
-    unsafe = bool(failing or others) or rocking["verdict"] == "overturns"
+    unsafe = is_unsafe(doc)
     blocks.append(Paragraph(w("concl.next_unsafe" if unsafe else "concl.next_safe")))
+    if sizing is not None:
+        blocks.append(sizing_paragraph(sizing, w))
     return Section("conclusions", w("section.conclusions"), tuple(blocks))
+
+
+def sizing_paragraph(sizing: Any, w: Words) -> Paragraph:
+    """What rock retrofit found for the model's tie-rod, in a sentence."""
+    if sizing == "not needed":
+        return Paragraph(w("concl.retrofit_not_needed"))
+    if not sizing.diameters_mm:
+        return Paragraph(w("concl.retrofit_skipped", reason=w.note(sizing.reason)))
+    values = {"rod": sizing.rod, "grade": sizing.grade, "bars": sizing.bars,
+              "lo": w.number(sizing.diameters_mm[0], "{:g}"),
+              "hi": w.number(sizing.diameters_mm[-1], "{:g}")}  # fmt: skip
+    if sizing.chosen is None:  # the failures of the largest diameter
+        why = getattr(sizing.reason, "values", {}).get("why", sizing.reason)
+        return Paragraph(w("concl.retrofit_none", reason=w.note(why), **values), "warning")
+    return Paragraph(w("concl.retrofit_found", d=w.number(sizing.chosen["diameter_mm"], "{:g}"),
+                       **values), "verdict")  # fmt: skip
 
 
 def suite_conclusions_section(doc: Mapping[str, Any], w: Words) -> Section:

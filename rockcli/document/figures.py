@@ -19,9 +19,12 @@ from rockcli.document.words import Words
 from rockcli.plots.phrases import Say
 
 if TYPE_CHECKING:
+    import numpy as np
     from matplotlib.axes import Axes
     from matplotlib.figure import Figure as MplFigure
 
+    from rockcli.codecheck.position import Position
+    from rockcli.codecheck.spectra import ElasticSpectrum
     from rockcli.dynamics.result import RockingRun
     from rockcli.records.record import Record
 
@@ -29,6 +32,11 @@ if TYPE_CHECKING:
 PAGE_WIDTH = 6.7
 #: Periods of the spectra figure [s].
 SPECTRUM_PERIODS = (0.0, 4.0, 401)
+#: Room above the highest curve of the spectra at height, a share of the axis (the names of
+#: the periods marked stand there).
+HEADROOM = 0.12
+#: Periods closer than this have their names one under the other [s].
+MARK_GAP = 0.2
 LS_COLORS = {"SLO": "tab:gray", "SLD": "tab:green", "SLV": "tab:red", "SLC": "tab:purple"}
 
 
@@ -150,10 +158,7 @@ def spectra(
         Se, _ = record.curve(periods[1:])
         ax.plot(periods[1:], Se, color="k", lw=1.0, label=words("figure.record_spectrum",
                                                                    record=record_name))  # fmt: skip
-    for name, T in marks.items():
-        ax.axvline(T, color="0.4", lw=0.8, ls="--")
-        ax.annotate(name, (T, 1.0), xycoords=("data", "axes fraction"), xytext=(3, -12),
-                    textcoords="offset points", fontsize="small")  # fmt: skip
+    _mark_periods(ax, marks)
     ax.set_xlim(0.0, SPECTRUM_PERIODS[1])
     ax.set_ylim(bottom=0.0)
     ax.set_xlabel(words("figure.period"))
@@ -161,6 +166,107 @@ def spectra(
     ax.grid(alpha=0.3)
     ax.legend(fontsize="small")
     return fig
+
+
+def floor_spectra(
+    code: Sequence[tuple[str, Any]], pos: Position, edition: str, motion: Any | None,
+    record_name: str, marks: Mapping[str, float], words: Words,
+) -> MplFigure:  # fmt: skip
+    """The spectra at the mechanism's height Z [g]: per limit state the code's demand at height
+    (:func:`floor_curve`, the check's own rule), the 5 %-damped response spectrum of the floor
+    motion the rocking analysis used (RecordSpectrum; None: it used the record itself), the
+    building's T1 and the periods of ``marks`` marked."""
+    import numpy as np
+
+    periods = np.linspace(*SPECTRUM_PERIODS)
+    Z = words.number(pos.Z, "{:g}")
+    fig = new_figure(PAGE_WIDTH, 4.0)
+    ax = fig.add_subplot()
+    for state, spectrum in code:
+        T, values = floor_curve(spectrum, state, pos, edition, periods)
+        if len(T):
+            ax.plot(T, values, color=LS_COLORS.get(state, "k"), lw=1.4,
+                    label=words(f"figure.floor_spectrum_{edition}", Z=Z, state=state))  # fmt: skip
+    if motion is not None:
+        Se, _ = motion.curve(periods[1:])
+        ax.plot(periods[1:], Se, color="k", lw=1.0,
+                label=words("figure.floor_record_spectrum", record=record_name, Z=Z))  # fmt: skip
+    assert pos.T1 is not None
+    _mark_periods(ax, {"T1": pos.T1, **marks})
+    ax.margins(y=HEADROOM)  # the marks' names above the peaks, which lie near T1
+    ax.set_xlim(0.0, SPECTRUM_PERIODS[1])
+    ax.set_ylim(bottom=0.0)
+    ax.set_xlabel(words("figure.period"))
+    ax.set_ylabel(words("figure.se"))
+    ax.grid(alpha=0.3)
+    # Under the axes: the curves peak anywhere from T1 to the record's periods.
+    fig.legend(loc="outside lower center", fontsize="small")
+    return fig
+
+
+def _mark_periods(ax: Axes, marks: Mapping[str, float]) -> None:
+    """A dashed vertical line at each period, its name at the top of the axes (a name below
+    the one before when their periods are closer than MARK_GAP)."""
+    previous: list[float] = []
+    for name, T in marks.items():
+        below = sum(abs(T - t) < MARK_GAP for t in previous)
+        previous.append(T)
+        ax.axvline(T, color="0.4", lw=0.8, ls="--")
+        ax.annotate(name, (T, 1.0), xycoords=("data", "axes fraction"),
+                    xytext=(3, -12 - 11 * below), textcoords="offset points",
+                    fontsize="small")  # fmt: skip
+
+
+def floor_curve(
+    spectrum: ElasticSpectrum, state: str, pos: Position, edition: str, periods: np.ndarray
+) -> tuple[np.ndarray, np.ndarray]:
+    """(T [s], S [g]): the demand at the mechanism's height ``pos`` of one limit state's
+    ground spectrum, by the edition's rule (:func:`floor_curve_2019`, :func:`floor_curve_2009`);
+    empty for a limit state the edition does not check (studies.kinematic.LIMIT_STATES)."""
+    import numpy as np
+
+    from rockcli.studies.kinematic import LIMIT_STATES
+
+    if state not in LIMIT_STATES[edition]:
+        return np.array([]), np.array([])
+    if edition == "2009":
+        return floor_curve_2009(spectrum, pos, periods)
+    return floor_curve_2019(spectrum, state, pos, periods)
+
+
+def floor_curve_2019(
+    spectrum: ElasticSpectrum, state: str, pos: Position, periods: np.ndarray
+) -> tuple[np.ndarray, np.ndarray]:
+    """(T, S_eZ(T)) [s, g]: the floor spectrum of Circolare 7/2019 §C7.2.3 as the check reads
+    it (§C8.7.1.2.1): rules2019.floor_spectrum with a_Z = rules2019.floor_acceleration of the
+    spectrum at the position, the building's T1 and damping ξ_k, the mechanism's damping of
+    the limit state's check (rules2019.DAMPING)."""
+    import numpy as np
+
+    from rockcli.codecheck import rules2019
+
+    assert pos.T1 is not None
+    a_z = rules2019.floor_acceleration(spectrum, pos)
+    xi, xi_k = rules2019.DAMPING[state], 100.0 * pos.damping
+    values = [rules2019.floor_spectrum(float(T), a_z, pos.T1, xi, xi_k) for T in periods]
+    return np.asarray(periods, dtype=float), np.array(values)
+
+
+def floor_curve_2009(
+    spectrum: ElasticSpectrum, pos: Position, periods: np.ndarray
+) -> tuple[np.ndarray, np.ndarray]:
+    """(T, S) [s, g], T > 0: the displacement demand at height of Circolare 617/2009
+    §C8A.4.2.3 (rules2009.height_displacement, read there at T = Ts) as a pseudo-acceleration
+    S = d·(2π/T)²/g (NTC 2008 §3.2.3.2.2, Eq. 3.2.12). It tends to Se(T1)·ψ·γ as T → 0, the
+    demand of the linear checks at height (§C8A.4.2.1–C8A.4.2.2)."""
+    import numpy as np
+
+    from rockcli.codecheck import rules2009
+
+    T = np.asarray(periods, dtype=float)
+    T = T[T > 0.0]
+    d = np.array([rules2009.height_displacement(spectrum, pos, float(t)) for t in T])
+    return T, d * (2.0 * math.pi / T) ** 2 / spectrum.g
 
 
 def phrases(words: Words) -> Say:

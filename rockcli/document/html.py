@@ -24,6 +24,7 @@ def render_html(doc: Document) -> str:
         finalize=_shown,
     )
     env.tests["token"] = is_token
+    env.filters["joined"] = slashes_joined
     return env.get_template("report.html.j2").render(doc=doc)
 
 
@@ -36,6 +37,12 @@ TOKEN_LENGTH = 18
 def is_token(cell: object) -> bool:
     """True when a table cell holds a run longer than TOKEN_LENGTH without a space."""
     return isinstance(cell, str) and any(len(part) > TOKEN_LENGTH for part in cell.split())
+
+
+def slashes_joined(text: str) -> str:
+    """A table header with no line break after a slash: "max θ/α", "[kN/m]" are one word
+    (a browser would otherwise break after the slash of a narrow column)."""
+    return text.replace("/", "/\u2060")
 
 
 def _shown(value: object) -> object:

@@ -46,7 +46,7 @@ def report_front(front: dict[str, Any] | None, grid_file: str | None) -> dict[st
 
 
 def write_report(
-    model_path: str,
+    model_paths: Sequence[str],
     record: Record,
     *,
     html_path: str,
@@ -58,22 +58,77 @@ def write_report(
     front: dict[str, Any] | None = None,
     docx_path: str | None = None,
 ) -> list[tuple[str, str]]:
-    """Run both analyses of the model under the record, write the report; what was written
-    (``front``: the project and where the casebook goes, :func:`report_front`)."""
+    """Run both analyses of each model under the record, write one report; what was written
+    (``front``: the project and where the casebook goes, :func:`report_front`; ``files``:
+    the record's and the grid's, each model's added; ``options["mechanisms"]``: "all" shows
+    every mechanism of a wall in full, "governing" only the one compared).
+
+    Every model is read and checked before any analysis runs."""
     from rockcli.document.build import Inputs, build_document
+    from rockcli.document.walls import Part
     from rockcli.model.load import load_model
-    from rockcli.studies.compare import check_code_demand, compare_model_output
+    from rockcli.studies.compare import check_code_demand
+
+    options = dict(options)
+    shown = options.pop("mechanisms", "all")
+    retrofit = options.pop("retrofit", False)
+    models = [load_model(path) for path in model_paths]
+    for path, model in zip(model_paths, models, strict=True):
+        check_code_demand(model, options["code_demand"], file=path)
+    front = report_front(front, options.get("grid_file"))
+    parts = []
+    for path, model in zip(model_paths, models, strict=True):
+        out, doc, others = wall_comparisons(model, record, path, options, shown)
+        inputs = Inputs(path, model, record, (("model", path), *files), command, report_date(),
+                        **front)  # fmt: skip
+        sizing = wall_sizing(path, record, doc, options) if retrofit else None
+        parts.append(Part(inputs, out, doc, others, sizing))
+    document = build_document(parts, lang)
+    verdict = ", ".join(str(part.doc["classification"]) for part in parts)
+    return write_document(document, html_path, pdf_path, verdict, docx_path)
+
+
+def wall_comparisons(
+    model: Any, record: Record, path: str, options: dict[str, Any], shown: str
+) -> tuple[Any, dict[str, Any], tuple[tuple[Any, dict[str, Any]], ...]]:
+    """A model's comparison and its document, and each other mechanism's that the time
+    history rocks (with ``shown`` "all"), each with its document."""
+    from rockcli.studies.compare import compare_model_output, mechanism_output
+
+    out = compare_model_output(model, record, file=path, history=True, **options)
+    doc = comparison_document(out, record)
+    if shown != "all":
+        return out, doc, ()
+    others = []
+    for m in out.mechanisms:
+        if m.name == out.kinematic.mechanism or m.rocking is None:
+            continue
+        one = mechanism_output(model, record, out, m.name, engine=options.get("engine", "fast"),
+                               ground=options.get("ground", False), file=path)  # fmt: skip
+        others.append((one, comparison_document(one, record)))
+    return out, doc, tuple(others)
+
+
+def wall_sizing(path: str, record: Record, doc: dict[str, Any], options: dict[str, Any]) -> Any:
+    """What rock retrofit finds for the model's tie-rod when the comparison asks for an
+    intervention ("not needed" otherwise)."""
+    from rockcli.document.conclusions import is_unsafe
+    from rockcli.studies.retrofit.run import Analyses, size_rod
+
+    if not is_unsafe(doc):
+        return "not needed"
+    analyses = Analyses(options.get("engine", "fast"), options.get("edition"),
+                        options.get("ground", False))  # fmt: skip
+    return size_rod(path, record, analyses)
+
+
+def comparison_document(out: Any, record: Record) -> dict[str, Any]:
+    """`rock compare --format json`'s document with its warnings."""
     from rockcli.terminal.compare import comparison_output_document, comparison_warnings
 
-    model = load_model(model_path)
-    check_code_demand(model, options["code_demand"], file=model_path)
-    out = compare_model_output(model, record, file=model_path, history=True, **options)
     doc = comparison_output_document(out, record)
     doc["warnings"] = comparison_warnings(doc)
-    front = report_front(front, options.get("grid_file"))
-    inputs = Inputs(model_path, model, record, tuple(files), command, report_date(), **front)
-    document = build_document(inputs, out, doc, lang)
-    return write_document(document, html_path, pdf_path, doc["classification"], docx_path)
+    return doc
 
 
 def write_document(

@@ -107,7 +107,7 @@ def suite_demand_section(
     ), "verdict" if compat["passed"] else "warning"))  # fmt: skip
     blocks.append(figure("compatibility", compatibility(check, w),
                          w("figure.compatibility_caption")))  # fmt: skip
-    blocks += [Paragraph(note, "note") for note in doc.get("notes", [])]
+    blocks += [Paragraph(w.note(note), "note") for note in doc.get("notes", [])]
     return Section("demand", w("section.demand"), tuple(blocks))
 
 
@@ -163,6 +163,6 @@ def suite_comparison_section(
         Paragraph(w(f"class.{doc['classification']}"), "verdict"),
         Paragraph(w("cmp.unlike")),
     ]
-    blocks += [Paragraph(text, "warning")
+    blocks += [Paragraph(w.note(text), "warning")
                for text in other_suite_warnings(doc.get("warnings", []), records)]  # fmt: skip
     return Section("comparison", w("section.comparison"), tuple(blocks))

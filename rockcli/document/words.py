@@ -13,6 +13,8 @@ from functools import cache
 from importlib import resources
 from typing import Any
 
+from rockcli.notes import Items, Note
+
 #: The report's languages, the filing language first (the default).
 LANGUAGES = ("it", "en")
 
@@ -57,6 +59,28 @@ class Words:
         text = fmt.format(value)
         return text.replace(".", ",") if self.lang == "it" else text
 
+    def note(self, text: str) -> str:
+        """A note or warning of the analyses in this language: a :class:`Note` from the
+        catalogue's ``[note]`` template of its key (its values written in this language too),
+        any other text as it is (the model's own words, a name)."""
+        if isinstance(text, Items):
+            return format(self._localised(text), "")
+        if not isinstance(text, Note) or self.lang == "en":
+            return str(text)
+        template = catalogue(self.lang).get(f"note.{text.key}")
+        if template is None:
+            return str(text)
+        return template.format(**{k: self._localised(v) for k, v in text.values.items()})
+
+    def _localised(self, value: Any) -> Any:
+        if isinstance(value, Note):
+            return self.note(value)
+        if isinstance(value, Items):
+            return Items((self._localised(v) for v in value), value.sep)
+        if isinstance(value, float):
+            return _Decimal(value, "," if self.lang == "it" else ".")
+        return value
+
     def yes_no(self, value: bool | None) -> str:
         return "—" if value is None else self("word.yes" if value else "word.no")
 
@@ -66,3 +90,14 @@ class Words:
             if value is None
             else (self("word.passed") if value else self("word.failed"))
         )
+
+
+@dataclass(frozen=True)
+class _Decimal:
+    """A float formatted by its spec, then written with the language's decimal mark."""
+
+    value: float
+    mark: str
+
+    def __format__(self, spec: str) -> str:
+        return format(self.value, spec).replace(".", self.mark)

@@ -38,6 +38,7 @@ from rockcli.mechanics import (
     spring_failure_rotation,
     uplift_accelerations,
 )
+from rockcli.notes import Note
 
 #: Most samples of the free tail: up to this many, at the record's interval dt; past it, the
 #: tail (from one dt after the record to its end) is split into TAIL_SAMPLES equal intervals.
@@ -417,14 +418,16 @@ def _nonfinite_name(out_i: np.ndarray, block: Block) -> str:
 def _with_warnings(run: RockingRun) -> RockingRun:
     notes = []
     if run.chattering:
-        notes.append(
-            f"polarity {run.polarity:+d}: small-amplitude chattering "
-            f"(max θ/α = {run.max_ratio:.3g} with {run.impacts} impacts): the peak is sensitive "
-            f"to α and e; read it as an order of magnitude; impact count depends on the rest "
-            f"threshold {run.rest_velocity:g} rad/s"
-        )
+        notes.append(Note(
+            "chattering", "polarity {polarity:+d}: small-amplitude chattering (max θ/α = "
+            "{ratio:.3g} with {impacts} impacts): the peak is sensitive to α and e; read it as an "
+            "order of magnitude; impact count depends on the rest threshold {rest:g} rad/s",
+            polarity=run.polarity, ratio=float(run.max_ratio), impacts=run.impacts,
+            rest=float(run.rest_velocity),
+        ))  # fmt: skip
     if run.status in (RunStatus.EVENT_LIMIT, RunStatus.STEP_LIMIT, RunStatus.NONFINITE):
-        notes.append(f"polarity {run.polarity:+d}: {run.message}")
+        notes.append(Note("run_stopped", "polarity {polarity:+d}: {message}",
+                          polarity=run.polarity, message=run.message))  # fmt: skip
     if not notes:
         return run
     from dataclasses import replace
@@ -477,7 +480,10 @@ def mirror_run(run: RockingRun) -> RockingRun:
         history = replace(history, theta=-history.theta, omega=-history.omega)
     polarity = -run.polarity
     warnings = tuple(
-        w.replace(f"polarity {run.polarity:+d}:", f"polarity {polarity:+d}:") for w in run.warnings
+        Note(w.key, w.template, **{**w.values, "polarity": polarity})
+        if isinstance(w, Note) and "polarity" in w.values
+        else w.replace(f"polarity {run.polarity:+d}:", f"polarity {polarity:+d}:")
+        for w in run.warnings
     )
     return replace(
         run,

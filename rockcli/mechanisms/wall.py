@@ -22,6 +22,7 @@ from dataclasses import dataclass, field
 from enum import StrEnum
 
 from rockcli.mechanics import Restrainer
+from rockcli.notes import Note
 
 
 @dataclass(frozen=True)
@@ -104,6 +105,8 @@ class MechanismType(StrEnum):
 
 #: ``hinge_height`` of a vertical flexure whose hinge the code finds (the lowest α0).
 OPTIMAL = "optimal"
+#: The name of the whole wall's (or block's) overturning about its base.
+WHOLE_WALL = Note("name_whole_wall", "overturning, whole wall")
 
 
 @dataclass(frozen=True)

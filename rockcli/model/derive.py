@@ -60,6 +60,7 @@ from rockcli.model.schema import (
     StoppedSide,
 )
 from rockcli.model.schema import Restrainer as RestrainerTable
+from rockcli.notes import Note
 
 #: kN → N.
 NEWTONS_PER_KILONEWTON = 1e3
@@ -278,13 +279,18 @@ def restitution(model: Model) -> tuple[float, str]:
     table = model.restitution
     if table.rule is RestitutionModel.EXPLICIT:
         assert table.e is not None
-        return table.e, "explicit"
+        return table.e, EXPLICIT
     factor = 1.0 if table.factor is None else table.factor
     e = max(housner_restitution(model.geometry.polar[1]), 0.0) * factor
-    rule = "Housner (1 − 1.5 sin²α)"
+    rule = Note("housner", "Housner (1 − 1.5 sin²α)")
     if model.loads:
-        rule = "Housner of the block with its loads"
-    return e, rule if factor == 1.0 else f"{factor:g} × {rule}"
+        rule = Note("housner_loads", "Housner of the block with its loads")
+    return e, rule if factor == 1.0 else factored(factor, rule)
+
+
+def factored(factor: float, rule: Note) -> Note:
+    """ "0.9 × rule": a restitution rule times the model's factor."""
+    return Note("factored", "{factor:g} × {rule}", factor=float(factor), rule=rule)
 
 
 def free_side(stopped: StoppedSide | None) -> int:
@@ -348,15 +354,19 @@ def bar_verification(table: RestrainerTable) -> dict[str, Any]:
         )
     }
     if table.elongation_at_break is not None:
-        eps, rule = table.elongation_at_break, "elongation_at_break of the model"
+        eps, rule = table.elongation_at_break, Note("eps_given", "elongation_at_break of the model")
     elif grade is not None:
-        eps, rule = elongation_at_break(grade), f"A of {grade} ({ELONGATION_CLAUSE})"
+        eps, rule = (
+            elongation_at_break(grade),
+            Note("eps_grade", "A of {grade} ({clause})", grade=grade, clause=ELONGATION_CLAUSE),
+        )
     else:
         return out
     out["elongation_capacity"] = elongation_capacity(eps, table.length)
-    out["ductility_rule"] = (
-        f"ε_u·L/γ_ε = {100 * eps:.3g} % × {table.length:g} m / {GAMMA_ELONGATION:g}, ε_u: {rule}"
-    )
+    out["ductility_rule"] = Note(
+        "ductility_rule", "ε_u·L/γ_ε = {percent:.3g} % × {length:g} m / {gamma:g}, ε_u: {rule}",
+        percent=100 * eps, length=float(table.length), gamma=float(GAMMA_ELONGATION), rule=rule,
+    )  # fmt: skip
     return out
 
 
@@ -439,6 +449,12 @@ def steel_resistance(model: Model, table: RestrainerTable) -> tuple[TensionResis
     return tension_resistance(area, fy, fu, factor, anchor), steel
 
 
+#: The coefficient of restitution as the model gives it.
+EXPLICIT = Note("explicit", "explicit")
+#: The strength of a member set by its anchor (rather than a steel's resistance).
+ANCHOR = Note("anchor_capacity", "anchor capacity")
+
+
 def member_strength(model: Model, table: RestrainerTable) -> tuple[float, str]:
     """(strength [N], what sets it): a tie-rod's design tension resistance, capped by the
     anchor's capacity; a restrainer given by its stiffness has the anchor's capacity only.
@@ -447,10 +463,12 @@ def member_strength(model: Model, table: RestrainerTable) -> tuple[float, str]:
     steel = steel_resistance(model, table)
     if steel is None:
         anchor = math.inf if table.anchor_capacity is None else table.anchor_capacity
-        return (anchor, "anchor capacity") if math.isfinite(anchor) else (math.inf, "")
+        return (anchor, ANCHOR) if math.isfinite(anchor) else (math.inf, "")
     res, label = steel
-    what = {"plastic": "N_pl,Rd", "ultimate": "N_u,Rd", "anchor": "anchor capacity"}
-    return res.strength, f"{label}: {what[res.governs]} governs ({CLAUSE})"
+    what = {"plastic": "N_pl,Rd", "ultimate": "N_u,Rd", "anchor": ANCHOR}[res.governs]
+    return res.strength, Note(
+        "strength_rule", "{label}: {what} governs ({clause})", label=label, what=what, clause=CLAUSE
+    )
 
 
 def member_law(model: Model, table: RestrainerTable) -> tuple[float, float, float]:

@@ -11,6 +11,7 @@ from dataclasses import dataclass
 
 from rockcli.model.ntc import Ntc
 from rockcli.model.schema import Model
+from rockcli.notes import Note
 
 
 @dataclass(frozen=True)
@@ -66,7 +67,7 @@ class NtcSettings:
     limit: float | None
     site: tuple[float, float] | None
     demand: dict[str, tuple[float, float, float]]
-    defaults: tuple[str, ...]
+    defaults: tuple[Note, ...]
 
 
 def ntc_settings(model: Model) -> NtcSettings:
@@ -92,22 +93,21 @@ def ntc_settings(model: Model) -> NtcSettings:
         limit=ntc.ultimate_displacement,
         site=None if ntc.site is None else (ntc.site.lon, ntc.site.lat),
         demand=demand,
-        defaults=tuple(
-            f"{key} = {value}" for key, value in _defaults(ntc).items() if key not in given
-        ),
+        defaults=tuple(value for key, value in _defaults(ntc).items() if key not in given),
     )
 
 
-def _defaults(ntc: Ntc) -> dict[str, str]:
-    fc = "1.35 (LC1)" if ntc.FC is None and ntc.knowledge_level is None else None
+def _defaults(ntc: Ntc) -> dict[str, Note]:
     out = {
-        "edition": ntc.edition.value,
-        "q": f"{ntc.q:g}",
-        "soil": ntc.soil.value,
-        "topography": ntc.topography.value,
-        "VN": f"{ntc.VN:g}",
-        "CU": f"{ntc.CU:g}",
+        "edition": Note("setting", "{key} = {value}", key="edition", value=ntc.edition.value),
+        "q": Note("setting_number", "{key} = {value:g}", key="q", value=float(ntc.q)),
+        "soil": Note("setting", "{key} = {value}", key="soil", value=ntc.soil.value),
+        "topography": Note(
+            "setting", "{key} = {value}", key="topography", value=ntc.topography.value
+        ),
+        "VN": Note("setting_number", "{key} = {value:g}", key="VN", value=float(ntc.VN)),
+        "CU": Note("setting_number", "{key} = {value:g}", key="CU", value=float(ntc.CU)),
     }
-    if fc:
-        out["FC"] = fc
+    if ntc.FC is None and ntc.knowledge_level is None:
+        out["FC"] = Note("setting_fc", "FC = {value:g} (LC1)", value=1.35)
     return out

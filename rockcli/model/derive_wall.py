@@ -14,6 +14,7 @@ import math
 
 from rockcli.mechanisms.wall import (
     OPTIMAL,
+    WHOLE_WALL,
     MechanismSpec,
     MechanismType,
     Storey,
@@ -26,6 +27,7 @@ from rockcli.model.derive import NEWTONS_PER_KILONEWTON, to_restrainer
 from rockcli.model.physical import Direction
 from rockcli.model.schema import Model, Position
 from rockcli.model.wall import EACH_FLOOR, MechanismEntry, point_height, thickness_at
+from rockcli.notes import Note
 
 
 def is_wall(model: Model) -> bool:
@@ -142,13 +144,18 @@ def expand(entry: MechanismEntry, wall: Wall) -> list[MechanismSpec]:
     if kind is MechanismType.WEDGE:
         sides = entry.sides or 1
         angle = entry.angle or 0.0
-        walls = "both return walls" if sides == 2 else "one return wall"
-        name = entry.name or f"wedge {angle:g}°, {walls}"
+        name = entry.name or (
+            Note("name_wedge_both", "wedge {angle:g}°, both return walls", angle=float(angle))
+            if sides == 2
+            else Note("name_wedge_one", "wedge {angle:g}°, one return wall", angle=float(angle))
+        )
         return [MechanismSpec(name, kind, angle=math.radians(angle), sides=sides)]
     if kind is MechanismType.GABLE:
-        return [MechanismSpec(entry.name or "gable", kind)]
+        return [MechanismSpec(entry.name or Note("name_gable", "gable"), kind)]
     hinge = OPTIMAL if entry.hinge_height is None else entry.hinge_height
-    name = entry.name or f"vertical flexure, storey {entry.storey}"
+    name = entry.name or Note(
+        "name_flexure", "vertical flexure, storey {storey}", storey=entry.storey
+    )
     value = hinge if hinge == OPTIMAL else float(hinge)
     return [MechanismSpec(name, kind, value, storey=entry.storey)]
 
@@ -157,4 +164,6 @@ def overturning_name(wall: Wall, hinge: float) -> str:
     """'overturning, whole wall' at the base, 'overturning, storey k' above a floor."""
     bases = wall.storey_bases()
     k = min(range(len(bases)), key=lambda i: abs(bases[i] - hinge))
-    return "overturning, whole wall" if k == 0 else f"overturning, storey {k + 1}"
+    if k == 0:
+        return WHOLE_WALL
+    return Note("name_storey", "overturning, storey {storey}", storey=k + 1)

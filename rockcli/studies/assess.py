@@ -9,7 +9,9 @@ from typing import TYPE_CHECKING, Any
 from rockcli.dynamics.result import Assessment
 from rockcli.dynamics.settings import Engine, SolverSettings
 from rockcli.mechanics import Block
+from rockcli.mechanisms.wall import WHOLE_WALL
 from rockcli.model.schema import Model
+from rockcli.notes import Note
 from rockcli.records.record import Record
 
 if TYPE_CHECKING:
@@ -120,14 +122,20 @@ def restitution_rule(rule: str, block: Block, rocked: tuple[str, str] | None) ->
     explicit e as given)."""
     if rocked is None or rule == "explicit":
         return rule
-    factor = rule.split(" × ", 1)[0] + " × " if " × " in rule else ""
-    if block.chain is not None:
-        return f"{factor}projection of the chain's motion on the motion after the impact"
-    return f"{factor}Housner of the mechanism's body about the new pivot"
+    own = (
+        Note("projection", "projection of the chain's motion on the motion after the impact")
+        if block.chain is not None
+        else Note("housner_pivot", "Housner of the mechanism's body about the new pivot")
+    )
+    if isinstance(rule, Note) and rule.key == "factored":
+        from rockcli.model.derive import factored
+
+        return factored(rule.values["factor"], own)
+    return own
 
 
 #: The one mechanism of a model of one block.
-BLOCK_MECHANISM = "overturning, whole wall"
+BLOCK_MECHANISM = WHOLE_WALL
 
 
 def rocked_input(model: Model, record: Record, ground: bool, file: str | None,

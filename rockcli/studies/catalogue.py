@@ -30,6 +30,7 @@ from rockcli.mechanisms.catalogue import (
 )
 from rockcli.mechanisms.wall import OPTIMAL, MechanismSpec, MechanismType, Wall
 from rockcli.model.derive_ntc import NtcSettings
+from rockcli.notes import Note
 
 
 def named(items, name: str, where: str = "--mechanism", problem: str = "no such mechanism"):
@@ -124,12 +125,15 @@ def resolved(wall: Wall, spec: MechanismSpec, sides: tuple[int, ...], settings: 
         )
 
     z = optimal_hinge(lo, hi, smallest)
-    note = (f"optimal hinge at {z:.3f} m (the lowest α0 between {lo:.3f} and {hi:.3f} m: the "
-            "storey less max(thickness, a tenth of its height) at each end)")  # fmt: skip
+    found = ("optimal hinge at {z:.3f} m (the lowest α0 between {lo:.3f} and {hi:.3f} m: the "
+             "storey less max(thickness, a tenth of its height) at each end)")  # fmt: skip
+    values = {"z": z, "lo": lo, "hi": hi}
     if min(z - lo, hi - z) <= RANGE_END * (hi - lo):
-        note += ("; the optimum lies at the end of the range, which decides it (α0 keeps "
-                 "falling towards it): give hinge_height where a crack shows the "
-                 "hinge")  # fmt: skip
+        note = Note("hinge_at_end", found + "; the optimum lies at the end of the range, which "
+                    "decides it (α0 keeps falling towards it): give hinge_height where a crack "
+                    "shows the hinge", **values)  # fmt: skip
+    else:
+        note = Note("hinge_optimal", found, **values)
     return replace(spec, hinge_height=z), (note,)
 
 
@@ -159,8 +163,9 @@ def spec_position(wall: Wall, spec: MechanismSpec, settings: NtcSettings) -> Pos
         )
     pos = position(Z, H, N, b.T1, b.gamma, None, b.damping)
     if b.H is None:
-        pos = replace(pos, notes=(*pos.notes, f"building height H = Z + the wall's height = "
-                                  f"{H:.3f} m and N = {N} storeys, not given"))  # fmt: skip
+        pos = replace(pos, notes=(*pos.notes, Note(
+            "H_default", "building height H = Z + the wall's height = {H:.3f} m and N = {N} "
+            "storeys, not given", H=float(H), N=N)))  # fmt: skip
     return pos
 
 
@@ -178,10 +183,11 @@ def flexure_notes(wall: Wall, spec: MechanismSpec) -> tuple[str, ...]:
         return ()
     weight, x = overburden_above(wall, spec.storey)
     if weight <= 0.0:
-        return ("vertical flexure: nothing above the storey's top but the loads at it",)
-    return (f"vertical flexure: the wall above (storeys, gable, bearing loads) bears on the "
-            f"held top, {weight / 1e3:.4g} kN at {x:.3f} m from the outer face, without "
-            "horizontal inertia",)  # fmt: skip
+        return (Note("flexure_nothing_above", "vertical flexure: nothing above the storey's top "
+                     "but the loads at it"),)  # fmt: skip
+    return (Note("flexure_above", "vertical flexure: the wall above (storeys, gable, bearing "
+                 "loads) bears on the held top, {weight:.4g} kN at {x:.3f} m from the outer "
+                 "face, without horizontal inertia", weight=weight / 1e3, x=x),)  # fmt: skip
 
 
 def refuse_unstable(spec: MechanismSpec, cap: Capacity) -> None:
@@ -220,8 +226,9 @@ def analyse_mechanism(
     by_side = {str(c.mech.side): c.alpha0 for c in caps}
     notes = (*notes, *flexure_notes(wall, spec))
     if wall.f_m is not None:
-        notes = (*notes, f"hinges set back by half the stress block a = N/(f_m·width), "
-                 f"f_m = {wall.f_m / 1e6:g} MPa")  # fmt: skip
+        set_back = Note("set_back", "hinges set back by half the stress block a = N/(f_m·width), "
+                        "f_m = {f_m:g} MPa", f_m=wall.f_m / 1e6)  # fmt: skip
+        notes = (*notes, set_back)
     result = analyse_capacity(cap, settings, dem, spec_position(wall, spec, settings),
                               by_side, notes)  # fmt: skip
     from rockcli.codecheck.kinematic import participating_mass

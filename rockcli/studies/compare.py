@@ -200,10 +200,35 @@ def shown_result(kin: KinematicResult, main: Any) -> KinematicResult:
 
     if main is None or main.name == kin.mechanism:
         return kin
-    note = (f"the comparison shows '{main.name}'; the governing mechanism is "
-            f"'{kin.governing}'")  # fmt: skip
-    return replace(main.result, catalogue=kin.catalogue, governing=kin.governing,
-                   notes=(*main.result.notes, note))  # fmt: skip
+    from rockcli.notes import Note
+
+    notes = main.result.notes
+    if main.name != kin.governing:
+        notes = (*notes, Note("shows_other", "the comparison shows '{shown}'; the governing "
+                              "mechanism is '{governing}'", shown=main.name,
+                              governing=kin.governing))  # fmt: skip
+    return replace(main.result, catalogue=kin.catalogue, governing=kin.governing, notes=notes)
+
+
+def mechanism_output(
+    model: Model,
+    record: Record,
+    whole: ComparisonOutput,
+    name: str,
+    *,
+    engine: str = "fast",
+    ground: bool = False,
+    file: str | None = None,
+) -> ComparisonOutput:
+    """The comparison of one more mechanism of a wall ``whole`` has checked: its code check
+    from ``whole``'s catalogue, its rocking run again with its histories (for its full section
+    of a report); the catalogue's comparisons are ``whole``'s, not repeated."""
+    main = named_result(whole.kinematic, name)
+    rocking = assess_model_output(model, record, engine, history=True, ground=ground, file=file,
+                                  mechanism=name)  # fmt: skip
+    kin = shown_result(whole.kinematic, main)
+    kind = classify(code_collapse(kin), rocking_collapse(rocking.result))
+    return ComparisonOutput(kin, rocking, kind, whole.code_demand, ())
 
 
 def catalogue_comparisons(model, record, engine, kin, main, rocking, ground):

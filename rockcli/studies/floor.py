@@ -16,6 +16,7 @@ from rockcli.codecheck.floor import floor_motion
 from rockcli.codecheck.position import position
 from rockcli.errors import InputError
 from rockcli.model.schema import Model
+from rockcli.notes import Note
 from rockcli.records.record import Record
 
 
@@ -43,13 +44,15 @@ class Floor:
         return {"T1": self.T1, "psi": self.psi, "gamma": self.gamma, "xi": self.xi, "Z": self.Z}
 
     @property
-    def label(self) -> str:
+    def label(self) -> Note:
         """One line for reports."""
-        where = "" if self.Z is None else f" at Z = {self.Z:g} m"
-        return (
-            f"floor motion{where}: ü_g + γ·ψ·ẍ₁ with T1 = {self.T1:.3g} s, "
-            f"ψ = {self.psi:.3g}, γ = {self.gamma:.3g}, ξ = {self.xi:g}"
-        )
+        values = {"T1": self.T1, "psi": self.psi, "gamma": self.gamma, "xi": self.xi}
+        if self.Z is None:
+            return Note("floor_motion", "floor motion: ü_g + γ·ψ·ẍ₁ with T1 = {T1:.3g} s, "
+                        "ψ = {psi:.3g}, γ = {gamma:.3g}, ξ = {xi:g}", **values)  # fmt: skip
+        text = ("floor motion at Z = {Z:g} m: ü_g + γ·ψ·ẍ₁ with T1 = {T1:.3g} s, ψ = {psi:.3g}, "
+                "γ = {gamma:.3g}, ξ = {xi:g}")  # fmt: skip
+        return Note("floor_motion_at", text, Z=self.Z, **values)
 
 
 def model_floor(model: Model) -> Floor | None:
@@ -67,7 +70,8 @@ def floor_record(rec: Record, floor: Floor) -> Record:
     accel = floor_motion(
         rec.time, rec.accel, T1=floor.T1, psi=floor.psi, gamma=floor.gamma, xi=floor.xi
     )
-    note = f"{floor.label}, from the ground record {rec.name}"
+    note = Note("floor_from", "{floor}, from the ground record {record}", floor=floor.label,
+                record=rec.name)  # fmt: skip
     name = f"{rec.name} floor" if floor.Z is None else f"{rec.name} at Z = {floor.Z:g} m"
     return replace(rec, name=name, accel=accel, notes=(*rec.notes, note))
 

@@ -29,6 +29,7 @@ from rockcli.mechanics import Block
 from rockcli.model.bounds import MIN_AG
 from rockcli.model.derive_ntc import NtcSettings
 from rockcli.model.schema import Model
+from rockcli.notes import Items, Note
 from rockcli.records.record import Record
 
 #: Limit states each edition checks.
@@ -131,8 +132,8 @@ def with_spectral_values(
     periods = [("T1", pos.T1, building)] if pos.at_height else []
     periods += [(name, values.get(name), xi) for name, xi in CHECK_PERIODS.get(limit_state, ())]
     periods += [
-        (f"max over [{c.spectral.period_range[0]:g}, {c.spectral.period_range[1]:.4g}] s",
-         c.spectral.period, c.spectral.damping)
+        (Note("max_over", "max over [{lo:g}, {hi:.4g}] s", lo=float(c.spectral.period_range[0]),
+              hi=float(c.spectral.period_range[1])), c.spectral.period, c.spectral.damping)
         for c in checks
         if c.limit_state == limit_state and c.spectral and c.spectral.period_range
         and c.location is Location.GROUND
@@ -150,7 +151,7 @@ def site_demands(
     settings: NtcSettings, site: tuple[float, float], grid_file: str | None, g: float
 ) -> dict[str, LimitStateDemand]:
     """Each limit state's spectrum at a site: TR from VN·CU, (ag, F0, Tc*) from the grid."""
-    from rockcli.codecheck.hazard import grid_path, read_grid, site_parameters
+    from rockcli.codecheck.hazard import grid_path, grid_source, read_grid, site_parameters
     from rockcli.codecheck.spectra import LimitState, return_period
 
     grid = read_grid(grid_path(grid_file))
@@ -158,9 +159,7 @@ def site_demands(
     for ls in LIMIT_STATES[settings.edition]:
         TR = return_period(settings.VN, settings.CU, LimitState(ls), settings.edition)
         params = site_parameters(grid, site[0], site[1], TR)
-        out[ls] = code_demand(
-            ls, params, settings, g, f"hazard grid at {site[0]:.4f} E, {site[1]:.4f} N", TR
-        )
+        out[ls] = code_demand(ls, params, settings, g, grid_source(site), TR)
     return out
 
 
@@ -237,18 +236,18 @@ def analyse_capacity(
     """The checks of the settings' edition on one mechanism's capacity at its position."""
     notes = [*pos.notes, *extra_notes]
     if settings.defaults:
-        notes.append("defaults (not in the model's [ntc]): " + ", ".join(settings.defaults))
+        notes.append(Note("defaults", "defaults (not in the model's [ntc]): {settings}",
+                          settings=Items(settings.defaults)))  # fmt: skip
     notes.append(
-        "capacity curve: "
-        + (
-            "linear a0*(1 − d*/d0*), constant forces (Circ. 617/2009 §C8A.4.2.3; "
-            "Circ. 7/2019 §C8.7.1.2)"
-            if cap.linear
-            else "α(θ) with the restrainers that cannot fail (docs/interpretations.md)"
-        )
-    )
+        Note("capacity_linear", "capacity curve: linear a0*(1 − d*/d0*), constant forces "
+             "(Circ. 617/2009 §C8A.4.2.3; Circ. 7/2019 §C8.7.1.2)")
+        if cap.linear
+        else Note("capacity_curve", "capacity curve: α(θ) with the restrainers that cannot "
+                  "fail (an interpretation of rock's: the code's linear curve does not hold "
+                  "for restrainers)")
+    )  # fmt: skip
     if cap.d0_star is None:
-        notes.append("positive global stiffness: α never vanishes, no d0*")
+        notes.append(Note("no_d0", "positive global stiffness: α never vanishes, no d0*"))
     if settings.edition == "2009":
         values, checks = rules2009.check_2009(
             cap, dem["SLD"], dem["SLV"], pos, settings.q, _limit(cap, settings)
@@ -258,10 +257,8 @@ def analyse_capacity(
             cap, dem, pos, settings.q, _limit(cap, settings)
         )
         notes += extra
-        notes.append(
-            "rigid until activation: the elastic branch of free elements (§C8.7.1.6–7) "
-            "is not modelled"
-        )
+        notes.append(Note("rigid", "rigid until activation: the elastic branch of free "
+                          "elements (§C8.7.1.6–7) is not modelled"))  # fmt: skip
     actions = restrainer_actions(
         cap, *governing_demand(cap, settings.edition, values, checks, dem, pos)
     )
@@ -368,7 +365,9 @@ def with_block_entry(result: KinematicResult, block: Block, settings: NtcSetting
     from rockcli.studies.catalogue import MechanismResult
 
     m_star = participating_mass(mechanism(block, settings, result.side))
-    name = "overturning, whole wall"
+    from rockcli.mechanisms.wall import WHOLE_WALL
+
+    name = WHOLE_WALL
     result = replace(result, mechanism=name)
     entry = MechanismResult(name, "overturning", 0.0, None, m_star, result)
     return replace(result, catalogue=(entry,), governing=name)

@@ -18,6 +18,7 @@ import math
 from collections.abc import Iterable
 from typing import Any
 
+from rockcli.codecheck.restrainer_check import DISPLACEMENT_BASIS
 from rockcli.codecheck.steel import CLAUSE
 from rockcli.codecheck.tie import Verification, anchorage, ductility
 from rockcli.dynamics.result import Assessment
@@ -27,10 +28,6 @@ from rockcli.mechanics import Block, Restrainer
 #: F_y by the rounding of c (measured 3e-14 relative in tests/dynamics/test_hysteresis.py):
 #: a utilisation within this of 1 is the strength itself.
 FORCE_RTOL = 1e-9
-
-
-#: How a member with only a failure elongation is verified (no steel clause applies).
-DISPLACEMENT_RULE = "its failure elongation fails_at (the paper's §4.2, Eq. 9–10)"
 
 
 def restrainer_checks(block: Block, result: Assessment) -> list[dict[str, Any]]:
@@ -68,7 +65,7 @@ def check_row(sp: Restrainer, peaks: list[Any]) -> dict[str, Any]:
         "ductility": verification_document(duct),
         "anchor": None if anchor is None else verification_document(anchor),
         "passed": all(v is not False for v in verdicts),
-        "rule": sp.strength_rule if has_strength else DISPLACEMENT_RULE,
+        "rule": sp.strength_rule if has_strength else DISPLACEMENT_BASIS,
         "clause": CLAUSE if sp.strength_rule.endswith(f"({CLAUSE})") else None,
         "yielded": any(p.yielded for p in peaks),
         "t_yield": first_time(p.t_yield for p in peaks),
@@ -88,7 +85,7 @@ def member_ductility(sp: Restrainer, max_displacement: float) -> Verification:
         elongation = max_displacement + (sp.pretension / k if k > 0 else 0.0)
         return ductility(elongation, sp.elongation_capacity, sp.ductility_rule)
     if sp.can_fail and not math.isfinite(sp.strength):
-        return ductility(max_displacement, sp.fails_at, DISPLACEMENT_RULE)
+        return ductility(max_displacement, sp.fails_at, DISPLACEMENT_BASIS)
     return ductility(max_displacement, math.inf, "")
 
 

@@ -12,6 +12,7 @@ import numpy as np
 from rockcli.codecheck.categories import Edition
 from rockcli.codecheck.spectra import ElasticSpectrum, return_period
 from rockcli.errors import InputError
+from rockcli.notes import Note
 from rockcli.records.record import Record
 from rockcli.suites.compat import (
     AutoScale,
@@ -55,12 +56,12 @@ def target_of(target: Target, grid_file: str | None) -> TargetSpectrum:
     TR = return_period(target.VN, target.CU, target.limit_state, target.edition)
     site, given = target.site, target.parameters
     if given is not None:
-        (ag, F0, Tc_star), source = given, "given in the suite"
+        (ag, F0, Tc_star), source = given, Note("given_in_suite", "given in the suite")
     elif site is not None:
-        from rockcli.codecheck.hazard import grid_path, read_grid, site_parameters
+        from rockcli.codecheck.hazard import grid_path, grid_source, read_grid, site_parameters
 
         ag, F0, Tc_star = site_parameters(read_grid(grid_path(grid_file)), *site, TR)
-        source = f"hazard grid at {site[0]:.4f} E, {site[1]:.4f} N"
+        source = grid_source(site)
     else:  # the suite's rules refuse a target without either
         raise InputError("no site and no parameters", where="target")
     spectrum = ElasticSpectrum(ag, F0, Tc_star, target.soil, target.topography)

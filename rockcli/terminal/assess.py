@@ -5,6 +5,7 @@ from __future__ import annotations
 import csv
 import io
 import math
+from collections.abc import Mapping
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
@@ -18,6 +19,7 @@ from rockcli.mechanics import (
     restrainer_coefficient,
     uplift_accelerations,
 )
+from rockcli.notes import Note
 from rockcli.records.record import Record
 from rockcli.studies.strength import restrainer_checks
 from rockcli.terminal.records import record_document, record_report
@@ -89,90 +91,104 @@ def _scaled(value: float | None, factor: float) -> float | None:
     return None if value is None else value * factor
 
 
-def check_notes(checks: list[dict[str, Any]]) -> list[str]:
+def check_notes(checks: list[dict[str, Any]]) -> list[Note]:
     """Where each restrainer check's capacities come from, and an anchorage to be designed."""
     out = [
-        f"restrainer {c['name']!r}: "
-        + (
-            f"strength from {c['rule']}"
-            if c["strength"] is not None
-            else f"verified on displacement: {c['rule']}"
-        )
+        about(c, Note("strength_from", "strength from {rule}", rule=c["rule"])
+              if c["strength"] is not None
+              else Note("verified_displacement", "verified on displacement: {rule}",
+                        rule=c["rule"]))
         for c in checks
-    ]
+    ]  # fmt: skip
     out += [
-        f"restrainer {c['name']!r}: elongation it can take: {c['ductility']['rule']}"
+        about(c, Note("elongation_from", "elongation it can take: {rule}",
+                      rule=c["ductility"]["rule"]))
         for c in checks
         if c["ductility"]["capacity"] is not None and c["ductility"]["rule"] != c["rule"]
-    ]
+    ]  # fmt: skip
     out += [
-        f"restrainer {c['name']!r}: anchorage not verified (no anchor_capacity): design it for "
-        f"at least γov·A·fy = {c['anchor']['demand'] / 1e3:.4g} kN (capacity design, "
-        "NTC 2018 §7.5.1)"
+        about(c, Note(
+            "anchor_to_design", "anchorage not verified (no anchor_capacity): design it for at "
+            "least γov·A·fy = {force:.4g} kN (capacity design, NTC 2018 §7.5.1)",
+            force=c["anchor"]["demand"] / 1e3))
         for c in checks
         if c["anchor"] is not None and c["anchor"]["passed"] is None
-    ]
+    ]  # fmt: skip
     return out
 
 
-def strength_warnings(checks: list[dict[str, Any]]) -> list[str]:
+def about(c: Mapping[str, Any], note: Note) -> Note:
+    """``restrainer 'name': note``."""
+    return Note("restrainer", "restrainer {name!r}: {note}", name=c["name"], note=note)
+
+
+def strength_warnings(checks: list[dict[str, Any]]) -> list[Note]:
     """A warning per restrainer that fails its strength check: an elastic one beyond its
     strength (the run is not valid after that), an elastic-plastic one that yielded or broke."""
-    return [strength_warning(c) for c in checks if not c["passed"]]
+    return [about(c, strength_warning(c)) for c in checks if not c["passed"]]
 
 
-def strength_warning(c: dict[str, Any]) -> str:
+def strength_warning(c: dict[str, Any]) -> Note:
     """The warning of one failed check (studies.strength.restrainer_checks row): its force,
     its ductility or its anchorage."""
-    head = f"restrainer {c['name']!r}: "
     duct, anchor = c["ductility"], c["anchor"] or {}
     if c["utilisation"] is None and c["ruptured"]:
-        return (
-            f"{head}its elongation reached {duct['capacity'] * 1e3:.4g} mm, what it can take "
-            f"({duct['rule']}): it was lost at t = {c['t_rupture']:.3f} s"
-        )
+        return Note("lost_elongation", "its elongation reached {capacity:.4g} mm, what it can "
+                    "take ({rule}): it was lost at t = {t:.3f} s", capacity=duct["capacity"] * 1e3,
+                    rule=duct["rule"], t=c["t_rupture"])  # fmt: skip
     if duct["passed"] is False:
-        return (
-            f"{head}its largest elongation {duct['demand'] * 1e3:.4g} mm exceeds what it can "
-            f"take, {duct['capacity'] * 1e3:.4g} mm ({duct['rule']})"
-            + (f"; it broke at t = {c['t_rupture']:.3f} s" if c["ruptured"] else "")
-        )
+        values = {"demand": duct["demand"] * 1e3, "capacity": duct["capacity"] * 1e3,
+                  "rule": duct["rule"]}  # fmt: skip
+        longer = ("its largest elongation {demand:.4g} mm exceeds what it can take, "
+                  "{capacity:.4g} mm ({rule})")  # fmt: skip
+        if c["ruptured"]:
+            return Note("too_long_broke", longer + "; it broke at t = {t:.3f} s",
+                        t=c["t_rupture"], **values)  # fmt: skip
+        return Note("too_long", longer, **values)
     if anchor.get("passed") is False:
-        return (
-            f"{head}the anchor governs: its capacity {anchor['capacity'] / 1e3:.4g} kN is below "
-            f"the bar's over-strength γov·A·fy = {anchor['demand'] / 1e3:.4g} kN (capacity "
-            "design, NTC 2018 §7.5.1): the anchor would give way before the bar yields"
-        )
-    force = (
-        f"the time history's force {c['demand'] / 1e3:.4g} kN against its design strength "
-        f"{c['strength'] / 1e3:.4g} kN (utilisation {c['utilisation']:.3g})"
-    )
+        return Note(
+            "anchor_governs", "the anchor governs: its capacity {capacity:.4g} kN is below the "
+            "bar's over-strength γov·A·fy = {demand:.4g} kN (capacity design, NTC 2018 §7.5.1): "
+            "the anchor would give way before the bar yields",
+            capacity=anchor["capacity"] / 1e3, demand=anchor["demand"] / 1e3,
+        )  # fmt: skip
+    force = Note(
+        "force_against", "the time history's force {demand:.4g} kN against its design strength "
+        "{strength:.4g} kN (utilisation {utilisation:.3g})", demand=c["demand"] / 1e3,
+        strength=c["strength"] / 1e3, utilisation=c["utilisation"],
+    )  # fmt: skip
     if not c["time_history_valid"]:
-        return (
-            f'{head}{force}: it is elastic in this model (law = "elastic"), so the member '
-            "would have yielded or its anchorage given way, and the result after that is not "
-            'valid; give it its steel or law = "elastic-plastic" with a yield force'
-        )
+        return Note(
+            "elastic_beyond", '{force}: it is elastic in this model (law = "elastic"), so the '
+            "member would have yielded or its anchorage given way, and the result after that is "
+            'not valid; give it its steel or law = "elastic-plastic" with a yield force',
+            force=force,
+        )  # fmt: skip
     if c["ruptured"]:
-        return f"{head}{force}: it was lost at t = {c['t_rupture']:.3f} s"
-    return f"{head}{force}: it is beyond its strength"
+        return Note("force_lost", "{force}: it was lost at t = {t:.3f} s", force=force,
+                    t=c["t_rupture"])  # fmt: skip
+    return Note("force_beyond", "{force}: it is beyond its strength", force=force)
 
 
-def yield_notes(checks: list[dict[str, Any]]) -> list[str]:
+def yield_notes(checks: list[dict[str, Any]]) -> list[Note]:
     """A note per member that yielded and held: when, and its plastic elongation."""
-    return [
-        f"restrainer {c['name']!r} yielded at its design strength {c['strength'] / 1e3:.4g} kN "
-        f"(first at t = {c['t_yield']:.3f} s): plastic elongation "
-        f"{c['plastic_elongation'] * 1e3:.3g} mm at the end"
-        + (
-            f"; largest elongation {c['ductility']['demand'] * 1e3:.4g} mm of the "
-            f"{c['ductility']['capacity'] * 1e3:.4g} mm it can take"
-            if c["ductility"]["capacity"] is not None
-            else ""
-        )
-        for c in checks
-        if c["yielded"] and not c["ruptured"]
-    ]
+    out = []
+    for c in checks:
+        if not c["yielded"] or c["ruptured"]:
+            continue
+        values = {"strength": c["strength"] / 1e3, "t": c["t_yield"],
+                  "plastic": c["plastic_elongation"] * 1e3}  # fmt: skip
+        held = ("restrainer {name!r} yielded at its design strength {strength:.4g} kN (first at "
+                "t = {t:.3f} s): plastic elongation {plastic:.3g} mm at the end")  # fmt: skip
+        duct = c["ductility"]
+        if duct["capacity"] is None:
+            out.append(Note("yielded", held, name=c["name"], **values))
+            continue
+        out.append(Note(
+            "yielded_within", held + "; largest elongation {demand:.4g} mm of the {capacity:.4g} "
+            "mm it can take", name=c["name"], demand=duct["demand"] * 1e3,
+            capacity=duct["capacity"] * 1e3, **values))  # fmt: skip
+    return out
 
 
 def run_document(run: RockingRun) -> dict[str, Any]:
@@ -368,22 +384,29 @@ def assessment_output_document(out: AssessmentOutput, record: Record) -> dict[st
     return doc
 
 
+#: The rocking's input when the block stands on the ground (or --ground).
+GROUND_INPUT = Note("input_ground", "the record itself, at the block's base")
+
+
 def input_document(out: AssessmentOutput) -> dict[str, Any]:
     """``record.input`` ("ground" or "floor") and, for a floor input, ``record.floor`` (its
     first mode: T1, psi, gamma, xi, Z) and the notes on how it was made."""
     if out.floor is None:
-        note = "the record itself, at the block's base" + (
-            " (--ground: the block stands at height; the code check still applies the "
-            "code's at-height rules)"
+        note = (
+            Note("input_ground_flag", "the record itself, at the block's base (--ground: the "
+                 "block stands at height; the code check still applies the code's at-height "
+                 "rules)")
             if out.ground
-            else ""
-        )
+            else GROUND_INPUT
+        )  # fmt: skip
         return {"input": "ground", "input_note": note}
     pga = out.shaking.pga if out.shaking is not None else math.nan
     return {
         "input": "floor",
         "floor": {**out.floor.document(), "pga_g": pga},
-        "input_note": f"{out.floor.label}; its PGA {pga:.3g} g",
+        "input_note": Note(
+            "input_floor", "{floor}; its PGA {pga:.3g} g", floor=out.floor.label, pga=pga
+        ),  # fmt: skip
         "floor_notes": list(out.floor.notes),
     }
 

@@ -16,13 +16,15 @@ def fields(text: str) -> set[str]:
 
 
 def test_every_key_is_in_every_language() -> None:
-    keys = {lang: set(catalogue(lang)) for lang in LANGUAGES}
+    # The analyses' notes ([note]) are English where they are made (rockcli.notes): the other
+    # languages hold them (tests/document/test_notes.py).
+    keys = {lang: {k for k in catalogue(lang) if not k.startswith("note.")} for lang in LANGUAGES}
     first = keys[LANGUAGES[0]]
     for lang, found in keys.items():
         assert found == first, f"{lang}: missing {first - found}, extra {found - first}"
 
 
-@pytest.mark.parametrize("key", sorted(catalogue("en")))
+@pytest.mark.parametrize("key", sorted(k for k in catalogue("en") if not k.startswith("note.")))
 def test_a_message_has_the_same_fields_in_every_language(key: str) -> None:
     # A field named in one language and not the other would raise or vanish at render time.
     assert len({frozenset(fields(catalogue(lang)[key])) for lang in LANGUAGES}) == 1
@@ -39,7 +41,7 @@ def test_no_message_is_left_untranslated() -> None:
     # more words count.
     same = [
         k for k, text in catalogue("it").items()
-        if text == catalogue("en")[k] and len(words_of(text)) >= 3
+        if text == catalogue("en").get(k) and len(words_of(text)) >= 3
     ]  # fmt: skip
     assert not same
 

@@ -12,6 +12,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 from typing import Any
 
+from rockcli.notes import Items, Note
 from rockcli.studies.strength import FORCE_RTOL
 
 #: The largest utilisation (force / design strength) a rod may reach.
@@ -20,55 +21,61 @@ UTILISATION_LIMIT = 1.0
 ULTIMATE_FIX = "set ntc.ultimate_displacement or a restrainer's fails_at"
 
 
-def failures(row: dict[str, Any]) -> list[str]:
+def failures(row: dict[str, Any]) -> list[Note]:
     """Why a candidate does not pass (empty: it passes), one phrase per criterion."""
     why = []
     if row["code_uls_passed"] is None:
-        why.append(f"the code ULS is not evaluated ({ULTIMATE_FIX})")
+        why.append(Note("retro_not_evaluated", "the code ULS is not evaluated ({fix})",
+                        fix=ULTIMATE_FIX))  # fmt: skip
     elif not row["code_uls_passed"]:
-        why.append(f"the code ULS fails (ζ = {_number(row['code_zeta'])})")
-    body = "the block" if not row.get("mechanism") else f"'{row['mechanism']}'"
-    if row.get("mechanism") and not row.get("on_mechanism", True):
-        why.append(f"the rod is not on the governing mechanism '{row['mechanism']}'")
+        why.append(Note("retro_code_fails", "the code ULS fails (ζ = {zeta})",
+                        zeta=_number(row["code_zeta"])))  # fmt: skip
+    mechanism = row.get("mechanism")
+    if mechanism and not row.get("on_mechanism", True):
+        why.append(Note("retro_not_on", "the rod is not on the governing mechanism "
+                        "'{mechanism}'", mechanism=mechanism))  # fmt: skip
     if row["overturned"]:
-        why.append(f"{body} overturns")
+        why.append(
+            Note("retro_overturns", "'{mechanism}' overturns", mechanism=mechanism)
+            if mechanism
+            else Note("retro_block_overturns", "the block overturns")
+        )
     elif row["rocking"] != "survives":
-        why.append(f"the time history is {row['rocking']}")
+        why.append(Note("retro_history", "the time history is {verdict}",
+                        verdict=row["rocking"]))  # fmt: skip
     if row["ruptured"]:
-        why.append("the rod ruptures")
+        why.append(Note("retro_ruptures", "the rod ruptures"))
     utilisation = row["utilisation"]
     if utilisation is not None and utilisation > UTILISATION_LIMIT + FORCE_RTOL:
-        why.append(f"the rod's utilisation is {utilisation:.2f} > {UTILISATION_LIMIT:g}")
+        why.append(Note("retro_utilisation", "the rod's utilisation is {u:.2f} > {limit:g}",
+                        u=utilisation, limit=UTILISATION_LIMIT))  # fmt: skip
     duct, anchor = row.get("ductility") or {}, row.get("anchor") or {}
     if duct.get("passed") is False:
-        why.append(
-            f"the rod stretches {duct['demand'] * 1e3:.0f} mm, more than the "
-            f"{duct['capacity'] * 1e3:.0f} mm it can take"
-        )
+        why.append(Note("retro_stretches", "the rod stretches {demand:.0f} mm, more than the "
+                        "{capacity:.0f} mm it can take", demand=duct["demand"] * 1e3,
+                        capacity=duct["capacity"] * 1e3))  # fmt: skip
     if anchor.get("passed") is False:
-        why.append(
-            f"the anchor governs ({anchor['capacity'] / 1e3:.0f} kN < γov·A·fy = "
-            f"{anchor['demand'] / 1e3:.0f} kN)"
-        )
+        why.append(Note("retro_anchor", "the anchor governs ({capacity:.0f} kN < γov·A·fy = "
+                        "{demand:.0f} kN)", capacity=anchor["capacity"] / 1e3,
+                        demand=anchor["demand"] / 1e3))  # fmt: skip
     return why
 
 
-def choose(rows: Sequence[dict[str, Any]]) -> tuple[dict[str, Any] | None, str]:
+def choose(rows: Sequence[dict[str, Any]]) -> tuple[dict[str, Any] | None, Note]:
     """(the chosen candidate or None, the reason) over rows ascending in diameter."""
     if not rows:
-        return None, "no diameter tried"
+        return None, Note("retro_none_tried", "no diameter tried")
     for row in rows:
         if not failures(row):
-            return row, (
-                f"Ø{row['diameter_mm']:g} mm is the smallest diameter for which the code ULS "
-                "passes, the block survives and the rod neither ruptures nor exceeds its strength, "
-                "its ductility or its anchor's capacity"
-            )
+            return row, Note(
+                "retro_chosen", "Ø{d:g} mm is the smallest diameter for which the code ULS "
+                "passes, the block survives and the rod neither ruptures nor exceeds its "
+                "strength, its ductility or its anchor's capacity", d=float(row["diameter_mm"]),
+            )  # fmt: skip
     largest = rows[-1]
-    return None, (
-        f"none in the range: at the largest, {largest['diameter_mm']:g} mm, "
-        + "; ".join(failures(largest))
-    )
+    why = Items(failures(largest), "; ")
+    return None, Note("retro_none", "none in the range: at the largest, {d:g} mm, {why}",
+                      d=float(largest["diameter_mm"]), why=why)  # fmt: skip
 
 
 def _number(value: float | None) -> str:

@@ -15,6 +15,7 @@ from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
 from rockcli.dynamics.result import RunStatus
+from rockcli.notes import Note
 from rockcli.studies.retrofit.candidates import RetrofitPlan, build_candidate
 
 if TYPE_CHECKING:
@@ -197,3 +198,44 @@ def run_retrofit(
         if progress:
             progress(len(rows), len(cases))
     return [rows[c.id] for c in cases]
+
+
+@dataclass(frozen=True)
+class Sizing:
+    """What `rock retrofit` finds for a model's tie-rod under a record: the rod, its steel and
+    bars, the diameters tried [mm], the chosen row (None: none passes) and why; or, when the
+    model has no single tie-rod to size, only why not (``reason``)."""
+
+    reason: Note
+    rod: str = ""
+    grade: str = ""
+    bars: int = 0
+    diameters_mm: tuple[float, ...] = ()
+    chosen: dict[str, Any] | None = None
+
+
+def size_rod(model_path: str, record: Record, analyses: Analyses) -> Sizing:
+    """`rock retrofit MODEL --record R` with its defaults (the model's one tie-rod, the default
+    diameters, its steel), in this process: the smallest diameter that passes the code's ULS,
+    the time history and the rod's own checks (rockcli.studies.retrofit.choose)."""
+    from rockcli.model.load import read_toml, validate_model
+    from rockcli.studies.retrofit.candidates import DEFAULT_DIAMETERS_MM, make_plan, tie_rods
+    from rockcli.studies.retrofit.choose import choose
+    from rockcli.studies.sweep.executor import local_executor
+
+    table = read_toml(model_path)
+    model = validate_model(table, file=model_path)
+    rods = tie_rods(model)
+    if len(rods) != 1:
+        return Sizing(
+            Note("retro_no_rod", "no tie-rod to size: place one with rock retrofit --at "
+                 "HEIGHT,FROM_PIVOT --length L")
+            if not rods
+            else Note("retro_several", "{n} tie-rods: size one with rock retrofit --name",
+                      n=len(rods))
+        )  # fmt: skip
+    plan = make_plan(table, model, file=model_path, diameters_mm=DEFAULT_DIAMETERS_MM)
+    with local_executor(1) as lanes:
+        rows = run_retrofit(plan, record, lanes, analyses)
+    chosen, reason = choose(rows)
+    return Sizing(reason, plan.name, plan.grade, plan.count, plan.diameters_mm, chosen)

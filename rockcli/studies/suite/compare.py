@@ -22,6 +22,7 @@ from typing import TYPE_CHECKING, Any
 
 from rockcli.codecheck.demand import LimitStateDemand
 from rockcli.errors import InputError
+from rockcli.notes import Items, Note
 from rockcli.studies.compare import Classification, classify
 from rockcli.studies.suite.assess import LoadedSuite, SuiteAssessment
 
@@ -98,7 +99,11 @@ def target_demand(
     spec = target_of(target.model_copy(update={"limit_state": LimitState(limit_state)}), grid_file)
     params = (spec.spectrum.ag, spec.spectrum.F0, spec.spectrum.Tc_star)
     given = limit_state == target.limit_state.value
-    source = ("the suite's target: " if given else "the suite's site: ") + spec.source
+    source = (
+        Note("suite_target", "the suite's target: {source}", source=spec.source)
+        if given
+        else Note("suite_site", "the suite's site: {source}", source=spec.source)
+    )
     return code_demand(limit_state, params, settings, g, source, spec.TR)
 
 
@@ -178,7 +183,13 @@ def demand_notes(
         return ("code demand: the suite's mean spectrum at every limit state",)
     notes = []
     differ = [
-        f"{name} {mine} (target: {theirs})"
+        Note(
+            "target_differs",
+            "{name} {mine} (target: {theirs})",
+            name=name,
+            mine=mine,
+            theirs=theirs,
+        )
         for name, mine, theirs in (
             ("soil", settings.soil, target.soil.value),
             ("topography", settings.topography, target.topography.value),
@@ -188,11 +199,9 @@ def demand_notes(
         if str(mine) != str(theirs)
     ]
     if differ:
-        notes.append(
-            "the suite's target sets the code demand: the model's [ntc] "
-            + ", ".join(differ)
-            + " is not used for it"
-        )
+        notes.append(Note(
+            "target_sets_demand", "the suite's target sets the code demand: the model's [ntc] "
+            "{differ} is not used for it", differ=Items(differ)))  # fmt: skip
     return tuple(notes)
 
 
