@@ -31,6 +31,7 @@ class CaseResult:
         error: |obtained − expected|, relative to |expected| for a relative tolerance (None
             when nothing was obtained).
         note: why a case was skipped, or why nothing was obtained.
+        source_it: the source in Italian (the case file's ``source_it``), None without one.
     """
 
     id: str
@@ -48,6 +49,7 @@ class CaseResult:
     status: Status
     error: float | None = None
     note: str = ""
+    source_it: str | None = None
 
     @property
     def passed(self) -> bool | None:
@@ -195,4 +197,5 @@ def result_of(
         status=status,
         error=error,
         note=note,
+        source_it=case.source_it,
     )

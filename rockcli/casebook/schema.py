@@ -122,6 +122,9 @@ class Case(Table):
     tolerance_type: ToleranceType
     tolerance_reason: str = Field(min_length=1, description="why this tolerance")
     source: str = Field(min_length=1, description="where the expected value comes from")
+    source_it: str | None = Field(
+        None, min_length=1, description="the source in Italian, as an Italian report prints it"
+    )
     model: str | dict[str, Any] | None = None
     input: dict[str, Any] = Field(default_factory=dict)
 

@@ -55,7 +55,7 @@ _ST: dict[Topography, float] = {
     Topography.T4: 1.4,
 }
 #: TE [s] per soil, start of the displacement spectrum's long-period branches (NTC 2008
-#: §3.2.3.2.2, Tab. 3.2.VII).
+#: §3.2.3.2.3, Tab. 3.2.VII).
 _TE: dict[Soil, float] = {Soil.A: 4.5, Soil.B: 5.0, Soil.C: 6.0, Soil.D: 6.0, Soil.E: 6.0}
 #: TF [s], beyond which SDe = dg (same table, all soils).
 TF = 10.0
@@ -153,7 +153,7 @@ def corner_periods(soil: Soil, ag: float, Tc_star: float) -> CornerPeriods:
 def displacement_corner_periods(soil: Soil) -> tuple[float, float]:
     """TE and TF of the displacement spectrum [s] (A 4.5, B 5.0, C–E 6.0; TF = 10).
 
-    NTC 2008 §3.2.3.2.2, Tab. 3.2.VII.
+    NTC 2008 §3.2.3.2.3, Tab. 3.2.VII.
 
     Args:
         soil: subsoil category A–E.
@@ -238,7 +238,7 @@ def pga_ground(spectrum: SpectralDemand) -> float:
 class ElasticSpectrum:
     """The NTC elastic spectrum of the horizontal components at a site.
 
-    NTC §3.2.3.2.1 (acceleration, Eq. 3.2.4) and NTC 2008 §3.2.3.2.2 (displacement).
+    NTC §3.2.3.2.1 (acceleration, Eq. 3.2.4) and NTC 2008 §3.2.3.2.3 (displacement).
 
     Attributes:
         ag: peak ground acceleration on rock [g].
@@ -343,7 +343,7 @@ class ElasticSpectrum:
     def SDe(self, T: float, xi: float = XI_REFERENCE) -> float:
         """Elastic displacement SDe(T) [m].
 
-        NTC 2008 §3.2.3.2.2, Eqs. 3.2.12–3.2.13: SDe = Se·g·(T/2π)² for T ≤ TE; for
+        NTC 2008 §3.2.3.2.3, Eqs. 3.2.12–3.2.13: SDe = Se·g·(T/2π)² for T ≤ TE; for
         TE < T ≤ TF, SDe = 0.025·ag·S·TC·TD·[F0·η + (1 − F0·η)·(T − TE)/(TF − TE)]; for T > TF,
         SDe = dg = 0.025·ag·S·TC·TD (ag in m/s²).
 

@@ -111,7 +111,8 @@ def mechanism_sections(part: Part, record: Any, w: Words) -> list[Section]:
         own = part.inputs.model.notes
         blocks: list[Block] = [Paragraph(w("summary.mechanism_intro", name=name))]
         blocks += [b for b in body.blocks[1:] if not (isinstance(b, Paragraph) and b.text == own)]
-        blocks += kinematic_section(part.inputs, doc["kinematic"], w, out.rocking.block).blocks
+        blocks += kinematic_section(part.inputs, doc["kinematic"], w, out.rocking.block,
+                                    catalogue=False).blocks  # fmt: skip
         blocks += rocking_section(doc["rocking"], out, record, w).blocks
         blocks.append(Paragraph(w(f"class.{doc['classification']}"), "verdict"))
         section = Section(f"mechanism-{i}", w("section.mechanism", name=name), tuple(blocks))
@@ -207,8 +208,9 @@ def model_section(
     intro = w("model.intro", file=inputs.model_path)
     if mechanism is not None:
         shape = [(w("model.centroid_x"), n(m["b"]), "m"), (w("model.centroid_z"), n(m["h"]), "m")]
-        intro = w("model.intro_mechanism", file=inputs.model_path, name=w.note(mechanism["name"]),
-                  type=w(f"mtype.{mechanism['type']}"))  # fmt: skip
+        name, kind = w.note(mechanism["name"]), w(f"mtype.{mechanism['type']}")
+        intro = w("model.intro_mechanism", file=inputs.model_path, name=name,
+                  type=kind if kind != name else w("model.default_name"))  # fmt: skip
     geometry = [("R", n(m["R"]), "m"), ("α", n(m["alpha"]), "rad")]
     if mechanism is not None and m.get("chain") is not None:  # two blocks: α where V′ = 0
         intro = w("model.intro_flexure", file=inputs.model_path, name=w.note(mechanism["name"]))
@@ -357,11 +359,12 @@ def check_position(model: Model, edition: str, mechanism: str | None) -> Positio
 
 def floor_figure(
     code: Sequence[tuple[str, Any]], pos: Position, edition: str, shaking: Record | None,
-    record_name: str, g: float, marks: Mapping[str, float], w: Words,
+    record_name: str, g: float, marks: Mapping[str, float], w: Words, rocked: str = "",
 ) -> Figure:  # fmt: skip
     """The spectra at the mechanism's height (figures.floor_spectra): the code's demand there
     per limit state, and the response spectrum of the floor motion ``shaking`` the rocking
-    analysis used (None: it used the record itself, --ground, whose spectrum is at the ground)."""
+    analysis used (None: it used the record itself, --ground, whose spectrum is at the ground;
+    ``rocked``: the caption's key for what was rocked, when the caller says it instead)."""
     from rockcli.codecheck import rules2019
     from rockcli.codecheck.response import RecordSpectrum
     from rockcli.document.figures import floor_spectra
@@ -372,7 +375,9 @@ def floor_figure(
     where = w(f"figure.floor_caption_{edition}", Z=n(pos.Z, "{:g}"), T1=n(pos.T1, "{:.3g}"),
               psi=n(pos.psi, "{:.3g}"), gamma=n(pos.gamma, "{:.3g}"),
               xi_k=n(100.0 * pos.damping, "{:g}"), damping=damping)  # fmt: skip
-    rocked = "figure.floor_caption_motion" if motion is not None else "figure.floor_caption_ground"
+    rocked = rocked or (
+        "figure.floor_caption_motion" if motion is not None else "figure.floor_caption_ground"
+    )
     fig = floor_spectra(code, pos, edition, motion, record_name, marks, w)
     return figure("floor_spectra", fig, f"{where} {w(rocked)}")
 
@@ -435,13 +440,16 @@ def record_demand_grids(demand: Mapping[str, Any], w: Words) -> list[Block]:
 
 
 def kinematic_section(
-    inputs: Inputs, kin: Mapping[str, Any], w: Words, block: Any = None
+    inputs: Inputs, kin: Mapping[str, Any], w: Words, block: Any = None, catalogue: bool = True
 ) -> Section:
+    """The code's check of the mechanism shown (``catalogue``: with the table of every
+    mechanism of a wall, which the governing mechanism's section has and the others' need
+    not repeat)."""
     from rockcli.document.figures import capacity
 
     n = w.number
     blocks: list[Block] = [Paragraph(w(f"kin.intro_{kin['edition']}"))]
-    if len(kin.get("mechanisms", ())) > 1:
+    if catalogue and len(kin.get("mechanisms", ())) > 1:
         blocks.append(catalogue_grid(kin, w))
     mechs = mechanisms(inputs.model, kin, block)
     blocks.append(activation_grid(mechs, w))
@@ -771,6 +779,14 @@ GUIDES = {"docs/validation.md": "validation", "docs/physics.md": "physics",
           "docs/mechanisms.md": "mechanisms"}  # fmt: skip
 
 
+def case_source(case: Mapping[str, Any], w: Words) -> str:
+    """A case's source in the report's language: its Italian text in an Italian report (the
+    case file's ``source_it``), else as the case file gives it."""
+    if w.lang == "it" and case.get("source_it"):
+        return str(case["source_it"])
+    return str(case["source"])
+
+
 def cited(source: str, w: Words) -> str:
     """A case's source with the project's documents named, not given as repository paths."""
     for path, guide in GUIDES.items():
@@ -783,7 +799,7 @@ def casebook_blocks(casebook: Mapping[str, Any], w: Words) -> list[Block]:
     and the count."""
     n = w.number
     rows = tuple(
-        (c["id"], cited(c["source"], w),
+        (c["id"], cited(case_source(c, w), w),
          f"{c['quantity']} [{c['unit']}]" if c.get("unit") else c["quantity"],
          n(c["expected"], "{:.6g}"), n(c["obtained"], "{:.6g}"), error_text(c.get("error"), w),
          f"{n(c['tolerance'], '{:.1e}')} ({w('tol.' + c['tolerance_type'])})",
@@ -792,8 +808,11 @@ def casebook_blocks(casebook: Mapping[str, Any], w: Words) -> list[Block]:
     )  # fmt: skip
     headers = (w("col.case"), w("col.source"), w("col.quantity"), w("col.expected"),
                w("col.obtained"), w("col.error"), w("col.tolerance"), w("col.outcome"))  # fmt: skip
+    skipped = casebook.get("skipped", 0)
     summary = w("soft.casebook_summary", passed=casebook["passed"], failed=casebook["failed"],
-                skipped=casebook.get("skipped", 0))  # fmt: skip
+                skipped=skipped)  # fmt: skip
+    if skipped:
+        summary += " " + w("soft.casebook_skipped")
     return [Paragraph(summary, "verdict" if not casebook["failed"] else "warning"),
             Grid(w("soft.casebook_caption"), headers, rows,
                  (False, False, False, True, True, True, False, False))]  # fmt: skip

@@ -49,7 +49,8 @@ def code_blocks(kin: Mapping[str, Any], w: Words) -> tuple[list[Block], list[str
                            (w("concl.state"), "ζ_E", w("concl.verdict")), rows,
                            (False, True, False)))  # fmt: skip
     failing = [state for state, _, passed in indices if passed is False]
-    blocks.append(Paragraph(w("concl.code_unsafe", states=", ".join(failing)) if failing
+    states = ", ".join(w(f"ls.{s}") for s in failing)
+    blocks.append(Paragraph(w("concl.code_unsafe", states=states) if failing
                             else w("concl.code_safe")))  # fmt: skip
     return blocks, failing
 
@@ -76,6 +77,7 @@ def conclusions_section(doc: Mapping[str, Any], w: Words, sizing: Any = None) ->
     blocks.append(Paragraph(w(f"concl.rocking_{rocking['verdict']}",
                               ratio=n(rocking["max_ratio"], "{:.3f}"))))  # fmt: skip
     blocks.append(Paragraph(w(f"class.{doc['classification']}"), "verdict"))
+    blocks.append(Paragraph(w(f"concl.paper_{doc['classification']}")))
     blocks += [restrainer_sentence(c, w) for c in rocking.get("restrainer_checks", ())]
     others = [m for m in doc.get("mechanisms", ()) if m["code"].get("ULS") is False]
     if others:
@@ -118,6 +120,7 @@ def suite_conclusions_section(doc: Mapping[str, Any], w: Words) -> Section:
                               limit=n(suite["limit_ratio"], "{:.3g}"),
                               overturned=suite["overturned_records"])))  # fmt: skip
     blocks.append(Paragraph(w(f"class.{doc['classification']}"), "verdict"))
+    blocks.append(Paragraph(w(f"concl.paper_{doc['classification']}")))
     unsafe = bool(failing) or suite["verdict"] != "passes"
     blocks.append(Paragraph(w("concl.next_unsafe" if unsafe else "concl.next_safe")))
     return Section("conclusions", w("section.conclusions"), tuple(blocks))

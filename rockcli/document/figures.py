@@ -257,7 +257,7 @@ def floor_curve_2009(
 ) -> tuple[np.ndarray, np.ndarray]:
     """(T, S) [s, g], T > 0: the displacement demand at height of Circolare 617/2009
     §C8A.4.2.3 (rules2009.height_displacement, read there at T = Ts) as a pseudo-acceleration
-    S = d·(2π/T)²/g (NTC 2008 §3.2.3.2.2, Eq. 3.2.12). It tends to Se(T1)·ψ·γ as T → 0, the
+    S = d·(2π/T)²/g (NTC 2008 §3.2.3.2.3, Eq. 3.2.12). It tends to Se(T1)·ψ·γ as T → 0, the
     demand of the linear checks at height (§C8A.4.2.1–C8A.4.2.2)."""
     import numpy as np
 

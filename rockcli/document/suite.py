@@ -13,8 +13,10 @@ from typing import TYPE_CHECKING, Any
 
 from rockcli.document.build import (
     Inputs,
+    check_position,
     code_spectra_of,
     figure,
+    floor_figure,
     hazard_grid,
     identification,
     kinematic_section,
@@ -57,7 +59,7 @@ def build_suite_document(
     sections = (
         identification(inputs, w),
         model_section(inputs, first["model"], w, first.get("mechanism")),
-        suite_demand_section(inputs, doc, check, w),
+        suite_demand_section(inputs, doc, check, w, first),
         kinematic_section(inputs, doc["kinematic"], w, records[0][0].block),
         suite_rocking_section(doc, records, w),
         suite_comparison_section(doc, w, named(doc, records)),
@@ -81,9 +83,12 @@ def build_suite_document(
 
 
 def suite_demand_section(
-    inputs: Inputs, doc: Mapping[str, Any], check: Mapping[str, Any], w: Words
-) -> Section:
-    """The suite: its records and scales, its target, its compatibility (table and figure)."""
+    inputs: Inputs, doc: Mapping[str, Any], check: Mapping[str, Any], w: Words,
+    first: Mapping[str, Any],
+) -> Section:  # fmt: skip
+    """The suite: its records and scales, its target, its compatibility (table and figure);
+    for a mechanism at height, the code's spectra there (``first``: the first record's
+    `rock assess` document, for g and whether the records were rocked at height)."""
     from rockcli.document.figures import compatibility
 
     n = w.number
@@ -107,6 +112,15 @@ def suite_demand_section(
     ), "verdict" if compat["passed"] else "warning"))  # fmt: skip
     blocks.append(figure("compatibility", compatibility(check, w),
                          w("figure.compatibility_caption")))  # fmt: skip
+    kin = doc["kinematic"]
+    pos = check_position(inputs.model, kin["edition"], kin.get("mechanism"))
+    if pos.at_height and code_spectra:
+        code = [(st, sp) for st, sp, _ in code_spectra]
+        # Each record's floor motion was rocked (not drawn: one curve per record), or with
+        # --ground each record itself.
+        rocked = "suite" if first["record"].get("input") == "floor" else "ground"
+        blocks.append(floor_figure(code, pos, kin["edition"], None, "", first["model"]["g"], {},
+                                   w, rocked=f"figure.floor_caption_{rocked}"))  # fmt: skip
     blocks += [Paragraph(w.note(note), "note") for note in doc.get("notes", [])]
     return Section("demand", w("section.demand"), tuple(blocks))
 

@@ -1,10 +1,10 @@
 """`rock validate`: the JSON document and the terminal Report of a casebook run.
 
 JSON (a fixed contract): ``{"schema", "rock_version", "casebook", "cases": [{"id", "title",
-"kind", "source", "quantity", "unit", "expected", "obtained", "error", "tolerance",
-"tolerance_type", "tolerance_reason", "passed", "status", "note", "file"}], "passed",
-"failed", "skipped"}``; a skipped case has ``"passed": null``, a case without an obtained
-value ``"obtained": null``.
+"kind", "source", "source_it", "quantity", "unit", "expected", "obtained", "error",
+"tolerance", "tolerance_type", "tolerance_reason", "passed", "status", "note", "file"}],
+"passed", "failed", "skipped"}``; a skipped case has ``"passed": null``, a case without an
+obtained value ``"obtained": null``, a case without an Italian source ``"source_it": null``.
 """
 
 from __future__ import annotations
@@ -42,6 +42,7 @@ def case_document(case: CaseResult) -> dict[str, Any]:
         "title": case.title,
         "kind": case.kind,
         "source": case.source,
+        "source_it": case.source_it,
         "quantity": case.quantity,
         "unit": case.unit,
         "expected": case.expected,

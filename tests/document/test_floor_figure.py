@@ -150,3 +150,26 @@ def test_a_block_at_height_has_its_spectra_at_height_after_the_ground_ones() -> 
     assert figures[1].caption.endswith(w("figure.floor_caption_motion"))
     on_record = demand_figures(TOP_STOREY, ground=True)  # --ground: no floor motion
     assert on_record[1].caption.endswith(w("figure.floor_caption_ground"))
+
+
+def test_a_suites_report_at_height_has_the_floor_spectra(tmp_path: Path) -> None:
+    # The altar stands at Z = 3.04 m: the suite's report draws the code's demand there too,
+    # and says that each record's floor motion was rocked.
+    from click.testing import CliRunner
+
+    from rockcli.cli.main import cli
+
+    shared = ROOT.parent / "shared"
+    if not (shared / "records").is_dir() or not (shared / "ntc" / "AllegatoB.txt").is_file():
+        pytest.skip("../shared (the suite's records and the hazard grid) is not beside the clone")
+    out = tmp_path / "suite.html"
+    result = CliRunner().invoke(cli, [
+        "report", str(ROOT / "examples" / "altar.toml"), "--suite",
+        str(ROOT / "examples" / "suites" / "laquila-slv.toml"), "--allow-outside",
+        "--hazard-grid", str(shared / "ntc" / "AllegatoB.txt"), "-o", str(out),
+        "--casebook", "none", "--lang", "en",
+    ])  # fmt: skip
+    assert result.exit_code == 0, result.stderr
+    page = out.read_text(encoding="utf-8")
+    assert 'id="figure-floor_spectra"' in page
+    assert "each record&#39;s floor motion at Z" in page

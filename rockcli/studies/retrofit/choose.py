@@ -17,16 +17,14 @@ from rockcli.studies.strength import FORCE_RTOL
 
 #: The largest utilisation (force / design strength) a rod may reach.
 UTILISATION_LIMIT = 1.0
-#: How to have the code's ULS evaluated (as `rock kinematic` says it).
-ULTIMATE_FIX = "set ntc.ultimate_displacement or a restrainer's fails_at"
 
 
 def failures(row: dict[str, Any]) -> list[Note]:
     """Why a candidate does not pass (empty: it passes), one phrase per criterion."""
     why = []
     if row["code_uls_passed"] is None:
-        why.append(Note("retro_not_evaluated", "the code ULS is not evaluated ({fix})",
-                        fix=ULTIMATE_FIX))  # fmt: skip
+        why.append(Note("retro_not_evaluated", "the code ULS is not evaluated (set "
+                        "ntc.ultimate_displacement or a restrainer's fails_at)"))  # fmt: skip
     elif not row["code_uls_passed"]:
         why.append(Note("retro_code_fails", "the code ULS fails (ζ = {zeta})",
                         zeta=_number(row["code_zeta"])))  # fmt: skip
@@ -41,8 +39,7 @@ def failures(row: dict[str, Any]) -> list[Note]:
             else Note("retro_block_overturns", "the block overturns")
         )
     elif row["rocking"] != "survives":
-        why.append(Note("retro_history", "the time history is {verdict}",
-                        verdict=row["rocking"]))  # fmt: skip
+        why.append(Note("retro_undecided", "the time history is undecided"))
     if row["ruptured"]:
         why.append(Note("retro_ruptures", "the rod ruptures"))
     utilisation = row["utilisation"]
