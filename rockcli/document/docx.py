@@ -97,7 +97,7 @@ def add_paragraph(word, block: Paragraph) -> None:
 def add_grid(word, grid: Grid, caption: str) -> None:
     """A table with its caption above and its header row; numbers right-aligned."""
     from docx.enum.text import WD_ALIGN_PARAGRAPH
-    from docx.shared import Pt
+    from docx.shared import Cm, Pt
 
     word.add_paragraph(caption, style="Caption")
     table = word.add_table(rows=1, cols=len(grid.headers))
@@ -112,10 +112,58 @@ def add_grid(word, grid: Grid, caption: str) -> None:
             paragraph.add_run(text)
             if right:
                 paragraph.alignment = WD_ALIGN_PARAGRAPH.RIGHT
-    for row in table.rows:
-        for cell in row.cells:
+    table.autofit = False
+    widths = column_widths(grid)
+    for column, width in zip(table.columns, widths, strict=True):  # the grid LibreOffice reads
+        column.width = Cm(width)
+    for row in table.rows:  # and each cell's, which Word reads
+        for cell, width in zip(row.cells, widths, strict=True):
+            cell.width = Cm(width)
             for run in cell.paragraphs[0].runs:
-                run.font.size = Pt(8)
+                run.font.size = Pt(table_pt(grid))
+
+
+#: A column's share of the page grows with its text up to this many characters.
+COLUMN_TEXT_CAP = 30
+#: A word longer than this is an identifier, a path, a digest or a TOML key: it may break; a
+#: shorter one (a number, an Italian word) never does.
+WORD_CAP = 14
+#: What a cell's margins take, in characters of its text.
+COLUMN_PADDING = 3
+#: The width of a character of the tables' text per point of its size [cm] (an average
+#: glyph of the serif text, measured on LibreOffice's rendering: 0.176 cm at 8 pt).
+CHAR_CM_PER_PT = 0.022
+#: The tables' text [pt]; a table of WIDE_COLUMNS or more (the casebook's annex) smaller, as
+#: the HTML's table.wide.
+TABLE_PT, WIDE_TABLE_PT, WIDE_COLUMNS = 8, 7, 8
+
+
+def table_pt(grid: Grid) -> int:
+    """The size of a table's text [pt]."""
+    return WIDE_TABLE_PT if len(grid.headers) >= WIDE_COLUMNS else TABLE_PT
+
+
+def column_widths(grid: Grid, total: float = FIGURE_WIDTH_CM) -> list[float]:
+    """Each column's width [cm], the page's ``total`` shared out: first every column gets
+    its longest word (never broken: a number, "Classificazione"), then what is left goes to
+    the columns whose typical cell is longer than that (text that wraps), in proportion; a
+    table whose words alone do not fit shares the page in proportion to them."""
+    columns = list(zip(grid.headers, *grid.rows, strict=True))
+    char = CHAR_CM_PER_PT * table_pt(grid)
+    least, wanted = [], []
+    for texts in columns:
+        words = [len(word) for text in texts for word in str(text).split()] or [1]
+        lengths = sorted(len(str(text)) for text in texts)
+        word = min(max(words), WORD_CAP)
+        typical = min(lengths[len(lengths) // 2], COLUMN_TEXT_CAP)
+        least.append((word + COLUMN_PADDING) * char)
+        wanted.append((max(word, typical) + COLUMN_PADDING) * char)
+    if sum(wanted) <= total:
+        return [w * total / sum(wanted) for w in wanted]
+    if sum(least) >= total:
+        return [w * total / sum(least) for w in least]
+    share = (total - sum(least)) / (sum(wanted) - sum(least))
+    return [lo + (hi - lo) * share for lo, hi in zip(least, wanted, strict=True)]
 
 
 def add_figure(word, figure: Figure, caption: str) -> None:

@@ -184,3 +184,24 @@ def test_a_suites_report_has_its_conclusions(tmp_path: Path) -> None:
     text = html.read_text(encoding="utf-8")
     conclusions = text[text.index('id="conclusions"') : text.index('id="software"')]
     assert "NTC 2018 §7.3.5" in conclusions and "Classificazione" in conclusions
+
+
+def test_a_word_tables_columns_share_the_page_by_their_text() -> None:
+    # The page's width is shared out whole; a column is never narrower than its longest word
+    # needs relative to the others ("Classificazione" stays one word, not "Classificazio-ne").
+    from rockcli.document.content import Grid
+    from rockcli.document.docx import FIGURE_WIDTH_CM, column_widths
+
+    grid = Grid("c", ("Meccanismo", "α0", "Classificazione"),
+                (("ribaltamento semplice del piano 2", "0,4054", "coerente, sicuro"),))  # fmt: skip
+    widths = column_widths(grid)
+    assert sum(widths) == pytest.approx(FIGURE_WIDTH_CM, rel=1e-12)
+    # All fits: each by its typical text plus the margins, "coerente, sicuro" (16) against
+    # the mechanism (33, capped at 30).
+    assert widths[2] / widths[0] == pytest.approx((16 + 3) / (30 + 3))
+    # Too wide for the page: every column keeps at least its longest word.
+    wide = Grid("c", ("Caso", "Fonte", "Esito"),
+                (("a" * 12, " ".join(["parola"] * 60), "superato"),))  # fmt: skip
+    widths = column_widths(wide, total=8.0)
+    assert sum(widths) == pytest.approx(8.0, rel=1e-12)
+    assert widths[0] >= (12 + 3) * 0.176 and widths[2] >= (8 + 3) * 0.176  # 8 pt text
