@@ -76,12 +76,12 @@ def start_up() -> None:
     print("start-up (best, median of 5) [s]")
     best, median = wall([ROCK, "--help"])
     print(f"  rock --help                        {best:.3f}  {median:.3f}")
-    load = "from rockcli.studies.sweep.worker import init_worker; init_worker()"
+    load = "from rockcli.studies.parallel.setup import init_worker; init_worker()"
     best, median = wall([sys.executable, "-c", load])
     print(f"  fresh interpreter + kernels        {best:.3f}  {median:.3f}")
     code = (
         "import time; import rockcli.studies.sweep.run; t = time.perf_counter();"
-        "from rockcli.studies.sweep.worker import warm; warm();"
+        "from rockcli.studies.parallel.setup import warm; warm();"
         "print(time.perf_counter() - t)"
     )
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
@@ -94,9 +94,10 @@ def per_case() -> None:
     from rockcli.codecheck.response import RecordSpectrum, response_spectrum
     from rockcli.studies.assess import assess_model
     from rockcli.studies.kinematic import kinematic_model
+    from rockcli.studies.parallel.setup import warm
     from rockcli.studies.sweep.cases import Case, build_model
     from rockcli.studies.sweep.study import load_study
-    from rockcli.studies.sweep.worker import read_source, warm
+    from rockcli.studies.sweep.worker import read_source
 
     warm()
     plan = load_study(str(STUDIES / "paper-4.4.toml"), records_dir=str(SHARED))

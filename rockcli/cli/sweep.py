@@ -195,8 +195,8 @@ def sweep(
     which no case succeeds exits 2.
     """
     from rockcli.process import interrupted
+    from rockcli.studies.parallel.executor import dask_executor, local_executor
     from rockcli.studies.sweep.cases import expand
-    from rockcli.studies.sweep.executor import dask_executor, local_executor
     from rockcli.studies.sweep.run import SweepInterrupted, run_sweep
     from rockcli.studies.sweep.study import load_study
     from rockcli.terminal.sweep import progress_bar, sweep_report

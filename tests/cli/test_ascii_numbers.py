@@ -17,7 +17,7 @@ from rockcli.errors import InputError
 from rockcli.numbers import ascii_float, ascii_int
 from rockcli.records.periods import parse_periods
 from rockcli.studies.retrofit.candidates import parse_at, parse_diameters
-from rockcli.studies.sweep.study import parse_path
+from rockcli.studies.sweep.paths import parse_path
 from tests.cli.conftest import PULSES, ROOT
 
 WALL = ROOT / "examples" / "wall.toml"

@@ -100,7 +100,7 @@ def test_a_case_the_code_check_refuses_is_a_row_with_its_error(
     # and the study goes on; the summary counts it, never as a collapse. The kinematic check
     # alone, without records and without a code spectrum in the model: every case fails, so
     # the study ends as bad input once it is written (issue 20, item 3).
-    from rockcli.studies.sweep.executor import local_executor
+    from rockcli.studies.parallel.executor import local_executor
     from rockcli.studies.sweep.run import run_sweep
 
     text = STUDY.split("[[records]]")[0].replace("base =", 'analyses = ["kinematic"]\nbase =')

@@ -15,7 +15,7 @@ from click.testing import CliRunner
 from rockcli.cli.main import cli
 from rockcli.cli.sweep import OUT_NAME_MAX, default_out
 from rockcli.errors import InputError
-from rockcli.studies.sweep.executor import check_address, local_executor
+from rockcli.studies.parallel.executor import check_address, local_executor
 from rockcli.studies.sweep.output import cell, escape, unescape
 from rockcli.studies.sweep.run import run_sweep
 from rockcli.studies.sweep.study import load_study

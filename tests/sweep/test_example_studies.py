@@ -14,8 +14,8 @@ from pathlib import Path
 import pytest
 
 from rockcli.model.load import load_model
+from rockcli.studies.parallel.executor import local_executor
 from rockcli.studies.sweep.cases import check_cases, expand
-from rockcli.studies.sweep.executor import local_executor
 from rockcli.studies.sweep.run import run_sweep
 from rockcli.studies.sweep.study import load_study
 from tests.sweep.conftest import STUDIES

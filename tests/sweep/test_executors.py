@@ -15,8 +15,8 @@ import pytest
 from click.testing import CliRunner
 
 from rockcli.cli.main import cli
-from rockcli.studies.sweep import executor as sweep_exec
-from rockcli.studies.sweep.executor import START_METHODS, local_executor, start_method
+from rockcli.studies.parallel import executor as sweep_exec
+from rockcli.studies.parallel.executor import START_METHODS, local_executor, start_method
 from rockcli.studies.sweep.run import run_sweep
 from rockcli.studies.sweep.study import load_study
 from tests.sweep.conftest import WriteStudy

@@ -134,7 +134,7 @@ def test_a_cases_file_another_program_wrote_to_is_not_marked_complete(
 ) -> None:
     # A writer that takes no lock (an older rock, a script) appends a row while the study
     # ends: the summary's pass over cases.csv finds it, and the study stays unfinished.
-    from rockcli.studies.sweep.executor import local_executor
+    from rockcli.studies.parallel.executor import local_executor
     from rockcli.studies.sweep.run import run_sweep
     from rockcli.studies.sweep.study import load_study
 

@@ -57,3 +57,26 @@ def test_studies_has_its_sweep_package() -> None:
 @pytest.mark.parametrize("path", STUDIES, ids=lambda p: str(p.relative_to(ROOT)))
 def test_a_study_module_imports_no_report_cli_click_or_rich(path: Path) -> None:
     assert not forbidden(imported_modules(path))
+
+
+#: Imports run one way between the studies' packages (spec/style.md): each package below may
+#: not import the ones listed for it. parallel is where every study runs, and knows none of
+#: them; a suite in the time history is used by sweep, not the other way round.
+ONE_WAY = {
+    "parallel": ("rockcli.studies.sweep", "rockcli.studies.suite", "rockcli.studies.retrofit"),
+    "suite": ("rockcli.studies.sweep", "rockcli.studies.retrofit"),
+}
+
+
+@pytest.mark.parametrize("package", sorted(ONE_WAY))
+def test_imports_run_one_way_between_the_studies_packages(package: str) -> None:
+    for path in sorted((ROOT / "studies" / package).glob("*.py")):
+        names = imported_modules(path)
+        wrong = {n for n in names for f in ONE_WAY[package] if n == f or n.startswith(f + ".")}
+        assert not wrong, f"{path.relative_to(ROOT)} imports {sorted(wrong)}"
+
+
+def test_the_study_file_and_its_key_paths_import_one_way() -> None:
+    # study.py (the file's schema, load_study) uses paths.py (key paths and axes); not back.
+    names = imported_modules(ROOT / "studies" / "sweep" / "paths.py")
+    assert not any(n.startswith("rockcli.studies.sweep.study") for n in names)

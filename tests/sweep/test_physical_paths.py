@@ -119,8 +119,8 @@ def test_a_case_at_height_rocks_on_the_floor_motion(
 
     from rockcli.records.files import read_record
     from rockcli.studies.assess import assess_model_output
+    from rockcli.studies.parallel.executor import local_executor
     from rockcli.studies.sweep.cases import case_table
-    from rockcli.studies.sweep.executor import local_executor
     from rockcli.studies.sweep.run import run_sweep
 
     study = """\
@@ -158,7 +158,7 @@ def test_a_study_with_ground_rocks_every_case_on_the_record(
 
     from rockcli.records.files import read_record
     from rockcli.studies.assess import assess_model_output
-    from rockcli.studies.sweep.executor import local_executor
+    from rockcli.studies.parallel.executor import local_executor
     from rockcli.studies.sweep.run import run_sweep
 
     study = """\

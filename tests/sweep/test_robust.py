@@ -11,8 +11,8 @@ from typing import Any
 import pytest
 
 from rockcli.errors import InputError
+from rockcli.studies.parallel.executor import local_executor
 from rockcli.studies.sweep import output as sweep_output
-from rockcli.studies.sweep.executor import local_executor
 from rockcli.studies.sweep.run import run_sweep
 from rockcli.studies.sweep.study import load_study
 from tests.sweep.conftest import WriteStudy
@@ -117,10 +117,10 @@ class DyingPool(Executor):
 def test_a_chunk_whose_worker_always_dies_becomes_error_rows(write_study: WriteStudy) -> None:
     # Before: the first BrokenProcessPool aborted the study. Now the pool is restarted and the
     # chunk sent again; after CHUNK_ATTEMPTS deaths its cases are rows with an error.
-    from rockcli.studies.sweep import run as sweep_run
+    from rockcli.studies.parallel import chunks
+    from rockcli.studies.parallel.executor import Lane
     from rockcli.studies.sweep.cases import expand
-    from rockcli.studies.sweep.executor import Lane
-    from rockcli.studies.sweep.worker import Chunk
+    from rockcli.studies.sweep.worker import Chunk, run_chunk
 
     plan = load_study(str(write_study()))
     chunk = Chunk(plan, 0, tuple(expand(plan)[:3]))
@@ -131,23 +131,24 @@ def test_a_chunk_whose_worker_always_dies_becomes_error_rows(write_study: WriteS
         return pools[-1]
 
     lanes = [Lane(restart(), 1, 2, restart)]
-    results = list(sweep_run.run_chunks(lanes, [chunk]))
+    results = list(chunks.run_chunks(lanes, [chunk], run_chunk))
     assert len(results) == 1
     assert [r["case"] for r in results[0]] == [0, 1, 2]
     assert all("died 3 times" in r["error"] for r in results[0])
-    assert sum(p.submitted for p in pools) == sweep_run.CHUNK_ATTEMPTS
-    assert len(pools) == sweep_run.CHUNK_ATTEMPTS + 1  # one restart after each death
+    assert sum(p.submitted for p in pools) == chunks.CHUNK_ATTEMPTS
+    assert len(pools) == chunks.CHUNK_ATTEMPTS + 1  # one restart after each death
 
 
 def test_a_pool_without_restart_still_raises(write_study: WriteStudy) -> None:
-    from rockcli.studies.sweep import run as sweep_run
+    from rockcli.studies.parallel.chunks import run_chunks
+    from rockcli.studies.parallel.executor import Lane
     from rockcli.studies.sweep.cases import expand
-    from rockcli.studies.sweep.executor import Lane
-    from rockcli.studies.sweep.worker import Chunk
+    from rockcli.studies.sweep.worker import Chunk, run_chunk
 
     plan = load_study(str(write_study()))
+    chunk = Chunk(plan, 0, tuple(expand(plan)))
     with pytest.raises(BrokenProcessPool):
-        list(sweep_run.run_chunks([Lane(DyingPool(), 1, 1)], [Chunk(plan, 0, tuple(expand(plan)))]))
+        list(run_chunks([Lane(DyingPool(), 1, 1)], [chunk], run_chunk))
 
 
 def test_a_killed_worker_is_replaced_and_its_chunk_run_again(

@@ -19,9 +19,9 @@ from rockcli.errors import InputError
 from rockcli.model.load import validate_model
 from rockcli.records.files import read_record
 from rockcli.studies.compare import compare_model_output
+from rockcli.studies.parallel.executor import local_executor
 from rockcli.studies.sweep import run as sweep_run
 from rockcli.studies.sweep.cases import case_table, expand
-from rockcli.studies.sweep.executor import local_executor
 from rockcli.studies.sweep.output import RESULT_COLUMNS
 from rockcli.studies.sweep.run import SweepResult, run_sweep
 from rockcli.studies.sweep.study import StudyPlan, load_study

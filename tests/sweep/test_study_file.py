@@ -12,7 +12,8 @@ from pathlib import Path
 import pytest
 
 from rockcli.errors import InputError
-from rockcli.studies.sweep.study import load_study, parse_path
+from rockcli.studies.sweep.paths import parse_path
+from rockcli.studies.sweep.study import load_study
 from tests.sweep.conftest import STUDY, WriteStudy
 
 

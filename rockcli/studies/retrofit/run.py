@@ -1,7 +1,7 @@
 """Run the candidates of a retrofit: both analyses of each diameter, on the sweep's lanes.
 
 Each candidate is one case of a chunk sent to the sweep executor's lanes
-(:func:`rockcli.studies.sweep.run.run_chunks`): this process's thread with ``--jobs 1``, and
+(:func:`rockcli.studies.parallel.chunks.run_chunks`): this process's thread with ``--jobs 1``, and
 worker processes with more. The chunk carries the model table, not a model: the worker
 validates it again (pickling a pydantic model is not cheaper, and the table is what the plan
 validated). A candidate's row is plain data (SI units), keyed by its case id.
@@ -23,7 +23,7 @@ if TYPE_CHECKING:
     from rockcli.dynamics.result import Assessment
     from rockcli.records.record import Record
     from rockcli.studies.assess import AssessmentOutput
-    from rockcli.studies.sweep.executor import Lane
+    from rockcli.studies.parallel.executor import Lane
 
 
 @dataclass(frozen=True)
@@ -183,7 +183,7 @@ def run_retrofit(
 
     Raises RuntimeError when a worker process died on a candidate (the sweep's row error).
     """
-    from rockcli.studies.sweep.run import run_chunks
+    from rockcli.studies.parallel.chunks import run_chunks
 
     cases = [Candidate(i, d) for i, d in enumerate(plan.diameters_mm)]
     chunks = [RetrofitChunk(plan, record, analyses, (c,)) for c in cases]
@@ -219,9 +219,9 @@ def size_rod(model_path: str, record: Record, analyses: Analyses) -> Sizing:
     diameters, its steel), in this process: the smallest diameter that passes the code's ULS,
     the time history and the rod's own checks (rockcli.studies.retrofit.choose)."""
     from rockcli.model.load import read_toml, validate_model
+    from rockcli.studies.parallel.executor import local_executor
     from rockcli.studies.retrofit.candidates import DEFAULT_DIAMETERS_MM, make_plan, tie_rods
     from rockcli.studies.retrofit.choose import choose
-    from rockcli.studies.sweep.executor import local_executor
 
     table = read_toml(model_path)
     model = validate_model(table, file=model_path)

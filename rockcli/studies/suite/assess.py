@@ -105,7 +105,7 @@ def assess_loaded(
     """:func:`assess_suite` on a model and suite already read (``mechanism``: a wall's
     mechanism rocked under every record; None: the governing one)."""
     from rockcli.model.plausible import model_warnings
-    from rockcli.studies.sweep.executor import local_executor
+    from rockcli.studies.parallel.executor import local_executor
     from rockcli.suites.run import check_numbers
 
     settings, model = loaded.settings, loaded.model

@@ -1,5 +1,5 @@
 """Run a suite of records through the time history: every record, both polarities, on the
-sweep executor's lanes (:func:`rockcli.studies.sweep.run.run_chunks`), each record a chunk.
+sweep executor's lanes (:func:`rockcli.studies.parallel.chunks.run_chunks`), each record a chunk.
 
 The chunk carries the model's table, not a model: the worker validates it again (as
 ``rock retrofit`` does). A record's row is plain data, keyed by its place in the suite, and
@@ -16,7 +16,7 @@ from rockcli.studies.suite.rule import RecordOutcome
 
 if TYPE_CHECKING:
     from rockcli.records.record import Record
-    from rockcli.studies.sweep.executor import Lane
+    from rockcli.studies.parallel.executor import Lane
 
 
 @dataclass(frozen=True)
@@ -149,7 +149,7 @@ def run_suite(
 ) -> list[dict[str, Any]]:
     """Every record's row in the suite's order, each record a chunk on the lanes. A record
     whose worker died twice is a row with an ``error`` (rockcli.studies.sweep.run)."""
-    from rockcli.studies.sweep.run import run_chunks
+    from rockcli.studies.parallel.chunks import run_chunks
 
     chunks = [
         SuiteChunk(

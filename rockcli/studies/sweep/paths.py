@@ -9,21 +9,76 @@ value is set in them; the case's validation then says whether the result is a va
 
 from __future__ import annotations
 
+import re
 from collections.abc import Mapping, Sequence
+from dataclasses import dataclass
 from typing import Any, get_args, get_origin
 
-from pydantic import BaseModel
+from pydantic import BaseModel, Field
 
 from rockcli.errors import InputError
 from rockcli.model.schema import Model
-from rockcli.studies.sweep.study import (
-    PATH_ALLOWED,
-    Axis,
-    AxisSpec,
-    KeyPath,
-    Scalar,
-    parse_path,
+from rockcli.model.schema_base import Table
+
+#: A value an axis sets: a TOML scalar.
+Scalar = bool | int | float | str
+#: A key path inside the model: ("restrainers", 0, "k_pos").
+KeyPath = tuple[str | int, ...]
+
+_PATH = re.compile(
+    r"^[A-Za-z_][A-Za-z0-9_]*(\[\d+\])*(\.[A-Za-z_][A-Za-z0-9_]*(\[\d+\])*)*$", re.ASCII
 )
+_PART = re.compile(r"([A-Za-z_][A-Za-z0-9_]*)|\[(\d+)\]", re.ASCII)
+PATH_ALLOWED = "dotted keys with [i] indices, e.g. geometry.R or restrainers[0].k_pos"
+
+
+class AxisSpec(Table):
+    """One axis of the grid: a model field (or several set together) and its values."""
+
+    path: str | tuple[str, ...] = Field(
+        ..., description="a key path such as geometry.R, or an array of them set together"
+    )
+    values: tuple[Scalar | tuple[Scalar, ...], ...] = Field(
+        ...,
+        min_length=1,
+        description="a non-empty array of numbers, text or booleans (with several paths, "
+        "each an array of one value per path, or one value for all)",
+    )
+    name: str | None = Field(
+        None,
+        min_length=1,
+        description="a non-empty label (default: the last key of the first path)",
+    )
+
+    @property
+    def paths(self) -> tuple[str, ...]:
+        """The key paths as text."""
+        return (self.path,) if isinstance(self.path, str) else self.path
+
+
+@dataclass(frozen=True)
+class Axis:
+    """An axis ready to expand: its label, key paths and values (one tuple per path)."""
+
+    name: str
+    paths: tuple[KeyPath, ...]
+    texts: tuple[str, ...]
+    values: tuple[tuple[Scalar, ...], ...]
+
+    def label(self, index: int) -> Scalar:
+        """The index-th value as shown: the value, or ``a/b`` when the paths differ."""
+        value = self.values[index]
+        if all(v == value[0] and type(v) is type(value[0]) for v in value):
+            return value[0]
+        return "/".join(str(v) for v in value)
+
+
+def parse_path(text: str) -> KeyPath | None:
+    """``restrainers[0].k_pos`` → ("restrainers", 0, "k_pos"); None if the syntax is bad."""
+    if not _PATH.match(text):
+        return None
+    return tuple(key if key else int(index) for key, index in _PART.findall(text))
+
 
 #: Column names of the results: an axis cannot take them.
 RESERVED = frozenset(

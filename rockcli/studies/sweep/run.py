@@ -12,18 +12,17 @@ from __future__ import annotations
 
 import math
 import time
-from collections import deque
 from collections.abc import Callable, Iterable, Iterator, Mapping, MutableSequence, Sequence
-from concurrent.futures import FIRST_COMPLETED, BrokenExecutor, Future, wait
 from contextlib import contextmanager
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Any, Protocol, TypeVar, cast
+from typing import Any
 
 from rockcli.errors import InputError
 from rockcli.process import interrupted
+from rockcli.studies.parallel.chunks import run_chunks
+from rockcli.studies.parallel.executor import Lane
 from rockcli.studies.sweep.cases import Case, check_cases, expand
-from rockcli.studies.sweep.executor import Lane
 from rockcli.studies.sweep.output import Output, PartialWrite, cell
 from rockcli.studies.sweep.study import StudyPlan
 from rockcli.studies.sweep.suite import suite_checks
@@ -46,25 +45,6 @@ Progress = Callable[[int, int], None]
 #: Lowest measured speed factor used (a case timed much faster than estimated is a fluke of
 #: the clock; chunks stay at most CHUNK_SECONDS / MIN_SPEED of estimated work).
 MIN_SPEED = 0.25
-#: Times a chunk is run when the worker running it dies (then its cases are error rows).
-CHUNK_ATTEMPTS = 3
-#: Pool breaks a study survives (a pool that breaks at every start is a broken setup).
-MAX_RESTARTS = 20
-WORKER_DIED = (
-    "the worker process running this case died {} times (killed, or out of memory); "
-    "rerun the study, or run this case alone"
-)
-
-
-class Batch(Protocol):
-    """Work for one submission: its cases, each with an ``id`` (a :class:`Chunk`, or the
-    chunk of another study run on the same lanes, e.g. rockcli.studies.retrofit.run)."""
-
-    @property
-    def cases(self) -> Sequence[Any]: ...
-
-
-B = TypeVar("B", bound=Batch)
 
 
 class SweepInterrupted(KeyboardInterrupt):
@@ -131,7 +111,7 @@ def measure(plan: StudyPlan, case: Case, npts: Sequence[int]) -> tuple[list[dict
     then sized by measured time, so a slow engine or machine still gets chunks of about
     CHUNK_SECONDS, and Ctrl-C stops within about that). The kernels are loaded first, so
     their loading is not timed."""
-    from rockcli.studies.sweep.worker import warm
+    from rockcli.studies.parallel.setup import warm
 
     warm()
     start = time.perf_counter()
@@ -139,76 +119,6 @@ def measure(plan: StudyPlan, case: Case, npts: Sequence[int]) -> tuple[list[dict
     elapsed = time.perf_counter() - start
     estimate = case_cost(plan, npts[case.record] if case.record is not None else 0)
     return rows, max(MIN_SPEED, elapsed / estimate) if estimate else 1.0
-
-
-def run_chunks(
-    lanes: MutableSequence[Lane],
-    chunks: Sequence[B],
-    work: Callable[[B], list[dict[str, Any]]] | None = None,
-) -> Iterator[list[dict[str, Any]]]:
-    """The rows of each chunk as it completes (any order): ``work(chunk)`` on a lane
-    (default :func:`~rockcli.studies.sweep.worker.run_chunk`, a study's chunks; a module-level
-    function, so that a worker process can import it).
-
-    Each lane (an executor and its capacity) holds at most its capacity of submitted chunks;
-    the next chunk goes to the first lane with room. A process pool that breaks (a worker
-    killed: the OOM killer, a signal) is restarted and its chunks submitted again, up to
-    :data:`CHUNK_ATTEMPTS` times each; then the chunk's cases are rows with an error. Any
-    other error cancels what is queued and is raised.
-    """
-    run = work if work is not None else cast(Callable[[B], list[dict[str, Any]]], run_chunk)
-    pending: dict[Future[list[dict[str, Any]]], tuple[int, B]] = {}
-    load = [0] * len(lanes)
-    todo: deque[B] = deque(chunks)
-    attempts: dict[int, int] = {}
-    restarts = 0
-    try:
-        while True:
-            for i, lane in enumerate(lanes):
-                while load[i] < lane.capacity and todo:
-                    chunk = todo.popleft()
-                    try:
-                        future = lanes[i].executor.submit(run, chunk)
-                    except BrokenExecutor:  # broke before one of its futures said so
-                        if lanes[i].restart is None or restarts >= MAX_RESTARTS:
-                            raise
-                        restarts += _restart(lanes, i)
-                        todo.appendleft(chunk)
-                        continue
-                    pending[future] = (i, chunk)
-                    load[i] += 1
-            if not pending:
-                return
-            done, _ = wait(pending, return_when=FIRST_COMPLETED)
-            for future in done:
-                i, chunk = pending.pop(future)
-                load[i] -= 1
-                try:
-                    rows = future.result()
-                except BrokenExecutor:
-                    if lanes[i].restart is None or restarts >= MAX_RESTARTS:
-                        raise
-                    restarts += _restart(lanes, i)
-                    attempts[id(chunk)] = tries = attempts.get(id(chunk), 0) + 1
-                    if tries < CHUNK_ATTEMPTS:
-                        todo.appendleft(chunk)
-                        continue
-                    rows = [{"case": c.id, "error": WORKER_DIED.format(tries)} for c in chunk.cases]
-                yield rows
-    finally:
-        for future in pending:
-            future.cancel()
-
-
-def _restart(lanes: MutableSequence[Lane], i: int) -> bool:
-    """A new executor in lane i when its pool broke (once per break: a pool already replaced
-    is not replaced again by the other chunks it failed)."""
-    lane = lanes[i]
-    if lane.restart is None or not getattr(lane.executor, "_broken", True):
-        return False
-    lane.executor.shutdown(wait=False, cancel_futures=True)
-    lanes[i] = lane._replace(executor=lane.restart())
-    return True
 
 
 def record_facts(plan: StudyPlan) -> tuple[list[int], dict[str, dict[str, Any]]]:
@@ -333,7 +243,7 @@ class Runner:
                 todo = todo[1:]
             workers = sum(lane.workers for lane in lanes)
             chunks = make_chunks(self.plan, todo, npts, workers, size, speed)
-            for chunk_rows in run_chunks(lanes, chunks):
+            for chunk_rows in run_chunks(lanes, chunks, run_chunk):
                 self.save(chunk_rows)
 
     def save(self, chunk_rows: list[dict[str, Any]]) -> None:

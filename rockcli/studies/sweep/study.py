@@ -14,7 +14,6 @@ every machine whatever the records folder.
 from __future__ import annotations
 
 import os
-import re
 import stat
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
@@ -30,17 +29,7 @@ from rockcli.errors import InputError
 from rockcli.inside import path_error
 from rockcli.model.schema_base import Table
 from rockcli.records.kinds import FILE_FORMATS, RecordFormat
-
-#: A value an axis sets: a TOML scalar.
-Scalar = bool | int | float | str
-#: A key path inside the model: ("restrainers", 0, "k_pos").
-KeyPath = tuple[str | int, ...]
-
-_PATH = re.compile(
-    r"^[A-Za-z_][A-Za-z0-9_]*(\[\d+\])*(\.[A-Za-z_][A-Za-z0-9_]*(\[\d+\])*)*$", re.ASCII
-)
-_PART = re.compile(r"([A-Za-z_][A-Za-z0-9_]*)|\[(\d+)\]", re.ASCII)
-PATH_ALLOWED = "dotted keys with [i] indices, e.g. geometry.R or restrainers[0].k_pos"
+from rockcli.studies.sweep.paths import Axis, AxisSpec, check_axes
 
 
 class Analysis(StrEnum):
@@ -55,30 +44,6 @@ class EngineName(StrEnum):
 
     FAST = "fast"
     REFERENCE = "reference"
-
-
-class AxisSpec(Table):
-    """One axis of the grid: a model field (or several set together) and its values."""
-
-    path: str | tuple[str, ...] = Field(
-        ..., description="a key path such as geometry.R, or an array of them set together"
-    )
-    values: tuple[Scalar | tuple[Scalar, ...], ...] = Field(
-        ...,
-        min_length=1,
-        description="a non-empty array of numbers, text or booleans (with several paths, "
-        "each an array of one value per path, or one value for all)",
-    )
-    name: str | None = Field(
-        None,
-        min_length=1,
-        description="a non-empty label (default: the last key of the first path)",
-    )
-
-    @property
-    def paths(self) -> tuple[str, ...]:
-        """The key paths as text."""
-        return (self.path,) if isinstance(self.path, str) else self.path
 
 
 class RecordSpec(Table):
@@ -179,23 +144,6 @@ class Study(Table):
 
 
 @dataclass(frozen=True)
-class Axis:
-    """An axis ready to expand: its label, key paths and values (one tuple per path)."""
-
-    name: str
-    paths: tuple[KeyPath, ...]
-    texts: tuple[str, ...]
-    values: tuple[tuple[Scalar, ...], ...]
-
-    def label(self, index: int) -> Scalar:
-        """The index-th value as shown: the value, or ``a/b`` when the paths differ."""
-        value = self.values[index]
-        if all(v == value[0] and type(v) is type(value[0]) for v in value):
-            return value[0]
-        return "/".join(str(v) for v in value)
-
-
-@dataclass(frozen=True)
 class RecordSource:
     """A record file and how to read it, or a suite file (hashable: the key of the workers'
     cache).
@@ -244,13 +192,6 @@ class StudyPlan:
     #: Run each rocking case again at tighter tolerances (--check-tolerance): a ``sensitive``
     #: column and a count of sensitive cases (rockcli.dynamics.tolerance).
     check_tolerance: bool = False
-
-
-def parse_path(text: str) -> KeyPath | None:
-    """``restrainers[0].k_pos`` → ("restrainers", 0, "k_pos"); None if the syntax is bad."""
-    if not _PATH.match(text):
-        return None
-    return tuple(key if key else int(index) for key, index in _PART.findall(text))
 
 
 def study_error(err: ErrorDetails, file: str) -> InputError:
@@ -387,7 +328,6 @@ def load_study(
             $ROCK_HAZARD_GRID when a site needs it).
     """
     from rockcli.model.load import read_toml
-    from rockcli.studies.sweep.paths import check_axes
 
     study = validate_study(read_toml(file), file)
     here = Path(file).parent

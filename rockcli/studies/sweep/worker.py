@@ -10,7 +10,6 @@ The module imports nothing heavy at the top, so a spawned worker can set its env
 
 from __future__ import annotations
 
-import os
 import threading
 import unicodedata
 from collections.abc import Sequence
@@ -18,14 +17,6 @@ from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
 from rockcli.errors import InputError
-from rockcli.process import (
-    SERVER_ENV,
-    exit_with_parent,
-    expected_parent,
-    ignore_interrupts,
-    quick_exit,
-    set_death_signal,
-)
 from rockcli.studies.sweep.cases import Case, build_model, case_error
 from rockcli.studies.sweep.study import RecordSource, StudyPlan
 
@@ -36,15 +27,6 @@ if TYPE_CHECKING:
     from rockcli.mechanics import Block
     from rockcli.model.schema import Model
     from rockcli.records.record import Record
-
-#: One thread per worker process: the pool is the parallelism (spec/engine.md: never numba
-#: threads inside a process pool).
-SINGLE_THREAD = {
-    "NUMBA_NUM_THREADS": "1",
-    "OMP_NUM_THREADS": "1",
-    "OPENBLAS_NUM_THREADS": "1",
-    "MKL_NUM_THREADS": "1",
-}
 
 _records: dict[RecordSource, Record] = {}
 _spectra: dict[tuple[RecordSource, float], RecordSpectrum] = {}
@@ -58,36 +40,6 @@ class Chunk:
     plan: StudyPlan
     record: int | None
     cases: tuple[Case, ...]
-
-
-def init_worker() -> None:
-    """Process-pool initializer: Ctrl-C ignored (`rock sweep` handles it), an exit with the
-    parent (a killed `rock sweep` leaves no worker behind), one thread, the compiled kernels
-    loaded, a quick exit."""
-    ignore_interrupts()
-    if os.environ.get(SERVER_ENV):  # a fork of the single-threaded server: prctl is safe
-        set_death_signal()
-    exit_with_parent(expected_parent())
-    single_thread()
-    warm()
-    quick_exit()
-
-
-def single_thread() -> None:
-    """One numba/BLAS thread in this process (set before numpy and numba load)."""
-    for key, value in SINGLE_THREAD.items():
-        os.environ.setdefault(key, value)
-
-
-def warm() -> None:
-    """Load (or compile) the rocking engine and the response-spectrum recurrence."""
-    import numpy as np
-
-    from rockcli.codecheck.response import peak_displacement_uniform
-    from rockcli.dynamics.warmup import warmup
-
-    warmup()
-    peak_displacement_uniform(np.zeros(4), 0.01, np.array([6.0]), 0.05)
 
 
 def read_source(source: RecordSource) -> Record:

@@ -24,7 +24,7 @@ def prepare() -> None:
     ignore_interrupts()
     die_with_creator()  # the server dies with `rock sweep`, and its workers with it
     os.environ[SERVER_ENV] = str(os.getpid())  # the workers' parent (init_worker)
-    from rockcli.studies.sweep.worker import single_thread, warm
+    from rockcli.studies.parallel.setup import single_thread, warm
 
     single_thread()
     warm()

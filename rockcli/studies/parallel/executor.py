@@ -8,7 +8,7 @@ scale"):
 - ``--jobs N``: that thread and a :class:`~concurrent.futures.ProcessPoolExecutor` of N − 1
   processes, forks of a ``forkserver`` that has loaded numpy, numba and the compiled kernels
   once (``spawn`` where there is no fork server; never ``fork``: numba and threads), each
-  with one thread (:func:`rockcli.studies.sweep.worker.init_worker`);
+  with one thread (:func:`rockcli.studies.parallel.setup.init_worker`);
 - ``--scheduler tcp://host:8786`` (or DASK_SCHEDULER_ADDRESS): ``distributed.Client(addr)
   .get_executor()``, from the ``dask`` extra (``pip install '.[dask]'`` from the
   repository's folder). The workers need rock installed and the record files at the same
@@ -32,7 +32,7 @@ from rockcli.process import CREATOR_ENV, interrupts_blocked, start_resource_trac
 #: Start methods of the local worker processes, in order of preference (never fork: numba).
 START_METHODS = ("forkserver", "spawn")
 #: Module the fork server imports before forking workers (loads the compiled kernels).
-PRELOAD = "rockcli.studies.sweep.forkserver"
+PRELOAD = "rockcli.studies.parallel.forkserver"
 #: Seconds to wait for a dask scheduler to answer.
 CONNECT_TIMEOUT = 10.0
 #: Chunks in flight per worker process (one running, one queued).
@@ -62,7 +62,7 @@ def process_executor(workers: int) -> ProcessPoolExecutor:
     worker) imports numpy and numba while this process validates the cases and reads the
     records, and the first chunks start in this process meanwhile.
     """
-    from rockcli.studies.sweep.worker import init_worker
+    from rockcli.studies.parallel.setup import init_worker
 
     method = start_method()
     context = multiprocessing.get_context(method)
