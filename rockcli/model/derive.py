@@ -282,9 +282,7 @@ def restitution(model: Model) -> tuple[float, str]:
         return table.e, EXPLICIT
     factor = 1.0 if table.factor is None else table.factor
     e = max(housner_restitution(model.geometry.polar[1]), 0.0) * factor
-    rule = Note("housner", "Housner (1 − 1.5 sin²α)")
-    if model.loads:
-        rule = Note("housner_loads", "Housner of the block with its loads")
+    rule = HOUSNER_LOADS if model.loads else HOUSNER
     return e, rule if factor == 1.0 else factored(factor, rule)
 
 
@@ -449,8 +447,11 @@ def steel_resistance(model: Model, table: RestrainerTable) -> tuple[TensionResis
     return tension_resistance(area, fy, fu, factor, anchor), steel
 
 
-#: The coefficient of restitution as the model gives it.
+#: The coefficient of restitution as the model gives it, or Housner's (of the block alone, or
+#: with its loads).
 EXPLICIT = Note("explicit", "explicit")
+HOUSNER = Note("housner", "Housner (1 − 1.5 sin²α)")
+HOUSNER_LOADS = Note("housner_loads", "Housner of the block with its loads")
 #: The strength of a member set by its anchor (rather than a steel's resistance).
 ANCHOR = Note("anchor_capacity", "anchor capacity")
 
