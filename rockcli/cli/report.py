@@ -170,15 +170,8 @@ def report(
         if retrofit:
             raise InputError("not with --suite yet", where="--retrofit",
                              allowed="--retrofit with --record")  # fmt: skip
-        if len(model_paths) > 1:
-            raise InputError(
-                "one model with --suite",
-                where="MODEL",
-                value=" ".join(model_paths),
-                allowed="one model with --suite; several models with --record",
-            )
         written = write_suite_report(
-            model_paths[0], suite_path, target, grid_file, **common, allow_outside=allow_outside,
+            model_paths, suite_path, target, grid_file, **common, allow_outside=allow_outside,
             options={"code_demand": code_demand, "edition": edition, "engine": engine,
                      "ground": ground},
         )  # fmt: skip

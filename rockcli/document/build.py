@@ -17,7 +17,7 @@ from typing import TYPE_CHECKING, Any
 
 from rockcli.document.content import Block, Document, Figure, Grid, Paragraph, Section
 from rockcli.document.tolerance import other_warnings, tolerance_paragraphs
-from rockcli.document.walls import Part, rekeyed
+from rockcli.document.walls import Part, merged_files, rekeyed
 from rockcli.document.words import Words
 
 #: The limit states of the code's verdict per edition (2019's verdict also sums them up as
@@ -73,8 +73,7 @@ def build_document(parts: Sequence[Part], lang: str) -> Document:
         raise ValueError("the report of one record needs its record (a suite: document.suite)")
     many = len(parts) > 1
     if many:
-        files = tuple(dict.fromkeys(f for part in parts for f in part.inputs.files))
-        inputs = replace(inputs, files=files)
+        inputs = replace(inputs, files=merged_files([part.inputs for part in parts]))
     summary = (summary_section(parts, w),) if many or parts[0].doc.get("mechanisms") else ()
     body = [
         rekeyed(s, f"w{i}", part.doc["rocking"]["model"]["name"]) if many else s

@@ -163,7 +163,7 @@ def write_document(
 
 
 def write_suite_report(
-    model_path: str,
+    model_paths: Sequence[str],
     suite_path: str,
     target: str | None,
     grid_file: str | None,
@@ -177,35 +177,47 @@ def write_suite_report(
     front: dict[str, Any] | None = None,
     docx_path: str | None = None,
 ) -> list[tuple[str, str]]:
-    """Compare the model under the suite (as `rock compare --suite`), keep each record's
-    history for the figures, write the report; what was written (allow_outside: the
-    suite's records may lie outside its folder, --allow-outside)."""
+    """Compare each model under the suite (as `rock compare --suite`), keep each record's
+    history for the figures, write one report; what was written (allow_outside: the suite's
+    records may lie outside its folder, --allow-outside). Every model and the suite are read
+    and checked before any analysis runs."""
     from rockcli.document.build import Inputs
-    from rockcli.document.suite import build_suite_document
-    from rockcli.studies.assess import assess_model_output
+    from rockcli.document.suite import SuitePart, build_suite_document
     from rockcli.studies.suite.assess import load_suite_and_model
-    from rockcli.studies.suite.compare import compare_loaded
     from rockcli.suites.run import suite_document
+
+    loads = [load_suite_and_model(path, suite_path, grid_file, target, allow_outside)
+             for path in model_paths]  # fmt: skip
+    front = report_front(front, grid_file)
+    parts = []
+    for path, loaded in zip(model_paths, loads, strict=True):
+        doc, runs = suite_comparison(loaded, path, grid_file, options)
+        files = [("model", path)]
+        if Path(suite_path).is_file():
+            files.append(("suite", suite_path))
+        files += [("record", str(entry.path)) for entry in loaded.settings.entries]
+        files += [("hazard_grid", grid_file)] if grid_file else []
+        inputs = Inputs(path, loaded.model, None, tuple(files), command, report_date(), **front)
+        parts.append(SuitePart(inputs, doc, suite_document(loaded.check), runs))
+    document = build_suite_document(parts, lang)
+    verdict = ", ".join(str(part.doc["classification"]) for part in parts)
+    return write_document(document, html_path, pdf_path, verdict, docx_path)
+
+
+def suite_comparison(
+    loaded: Any, path: str, grid_file: str | None, options: dict[str, Any]
+) -> tuple[dict[str, Any], list[tuple[Any, dict[str, Any], Record]]]:
+    """`rock compare --suite`'s document of a loaded model and suite, and each record's time
+    history with its history kept (its `rock assess` document, the scaled record)."""
+    from rockcli.studies.assess import assess_model_output
+    from rockcli.studies.suite.compare import compare_loaded
     from rockcli.terminal.assess import assessment_output_document
     from rockcli.terminal.suite import suite_comparison_document
 
-    loaded = load_suite_and_model(model_path, suite_path, grid_file, target, allow_outside)
-    comparison = compare_loaded(loaded, grid_file, **options)
-    doc = suite_comparison_document(comparison)
-    records = loaded.check.records
+    doc = suite_comparison_document(compare_loaded(loaded, grid_file, **options))
     runs = []
-    engine, ground = options["engine"], options["ground"]
-    for record in records:
-        out = assess_model_output(
-            loaded.model, record, engine, ground=ground, file=model_path, history=True
-        )
+    for record in loaded.check.records:
+        out = assess_model_output(loaded.model, record, options["engine"],
+                                  ground=options["ground"], file=path, history=True)  # fmt: skip
         runs.append((out, assessment_output_document(out, record), record))
-    files = [("model", model_path)]
-    if Path(suite_path).is_file():
-        files.append(("suite", suite_path))
-    files += [("record", str(entry.path)) for entry in loaded.settings.entries]
-    files += [("hazard_grid", grid_file)] if grid_file else []
-    front = report_front(front, grid_file)
-    inputs = Inputs(model_path, loaded.model, None, tuple(files), command, report_date(), **front)
-    document = build_suite_document(inputs, doc, suite_document(loaded.check), runs, lang)
-    return write_document(document, html_path, pdf_path, doc["classification"], docx_path)
+    return doc, runs

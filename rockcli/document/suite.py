@@ -9,6 +9,7 @@ kept (the same function, the same numbers).
 from __future__ import annotations
 
 from collections.abc import Mapping, Sequence
+from dataclasses import dataclass, replace
 from typing import TYPE_CHECKING, Any
 
 from rockcli.document.build import (
@@ -32,54 +33,104 @@ if TYPE_CHECKING:
     from rockcli.studies.assess import AssessmentOutput
 
 
-def build_suite_document(
-    inputs: Inputs,
-    doc: Mapping[str, Any],
-    check: Mapping[str, Any],
-    records: Sequence[tuple[AssessmentOutput, Mapping[str, Any], Record]],
-    lang: str,
-) -> Document:
-    """The report of a suite comparison.
+@dataclass(frozen=True)
+class SuitePart:
+    """One model of a suite's report.
 
-    Args:
+    Attributes:
         inputs: the model, the files, the command line (``record`` None).
         doc: the `rock compare --suite` JSON document.
         check: the `rock suite check` JSON document of the suite (its compatibility).
         records: each record's time history with its history kept, its `rock assess`
             document and the scaled record, in the suite's order.
-        lang: the report's language.
     """
+
+    inputs: Inputs
+    doc: Mapping[str, Any]
+    check: Mapping[str, Any]
+    records: Sequence[tuple[AssessmentOutput, Mapping[str, Any], Record]]
+
+
+def build_suite_document(parts: Sequence[SuitePart], lang: str) -> Document:
+    """The report of a suite comparison of one model or several (a building's walls: one
+    summary over them, then each model's sections titled with its name)."""
     from rockcli import __version__
     from rockcli.document.build import annex_sections
-    from rockcli.document.conclusions import suite_conclusions_section
     from rockcli.document.front import cover_rows, own_sections, signature_lines
+    from rockcli.document.walls import merged_files, rekeyed
 
     w = Words(lang)
+    inputs = parts[0].inputs
+    many = len(parts) > 1
+    if many:
+        inputs = replace(inputs, files=merged_files([part.inputs for part in parts]))
+    names = [part.doc["model"]["name"] for part in parts]
+    body = [
+        rekeyed(s, f"w{i}", names[i - 1]) if many else s
+        for i, part in enumerate(parts, 1)
+        for s in suite_sections(part, w)
+    ]
+    summary = (suite_summary_section(parts, w),) if many else ()
+    suite = parts[0].doc["suite_name"]
+    subtitle = (w("report.subtitle_suite_many", n=len(parts), suite=suite) if many
+                else w("report.subtitle_suite", model=names[0], suite=suite))  # fmt: skip
+    return Document(
+        lang=lang,
+        title=w("report.title"),
+        subtitle=subtitle,
+        sections=(identification(inputs, w), *own_sections(inputs.project), *summary, *body,
+                  software_section(inputs.casebook, w, inputs.casebook_place)),  # fmt: skip
+        cover=cover_rows(inputs.project, inputs.date, w),
+        signature=signature_lines(inputs.project, inputs.date, w),
+        annexes=annex_sections(inputs.casebook, w, inputs.casebook_place),
+        header=f"rock {__version__} — {', '.join(names)}",
+        footer=w("report.footer", date=inputs.date),
+        labels={k: w(f"label.{k}") for k in ("contents", "figure", "table", "page", "annex")},
+    )
+
+
+def suite_sections(part: SuitePart, w: Words) -> list[Section]:
+    """One model's sections: the model, the suite and its demand, the code check on the
+    target, every record's time history, the comparison, the conclusions."""
+    from rockcli.document.conclusions import suite_conclusions_section
+
+    inputs, doc, records = part.inputs, part.doc, part.records
     first = records[0][1]
-    sections = (
-        identification(inputs, w),
+    return [
         model_section(inputs, first["model"], w, first.get("mechanism")),
-        suite_demand_section(inputs, doc, check, w, first),
+        suite_demand_section(inputs, doc, part.check, w, first),
         kinematic_section(inputs, doc["kinematic"], w, records[0][0].block),
         suite_rocking_section(doc, records, w),
         suite_comparison_section(doc, w, named(doc, records)),
         suite_conclusions_section(doc, w),
-        software_section(inputs.casebook, w, inputs.casebook_place),
-    )
-    ordered = (sections[0], *own_sections(inputs.project), *sections[1:])
-    name = doc["model"]["name"]
-    return Document(
-        lang=lang,
-        title=w("report.title"),
-        subtitle=w("report.subtitle_suite", model=name, suite=doc["suite_name"]),
-        sections=ordered,
-        cover=cover_rows(inputs.project, inputs.date, w),
-        signature=signature_lines(inputs.project, inputs.date, w),
-        annexes=annex_sections(inputs.casebook, w, inputs.casebook_place),
-        header=f"rock {__version__} — {name}",
-        footer=w("report.footer", date=inputs.date),
-        labels={k: w(f"label.{k}") for k in ("contents", "figure", "table", "page", "annex")},
-    )
+    ]
+
+
+def suite_summary_section(parts: Sequence[SuitePart], w: Words) -> Section:
+    """Every model under the suite in one table: the mechanism its comparison shows (a
+    wall's governing one), α0, ζ_E at SLD and SLV on the target, the records' θ/α by the
+    code's rule and its verdict, the classification."""
+    from rockcli.document.conclusions import risk_indices
+
+    n = w.number
+    rows = []
+    for part in parts:
+        doc = part.doc
+        kin, suite = doc["kinematic"], doc["suite"]
+        zeta = {state: ratio for state, ratio, _ in risk_indices(kin)}
+        mechanism = kin.get("mechanism")
+        rows.append((doc["model"]["name"],
+                     w.note(mechanism) if mechanism else w("summary.whole_block"),
+                     n(kin["alpha0"]), n(zeta.get("SLD", zeta.get("DLS")), "{:.3f}"),
+                     n(zeta.get("SLV", zeta.get("ULS")), "{:.3f}"),
+                     n(suite["measure"], "{:.3f}"), w(f"suite.verdict_short_{suite['verdict']}"),
+                     w(f"kind.{doc['classification']}")))  # fmt: skip
+    headers = (w("summary.element"), w("cmp.mechanism"), "α0", "ζ_E SLD", "ζ_E SLV", "θ/α",
+               w("cmp.rocking_verdict"), w("cmp.classification"))  # fmt: skip
+    grid = Grid(w("summary.suite_caption"), headers, tuple(rows),
+                (False, False, True, True, True, True, False, False))  # fmt: skip
+    return Section("summary", w("section.summary"),
+                   (Paragraph(w("summary.suite_intro")), grid))  # fmt: skip
 
 
 def suite_demand_section(

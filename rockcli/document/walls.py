@@ -30,6 +30,13 @@ class Part:
     sizing: Any = None
 
 
+def merged_files(inputs: Sequence[Any]) -> tuple[tuple[str, str], ...]:
+    """The input files of several models' inputs, each once: the models first, in order, then
+    the others (the record or the suite, its records, the grid) as the first model lists them."""
+    files = dict.fromkeys(f for i in inputs for f in i.files)
+    return tuple([f for f in files if f[0] == "model"] + [f for f in files if f[0] != "model"])
+
+
 def summary_section(parts: Sequence[Part], w: Words) -> Section:
     """Every wall's every mechanism in one table, each wall's governing mechanism first."""
     many = len(parts) > 1
