@@ -78,8 +78,13 @@ def build_suite_document(parts: Sequence[SuitePart], lang: str) -> Document:
         lang=lang,
         title=w("report.title"),
         subtitle=subtitle,
-        sections=(identification(inputs, w), *own_sections(inputs.project), *summary, *body,
-                  software_section(inputs.casebook, w, inputs.casebook_place)),  # fmt: skip
+        sections=(
+            identification(inputs, w),
+            *own_sections(inputs.project),
+            *summary,
+            *body,
+            software_section(inputs.casebook, w, inputs.casebook_place),
+        ),  # fmt: skip
         cover=cover_rows(inputs.project, inputs.date, w),
         signature=signature_lines(inputs.project, inputs.date, w),
         annexes=annex_sections(inputs.casebook, w, inputs.casebook_place),
