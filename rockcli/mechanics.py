@@ -390,8 +390,13 @@ class Block:
 
     @property
     def uplift_acceleration(self) -> float:
-        """Ground acceleration that starts rocking from rest [g]: the lower of the two sides."""
-        return min(uplift_accelerations(self))
+        """Ground acceleration that starts rocking from rest [g]: the lower of the two sides,
+        or the free side's when the block can rotate to one side only (the stopped side's
+        threshold, possibly negative for a wedge leaning on its return walls, is no uplift)."""
+        pos, neg = uplift_accelerations(self)
+        if self.one_sided:
+            return pos if self.free_side == POSITIVE else neg
+        return min(pos, neg)
 
     @property
     def loaded(self) -> bool:

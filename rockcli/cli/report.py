@@ -180,11 +180,16 @@ def report(
         return
     # No check_hazard_grid: besides a site of the model, the grid serves the casebook's
     # hazard-grid cases in the report's §10.2 section.
-    if mechanism_name is not None and len(model_paths) > 1:
-        from rockcli.errors import InputError
+    from rockcli.errors import InputError
 
+    if mechanism_name is not None and len(model_paths) > 1:
         raise InputError("names a mechanism of one model", where="--mechanism",
                          value=mechanism_name, allowed="--mechanism with one model")  # fmt: skip
+    if retrofit and code_demand != "record":
+        # rock retrofit checks each diameter on the record's spectrum (one earthquake).
+        raise InputError("sizes the rod on the record's spectrum", where="--retrofit",
+                         value=f"--code-demand {code_demand}",
+                         allowed="--retrofit with --code-demand record (the default)")  # fmt: skip
     record = load_record(record_path, record_format, dt, units, scale, pga)
     written = write_report(
         model_paths,

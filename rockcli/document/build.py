@@ -506,16 +506,34 @@ def catalogue_grid(kin: Mapping[str, Any], w: Words) -> Grid:
 
 
 def mechanisms(model: Model, kin: Mapping[str, Any], block: Any = None) -> dict[int, Any]:
-    """The check's mechanism on each side it looks at (studies.kinematic.mechanism: the block,
-    its loads and thrusts as the check took them), keyed by side. ``block``: the body the
-    time history rocked (a wall's mechanism as a block of its shape; default: the model's)."""
+    """The check's mechanism on each side it looks at, keyed by side: a wall's mechanism as
+    the catalogue checks it (studies.catalogue.mechanism_of, its hinge where the check put
+    it: a vertical flexure's two blocks, not the block it rocks as), else the block with its
+    loads and thrusts as the check took them (studies.kinematic.mechanism; ``block``: the
+    body the time history rocked, default the model's)."""
     from rockcli.model.derive import to_block
+    from rockcli.model.derive_wall import is_wall
     from rockcli.studies.kinematic import check_settings, mechanism
 
-    block = to_block(model) if block is None else block
     settings = check_settings(model, kin["edition"])
-    sides = {int(s) for s in kin.get("alpha0_by_side", {})} | {int(kin["side"])}
-    return {side: mechanism(block, settings, side) for side in sorted(sides, reverse=True)}
+    sides = sorted({int(s) for s in kin.get("alpha0_by_side", {})} | {int(kin["side"])},
+                   reverse=True)  # fmt: skip
+    if is_wall(model) and kin.get("mechanism") is not None:
+        from dataclasses import replace as replaced
+
+        from rockcli.mechanisms.wall import OPTIMAL
+        from rockcli.model.derive_wall import to_wall
+        from rockcli.studies.catalogue import mechanism_of
+        from rockcli.studies.rocked import named_spec
+
+        wall = to_wall(model)
+        spec = named_spec(wall, kin["mechanism"])
+        entry = next((m for m in kin.get("mechanisms", ()) if m["name"] == kin["mechanism"]), None)
+        if spec.hinge_height == OPTIMAL and entry is not None:
+            spec = replaced(spec, hinge_height=float(entry["hinge_height"]))
+        return {side: mechanism_of(wall, spec, side, settings) for side in sides}
+    block = to_block(model) if block is None else block
+    return {side: mechanism(block, settings, side) for side in sides}
 
 
 def participating_mass_of(mechs: Mapping[int, Any], kin: Mapping[str, Any]) -> float:

@@ -57,10 +57,32 @@ def code_blocks(kin: Mapping[str, Any], w: Words) -> tuple[list[Block], list[str
 
 def is_unsafe(doc: Mapping[str, Any]) -> bool:
     """Whether the comparison asks for an intervention: a limit state of the code check of the
-    mechanism shown fails, another mechanism fails the ULS, or the time history overturns."""
+    mechanism shown fails, another mechanism fails the ULS, or a mechanism overturns in the
+    time history (the one shown or another)."""
     failing = [state for state, _, passed in risk_indices(doc["kinematic"]) if passed is False]
-    others = [m for m in doc.get("mechanisms", ()) if m["code"].get("ULS") is False]
-    return bool(failing or others) or doc["rocking"]["verdict"] == "overturns"
+    return bool(failing or unsafe_mechanisms(doc) or overturning_mechanisms(doc)) or (
+        doc["rocking"]["verdict"] == "overturns"
+    )
+
+
+def needs_retrofit(doc: Mapping[str, Any]) -> bool:
+    """Whether a tie-rod is to be sized (rock retrofit's criteria: the code's ULS and the time
+    history; a damage limit state alone is not what a tie-rod is sized for)."""
+    uls = [passed for state, _, passed in risk_indices(doc["kinematic"])
+           if state in ("SLV", "SLC", "ULS")]  # fmt: skip
+    return (False in uls or bool(unsafe_mechanisms(doc) or overturning_mechanisms(doc))
+            or doc["rocking"]["verdict"] == "overturns")  # fmt: skip
+
+
+def unsafe_mechanisms(doc: Mapping[str, Any]) -> list[Mapping[str, Any]]:
+    """The wall's mechanisms whose code check fails at the ULS."""
+    return [m for m in doc.get("mechanisms", ()) if m["code"].get("ULS") is False]
+
+
+def overturning_mechanisms(doc: Mapping[str, Any]) -> list[Mapping[str, Any]]:
+    """The wall's mechanisms that overturn in the time history."""
+    return [m for m in doc.get("mechanisms", ())
+            if m.get("rocking") and m["rocking"]["verdict"] == "overturns"]  # fmt: skip
 
 
 def conclusions_section(doc: Mapping[str, Any], w: Words, sizing: Any = None) -> Section:
@@ -79,10 +101,14 @@ def conclusions_section(doc: Mapping[str, Any], w: Words, sizing: Any = None) ->
     blocks.append(Paragraph(w(f"class.{doc['classification']}"), "verdict"))
     blocks.append(Paragraph(w(f"concl.paper_{doc['classification']}")))
     blocks += [restrainer_sentence(c, w) for c in rocking.get("restrainer_checks", ())]
-    others = [m for m in doc.get("mechanisms", ()) if m["code"].get("ULS") is False]
+    others = unsafe_mechanisms(doc)
     if others:
         names = ", ".join(f"'{w.note(m['name'])}'" for m in others)
         blocks.append(Paragraph(w("concl.mechanisms_unsafe", names=names)))
+    falling = overturning_mechanisms(doc)
+    if falling:
+        names = ", ".join(f"'{w.note(m['name'])}'" for m in falling)
+        blocks.append(Paragraph(w("concl.mechanisms_overturn", names=names), "warning"))
     unsafe = is_unsafe(doc)
     blocks.append(Paragraph(w("concl.next_unsafe" if unsafe else "concl.next_safe")))
     if sizing is not None:
@@ -99,11 +125,14 @@ def sizing_paragraph(sizing: Any, w: Words) -> Paragraph:
     values = {"rod": sizing.rod, "grade": sizing.grade, "bars": sizing.bars,
               "lo": w.number(sizing.diameters_mm[0], "{:g}"),
               "hi": w.number(sizing.diameters_mm[-1], "{:g}")}  # fmt: skip
+    installed = "" if sizing.installed_mm is None else " " + w(
+        "concl.retrofit_installed", d=w.number(sizing.installed_mm, "{:g}"))  # fmt: skip
     if sizing.chosen is None:  # the failures of the largest diameter
         why = getattr(sizing.reason, "values", {}).get("why", sizing.reason)
-        return Paragraph(w("concl.retrofit_none", reason=w.note(why), **values), "warning")
-    return Paragraph(w("concl.retrofit_found", d=w.number(sizing.chosen["diameter_mm"], "{:g}"),
-                       **values), "verdict")  # fmt: skip
+        text = w("concl.retrofit_none", reason=w.note(why), **values)
+        return Paragraph(text + installed, "warning")
+    text = w("concl.retrofit_found", d=w.number(sizing.chosen["diameter_mm"], "{:g}"), **values)
+    return Paragraph(text + installed, "verdict")
 
 
 def suite_conclusions_section(doc: Mapping[str, Any], w: Words) -> Section:

@@ -112,10 +112,10 @@ def wall_comparisons(
 def wall_sizing(path: str, record: Record, doc: dict[str, Any], options: dict[str, Any]) -> Any:
     """What rock retrofit finds for the model's tie-rod when the comparison asks for an
     intervention ("not needed" otherwise)."""
-    from rockcli.document.conclusions import is_unsafe
+    from rockcli.document.conclusions import needs_retrofit
     from rockcli.studies.retrofit.run import Analyses, size_rod
 
-    if not is_unsafe(doc):
+    if not needs_retrofit(doc):
         return "not needed"
     analyses = Analyses(options.get("engine", "fast"), options.get("edition"),
                         options.get("ground", False))  # fmt: skip

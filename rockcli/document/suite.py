@@ -115,23 +115,23 @@ def suite_summary_section(parts: Sequence[SuitePart], w: Words) -> Section:
     """Every model under the suite in one table: the mechanism its comparison shows (a
     wall's governing one), α0, ζ_E at SLD and SLV on the target, the records' θ/α by the
     code's rule and its verdict, the classification."""
-    from rockcli.document.conclusions import risk_indices
+    from rockcli.document.walls import zeta_pair
 
     n = w.number
     rows = []
     for part in parts:
         doc = part.doc
         kin, suite = doc["kinematic"], doc["suite"]
-        zeta = {state: ratio for state, ratio, _ in risk_indices(kin)}
-        mechanism = kin.get("mechanism")
+        dls, uls = zeta_pair(kin)
+        shown = kin.get("mechanism") if len(kin.get("mechanisms", ())) > 1 else None
         rows.append((doc["model"]["name"],
-                     w.note(mechanism) if mechanism else w("summary.whole_block"),
-                     n(kin["alpha0"]), n(zeta.get("SLD", zeta.get("DLS")), "{:.3f}"),
-                     n(zeta.get("SLV", zeta.get("ULS")), "{:.3f}"),
+                     w.note(shown) if shown else w("summary.whole_block"),
+                     n(kin["alpha0"]), n(dls, "{:.3f}"), n(uls, "{:.3f}"),
                      n(suite["measure"], "{:.3f}"), w(f"suite.verdict_short_{suite['verdict']}"),
                      w(f"kind.{doc['classification']}")))  # fmt: skip
-    headers = (w("summary.element"), w("cmp.mechanism"), "α0", "ζ_E SLD", "ζ_E SLV", "θ/α",
-               w("cmp.rocking_verdict"), w("cmp.classification"))  # fmt: skip
+    headers = (w("summary.element"), w("cmp.mechanism"), "α0", w("summary.zeta_dls"),
+               w("summary.zeta_uls"), "θ/α", w("cmp.rocking_verdict"),
+               w("cmp.classification"))  # fmt: skip
     grid = Grid(w("summary.suite_caption"), headers, tuple(rows),
                 (False, False, True, True, True, True, False, False))  # fmt: skip
     return Section("summary", w("section.summary"),

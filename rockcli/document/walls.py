@@ -45,8 +45,9 @@ def summary_section(parts: Sequence[Part], w: Words) -> Section:
         for part in parts
         for row in summary_rows(part.doc["rocking"]["model"]["name"], part.doc, w)
     )
-    headers = (w("summary.element"), w("cmp.mechanism"), "α0", "ζ_E SLD", "ζ_E SLV",
-               "max θ/α", w("cmp.rocking_verdict"), w("cmp.classification"))  # fmt: skip
+    headers = (w("summary.element"), w("cmp.mechanism"), "α0", w("summary.zeta_dls"),
+               w("summary.zeta_uls"), "max θ/α", w("cmp.rocking_verdict"),
+               w("cmp.classification"))  # fmt: skip
     numeric = (False, False, True, True, True, True, False, False)
     grid = Grid(w("summary.caption"), headers[0 if many else 1 :], rows,
                 numeric[0 if many else 1 :])  # fmt: skip
@@ -54,16 +55,24 @@ def summary_section(parts: Sequence[Part], w: Words) -> Section:
     return Section("summary", w("section.summary"), (Paragraph(intro), grid))
 
 
+def zeta_pair(kin: Mapping[str, Any]) -> tuple[float | None, float | None]:
+    """(ζ_E of the damage limit state, ζ_E of the ultimate ones): the risk indices of the
+    check (rockcli.document.conclusions.risk_indices), the ultimate one the smaller of SLV and
+    SLC, as the catalogue ranks its mechanisms (None: not evaluated)."""
+    zeta = {state: ratio for state, ratio, _ in risk_indices(kin)}
+    uls = [r for r in (zeta.get(s) for s in ("SLV", "SLC", "ULS")) if r is not None]
+    return zeta.get("SLD", zeta.get("DLS")), (min(uls) if uls else None)
+
+
 def summary_rows(name: str, doc: Mapping[str, Any], w: Words) -> Iterator[tuple[str, ...]]:
     """A wall's rows: each mechanism of its catalogue, or its one block."""
     n = w.number
     kin = doc["kinematic"]
     if not doc.get("mechanisms"):
-        zeta = {state: ratio for state, ratio, _ in risk_indices(kin)}
+        dls, uls = zeta_pair(kin)
         rocking = doc["rocking"]
-        yield (name, w("summary.whole_block"), n(kin["alpha0"]),
-               n(zeta.get("SLD", zeta.get("DLS")), "{:.3f}"),
-               n(zeta.get("SLV", zeta.get("ULS")), "{:.3f}"), n(rocking["max_ratio"], "{:.3f}"),
+        yield (name, w("summary.whole_block"), n(kin["alpha0"]), n(dls, "{:.3f}"),
+               n(uls, "{:.3f}"), n(rocking["max_ratio"], "{:.3f}"),
                w(f"cmp.rocked_{rocking['verdict']}"),
                w(f"kind.{doc['classification']}"))  # fmt: skip
         return

@@ -75,15 +75,19 @@ def mechanism_block(model: Model, wall: Wall, spec: MechanismSpec) -> Block:
     try:
         return system_restitution(flexure_block(wall, spec, block), model)
     except UpperMemberError as exc:
-        raise InputError(
-            f"the time history cannot rock '{spec.name}' with restrainer '{exc.member}' on its "
-            f"upper block ({exc.z:g} m above the storey's base, between the intermediate hinge "
-            f"at {exc.hinge:.3f} m and the held top at {exc.top:g} m)",
-            where="restrainers",
-            value=exc.member,
-            allowed="restrainers of a vertical flexure at or below its intermediate hinge, or "
-            "at its storey's top; rock kinematic checks it as given",
-        ) from None
+        from rockcli.notes import Note
+
+        problem = Note(
+            "cannot_rock_upper", "the time history cannot rock '{name}' with restrainer "
+            "'{member}' on its upper block ({z:g} m above the storey's base, between the "
+            "intermediate hinge at {hinge:.3f} m and the held top at {top:g} m)",
+            name=spec.name, member=exc.member, z=float(exc.z), hinge=float(exc.hinge),
+            top=float(exc.top),
+        )  # fmt: skip
+        allowed = Note("upper_allowed", "restrainers of a vertical flexure at or below its "
+                       "intermediate hinge, or at its storey's top; rock kinematic checks it as "
+                       "given")  # fmt: skip
+        raise InputError(problem, where="restrainers", value=exc.member, allowed=allowed) from None
 
 
 def system_restitution(block: Block, model: Model) -> Block:

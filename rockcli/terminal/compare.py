@@ -5,6 +5,7 @@ from __future__ import annotations
 from typing import TYPE_CHECKING, Any
 
 from rockcli import __version__
+from rockcli.notes import Note
 from rockcli.records.record import Record
 from rockcli.terminal.assess import strength_caveat
 from rockcli.terminal.kinematic import EDITION_TEXT, ULTIMATE_FIX, actions_table, demand_line
@@ -18,9 +19,10 @@ if TYPE_CHECKING:
 SCHEMA = 1
 #: The warning and the verdict's tail when the code check did not see the record
 #: (`--code-demand model`).
-DIFFERENT_EARTHQUAKES = (
-    "the code check used the model's spectrum, not the record: "
-    "the two sides see different earthquakes"
+DIFFERENT_EARTHQUAKES = Note(
+    "different_earthquakes",
+    "the code check used the model's spectrum, not the record: the two sides see different "
+    "earthquakes",
 )
 
 

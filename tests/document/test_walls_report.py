@@ -24,6 +24,8 @@ FACADE = ROOT / "examples" / "facade.toml"
 ALTAR = ROOT / "examples" / "altar.toml"
 RICKER = ROOT / "records" / "ricker_Tp0.5s_0.5g.txt"
 SINE = ROOT / "records" / "one-sine_Tp1s_0.35g.txt"
+#: The conclusions' opening words when an intervention is needed (messages/en.toml).
+NEXT_UNSAFE = "An intervention is needed"
 
 pytest.importorskip("jinja2", reason="the report extra (jinja2) is not installed")
 pytest.importorskip("matplotlib", reason="the report extra (matplotlib) is not installed")
@@ -110,8 +112,9 @@ def test_the_retrofit_in_the_conclusions_is_rock_retrofits(tmp_path: Path) -> No
     chosen = json.loads(out)["chosen"]
     assert chosen is not None
     page = report(tmp_path, str(FACADE), "--record", str(SINE), "--retrofit")
-    found = re.search(r"Intervention \(rock retrofit[^<]*is Ø(\d+) mm", page)
+    found = re.search(r"Intervention \(rock retrofit[^<]*?is Ø(\d+) mm", page)
     assert found is not None and float(found.group(1)) == chosen["diameter_mm"]
+    assert "The rod in the model is Ø20 mm." in page  # facade.toml's tie-rod
 
 
 def test_the_retrofit_without_a_tie_rod_says_how_to_place_one(tmp_path: Path) -> None:
@@ -153,3 +156,31 @@ def test_retrofit_is_refused_with_a_suite(tmp_path: Path) -> None:
     code, _, err = run("report", str(ALTAR), "--suite", str(suite), "--retrofit",
                        "-o", str(tmp_path / "r.html"))  # fmt: skip
     assert code == 2 and "--retrofit" in err, err
+
+
+def test_each_mechanisms_section_shows_its_own_activation_multiplier(wall_page: str) -> None:
+    # The virtual-work table of every mechanism's section is the catalogue's own mechanism
+    # (a vertical flexure's two blocks, not the block it rocks as): its α0, the smaller over
+    # the sides it lists, is the summary's.
+    summary = {r[0]: float(r[1]) for r in summary_rows(wall_page)}
+    sections = re.findall(r'<section id="mechanism-\d+".*?</section>', wall_page, flags=re.S)
+    assert sections
+    for section in sections:
+        name = re.search(r"Mechanism '([^']+)'", section).group(1)  # type: ignore[union-attr]
+        table = re.search(r"<caption>[^<]*α0 by virtual work.*?</table>", section, flags=re.S)
+        assert table is not None, name
+        rows = re.findall(r"<tr>(.*?)</tr>", table.group(0), flags=re.S)[1:]
+        alpha0 = min(float(re.findall(r"<td[^>]*>(.*?)</td>", r)[-1]) for r in rows)
+        assert alpha0 == pytest.approx(summary[name], rel=5e-4), name
+
+
+def test_the_conclusions_name_another_mechanism_that_overturns(tmp_path: Path) -> None:
+    # Under the one-sine pulse the gable overturns in the time history while the mechanism
+    # compared first survives: the conclusions must not call the wall safe.
+    page = report(tmp_path, str(WALL), "--record", str(SINE), "--mechanisms", "governing")
+    falling = [r[0] for r in summary_rows(page) if r[5] == "overturns"]
+    assert falling  # the gable (max θ/α ≈ 6 under this pulse)
+    conclusions = re.search(r'<section id="conclusions".*?</section>', page, flags=re.S)
+    assert conclusions is not None
+    assert "In the time history these overturn: " + f"'{falling[0]}'" in conclusions.group(0)
+    assert NEXT_UNSAFE in conclusions.group(0)

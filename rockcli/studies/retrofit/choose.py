@@ -26,8 +26,12 @@ def failures(row: dict[str, Any]) -> list[Note]:
         why.append(Note("retro_not_evaluated", "the code ULS is not evaluated (set "
                         "ntc.ultimate_displacement or a restrainer's fails_at)"))  # fmt: skip
     elif not row["code_uls_passed"]:
-        why.append(Note("retro_code_fails", "the code ULS fails (ζ = {zeta})",
-                        zeta=_number(row["code_zeta"])))  # fmt: skip
+        zeta = row["code_zeta"]
+        why.append(
+            Note("retro_code_fails", "the code ULS fails (ζ = {zeta:.3f})", zeta=float(zeta))
+            if zeta is not None
+            else Note("retro_code_fails_unknown", "the code ULS fails")
+        )
     mechanism = row.get("mechanism")
     if mechanism and not row.get("on_mechanism", True):
         why.append(Note("retro_not_on", "the rod is not on the governing mechanism "
@@ -73,7 +77,3 @@ def choose(rows: Sequence[dict[str, Any]]) -> tuple[dict[str, Any] | None, Note]
     why = Items(failures(largest), "; ")
     return None, Note("retro_none", "none in the range: at the largest, {d:g} mm, {why}",
                       d=float(largest["diameter_mm"]), why=why)  # fmt: skip
-
-
-def _number(value: float | None) -> str:
-    return "not evaluated" if value is None else f"{value:.3f}"

@@ -212,6 +212,8 @@ class Sizing:
     bars: int = 0
     diameters_mm: tuple[float, ...] = ()
     chosen: dict[str, Any] | None = None
+    #: The diameter of the rod in the model [mm] (None: not given).
+    installed_mm: float | None = None
 
 
 def size_rod(model_path: str, record: Record, analyses: Analyses) -> Sizing:
@@ -238,4 +240,6 @@ def size_rod(model_path: str, record: Record, analyses: Analyses) -> Sizing:
     with local_executor(1) as lanes:
         rows = run_retrofit(plan, record, lanes, analyses)
     chosen, reason = choose(rows)
-    return Sizing(reason, plan.name, plan.grade, plan.count, plan.diameters_mm, chosen)
+    installed = model.restrainers[rods[0]].diameter
+    return Sizing(reason, plan.name, plan.grade, plan.count, plan.diameters_mm, chosen,
+                  None if installed is None else 1e3 * float(installed))  # fmt: skip

@@ -180,7 +180,8 @@ def demand_notes(
     """What the code check's demand is, and the model's [ntc] settings it does not use."""
     target = loaded.settings.target
     if code_demand is SuiteCodeDemand.SUITE_MEAN:
-        return ("code demand: the suite's mean spectrum at every limit state",)
+        return (Note("suite_mean_demand", "code demand: the suite's mean spectrum at every limit "
+                     "state"),)  # fmt: skip
     notes = []
     differ = [
         Note(
