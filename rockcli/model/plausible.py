@@ -14,6 +14,7 @@ import math
 
 from rockcli.model.derive import attachment, block_weight, steel_resistance, stiffness
 from rockcli.model.schema import Model, Restrainer, RestrainerKind
+from rockcli.notes import Items, Note
 
 #: Thickest plausible masonry element [m] (the thickest walls of fortresses are ~ 5 m).
 MAX_THICKNESS = 5.0
@@ -41,6 +42,14 @@ MIN_STIFFNESS_RATIO = 1e-3
 STANDARD_GRAVITY, GRAVITY_RTOL = 9.80665, 0.02
 
 
+#: The sides a stiffness acts on, as a warning names them.
+SIDE_WORDS = {
+    "θ > 0": Note("side_pos", "θ > 0"),
+    "θ < 0": Note("side_neg", "θ < 0"),
+    "both sides": Note("side_both", "both sides"),
+}
+
+
 def model_warnings(model: Model) -> tuple[str, ...]:
     """Every warning of a model, in the order of the file (empty for a plausible model)."""
     return (
@@ -51,61 +60,73 @@ def model_warnings(model: Model) -> tuple[str, ...]:
     )
 
 
-def _geometry_warnings(model: Model) -> list[str]:
+def _geometry_warnings(model: Model) -> list[Note]:
     b, h = model.geometry.half_sizes
     R, alpha = model.geometry.polar
     found = []
     if 2 * b > MAX_THICKNESS:
-        found.append(
-            f"geometry: thickness 2b = {2 * b:g} m, thicker than any masonry wall "
-            f"(> {MAX_THICKNESS:g} m): a thickness in millimetres or centimetres?"
-        )
+        found.append(Note(
+            "warn_thick", "geometry: thickness 2b = {t:g} m, thicker than any masonry wall "
+            "(> {limit:g} m): a thickness in millimetres or centimetres?",
+            t=2 * b, limit=MAX_THICKNESS,
+        ))  # fmt: skip
     if 2 * h > MAX_HEIGHT:
-        found.append(
-            f"geometry: height 2h = {2 * h:g} m, taller than a plausible rocking block "
-            f"(> {MAX_HEIGHT:g} m): a height in millimetres or centimetres?"
-        )
+        found.append(Note(
+            "warn_tall", "geometry: height 2h = {h:g} m, taller than a plausible rocking block "
+            "(> {limit:g} m): a height in millimetres or centimetres?",
+            h=2 * h, limit=MAX_HEIGHT,
+        ))  # fmt: skip
     if R > MAX_SEMI_DIAGONAL:
-        found.append(
-            f"geometry: semi-diagonal R = {R:g} m (> {MAX_SEMI_DIAGONAL:g} m): "
-            "a length in millimetres or centimetres?"
-        )
+        found.append(Note(
+            "warn_R", "geometry: semi-diagonal R = {R:g} m (> {limit:g} m): a length in "
+            "millimetres or centimetres?", R=R, limit=MAX_SEMI_DIAGONAL,
+        ))  # fmt: skip
     if alpha > SQUAT_ALPHA:
-        found.append(
-            f"geometry: thickness 2b = {2 * b:g} m exceeds height 2h = {2 * h:g} m "
-            f"(α = {alpha:.4g} rad > π/4): thickness and height swapped, or one of them "
-            "in other units?"
-        )
+        found.append(Note(
+            "warn_squat", "geometry: thickness 2b = {t:g} m exceeds height 2h = {h:g} m "
+            "(α = {alpha:.4g} rad > π/4): thickness and height swapped, or one of them in "
+            "other units?", t=2 * b, h=2 * h, alpha=alpha,
+        ))  # fmt: skip
     return found
 
 
-def _mass_warnings(model: Model) -> list[str]:
+def _mass_warnings(model: Model) -> list[Note]:
     mass, width = model.mass, model.geometry.width
     if mass is None:
         return []
     if mass.unit_weight is not None:
-        gamma, source = mass.unit_weight, f"mass.unit_weight = {mass.unit_weight:g} kN/m³"
+        gamma = mass.unit_weight
+        source = Note("unit_weight_given", "mass.unit_weight = {gamma:g} kN/m³",
+                      gamma=float(gamma))  # fmt: skip
     elif mass.weight is not None and width is not None:
         b, h = model.geometry.half_sizes
         gamma = mass.weight / (2 * b * 2 * h * width)
-        source = (
-            f"mass.weight = {mass.weight:g} kN over the volume 2b·2h·width = "
-            f"{2 * b * 2 * h * width:.4g} m³ gives {gamma:.4g} kN/m³"
-        )
+        source = Note(
+            "unit_weight_derived", "mass.weight = {weight:g} kN over the volume 2b·2h·width = "
+            "{volume:.4g} m³ gives {gamma:.4g} kN/m³", weight=float(mass.weight),
+            volume=2 * b * 2 * h * width, gamma=gamma,
+        )  # fmt: skip
     else:
         return []
     if MIN_UNIT_WEIGHT <= gamma <= MAX_UNIT_WEIGHT:
         return []
-    return [
-        f"{source}, outside masonry's {MIN_UNIT_WEIGHT:g}–{MAX_UNIT_WEIGHT:g} kN/m³: "
-        "a weight in kg or tonnes, a unit weight in kg/m³, or a wrong width?"
-    ]
+    return [Note(
+        "warn_unit_weight", "{source}, outside masonry's {lo:g}–{hi:g} kN/m³: a weight in kg or "
+        "tonnes, a unit weight in kg/m³, or a wrong width?", source=source,
+        lo=float(MIN_UNIT_WEIGHT), hi=float(MAX_UNIT_WEIGHT),
+    )]  # fmt: skip
 
 
-def _restrainer_warnings(model: Model) -> list[str]:
-    found = [
-        f"restrainers[{i}].diameter = {r.diameter:g} m, thicker than a tie-rod "
-        f"(> {MAX_TIE_ROD_DIAMETER:g} m): a diameter in millimetres?"
+def _restrainer_warnings(model: Model) -> list[Note]:
+    found: list[Note] = [
+        Note(
+            "warn_diameter",
+            "restrainers[{i}].diameter = {d:g} m, thicker than a tie-rod "
+            "(> {limit:g} m): a diameter in millimetres?",
+            i=i,
+            d=float(r.diameter),
+            limit=MAX_TIE_ROD_DIAMETER,
+        )  # fmt: skip
         for i, r in enumerate(model.restrainers)
         if r.kind is RestrainerKind.TIE_ROD
         and r.diameter is not None
@@ -133,7 +154,7 @@ def _strengths(model: Model, table: Restrainer) -> list[tuple[str, float]]:
     return given
 
 
-def _weak_strengths(model: Model, i: int, table: Restrainer, weight: float) -> list[str]:
+def _weak_strengths(model: Model, i: int, table: Restrainer, weight: float) -> list[Note]:
     """A warning when a strength is below MIN_STRENGTH_FRACTION · W·b/z (all such named).
 
     W·b is the block's stabilising moment about either pivot at rest (paper Eq. 1: the weight
@@ -148,21 +169,22 @@ def _weak_strengths(model: Model, i: int, table: Restrainer, weight: float) -> l
         return []
     reference = weight * b / z
     weak = [
-        f"{key} = {force:.4g} N"
+        Note("strength_value", "{key} = {force:.4g} N", key=key, force=float(force))
         for key, force in _strengths(model, table)
         if force < MIN_STRENGTH_FRACTION * reference
     ]
     if not weak:
         return []
-    return [
-        f"restrainers[{i}]: {', '.join(weak)}, below {MIN_STRENGTH_FRACTION:.0%} of W·b/z = "
-        f"{reference:.4g} N (the force at its height z = {z:.3g} m whose moment equals the "
-        f"block's W·b, W = {weight / 1e3:.4g} kN, b = {b:.3g} m): too weak to change the "
-        "verdict; a force in kN where N is asked (1000 times too small)?"
-    ]
+    return [Note(
+        "warn_weak", "restrainers[{i}]: {weak}, below {share:.0%} of W·b/z = {reference:.4g} N "
+        "(the force at its height z = {z:.3g} m whose moment equals the block's W·b, W = "
+        "{W:.4g} kN, b = {b:.3g} m): too weak to change the verdict; a force in kN where N is "
+        "asked (1000 times too small)?", i=i, weak=Items(weak), share=MIN_STRENGTH_FRACTION,
+        reference=reference, z=z, W=weight / 1e3, b=b,
+    )]  # fmt: skip
 
 
-def _soft_stiffnesses(model: Model, i: int, table: Restrainer, weight: float) -> list[str]:
+def _soft_stiffnesses(model: Model, i: int, table: Restrainer, weight: float) -> list[Note]:
     """A warning when a side's c_K/c_E = K·r²/(W·R) is below MIN_STIFFNESS_RATIO.
 
     c_K = K·r²/I0 and c_E = p² = m·g·R/I0 (paper §4.3; r = 2R at the top corner gives the
@@ -180,18 +202,28 @@ def _soft_stiffnesses(model: Model, i: int, table: Restrainer, weight: float) ->
     if len(soft) == 2 and len(set(soft.values())) == 1:
         soft = {"both sides": next(iter(soft.values()))}
     return [
-        f"restrainers[{i}]: stiffness K = {k:.4g} N/m ({side}) gives c_K/c_E = K·r²/(W·R) = "
-        f"{ratio:.3g}, below {MIN_STIFFNESS_RATIO:g} (paper §4.3: a restrainer matters at 10 "
-        "to 100): a stiffness in kN/m or N/mm where N/m is asked (1000 times too small)?"
+        Note(
+            "warn_soft",
+            "restrainers[{i}]: stiffness K = {k:.4g} N/m ({side}) gives c_K/c_E "
+            "= K·r²/(W·R) = {ratio:.3g}, below {limit:g} (paper §4.3: a restrainer matters at "
+            "10 to 100): a stiffness in kN/m or N/mm where N/m is asked (1000 times too "
+            "small)?",
+            i=i,
+            k=float(k),
+            side=SIDE_WORDS[side],
+            ratio=float(ratio),
+            limit=float(MIN_STIFFNESS_RATIO),
+        )  # fmt: skip
         for side, (k, ratio) in soft.items()
     ]
 
 
-def _gravity_warnings(model: Model) -> list[str]:
+def _gravity_warnings(model: Model) -> list[Note]:
     g = model.analysis.g
     if math.isclose(g, STANDARD_GRAVITY, rel_tol=GRAVITY_RTOL):
         return []
-    return [
-        f"analysis.g = {g:g} m/s², more than {GRAVITY_RTOL:.0%} from the Earth's standard "
-        f"{STANDARD_GRAVITY:g} m/s² (its surface gravity is 9.76 to 9.83 m/s²): a typo?"
-    ]
+    return [Note(
+        "warn_gravity", "analysis.g = {g:g} m/s², more than {share:.0%} from the Earth's "
+        "standard {standard:g} m/s² (its surface gravity is 9.76 to 9.83 m/s²): a typo?",
+        g=float(g), share=GRAVITY_RTOL, standard=STANDARD_GRAVITY,
+    )]  # fmt: skip
