@@ -1,0 +1,77 @@
+"""Benchmark: a study's time per case against the compiled kernel's own time (issue 24).
+
+The issue's target is a study whose time per case is within 1.25× of the kernel's own time
+for the same cases. This measures both in one run, in this process (one core, no worker
+start-up): the cases of the `--scale` study of benchmarks/sweep.py (the §4.4 wall with its
+top spring, R × α × K, on ELC180, a 40 s record), run through the study's own chunk runner
+(:func:`rockcli.studies.sweep.worker.run_chunk`: the model built and validated, the block
+derived, both polarities, the row). The kernel's share is the time spent inside the
+compiled ``integrate`` calls of those same runs, timed where the engine calls them
+(``rockcli.interrupts.call``), so both figures come from the same work.
+
+    python benchmarks/overhead.py [CASES]     # default 2000; needs ../shared/records
+
+Prints the median over REPEATS runs of: the study's time per case, the kernel's, their
+ratio, and the 10⁶-case time on two cores each would give.
+"""
+
+from __future__ import annotations
+
+import statistics
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
+
+REPEATS = 5
+#: The issue's target: a study's time per case at most this many times the kernel's.
+TARGET_RATIO = 1.25
+
+
+def main(cases: int) -> None:
+    from benchmarks.sweep import SHARED, scale_study
+    from rockcli import interrupts
+    from rockcli.studies.parallel.setup import warm
+    from rockcli.studies.sweep.cases import expand
+    from rockcli.studies.sweep.study import load_study
+    from rockcli.studies.sweep.worker import Chunk, run_chunk
+
+    if not SHARED.is_dir():
+        sys.exit(f"{SHARED} is not there: the scale study needs ELC180.AT2 from ../shared")
+    warm()
+    spent = [0.0]
+    call = interrupts.call
+
+    def timed(fn, *args):  # type: ignore[no-untyped-def]
+        start = time.perf_counter()
+        try:
+            return call(fn, *args)
+        finally:
+            spent[0] += time.perf_counter() - start
+
+    interrupts.call = timed  # type: ignore[assignment]
+    with tempfile.TemporaryDirectory() as folder:
+        plan = load_study(str(scale_study(Path(folder), shrink=10)))
+        chunk = Chunk(plan, 0, tuple(expand(plan)[:cases]))
+        run_chunk(Chunk(plan, 0, chunk.cases[:20]))  # the record read, the caches warm
+        study, kernel = [], []
+        for _ in range(REPEATS):
+            spent[0] = 0.0
+            start = time.perf_counter()
+            rows = run_chunk(chunk)
+            study.append((time.perf_counter() - start) / len(rows))
+            kernel.append(spent[0] / len(rows))
+    interrupts.call = call  # type: ignore[assignment]
+    s, k = statistics.median(study), statistics.median(kernel)
+    print(f"{len(chunk.cases)} cases of the scale study, in process, median of {REPEATS} runs")
+    print(f"  study, per case          {1e3 * s:7.3f} ms")
+    print(f"  kernel alone, per case   {1e3 * k:7.3f} ms")
+    print(f"  study / kernel           {s / k:7.2f}   (target ≤ {TARGET_RATIO:g})")
+    print(f"  10^6 cases on 2 cores    {1e6 * s / 2 / 60:7.1f} min   "
+          f"(the kernel alone: {1e6 * k / 2 / 60:.1f} min)")  # fmt: skip
+
+
+if __name__ == "__main__":
+    main(int(sys.argv[1]) if len(sys.argv) > 1 else 2000)
