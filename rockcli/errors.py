@@ -99,6 +99,20 @@ class InputError(RockError):
             extras.append(f"allowed: {self.allowed}")
         return f"{text} ({'; '.join(extras)})" if extras else text
 
+    def note(self) -> str:
+        """:meth:`render`'s line, as a Note a report writes in its language when the problem
+        and what is allowed are Notes (rockcli.notes) and no file is named; else the line."""
+        from rockcli.notes import Note
+
+        text = self.render()
+        notes = isinstance(self.problem, Note) and isinstance(self.allowed, Note)
+        if self.file or self.where is None or self.value is None or not notes:
+            return text
+        note = Note("input_error", "{where}: {problem} (got {value!r}; allowed: {allowed})",
+                    where=self.where, problem=self.problem, value=self.value,
+                    allowed=self.allowed)  # fmt: skip
+        return note if note == text else text
+
     def with_file(self, file: str) -> InputError:
         """The same error, naming the file (when a lower layer did not know it)."""
         if self.file:

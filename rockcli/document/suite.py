@@ -54,9 +54,8 @@ class SuitePart:
 def build_suite_document(parts: Sequence[SuitePart], lang: str) -> Document:
     """The report of a suite comparison of one model or several (a building's walls: one
     summary over them, then each model's sections titled with its name)."""
-    from rockcli import __version__
-    from rockcli.document.build import annex_sections
-    from rockcli.document.front import cover_rows, own_sections, signature_lines
+    from rockcli.document.build import front_matter
+    from rockcli.document.front import own_sections
     from rockcli.document.walls import merged_files, rekeyed
 
     w = Words(lang)
@@ -85,12 +84,7 @@ def build_suite_document(parts: Sequence[SuitePart], lang: str) -> Document:
             *body,
             software_section(inputs.casebook, w, inputs.casebook_place),
         ),  # fmt: skip
-        cover=cover_rows(inputs.project, inputs.date, w),
-        signature=signature_lines(inputs.project, inputs.date, w),
-        annexes=annex_sections(inputs.casebook, w, inputs.casebook_place),
-        header=f"rock {__version__} — {', '.join(names)}",
-        footer=w("report.footer", date=inputs.date),
-        labels={k: w(f"label.{k}") for k in ("contents", "figure", "table", "page", "annex")},
+        **front_matter(inputs, ", ".join(names), w),
     )
 
 

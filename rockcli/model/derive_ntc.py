@@ -93,21 +93,24 @@ def ntc_settings(model: Model) -> NtcSettings:
         limit=ntc.ultimate_displacement,
         site=None if ntc.site is None else (ntc.site.lon, ntc.site.lat),
         demand=demand,
-        defaults=tuple(value for key, value in _defaults(ntc).items() if key not in given),
+        defaults=_defaults(ntc, given),
     )
 
 
-def _defaults(ntc: Ntc) -> dict[str, Note]:
-    out = {
-        "edition": Note("setting", "{key} = {value}", key="edition", value=ntc.edition.value),
-        "q": Note("setting_number", "{key} = {value:g}", key="q", value=float(ntc.q)),
-        "soil": Note("setting", "{key} = {value}", key="soil", value=ntc.soil.value),
-        "topography": Note(
-            "setting", "{key} = {value}", key="topography", value=ntc.topography.value
-        ),
-        "VN": Note("setting_number", "{key} = {value:g}", key="VN", value=float(ntc.VN)),
-        "CU": Note("setting_number", "{key} = {value:g}", key="CU", value=float(ntc.CU)),
-    }
-    if ntc.FC is None and ntc.knowledge_level is None:
-        out["FC"] = Note("setting_fc", "FC = {value:g} (LC1)", value=1.35)
-    return out
+def _defaults(ntc: Ntc, given: set[str]) -> tuple[Note, ...]:
+    """The settings the model's [ntc] does not give, as the notes say them (only those: a
+    kinematic check per case of a study makes them)."""
+    values: dict[str, str | float] = {
+        "edition": ntc.edition.value, "q": float(ntc.q), "soil": ntc.soil.value,
+        "topography": ntc.topography.value, "VN": float(ntc.VN), "CU": float(ntc.CU),
+    }  # fmt: skip
+    out = [
+        Note("setting_number", "{key} = {value:g}", key=key, value=value)
+        if isinstance(value, float)
+        else Note("setting", "{key} = {value}", key=key, value=value)
+        for key, value in values.items()
+        if key not in given
+    ]
+    if "FC" not in given and ntc.FC is None and ntc.knowledge_level is None:
+        out.append(Note("setting_fc", "FC = {value:g} (LC1)", value=1.35))
+    return tuple(out)

@@ -247,26 +247,12 @@ def catalogue_comparisons(model, record, engine, kin, main, rocking, ground):
                 run = assess_model_output(model, record, engine, ground=ground, mechanism=m.name,
                                           tolerance_check=False).result  # fmt: skip
             except InputError as exc:
-                reason = not_rocked_reason(exc)
+                reason = exc.note()
                 out.append(MechanismComparison(m.name, m.type, m.result, None, None, reason))
                 continue
         kind = classify(code_collapse(m.result), rocking_collapse(run))
         out.append(MechanismComparison(m.name, m.type, m.result, run, kind))
     return tuple(out)
-
-
-def not_rocked_reason(exc: Any) -> str:
-    """Why the time history cannot rock a mechanism: the input error's line (a Note, that a
-    report writes in its language, when the error's parts are Notes)."""
-    from rockcli.notes import Note
-
-    text = exc.render().removeprefix("error: ")
-    if exc.file or not isinstance(exc.problem, Note) or exc.value is None or not exc.allowed:
-        return text
-    parts = {"where": exc.where, "problem": exc.problem, "value": exc.value,
-             "allowed": exc.allowed}  # fmt: skip
-    note = Note("not_rocked", "{where}: {problem} (got {value!r}; allowed: {allowed})", **parts)
-    return note if note == text else text
 
 
 def run_comparison_output(model_path: str, record: Record, **options: Any) -> ComparisonOutput:
