@@ -184,3 +184,14 @@ def test_the_conclusions_name_another_mechanism_that_overturns(tmp_path: Path) -
     assert conclusions is not None
     assert "In the time history these overturn: " + f"'{falling[0]}'" in conclusions.group(0)
     assert NEXT_UNSAFE in conclusions.group(0)
+
+
+def test_retrofit_is_refused_with_another_code_demand(tmp_path: Path) -> None:
+    # rock retrofit checks each diameter on the record's spectrum: with the model's own
+    # spectrum the report's code check and the sizing would see different earthquakes.
+    code, _, err = run("report", str(FACADE), "--record", str(RICKER), "--retrofit",
+                       "--code-demand", "model", "-o", str(tmp_path / "r.html"))  # fmt: skip
+    assert code == 2 and err.count("\n") == 1, err
+    assert "--retrofit: sizes the rod on the record's spectrum" in err
+    assert "--code-demand model" in err and "--code-demand record" in err
+    assert not (tmp_path / "r.html").exists()
