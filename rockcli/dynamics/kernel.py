@@ -1061,3 +1061,43 @@ def integrate(
             out_i[L.I_NONFINITE] = L.NF_FORCE + row
     out_f[L.O_T_END] = t
     out_i[L.I_STATUS] = status
+
+
+@njit(cache=CACHE)
+def integrate_runs(
+    times, accel, n_samples, run_case, run_pol, pars, springs, points, out_f, out_i, spring_out
+):
+    """Integrate many rocking runs in one call: run j is case run_case[j] at polarity
+    run_pol[j] (+1.0 or −1.0), over the first n_samples[case] samples of times and accel.
+
+    Each run is exactly :func:`integrate` with the case's parameter vector pars[case] and a
+    fresh copy of its restrainer table springs[case] (the table holds the members' state),
+    every restrainer intact and no history kept: the same arithmetic as one run of
+    rockcli.dynamics.simulate, so the outputs are bit for bit the same (a study's chunk:
+    rockcli.dynamics.batch). out_f[j], out_i[j], spring_out[j]: run j's outputs (O_*, I_*,
+    S_* layouts; spring_out's S_T_FAIL and S_T_YIELD columns set to nan by the caller).
+    """
+    n_rows = springs.shape[1]
+    for j in range(run_case.size):
+        c = run_case[j]
+        n = n_samples[c]
+        table = springs[c].copy()
+        alive = np.ones(n_rows, dtype=np.int64)
+        hist_th = np.full(1, np.nan)
+        hist_om = np.full(1, np.nan)
+        hist_f = np.zeros((1, n_rows))
+        integrate(
+            times[:n],
+            accel[:n],
+            run_pol[j],
+            pars[c],
+            table,
+            points,
+            alive,
+            hist_th,
+            hist_om,
+            hist_f,
+            out_f[j],
+            out_i[j],
+            spring_out[j],
+        )

@@ -22,7 +22,8 @@ from rockcli.errors import InputError
 from rockcli.process import interrupted
 from rockcli.studies.parallel.chunks import run_chunks
 from rockcli.studies.parallel.executor import Lane
-from rockcli.studies.sweep.cases import Case, check_cases, expand
+from rockcli.studies.sweep.batch import check_grid
+from rockcli.studies.sweep.cases import Case, expand
 from rockcli.studies.sweep.output import Output, PartialWrite, cell
 from rockcli.studies.sweep.study import StudyPlan
 from rockcli.studies.sweep.suite import suite_checks
@@ -189,7 +190,7 @@ def run_sweep(
     output = Output(out, plan, len(cases), lambda k: _label_cells(plan, cases[k]))
     with output.lock():
         kept = output.check(resume=resume, overwrite=overwrite)  # before any work
-        checked = check_cases(plan, suite_checks(plan))
+        checked = check_grid(plan, suite_checks(plan))
         npts, facts = record_facts(plan)
         output.start(kept)
         resumed = len(kept)

@@ -82,6 +82,15 @@ def run_chunk(chunk: Chunk) -> list[dict[str, Any]]:
     source = plan.records[chunk.record] if chunk.record is not None else None
     suite = read_suite(source) if source is not None and source.suite else None
     record = read_source(source) if source is not None and suite is None else None
+    if record is not None:
+        from rockcli.studies.sweep.batch import cached_form, run_cases
+
+        form = cached_form(plan)
+        found = None if form is None else run_cases(
+            plan, form, chunk.cases, record.time, record.accel, record.dt
+        )  # fmt: skip
+        if found is not None:
+            return found
     rows = []
     for case in chunk.cases:
         known: dict[str, Any] = {"case": case.id}  # the block's R and α once computed
