@@ -32,6 +32,8 @@ from rockcli.studies.sweep.study import load_study
 from tests.sweep.conftest import PULSES, STUDY
 
 PULSE = "ricker_Tp0.5s_0.5g.txt"
+#: Each example writes its study in a folder of its own under tmp_path.
+SCOPED = [HealthCheck.function_scoped_fixture]
 
 
 def write_plan(folder: Path, base: dict[str, Any], axes: list[dict[str, Any]]) -> Any:
