@@ -1,18 +1,25 @@
 """Benchmark: a study's time per case against the compiled kernel's own time (issue 24).
 
 The issue's target is a study whose time per case is within 1.25× of the kernel's own time
-for the same cases. This measures both in one run, in this process (one core, no worker
-start-up): the cases of the `--scale` study of benchmarks/sweep.py (the §4.4 wall with its
-top spring, R × α × K, on ELC180, a 40 s record), run through the study's own chunk runner
-(:func:`rockcli.studies.sweep.worker.run_chunk`: the model built and validated, the block
-derived, both polarities, the row). The kernel's share is the time spent inside the
-compiled ``integrate`` calls of those same runs, timed where the engine calls them
-(``rockcli.interrupts.call``), so both figures come from the same work.
+for the same cases. This measures, in one run, in this process (one core, no worker
+start-up), the cases of the `--scale` study of benchmarks/sweep.py (the §4.4 wall with its
+top spring, R × α × K, on ELC180, a 40 s record) run through the study's own chunk runner
+(:func:`rockcli.studies.sweep.worker.run_chunk`) two ways, alternately:
+
+- batched (rockcli/studies/sweep/batch.py): the blocks derived as arrays, one compiled call
+  for the chunk, the rows from the output arrays;
+- case by case (the path before issue 24, still the path of studies that are not batched):
+  each case's model built and validated, its block derived, both polarities run through
+  rockcli.dynamics.simulate, its row.
+
+The kernel's share is the time spent inside the compiled ``integrate`` calls of the
+case-by-case runs, timed where the engine calls them (``rockcli.interrupts.call``): the same
+runs, bit for bit, as the batched call makes.
 
     python benchmarks/overhead.py [CASES]     # default 2000; needs ../shared/records
 
-Prints the median over REPEATS runs of: the study's time per case, the kernel's, their
-ratio, and the 10⁶-case time on two cores each would give.
+Prints the median over REPEATS runs of: the time per case of each path and of the kernel,
+the ratios, and the 10⁶-case time on two cores each would give.
 """
 
 from __future__ import annotations
@@ -34,6 +41,7 @@ def main(cases: int) -> None:
     from benchmarks.sweep import SHARED, scale_study
     from rockcli import interrupts
     from rockcli.studies.parallel.setup import warm
+    from rockcli.studies.sweep import batch
     from rockcli.studies.sweep.cases import expand
     from rockcli.studies.sweep.study import load_study
     from rockcli.studies.sweep.worker import Chunk, run_chunk
@@ -51,26 +59,35 @@ def main(cases: int) -> None:
         finally:
             spent[0] += time.perf_counter() - start
 
+    batched_form = batch.cached_form
     interrupts.call = timed  # type: ignore[assignment]
     with tempfile.TemporaryDirectory() as folder:
         plan = load_study(str(scale_study(Path(folder), shrink=10)))
         chunk = Chunk(plan, 0, tuple(expand(plan)[:cases]))
         run_chunk(Chunk(plan, 0, chunk.cases[:20]))  # the record read, the caches warm
-        study, kernel = [], []
+        study, kernel, old = [], [], []
         for _ in range(REPEATS):
+            batch.cached_form = lambda plan: None  # type: ignore[assignment]  # case by case
             spent[0] = 0.0
             start = time.perf_counter()
             rows = run_chunk(chunk)
-            study.append((time.perf_counter() - start) / len(rows))
+            old.append((time.perf_counter() - start) / len(rows))
             kernel.append(spent[0] / len(rows))
+            batch.cached_form = batched_form  # type: ignore[assignment]
+            start = time.perf_counter()
+            rows = run_chunk(chunk)
+            study.append((time.perf_counter() - start) / len(rows))
     interrupts.call = call  # type: ignore[assignment]
-    s, k = statistics.median(study), statistics.median(kernel)
+    s, k, o = statistics.median(study), statistics.median(kernel), statistics.median(old)
     print(f"{len(chunk.cases)} cases of the scale study, in process, median of {REPEATS} runs")
-    print(f"  study, per case          {1e3 * s:7.3f} ms")
-    print(f"  kernel alone, per case   {1e3 * k:7.3f} ms")
-    print(f"  study / kernel           {s / k:7.2f}   (target ≤ {TARGET_RATIO:g})")
-    print(f"  10^6 cases on 2 cores    {1e6 * s / 2 / 60:7.1f} min   "
-          f"(the kernel alone: {1e6 * k / 2 / 60:.1f} min)")  # fmt: skip
+    print(f"  study, batched, per case      {1e3 * s:7.3f} ms")
+    print(f"  study, case by case           {1e3 * o:7.3f} ms   (the path before issue 24)")
+    print(f"  kernel alone, per case        {1e3 * k:7.3f} ms   (its integrate calls)")
+    print(f"  batched study / kernel        {s / k:7.2f}   (target ≤ {TARGET_RATIO:g})")
+    print(f"  case by case / kernel         {o / k:7.2f}")
+    print(f"  10^6 cases on 2 cores         {1e6 * s / 2 / 60:7.1f} min   "
+          f"(case by case {1e6 * o / 2 / 60:.1f} min; the kernel alone: "
+          f"{1e6 * k / 2 / 60:.1f} min)")  # fmt: skip
 
 
 if __name__ == "__main__":
