@@ -27,7 +27,8 @@ from hypothesis import strategies as st
 
 from rockcli.errors import InputError
 from rockcli.studies.sweep import batch, worker
-from rockcli.studies.sweep.cases import Case, build_model, check_cases, expand
+from rockcli.studies.sweep.cases import Case, build_model, case_labels, check_cases, expand
+from rockcli.studies.sweep.output import column_lines, columns, row_lines
 from rockcli.studies.sweep.study import load_study
 from tests.sweep.conftest import PULSES, STUDY
 
@@ -223,8 +224,15 @@ def test_a_chunk_in_one_call_is_the_cases_one_by_one(tmp_path: Path, study: Any)
     if not cases:
         return
     record = worker.read_source(plan.records[0])
-    fast = batch.run_cases(plan, form, cases, record.time, record.accel, record.dt)
-    assert fast == per_case_rows(plan, cases)
+    found = batch.run_arrays(form, cases, record.time, record.accel, record.dt)
+    assert found is not None
+    slow = per_case_rows(plan, cases)
+    assert batch.rows_of(cases, *found) == slow
+    # and the lines of cases.csv, written column by column, are the rows' lines
+    header = columns(plan)
+    cells = {**batch.label_cells(plan, cases), **batch.result_cells(*found)}
+    labelled = [{**case_labels(plan, c), **r} for c, r in zip(cases, slow, strict=True)]
+    assert column_lines(header, len(cases), cells) == row_lines(header, labelled)
 
 
 def test_the_pulse_study_is_batched_and_identical(write_study: Any) -> None:

@@ -47,15 +47,15 @@ def test_a_full_disk_mid_sweep_says_how_many_cases_are_saved(
     write_study: WriteStudy, tmp_path: Path, monkeypatch: pytest.MonkeyPatch
 ) -> None:
     calls: list[int] = []
-    original = sweep_output.Output.append
+    original = sweep_output.Output.append_lines
 
-    def append_then_fail(self: Any, rows: Any) -> Any:
+    def append_then_fail(self: Any, ids: Any, lines: Any) -> Any:
         calls.append(1)
         if len(calls) > 2:
             raise OSError(errno.ENOSPC, "No space left on device")
-        return original(self, rows)
+        return original(self, ids, lines)
 
-    monkeypatch.setattr(sweep_output.Output, "append", append_then_fail)
+    monkeypatch.setattr(sweep_output.Output, "append_lines", append_then_fail)
     with local_executor(1) as lanes, pytest.raises(InputError) as info:
         run_sweep(load_study(str(write_study())), str(tmp_path / "out"), lanes, chunk_size=2)
     text = str(info.value)
@@ -208,14 +208,14 @@ def test_chunks_are_sized_by_measured_time(
     from rockcli.studies.sweep import run as sweep_run
 
     sizes: list[int] = []
-    original = sweep_run.run_chunk
+    original = sweep_run.run_chunk_lines
 
     def slow(chunk: Any) -> Any:
         sizes.append(len(chunk.cases))
         time.sleep(0.05 * len(chunk.cases))
         return original(chunk)
 
-    monkeypatch.setattr(sweep_run, "run_chunk", slow)
+    monkeypatch.setattr(sweep_run, "run_chunk_lines", slow)
     monkeypatch.setattr(sweep_run, "CHUNK_SECONDS", 0.1)
     with local_executor(1) as lanes:
         summary = run_sweep(load_study(str(write_study())), str(tmp_path / "out"), lanes).summary

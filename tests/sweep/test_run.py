@@ -141,13 +141,13 @@ def test_resume_runs_only_the_missing_cases(
         run(plan, out)
 
     ran: list[int] = []
-    original = sweep_run.run_chunk
+    original = sweep_run.run_chunk_lines
 
-    def counting(chunk: Chunk) -> list[dict[str, Any]]:
+    def counting(chunk: Chunk) -> Any:
         ran.extend(c.id for c in chunk.cases)
         return original(chunk)
 
-    monkeypatch.setattr(sweep_run, "run_chunk", counting)
+    monkeypatch.setattr(sweep_run, "run_chunk_lines", counting)
     summary = run(plan, out, resume=True).summary
     done = {int(r["case"]) for r in kept}
     assert sorted(ran) == sorted(set(range(N_CASES)) - done)

@@ -33,25 +33,27 @@ class Batch(Protocol):
 
 
 B = TypeVar("B", bound=Batch)
+R = TypeVar("R")
 
 
 def run_chunks(
     lanes: MutableSequence[Lane],
     chunks: Sequence[B],
-    work: Callable[[B], list[dict[str, Any]]],
-) -> Iterator[list[dict[str, Any]]]:
-    """The rows of each chunk as it completes (any order): ``work(chunk)`` on a lane (a
-    module-level function, so that a worker process can import it: a study's
-    :func:`~rockcli.studies.sweep.worker.run_chunk`, a suite's, a retrofit's).
+    work: Callable[[B], R],
+) -> Iterator[R | list[dict[str, Any]]]:
+    """What ``work(chunk)`` gives for each chunk as it completes (any order), run on a lane
+    (a module-level function, so that a worker process can import it: a study's
+    :func:`~rockcli.studies.sweep.worker.run_chunk_lines`, a suite's, a retrofit's rows).
 
     Each lane (an executor and its capacity) holds at most its capacity of submitted chunks;
     the next chunk goes to the first lane with room. A process pool that breaks (a worker
     killed: the OOM killer, a signal) is restarted and its chunks submitted again, up to
-    :data:`CHUNK_ATTEMPTS` times each; then the chunk's cases are rows with an error. Any
+    :data:`CHUNK_ATTEMPTS` times each; then the chunk gives a row with an error for each of
+    its cases (a list of dicts with ``case`` and ``error``, whatever work gives). Any
     other error cancels what is queued and is raised.
     """
     run = work
-    pending: dict[Future[list[dict[str, Any]]], tuple[int, B]] = {}
+    pending: dict[Future[R], tuple[int, B]] = {}
     load = [0] * len(lanes)
     todo: deque[B] = deque(chunks)
     attempts: dict[int, int] = {}
@@ -77,6 +79,7 @@ def run_chunks(
             for future in done:
                 i, chunk = pending.pop(future)
                 load[i] -= 1
+                rows: R | list[dict[str, Any]]
                 try:
                     rows = future.result()
                 except BrokenExecutor:

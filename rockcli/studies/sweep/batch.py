@@ -378,12 +378,11 @@ def cached_form(plan: StudyPlan) -> Form | None:
     return _forms[key]
 
 
-def run_cases(
-    plan: StudyPlan, form: Form, cases: Sequence[Case], time: np.ndarray, accel: np.ndarray,
-    dt: float,
-) -> list[dict[str, Any]] | None:  # fmt: skip
-    """The rows of a chunk's cases under one record, run as arrays; None when one of them is
-    not valid (the chunk then runs case by case, which gives its error row)."""
+def run_arrays(
+    form: Form, cases: Sequence[Case], time: np.ndarray, accel: np.ndarray, dt: float
+) -> tuple[Blocks, Runs] | None:
+    """The blocks of a chunk's cases and their runs under one record, as arrays; None when
+    one of them is not valid (the chunk then runs case by case, which gives its error row)."""
     from rockcli.dynamics.batch import run_blocks
     from rockcli.model.derive import solver_options
     from rockcli.studies.assess import settings_from
@@ -392,13 +391,13 @@ def run_cases(
     blocks, valid = derive(form, indices)
     if not valid.all():
         return None
-    runs = run_blocks(time, accel, dt, blocks, settings_from(solver_options(form.model)))
-    return rows_of(cases, blocks, runs)
+    return blocks, run_blocks(time, accel, dt, blocks, settings_from(solver_options(form.model)))
 
 
-def rows_of(cases: Sequence[Case], blocks: Blocks, runs: Runs) -> list[dict[str, Any]]:
-    """The rows of rockcli.studies.sweep.worker.run_case for the cases' runs: each block's R
-    and α, the envelope of the two polarities (rocking_columns), the block on the ground."""
+def envelope(blocks: Blocks, runs: Runs) -> dict[str, np.ndarray]:
+    """The result columns of rockcli.studies.sweep.worker.run_case for the runs, as arrays:
+    each block's R and α, the envelope of the two polarities (worker.rocking_columns; nan
+    where a value is None)."""
     from rockcli.dynamics import layout as L
 
     f, status = runs.out_f, runs.out_i[..., L.I_STATUS]
@@ -417,9 +416,26 @@ def rows_of(cases: Sequence[Case], blocks: Blocks, runs: Runs) -> list[dict[str,
             np.where((status != L.STATUS_COMPLETED).any(axis=1), "undecided", "survives"),
         ),
     )
+    return {
+        "block_R": blocks.R,
+        "block_alpha": blocks.alpha,
+        "max_ratio": best,
+        "max_ratio_pos": pos,
+        "max_ratio_neg": neg,
+        "overturned": over.any(axis=1),
+        "t_overturn": t,
+        "rocking": verdict,
+    }
+
+
+def rows_of(cases: Sequence[Case], blocks: Blocks, runs: Runs) -> list[dict[str, Any]]:
+    """The rows of rockcli.studies.sweep.worker.run_case for the cases' runs (envelope), the
+    block on the ground."""
+    e = envelope(blocks, runs)
     columns = zip(
-        blocks.R.tolist(), blocks.alpha.tolist(), best.tolist(), pos.tolist(), neg.tolist(),
-        over.any(axis=1).tolist(), t.tolist(), verdict.tolist(), strict=True,
+        *(e[k].tolist() for k in ("block_R", "block_alpha", "max_ratio", "max_ratio_pos",
+                                  "max_ratio_neg", "overturned", "t_overturn", "rocking")),
+        strict=True,
     )  # fmt: skip
     return [
         {
@@ -437,3 +453,37 @@ def rows_of(cases: Sequence[Case], blocks: Blocks, runs: Runs) -> list[dict[str,
         }
         for case, (R, alpha, m, p, q, o, tt, v) in zip(cases, columns, strict=True)
     ]
+
+
+def float_cells(values: np.ndarray) -> list[str]:
+    """Each float as cases.csv writes it (output.cell: repr, empty for nan)."""
+    return ["" if v != v else repr(v) for v in values.tolist()]
+
+
+def result_cells(blocks: Blocks, runs: Runs) -> dict[str, list[str]]:
+    """The written fields of the result columns of the runs (envelope), by column: the same
+    text as output.row_lines writes for rows_of's rows."""
+    from rockcli.studies.sweep.output import cell, csv_field
+
+    e = envelope(blocks, runs)
+    floats = ("block_R", "block_alpha", "max_ratio", "max_ratio_pos", "max_ratio_neg", "t_overturn")
+    out = {k: float_cells(e[k]) for k in floats}
+    out["overturned"] = ["true" if o else "false" for o in e["overturned"].tolist()]
+    out["rocking"] = [csv_field(cell(v)) for v in e["rocking"].tolist()]
+    out["input"] = [csv_field(cell("ground"))] * blocks.size
+    return out
+
+
+def label_cells(plan: StudyPlan, cases: Sequence[Case]) -> dict[str, list[str]]:
+    """The written fields of the cases' first columns (id, record, axis values), by column:
+    the text output.row_lines writes for cases.case_labels."""
+    from rockcli.studies.sweep.output import cell, csv_field
+
+    out = {"case": [str(c.id) for c in cases]}
+    out["record"] = [
+        "" if c.record is None else csv_field(cell(plan.records[c.record].name)) for c in cases
+    ]
+    for k, axis in enumerate(plan.axes):
+        fields = [csv_field(cell(axis.label(i))) for i in range(len(axis.values))]
+        out[axis.name] = [fields[c.indices[k]] for c in cases]
+    return out

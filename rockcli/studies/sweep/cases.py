@@ -54,6 +54,15 @@ def case_label(plan: StudyPlan, case: Case) -> str:
     return f"case {case.id}" + (f" ({', '.join(parts)})" if parts else "")
 
 
+def case_labels(plan: StudyPlan, case: Case) -> dict[str, Any]:
+    """The case's id, record and axis values: the first columns of its row."""
+    return {
+        "case": case.id,
+        "record": plan.records[case.record].name if case.record is not None else None,
+        **{a.name: a.label(i) for a, i in zip(plan.axes, case.indices, strict=True)},
+    }
+
+
 def case_error(plan: StudyPlan, case: Case, exc: InputError) -> InputError:
     """A case's bad input as one line naming the study file and the case's axis values."""
     inner = ": ".join(x for x in (exc.where, exc.problem) if x)

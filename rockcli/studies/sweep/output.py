@@ -14,6 +14,7 @@ through a link planted at its name (:data:`FOLDER_FILES`).
 from __future__ import annotations
 
 import csv
+import functools
 import hashlib
 import io
 import json
@@ -177,6 +178,29 @@ def csv_lines(rows: Iterable[Sequence[str]]) -> str:
     buffer = io.StringIO()
     csv.writer(buffer, lineterminator="\n").writerows(rows)
     return buffer.getvalue()
+
+
+def row_lines(header: Sequence[str], rows: Iterable[Mapping[str, Any]]) -> list[bytes]:
+    """Each row's line of cases.csv (its cells in the header's order, :func:`cell`)."""
+    return [csv_lines([[cell(row.get(c)) for c in header]]).encode("utf-8") for row in rows]
+
+
+@functools.lru_cache(maxsize=4096)
+def csv_field(text: str) -> str:
+    """A cell as csv.writer writes it inside a row (quoted when it holds a comma, a quote or
+    a line break), so that fields joined by commas are the writer's line."""
+    return csv_lines([[text, ""]])[:-2]
+
+
+def column_lines(
+    header: Sequence[str], n: int, columns: Mapping[str, Sequence[str]]
+) -> list[bytes]:
+    """The lines of n rows given as columns of written fields (:func:`csv_field` of each
+    :func:`cell`; a column of the header that is missing is empty): the bytes that
+    :func:`row_lines` writes for the same cells."""
+    empty = [""] * n
+    ordered = [columns.get(c, empty) for c in header]
+    return [(",".join(fields) + "\n").encode("utf-8") for fields in zip(*ordered, strict=True)]
 
 
 def file_digest(path: str) -> str:
@@ -444,14 +468,17 @@ class Output:
         write_text(self.cases_path, csv_lines(body))
 
     def append(self, rows: Iterable[Mapping[str, Any]]) -> list[int]:
-        """Append the rows of a completed chunk; returns their case ids.
+        """Append the rows of a completed chunk; returns their case ids (append_lines)."""
+        rows = list(rows)
+        return self.append_lines([int(r["case"]) for r in rows], row_lines(self.header, rows))
+
+    def append_lines(self, ids: list[int], lines: Sequence[bytes]) -> list[int]:
+        """Append the lines of a completed chunk's cases (ids: each line's case); returns the
+        ids.
 
         A write that fails part-way (a full disk) raises :class:`PartialWrite` with the ids of
         the rows whose whole line reached the file (--resume keeps those).
         """
-        cells = [[cell(row.get(c)) for c in self.header] for row in rows]
-        ids = [int(r[0]) for r in cells]
-        lines = [csv_lines([r]).encode("utf-8") for r in cells]
         data = b"".join(lines)
         flags = os.O_WRONLY | os.O_APPEND | getattr(os, "O_NOFOLLOW", 0)  # never via a link
         fd = os.open(self.cases_path, flags)

@@ -23,12 +23,12 @@ from rockcli.process import interrupted
 from rockcli.studies.parallel.chunks import run_chunks
 from rockcli.studies.parallel.executor import Lane
 from rockcli.studies.sweep.batch import check_grid
-from rockcli.studies.sweep.cases import Case, expand
+from rockcli.studies.sweep.cases import Case, case_labels, expand
 from rockcli.studies.sweep.output import Output, PartialWrite, cell
 from rockcli.studies.sweep.study import StudyPlan
 from rockcli.studies.sweep.suite import suite_checks
 from rockcli.studies.sweep.summary import split_axis
-from rockcli.studies.sweep.worker import Chunk, read_source, run_chunk
+from rockcli.studies.sweep.worker import Chunk, ChunkLines, read_source, run_chunk_lines
 
 #: Work per chunk aimed at [s]: long enough that pickling and scheduling (≈ 1 ms per task)
 #: do not matter, short enough for a live progress bar and little lost work on interruption.
@@ -107,7 +107,7 @@ def make_chunks(
     return chunks
 
 
-def measure(plan: StudyPlan, case: Case, npts: Sequence[int]) -> tuple[list[dict[str, Any]], float]:
+def measure(plan: StudyPlan, case: Case, npts: Sequence[int]) -> tuple[ChunkLines, float]:
     """Run one case here and time it: its rows, and its time over the estimate (the chunks are
     then sized by measured time, so a slow engine or machine still gets chunks of about
     CHUNK_SECONDS, and Ctrl-C stops within about that). The kernels are loaded first, so
@@ -116,7 +116,7 @@ def measure(plan: StudyPlan, case: Case, npts: Sequence[int]) -> tuple[list[dict
 
     warm()
     start = time.perf_counter()
-    rows = run_chunk(Chunk(plan, case.record, (case,)))
+    rows = run_chunk_lines(Chunk(plan, case.record, (case,)))
     elapsed = time.perf_counter() - start
     estimate = case_cost(plan, npts[case.record] if case.record is not None else 0)
     return rows, max(MIN_SPEED, elapsed / estimate) if estimate else 1.0
@@ -244,14 +244,18 @@ class Runner:
                 todo = todo[1:]
             workers = sum(lane.workers for lane in lanes)
             chunks = make_chunks(self.plan, todo, npts, workers, size, speed)
-            for chunk_rows in run_chunks(lanes, chunks, run_chunk):
+            for chunk_rows in run_chunks(lanes, chunks, run_chunk_lines):
                 self.save(chunk_rows)
 
-    def save(self, chunk_rows: list[dict[str, Any]]) -> None:
-        """Append a chunk's rows to cases.csv and count them saved."""
-        rows = ({**_labels(self.plan, self.cases[r["case"]]), **r} for r in chunk_rows)
+    def save(self, done: ChunkLines | list[dict[str, Any]]) -> None:
+        """Append a chunk's lines (or rows: the error rows of a chunk whose worker died) to
+        cases.csv and count them saved."""
         try:
-            ids = self.output.append(rows)
+            if isinstance(done, tuple):
+                ids = self.output.append_lines(*done)
+            else:
+                labels = (case_labels(self.plan, self.cases[r["case"]]) for r in done)
+                ids = self.output.append([{**k, **r} for k, r in zip(labels, done, strict=True)])
         except PartialWrite as exc:
             self.mark(exc.ids)  # the lines that reached the disk before the error
             raise
@@ -350,13 +354,4 @@ def plot_rows(plan: StudyPlan, out: str) -> list[dict[str, Any]]:
 
 def _label_cells(plan: StudyPlan, case: Case) -> list[str]:
     """The first cells of a case's row as written (its id, record and axis values)."""
-    return [cell(v) for v in _labels(plan, case).values()]
-
-
-def _labels(plan: StudyPlan, case: Case) -> dict[str, Any]:
-    """The case's id, record and axis values: the first columns of its row."""
-    return {
-        "case": case.id,
-        "record": plan.records[case.record].name if case.record is not None else None,
-        **{a.name: a.label(i) for a, i in zip(plan.axes, case.indices, strict=True)},
-    }
+    return [cell(v) for v in case_labels(plan, case).values()]

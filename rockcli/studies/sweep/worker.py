@@ -17,7 +17,7 @@ from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
 from rockcli.errors import InputError
-from rockcli.studies.sweep.cases import Case, build_model, case_error
+from rockcli.studies.sweep.cases import Case, build_model, case_error, case_labels
 from rockcli.studies.sweep.study import RecordSource, StudyPlan
 
 if TYPE_CHECKING:
@@ -69,6 +69,44 @@ def spectrum_of(source: RecordSource, g: float) -> RecordSpectrum:
     return spectrum
 
 
+#: A chunk's cases as written: their ids and their lines of cases.csv.
+ChunkLines = tuple[list[int], list[bytes]]
+
+
+def run_chunk_lines(chunk: Chunk) -> ChunkLines:
+    """The chunk's cases (:func:`run_chunk`) as their lines of cases.csv, made here in the
+    worker (a batched chunk's from its result arrays, column by column)."""
+    from rockcli.studies.sweep.output import column_lines, columns, row_lines
+
+    plan = chunk.plan
+    header = columns(plan)
+    ids = [c.id for c in chunk.cases]
+    batched = batched_cells(chunk)
+    if batched is not None:
+        return ids, column_lines(header, len(ids), batched)
+    rows = run_chunk(chunk)
+    labelled = [{**case_labels(plan, c), **r} for c, r in zip(chunk.cases, rows, strict=True)]
+    return ids, row_lines(header, labelled)
+
+
+def batched_cells(chunk: Chunk) -> dict[str, list[str]] | None:
+    """The written fields of a batched chunk's rows by column (rockcli.studies.sweep.batch),
+    or None when the chunk runs case by case."""
+    from rockcli.studies.sweep.batch import cached_form, label_cells, result_cells, run_arrays
+
+    plan = chunk.plan
+    if chunk.record is None or plan.records[chunk.record].suite:
+        return None
+    form = cached_form(plan)
+    if form is None:
+        return None
+    record = read_source(plan.records[chunk.record])
+    found = run_arrays(form, chunk.cases, record.time, record.accel, record.dt)
+    if found is None:
+        return None
+    return {**label_cells(plan, chunk.cases), **result_cells(*found)}
+
+
 def run_chunk(chunk: Chunk) -> list[dict[str, Any]]:
     """The result columns of every case of the chunk, each with its case id.
 
@@ -83,14 +121,14 @@ def run_chunk(chunk: Chunk) -> list[dict[str, Any]]:
     suite = read_suite(source) if source is not None and source.suite else None
     record = read_source(source) if source is not None and suite is None else None
     if record is not None:
-        from rockcli.studies.sweep.batch import cached_form, run_cases
+        from rockcli.studies.sweep.batch import cached_form, rows_of, run_arrays
 
         form = cached_form(plan)
-        found = None if form is None else run_cases(
-            plan, form, chunk.cases, record.time, record.accel, record.dt
+        found = None if form is None else run_arrays(
+            form, chunk.cases, record.time, record.accel, record.dt
         )  # fmt: skip
         if found is not None:
-            return found
+            return rows_of(chunk.cases, *found)
     rows = []
     for case in chunk.cases:
         known: dict[str, Any] = {"case": case.id}  # the block's R and α once computed
