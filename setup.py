@@ -24,7 +24,7 @@ from setuptools.command.build_py import build_py
 
 #: What the subprocess runs: compile every kernel and mark the cache complete.
 COMPILE = (
-    "from rockcli.dynamics.warmup import compile_engine; "
+    "from rockcli.kernels import compile_engine; "
     "print(f'rock: engine compiled into the package in {compile_engine():.0f} s')"
 )
 

@@ -331,19 +331,22 @@ COMPILE_ESTIMATE = 45
 #: took: the command line sets them to say so on stderr (the numeric core stays silent).
 before_compile: Callable[[float], None] | None = None
 after_compile: Callable[[float], None] | None = None
+#: Compiles every kernel and returns the seconds it took: rockcli.kernels.warmup, registered
+#: when rockcli.kernels is imported (the numeric packages do not import it: one-way imports).
+compile_all: Callable[[], float] | None = None
 _ready = False
 
 
-def ensure_compiled(compile_all: Callable[[], float]) -> None:
+def ensure_compiled() -> None:
     """Compile every kernel now, announced, unless the cache holds them for this machine.
 
-    Called where a kernel is first used in a process (rockcli.dynamics.simulate,
+    Called where a kernel is first used in a process (rockcli.dynamics.simulate and batch,
     rockcli.codecheck.response): without it numba compiles each kernel silently at its first
-    call, for tens of seconds with nothing on the screen. compile_all: compiles them all
-    (rockcli.dynamics.warmup.warmup) and returns the seconds it took.
+    call, for tens of seconds with nothing on the screen. Does nothing until rockcli.kernels
+    has registered :data:`compile_all` (the command line and the study workers import it).
     """
     global _ready
-    if _ready:
+    if _ready or compile_all is None:
         return
     _ready = True  # compile_all runs the kernels, which come back here
     if compiled():

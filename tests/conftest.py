@@ -12,7 +12,7 @@ from __future__ import annotations
 def pytest_configure(config: object) -> None:
     import rockcli.dynamics.kernel  # noqa: F401 - configures the cache folder (jitcache)
     from rockcli import jitcache
-    from rockcli.dynamics.warmup import compile_engine
+    from rockcli.kernels import compile_engine
 
     if not jitcache.compiled():
         compile_engine()

@@ -175,7 +175,9 @@ def show_python_warning(
 
 def announce_compiling() -> None:
     """Say on stderr when the engine compiles (the first run on a machine: tens of seconds),
-    and when it is done; stdout keeps only the command's output."""
+    and when it is done; stdout keeps only the command's output. Importing rockcli.kernels
+    registers the function that compiles every kernel (rockcli.jitcache.ensure_compiled)."""
+    import rockcli.kernels  # noqa: F401
     from rockcli import jitcache
 
     def before(estimate: float) -> None:

@@ -176,9 +176,8 @@ def peak_displacement_uniform(
     """
     from rockcli import interrupts, jitcache
     from rockcli.codecheck.response_kernel import peak_response
-    from rockcli.dynamics.warmup import warmup
 
-    jitcache.ensure_compiled(warmup)
+    jitcache.ensure_compiled()
     coefficients = np.array(step_coefficients(dt, omega, damping))
     load = np.ascontiguousarray(-accel)
     peak, u, v = np.empty(omega.size), np.empty(omega.size), np.empty(omega.size)

@@ -225,9 +225,8 @@ def run_blocks(
     fast engine, no history), in one compiled call per tail grid."""
     from rockcli import jitcache
     from rockcli.dynamics import kernel
-    from rockcli.dynamics.warmup import warmup
 
-    jitcache.ensure_compiled(warmup)
+    jitcache.ensure_compiled()
     n = blocks.size
     time = np.asarray(time, float)
     accel = np.asarray(accel, float)

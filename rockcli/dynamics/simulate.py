@@ -266,9 +266,8 @@ def simulate(
     else:
         from rockcli import jitcache
         from rockcli.dynamics import kernel  # noqa: F401  (configures the cache first)
-        from rockcli.dynamics.warmup import warmup
 
-        jitcache.ensure_compiled(warmup)
+        jitcache.ensure_compiled()
         rtol, atol = settings.rtol, settings.atol
     par = pack_parameters(block, settings, rtol, atol)
     par[L.P_THETA0] = theta0

@@ -80,3 +80,20 @@ def test_the_study_file_and_its_key_paths_import_one_way() -> None:
     # study.py (the file's schema, load_study) uses paths.py (key paths and axes); not back.
     names = imported_modules(ROOT / "studies" / "sweep" / "paths.py")
     assert not any(n.startswith("rockcli.studies.sweep.study") for n in names)
+
+
+@pytest.mark.parametrize(
+    ("package", "other"), [("dynamics", "codecheck"), ("codecheck", "dynamics")]
+)
+def test_the_numeric_packages_import_neither_each_other_nor_the_warmup(
+    package: str, other: str
+) -> None:
+    # rockcli.kernels compiles every kernel (dynamics and codecheck) and registers itself with
+    # rockcli.jitcache; the numeric packages ask jitcache, never kernels, and not each other
+    # (the warm-up in dynamics once made dynamics and codecheck import each other).
+    for path in sorted((ROOT / package).rglob("*.py")):
+        names = imported_modules(path)
+        wrong = {
+            n for n in names if n.split(".")[:2] in (["rockcli", "kernels"], ["rockcli", other])
+        }
+        assert not wrong, f"{path.relative_to(ROOT)} imports {sorted(wrong)}"

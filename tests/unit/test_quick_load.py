@@ -16,7 +16,7 @@ ROOT = Path(__file__).resolve().parents[2]
 SCRIPT = r"""
 import json, sys
 import numpy as np
-from rockcli.dynamics.warmup import warmup
+from rockcli.kernels import warmup
 from rockcli.dynamics.simulate import simulate
 from rockcli.mechanics import Block
 warmup()

@@ -50,10 +50,6 @@ def single_thread() -> None:
 
 def warm() -> None:
     """Load (or compile) the rocking engine and the response-spectrum recurrence."""
-    import numpy as np
-
-    from rockcli.codecheck.response import peak_displacement_uniform
-    from rockcli.dynamics.warmup import warmup
+    from rockcli.kernels import warmup
 
     warmup()
-    peak_displacement_uniform(np.zeros(4), 0.01, np.array([6.0]), 0.05)

@@ -110,11 +110,13 @@ def make_chunks(
 def measure(plan: StudyPlan, case: Case, npts: Sequence[int]) -> tuple[ChunkLines, float]:
     """Run one case here and time it: its rows, and its time over the estimate (the chunks are
     then sized by measured time, so a slow engine or machine still gets chunks of about
-    CHUNK_SECONDS, and Ctrl-C stops within about that). The kernels are loaded first, so
-    their loading is not timed."""
+    CHUNK_SECONDS, and Ctrl-C stops within about that). The kernels are loaded first, and a
+    batched study's shared form made (rockcli.studies.sweep.batch), so neither is timed."""
     from rockcli.studies.parallel.setup import warm
+    from rockcli.studies.sweep.batch import cached_form
 
     warm()
+    cached_form(plan)
     start = time.perf_counter()
     rows = run_chunk_lines(Chunk(plan, case.record, (case,)))
     elapsed = time.perf_counter() - start
