@@ -523,19 +523,35 @@ class Output:
         return typed_rows(self.cases_path)
 
     def checked_rows(self) -> Iterator[tuple[int, dict[str, Any]]]:
-        """:meth:`typed_rows` of the finished (sorted) cases.csv, checked on the way: this
-        study's header, then every case once, in order. Anything else (another program wrote
+        """:meth:`typed_rows` of the finished (sorted) cases.csv, checked on the way
+        (:meth:`checked_cells`)."""
+        kinds = result_kinds(self.header)
+        names = tuple(kinds)
+        for k, cells in self.checked_cells(names):
+            yield k, typed(dict(zip(names, cells, strict=True)), kinds)
+
+    def checked_cells(self, names: Sequence[str]) -> Iterator[tuple[int, tuple[str, ...]]]:
+        """Each case id of the finished (sorted) cases.csv and its cells of the named columns
+        as written (those the header lacks: empty), checked on the way: this study's header,
+        then every case once, in order, each row whole. Anything else (another program wrote
         to the file meanwhile) is an InputError before the study is marked complete."""
         expected = 0
+        width = len(self.header)
+        where = [self.header.index(n) if n in self.header else width for n in names]
         try:
             with open(self.cases_path, encoding="utf-8", newline="") as fh:
-                if next(csv.reader(fh), None) != self.header:
+                reader = csv.reader(fh)
+                if next(reader, None) != self.header:
                     self._changed("its header is not this study's columns")
-            for k, row in typed_rows(self.cases_path):
-                if k != expected:
-                    self._changed(f"line {expected + 2} is case {k}, not case {expected}")
-                expected += 1
-                yield k, row
+                for row in reader:
+                    if len(row) != width:
+                        raise ValueError(f"{len(row)} cells")
+                    k = int(row[0])
+                    if k != expected:
+                        self._changed(f"line {expected + 2} is case {k}, not case {expected}")
+                    expected += 1
+                    row.append("")
+                    yield expected - 1, tuple(row[i] for i in where)
         except (OSError, UnicodeDecodeError, ValueError, csv.Error) as exc:
             self._changed(f"line {expected + 2} cannot be read ({exc.__class__.__name__})")
         if expected != self.n_cases:

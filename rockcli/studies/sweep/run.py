@@ -327,7 +327,11 @@ def conclude(
             where="--out",
             allowed="a writable folder with free space, then rerun with --resume",
         ) from None
-    summary = summarize(plan, ((cases[k], row) for k, row in output.checked_rows()), facts, run)
+    from rockcli.studies.sweep.output import result_kinds
+    from rockcli.studies.sweep.summary import SUMMARY_COLUMNS, count_alike
+
+    alike = count_alike(plan, output.checked_cells(SUMMARY_COLUMNS))
+    summary = summarize(plan, alike, result_kinds(output.header), facts, run)
     output.write_summary(summary)
     return summary
 
