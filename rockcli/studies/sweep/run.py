@@ -107,21 +107,30 @@ def make_chunks(
     return chunks
 
 
-def measure(plan: StudyPlan, case: Case, npts: Sequence[int]) -> tuple[ChunkLines, float]:
-    """Run one case here and time it: its rows, and its time over the estimate (the chunks are
-    then sized by measured time, so a slow engine or machine still gets chunks of about
+#: Cases of a batched study run and timed here first (one call of its kernel: the time of one
+#: case alone would be mostly the call's own).
+MEASURED_CASES = 64
+
+
+def measure(plan: StudyPlan, todo: Sequence[Case], npts: Sequence[int]) -> tuple[ChunkLines, float]:
+    """Run the first case to do here (a batched study: up to MEASURED_CASES of its record)
+    and time it: its lines, and its time per case over the estimate (the chunks are then
+    sized by measured time, so a slow engine or machine still gets chunks of about
     CHUNK_SECONDS, and Ctrl-C stops within about that). The kernels are loaded first, and a
     batched study's shared form made (rockcli.studies.sweep.batch), so neither is timed."""
     from rockcli.studies.parallel.setup import warm
     from rockcli.studies.sweep.batch import cached_form
 
     warm()
-    cached_form(plan)
+    first = todo[0]
+    cases = [first]
+    if cached_form(plan) is not None:
+        cases += [c for c in todo[1:MEASURED_CASES] if c.record == first.record]
     start = time.perf_counter()
-    rows = run_chunk_lines(Chunk(plan, case.record, (case,)))
-    elapsed = time.perf_counter() - start
-    estimate = case_cost(plan, npts[case.record] if case.record is not None else 0)
-    return rows, max(MIN_SPEED, elapsed / estimate) if estimate else 1.0
+    lines = run_chunk_lines(Chunk(plan, first.record, tuple(cases)))
+    elapsed = (time.perf_counter() - start) / len(cases)
+    estimate = case_cost(plan, npts[first.record] if first.record is not None else 0)
+    return lines, max(MIN_SPEED, elapsed / estimate) if estimate else 1.0
 
 
 def record_facts(plan: StudyPlan) -> tuple[list[int], dict[str, dict[str, Any]]]:
@@ -241,9 +250,9 @@ class Runner:
         with self.stopping():
             speed = 1.0
             if todo and size is None:
-                first_rows, speed = measure(self.plan, todo[0], npts)
-                self.save(first_rows)
-                todo = todo[1:]
+                first_lines, speed = measure(self.plan, todo, npts)
+                self.save(first_lines)
+                todo = todo[len(first_lines[0]) :]
             workers = sum(lane.workers for lane in lanes)
             chunks = make_chunks(self.plan, todo, npts, workers, size, speed)
             for chunk_rows in run_chunks(lanes, chunks, run_chunk_lines):
