@@ -242,7 +242,7 @@ def test_the_pulse_study_is_batched_and_identical(write_study: Any) -> None:
     assert batch.batch_form(plan) is not None
     for record in range(len(plan.records)):
         cases = [c for c in expand(plan) if c.record == record]
-        rows = worker.run_chunk(worker.Chunk(plan, record, tuple(cases)))
+        rows = worker.run_chunk(worker.Chunk(plan, record, tuple(c.id for c in cases)))
         source = worker.read_source(plan.records[record])
         slow = [{"case": c.id, **worker.run_case(plan, build_model(plan, c), source, None)}
                 for c in cases]  # fmt: skip

@@ -119,11 +119,10 @@ def test_a_chunk_whose_worker_always_dies_becomes_error_rows(write_study: WriteS
     # chunk sent again; after CHUNK_ATTEMPTS deaths its cases are rows with an error.
     from rockcli.studies.parallel import chunks
     from rockcli.studies.parallel.executor import Lane
-    from rockcli.studies.sweep.cases import expand
     from rockcli.studies.sweep.worker import Chunk, run_chunk
 
     plan = load_study(str(write_study()))
-    chunk = Chunk(plan, 0, tuple(expand(plan)[:3]))
+    chunk = Chunk(plan, 0, range(3))
     pools: list[DyingPool] = []
 
     def restart() -> DyingPool:
@@ -146,7 +145,7 @@ def test_a_pool_without_restart_still_raises(write_study: WriteStudy) -> None:
     from rockcli.studies.sweep.worker import Chunk, run_chunk
 
     plan = load_study(str(write_study()))
-    chunk = Chunk(plan, 0, tuple(expand(plan)))
+    chunk = Chunk(plan, 0, range(len(expand(plan))))
     with pytest.raises(BrokenProcessPool):
         list(run_chunks([Lane(DyingPool(), 1, 1)], [chunk], run_chunk))
 

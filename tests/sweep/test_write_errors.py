@@ -19,7 +19,6 @@ from click.testing import CliRunner
 
 from rockcli.cli.main import cli
 from rockcli.errors import InputError
-from rockcli.studies.sweep.cases import expand
 from rockcli.studies.sweep.study import load_study
 from rockcli.studies.sweep.worker import Chunk, run_chunk
 from tests.sweep.conftest import ROOT, WriteStudy
@@ -94,6 +93,6 @@ def test_the_error_column_names_files_from_the_study_folder(
         raise InputError("a problem", file=str(suite), where="target", allowed="a fix")
 
     monkeypatch.setattr("rockcli.studies.sweep.worker.build_model", refused)
-    rows = run_chunk(Chunk(plan, 0, tuple(expand(plan)[:1])))
+    rows = run_chunk(Chunk(plan, 0, range(1)))
     assert rows[0]["error"] == "records/suite.toml: target: a problem (allowed: a fix)"
     assert str(tmp_path) not in rows[0]["error"]

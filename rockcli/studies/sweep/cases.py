@@ -12,9 +12,9 @@ from __future__ import annotations
 
 import itertools
 import math
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
-from typing import Any
+from typing import Any, overload
 
 from rockcli.errors import InputError
 from rockcli.model.schema import Model
@@ -36,14 +36,44 @@ def axis_points(plan: StudyPlan) -> list[tuple[int, ...]]:
     return list(itertools.product(*(range(len(a.values)) for a in plan.axes)))
 
 
-def expand(plan: StudyPlan) -> list[Case]:
-    """Every case of the study, by id (records outermost; no record: the kinematic check on
-    the model's own code demand)."""
-    points = axis_points(plan)
-    records: list[int | None] = list(range(len(plan.records))) or [None]
-    return [
-        Case(i, rec, point) for i, (rec, point) in enumerate(itertools.product(records, points))
-    ]
+class Cases(Sequence[Case]):
+    """Every case of a study by id (records outermost, then the axes, the first outermost;
+    no record: the kinematic check on the model's own code demand), each made when it is
+    asked for: a study of 10⁶ cases holds no list of them."""
+
+    def __init__(self, plan: StudyPlan) -> None:
+        self.sizes = [len(a.values) for a in plan.axes]
+        self.points = math.prod(self.sizes)
+        self.records = len(plan.records)
+
+    def __len__(self) -> int:
+        return (self.records or 1) * self.points
+
+    @overload
+    def __getitem__(self, k: int) -> Case: ...
+
+    @overload
+    def __getitem__(self, k: slice) -> list[Case]: ...
+
+    def __getitem__(self, k: int | slice) -> Case | list[Case]:
+        if isinstance(k, slice):
+            return [self[i] for i in range(*k.indices(len(self)))]
+        n = len(self)
+        if k < 0:
+            k += n
+        if not 0 <= k < n:
+            raise IndexError(k)
+        record, point = divmod(k, self.points)
+        indices = []
+        for size in reversed(self.sizes):
+            point, index = divmod(point, size)
+            indices.append(index)
+        return Case(k, record if self.records else None, tuple(reversed(indices)))
+
+
+def expand(plan: StudyPlan) -> Cases:
+    """Every case of the study, by id (:class:`Cases`)."""
+    return Cases(plan)
 
 
 def case_label(plan: StudyPlan, case: Case) -> str:

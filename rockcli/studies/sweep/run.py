@@ -18,12 +18,14 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
+import numpy as np
+
 from rockcli.errors import InputError
 from rockcli.process import interrupted
 from rockcli.studies.parallel.chunks import run_chunks
 from rockcli.studies.parallel.executor import Lane
 from rockcli.studies.sweep.batch import check_grid
-from rockcli.studies.sweep.cases import Case, case_labels, expand
+from rockcli.studies.sweep.cases import Case, Cases, case_labels, expand
 from rockcli.studies.sweep.output import Output, PartialWrite, cell
 from rockcli.studies.sweep.study import StudyPlan
 from rockcli.studies.sweep.suite import suite_checks
@@ -82,20 +84,22 @@ def case_cost(plan: StudyPlan, npts: int) -> float:
 
 def make_chunks(
     plan: StudyPlan,
-    cases: Sequence[Case],
+    ids: Sequence[int] | np.ndarray,
     npts: Sequence[int],
     workers: int,
     chunk_size: int | None = None,
     speed: float = 1.0,
 ) -> list[Chunk]:
-    """The chunks of the cases to run: cases of one record together, ≈ CHUNK_SECONDS each.
+    """The chunks of the cases to run (ids in ascending order): cases of one record together,
+    ≈ CHUNK_SECONDS each, each chunk's ids a range where they follow each other.
 
     speed: measured time of a case over its estimate (:func:`measure`; the reference engine
     is ≈ 1000 times the estimate, which is the fast engine's).
     """
-    by_record: dict[int | None, list[Case]] = {}
-    for case in cases:
-        by_record.setdefault(case.record, []).append(case)
+    ids = np.asarray(ids, dtype=np.int64)
+    points = Cases(plan).points
+    records = ids // points if plan.records else np.zeros(ids.size, dtype=np.int64)
+    by_record = {(int(r) if plan.records else None): ids[records == r] for r in np.unique(records)}
     costs = {r: speed * case_cost(plan, npts[r] if r is not None else 0) for r in by_record}
     total = sum(costs[r] * len(c) for r, c in by_record.items())
     target = min(CHUNK_SECONDS, total / (CHUNKS_PER_WORKER * workers))
@@ -103,7 +107,10 @@ def make_chunks(
     for record, group in by_record.items():
         size = chunk_size or max(1, math.floor(target / costs[record]) if costs[record] else 1)
         for start in range(0, len(group), size):
-            chunks.append(Chunk(plan, record, tuple(group[start : start + size])))
+            part = group[start : start + size]
+            first, last = int(part[0]), int(part[-1])
+            span = range(first, last + 1) if last - first + 1 == part.size else tuple(part.tolist())
+            chunks.append(Chunk(plan, record, span))
     return chunks
 
 
@@ -127,7 +134,7 @@ def measure(plan: StudyPlan, todo: Sequence[Case], npts: Sequence[int]) -> tuple
     if cached_form(plan) is not None:
         cases += [c for c in todo[1:MEASURED_CASES] if c.record == first.record]
     start = time.perf_counter()
-    lines = run_chunk_lines(Chunk(plan, first.record, tuple(cases)))
+    lines = run_chunk_lines(Chunk(plan, first.record, tuple(c.id for c in cases)))
     elapsed = (time.perf_counter() - start) / len(cases)
     estimate = case_cost(plan, npts[first.record] if first.record is not None else 0)
     return lines, max(MIN_SPEED, elapsed / estimate) if estimate else 1.0
@@ -245,12 +252,13 @@ class Runner:
     def run(self, lanes: MutableSequence[Lane], npts: Sequence[int], size: int | None) -> None:
         """Every case not saved yet (SweepInterrupted on Ctrl-C, InputError when the folder
         cannot be written: each with the count of cases on disk)."""
-        todo = [c for c in self.cases if not self.done[c.id]]
+        todo = np.flatnonzero(np.frombuffer(self.done, dtype=np.uint8) == 0)
         self.tell()
         with self.stopping():
             speed = 1.0
-            if todo and size is None:
-                first_lines, speed = measure(self.plan, todo, npts)
+            if todo.size and size is None:
+                first = [self.cases[int(k)] for k in todo[:MEASURED_CASES]]
+                first_lines, speed = measure(self.plan, first, npts)
                 self.save(first_lines)
                 todo = todo[len(first_lines[0]) :]
             workers = sum(lane.workers for lane in lanes)

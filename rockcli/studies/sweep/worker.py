@@ -14,10 +14,11 @@ import threading
 import unicodedata
 from collections.abc import Sequence
 from dataclasses import dataclass
+from functools import cached_property
 from typing import TYPE_CHECKING, Any
 
 from rockcli.errors import InputError
-from rockcli.studies.sweep.cases import Case, build_model, case_error, case_labels
+from rockcli.studies.sweep.cases import Case, Cases, build_model, case_error, case_labels
 from rockcli.studies.sweep.study import RecordSource, StudyPlan
 
 if TYPE_CHECKING:
@@ -35,11 +36,18 @@ _lock = threading.Lock()  # dask workers run tasks on threads sharing these cach
 
 @dataclass(frozen=True)
 class Chunk:
-    """Cases of one record (or none) sent to a worker together."""
+    """Cases of one record (or none) sent to a worker together, by id (a range when they
+    follow each other: what is sent is a few numbers, whatever the chunk's size)."""
 
     plan: StudyPlan
     record: int | None
-    cases: tuple[Case, ...]
+    ids: Sequence[int]
+
+    @cached_property
+    def cases(self) -> tuple[Case, ...]:
+        """The chunk's cases."""
+        every = Cases(self.plan)
+        return tuple(every[k] for k in self.ids)
 
 
 def read_source(source: RecordSource) -> Record:
