@@ -1063,7 +1063,7 @@ def integrate(
     out_i[L.I_STATUS] = status
 
 
-@njit(cache=CACHE)
+@njit(cache=CACHE, nogil=True)
 def integrate_runs(
     times, accel, n_samples, run_case, run_pol, pars, springs, points, out_f, out_i, spring_out
 ):
@@ -1074,7 +1074,8 @@ def integrate_runs(
     fresh copy of its restrainer table springs[case] (the table holds the members' state),
     every restrainer intact and no history kept: the same arithmetic as one run of
     rockcli.dynamics.simulate, so the outputs are bit for bit the same (a study's chunk:
-    rockcli.dynamics.batch). out_f[j], out_i[j], spring_out[j]: run j's outputs (O_*, I_*,
+    rockcli.dynamics.batch). It releases the GIL: a study's own process runs chunks on a
+    thread while its main thread writes the other workers' results. out_f[j], out_i[j], spring_out[j]: run j's outputs (O_*, I_*,
     S_* layouts; spring_out's S_T_FAIL and S_T_YIELD columns set to nan by the caller).
     """
     n_rows = springs.shape[1]
