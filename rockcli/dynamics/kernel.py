@@ -816,10 +816,40 @@ def integrate(
         hist_f: each restrainer's force at every sample time (shape (n, rows) when wanted).
         out_f, out_i, spring_out: outputs (O_*, I_*, S_* layouts).
     """
+    integrate_sloped(times, accel, ground_slopes(times, accel), pol, par, springs, points, alive,
+                     hist_th, hist_om, hist_f, out_f, out_i, spring_out)  # fmt: skip
+
+
+@njit(cache=CACHE)
+def ground_slopes(times, accel):
+    """The slope of the ground acceleration over each interval between samples [g/s]."""
     n = times.size
-    slopes = np.empty(n - 1)
+    slopes = np.empty(max(n - 1, 0))
     for r in range(n - 1):
         slopes[r] = (accel[r + 1] - accel[r]) / (times[r + 1] - times[r])
+    return slopes
+
+
+@njit(cache=CACHE)
+def integrate_sloped(
+    times,
+    accel,
+    slopes,
+    pol,
+    par,
+    springs,
+    points,
+    alive,
+    hist_th,
+    hist_om,
+    hist_f,
+    out_f,
+    out_i,
+    spring_out,
+):
+    """:func:`integrate` with the ground's slopes given (ground_slopes of times and accel, or
+    of a longer grid of which times is a prefix)."""
+    n = times.size
     k_th = np.empty(7)
     k_om = np.empty(7)
     q_th = np.empty(4)
@@ -1075,10 +1105,13 @@ def integrate_runs(
     every restrainer intact and no history kept: the same arithmetic as one run of
     rockcli.dynamics.simulate, so the outputs are bit for bit the same (a study's chunk:
     rockcli.dynamics.batch). It releases the GIL: a study's own process runs chunks on a
-    thread while its main thread writes the other workers' results. out_f[j], out_i[j], spring_out[j]: run j's outputs (O_*, I_*,
-    S_* layouts; spring_out's S_T_FAIL and S_T_YIELD columns set to nan by the caller).
+    thread while its main thread writes the other workers' results. out_f[j], out_i[j],
+    spring_out[j]: run j's outputs (O_*, I_*, S_* layouts; spring_out's S_T_FAIL and S_T_YIELD
+    columns set to nan by the caller). The slopes of the ground acceleration are computed once
+    for all the runs (each run's grid is a prefix of times).
     """
     n_rows = springs.shape[1]
+    slopes = ground_slopes(times, accel)
     for j in range(run_case.size):
         c = run_case[j]
         n = n_samples[c]
@@ -1087,9 +1120,10 @@ def integrate_runs(
         hist_th = np.full(1, np.nan)
         hist_om = np.full(1, np.nan)
         hist_f = np.zeros((1, n_rows))
-        integrate(
+        integrate_sloped(
             times[:n],
             accel[:n],
+            slopes,
             run_pol[j],
             pars[c],
             table,
