@@ -265,6 +265,22 @@ def peak_rss_mb(args: list[str]) -> tuple[float, float]:
     return took, max(after, before) / 1024
 
 
+def run_study(study: Path, jobs: str, out: Path) -> tuple[float, float, float, float]:
+    """`rock sweep` of a study with --jobs (and --output parquet with pyarrow installed):
+    (wall time [s], peak RSS [MB], cases.csv [MB], cases.parquet [MB], nan without it)."""
+    import importlib.util
+
+    parquet = importlib.util.find_spec("pyarrow") is not None
+    args = [ROCK, "sweep", str(study), "--jobs", jobs, "--out", str(out), "--force",
+            "--no-progress", "--format", "json"]  # fmt: skip
+    if parquet:
+        args += ["--output", "parquet"]
+    took, rss = peak_rss_mb(args)
+    csv_mb = (out / "cases.csv").stat().st_size / 1e6
+    pq = (out / "cases.parquet").stat().st_size / 1e6 if parquet else float("nan")
+    return took, rss, csv_mb, pq
+
+
 def scale() -> None:
     import importlib.util
 
@@ -279,14 +295,7 @@ def scale() -> None:
             study = scale_study(folder, shrink)
             cases = SCALE_CASES // shrink
             for jobs in ("1", "2"):
-                out = folder / f"out-{shrink}-{jobs}"
-                args = [ROCK, "sweep", str(study), "--jobs", jobs, "--out", str(out), "--force",
-                        "--no-progress", "--format", "json"]  # fmt: skip
-                if parquet:
-                    args += ["--output", "parquet"]
-                took, rss = peak_rss_mb(args)
-                csv_mb = (out / "cases.csv").stat().st_size / 1e6
-                pq = (out / "cases.parquet").stat().st_size / 1e6 if parquet else float("nan")
+                took, rss, csv_mb, pq = run_study(study, jobs, folder / f"out-{shrink}-{jobs}")
                 print(f"  {cases:7d}  {jobs:>4}   {took:8.1f}   {cases / took:7.0f}   "
                       f"{rss:13.0f}   {csv_mb:14.1f}   {pq:12.1f}")  # fmt: skip
                 if shrink == 1 and (best is None or took < best):
@@ -325,20 +334,11 @@ def old_path() -> None:
 
 def million() -> None:
     """One study of 10⁶ cases (the scale study with ten times the R values), --jobs 2."""
-    import importlib.util
-
-    parquet = importlib.util.find_spec("pyarrow") is not None
     with tempfile.TemporaryDirectory() as tmp:
         folder = Path(tmp)
         study = scale_study(folder, grow=10)
         out = folder / "out"
-        args = [ROCK, "sweep", str(study), "--jobs", "2", "--out", str(out), "--force",
-                "--no-progress", "--format", "json"]  # fmt: skip
-        if parquet:
-            args += ["--output", "parquet"]
-        took, rss = peak_rss_mb(args)
-        csv_mb = (out / "cases.csv").stat().st_size / 1e6
-        pq = (out / "cases.parquet").stat().st_size / 1e6 if parquet else float("nan")
+        took, rss, csv_mb, pq = run_study(study, "2", out)
         rows = sum(1 for _ in open(out / "cases.csv", encoding="utf-8")) - 1
         print(f"10^6 scale study, --jobs 2: {rows} cases in {took:.0f} s ({took / 60:.2f} min; "
               f"target 4.5 min), peak RSS {rss:.0f} MB, cases.csv {csv_mb:.0f} MB, "
