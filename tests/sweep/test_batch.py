@@ -337,3 +337,26 @@ def test_the_paper_study_on_real_records_is_the_same_file_batched(
         for key in ("wall_time_s", "out", "jobs"):
             summary.pop(key, None)
     assert json.dumps(fast, sort_keys=True) == json.dumps(slow, sort_keys=True)
+
+
+def test_a_suite_study_batched_is_the_cases_one_by_one(write_study: Any, tmp_path: Path) -> None:
+    """A rocking-only study whose records are a suite (the three pulses of
+    tests/sweep/test_suite_entries.py, one scaled): each case's row, the suite's rule over
+    its records run as arrays, equals the row of run_suite_case, bit for bit."""
+    from rockcli.studies.sweep.suite import read_suite, run_suite_case
+    from tests.sweep.test_suite_entries import SUITE
+
+    study = 'analyses = ["rocking"]\n' + STUDY.replace(
+        '[[records]]\npath = "one-cosine_Tp2s_0.31g.txt"\nname = "cosine"\n',
+        '[[records]]\nsuite = "suite.toml"\n',
+    )
+    path = write_study(study)
+    (tmp_path / "records" / "suite.toml").write_text(SUITE, encoding="utf-8")
+    plan = load_study(str(path))
+    assert plan.records[0].suite and batch.batch_form(plan) is not None
+    suite = read_suite(plan.records[0])
+    cases = [c for c in expand(plan) if c.record == 0]
+    rows = worker.run_chunk(worker.Chunk(plan, 0, tuple(c.id for c in cases)))
+    slow = [{"case": c.id, **run_suite_case(plan, build_model(plan, c), suite)} for c in cases]
+    assert rows == slow
+    assert {r["rocking"] for r in rows} == {"passes", "fails"}  # both verdicts met

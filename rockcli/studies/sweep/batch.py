@@ -42,6 +42,7 @@ if TYPE_CHECKING:
     from rockcli.dynamics.batch import Blocks, Runs
     from rockcli.mechanics import Block
     from rockcli.model.schema import Model
+    from rockcli.studies.sweep.suite import SuiteInput
 
 #: The model values a batched study may vary: (table, key); a restrainer's key for every
 #: element of [[restrainers]].
@@ -94,7 +95,7 @@ def batch_form(plan: StudyPlan) -> Form | None:
     the study's first case is not a valid model (its message)."""
     if plan.analyses != ("rocking",) or plan.engine != "fast" or plan.check_tolerance:
         return None
-    if any(source.suite for source in plan.records) or not plan.records:
+    if not plan.records:
         return None
     keys = tuple(tuple(_key(path) for path in axis.paths) for axis in plan.axes)
     if any(key is None for axis in keys for key in axis):
@@ -392,6 +393,56 @@ def run_arrays(
     if not valid.all():
         return None
     return blocks, run_blocks(time, accel, dt, blocks, settings_from(solver_options(form.model)))
+
+
+def suite_rows(form: Form, cases: Sequence[Case], suite: SuiteInput) -> list[dict[str, Any]] | None:
+    """The rows of rockcli.studies.sweep.suite.run_suite_case (the time history alone) for a
+    chunk's cases under a suite, every record run as arrays; None when a case is not valid.
+
+    Each record's max θ/α (the envelope of its polarities) and overturning go, case by case,
+    through the suite's own rule (rockcli.studies.suite.rule.suite_measure, with outcomes
+    made as rockcli.studies.suite.run.outcomes makes them): the same numbers as case by case.
+    """
+    from rockcli.dynamics.batch import run_blocks
+    from rockcli.model.derive import solver_options
+    from rockcli.studies.assess import settings_from
+    from rockcli.studies.suite.assess import limit_for
+    from rockcli.studies.suite.rule import RecordOutcome, suite_measure
+
+    indices = np.array([c.indices for c in cases], dtype=np.int64).reshape(len(cases), -1)
+    blocks, valid = derive(form, indices)
+    if not valid.all():
+        return None
+    settings = settings_from(solver_options(form.model))
+    state = suite.settings.target.limit_state.value
+    limit = limit_for(form.model, state)
+    per_record = []
+    for item in suite.items:
+        rec = item.record
+        e = envelope(blocks, run_blocks(rec.time, rec.accel, rec.dt, blocks, settings))
+        per_record.append((item, float(rec.pga), e["max_ratio"].tolist(),
+                           e["overturned"].tolist()))  # fmt: skip
+    rows = []
+    for k, case in enumerate(cases):
+        measure = suite_measure(
+            [RecordOutcome(item.name, item.scale, pga, ratio[k], over[k])
+             for item, pga, ratio, over in per_record],
+            limit,
+        )  # fmt: skip
+        rows.append({
+            "case": case.id,
+            "block_R": float(blocks.R[k]),
+            "block_alpha": float(blocks.alpha[k]),
+            "limit_state": state,
+            "max_ratio": float(measure.measure),
+            "overturned": measure.overturned_records > 0,
+            "rocking": "passes" if measure.passed else "fails",
+            "input": "ground",
+            "suite_rule": measure.rule,
+            "suite_records": measure.n,
+            "suite_overturned": measure.overturned_records,
+        })  # fmt: skip
+    return rows
 
 
 def envelope(blocks: Blocks, runs: Runs) -> dict[str, np.ndarray]:

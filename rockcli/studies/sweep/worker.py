@@ -28,6 +28,7 @@ if TYPE_CHECKING:
     from rockcli.mechanics import Block
     from rockcli.model.schema import Model
     from rockcli.records.record import Record
+    from rockcli.studies.sweep.suite import SuiteInput
 
 _records: dict[RecordSource, Record] = {}
 _spectra: dict[tuple[RecordSource, float], RecordSpectrum] = {}
@@ -115,6 +116,23 @@ def batched_cells(chunk: Chunk) -> dict[str, list[str]] | None:
     return {**label_cells(plan, chunk.cases), **result_cells(*found)}
 
 
+def batched_rows(
+    chunk: Chunk, record: Record | None, suite: SuiteInput | None
+) -> list[dict[str, Any]] | None:
+    """The rows of a batched chunk (rockcli.studies.sweep.batch) under its record or suite,
+    or None when the chunk runs case by case."""
+    from rockcli.studies.sweep.batch import cached_form, rows_of, run_arrays, suite_rows
+
+    form = cached_form(chunk.plan) if record is not None or suite is not None else None
+    if form is None:
+        return None
+    if suite is not None:
+        return suite_rows(form, chunk.cases, suite)
+    assert record is not None
+    found = run_arrays(form, chunk.cases, record.time, record.accel, record.dt)
+    return None if found is None else rows_of(chunk.cases, *found)
+
+
 def run_chunk(chunk: Chunk) -> list[dict[str, Any]]:
     """The result columns of every case of the chunk, each with its case id.
 
@@ -128,15 +146,9 @@ def run_chunk(chunk: Chunk) -> list[dict[str, Any]]:
     source = plan.records[chunk.record] if chunk.record is not None else None
     suite = read_suite(source) if source is not None and source.suite else None
     record = read_source(source) if source is not None and suite is None else None
-    if record is not None:
-        from rockcli.studies.sweep.batch import cached_form, rows_of, run_arrays
-
-        form = cached_form(plan)
-        found = None if form is None else run_arrays(
-            form, chunk.cases, record.time, record.accel, record.dt
-        )  # fmt: skip
-        if found is not None:
-            return rows_of(chunk.cases, *found)
+    batched = batched_rows(chunk, record, suite)
+    if batched is not None:
+        return batched
     rows = []
     for case in chunk.cases:
         known: dict[str, Any] = {"case": case.id}  # the block's R and α once computed
