@@ -64,7 +64,8 @@ def placement(kind: str) -> dict[str, Any]:
 def plain_blocks(draw: st.DrawFn) -> dict[str, Any]:
     """A plain block's model table: either geometric form, weight or unit weight (or no mass
     when no spring is stiff), Housner's e (with a factor or not) or an explicit e, 0–2 springs
-    placed each of the three ways."""
+    placed each of the three ways; two-sided or one-sided motion (either side stopped), and
+    sometimes the linearized equation, a tail of its own, other tolerances."""
     polar = draw(st.booleans())
     base: dict[str, Any] = {"name": "batched", "kind": draw(st.sampled_from(["wall", "altar"]))}
     geometry: dict[str, Any] = (
@@ -97,6 +98,20 @@ def plain_blocks(draw: st.DrawFn) -> dict[str, Any]:
         rows.append(row)
     if rows:
         base["restrainers"] = rows
+    motion = draw(st.sampled_from(["two", "one", "one-positive"]))
+    if motion != "two":
+        base["motion"] = {"sides": "one", "rebound": 0.8}
+        if motion == "one-positive":
+            base["motion"]["stopped"] = "positive"
+    analysis: dict[str, Any] = {}
+    if draw(st.booleans()):
+        analysis["linearized"] = True
+    if draw(st.booleans()):
+        analysis["tail"] = draw(st.sampled_from([0.0, 2.0, 40.0]))
+    if draw(st.booleans()):
+        analysis["rtol"] = analysis["atol"] = 1e-6
+    if analysis:
+        base["analysis"] = analysis
     return base
 
 
@@ -360,3 +375,35 @@ def test_a_suite_study_batched_is_the_cases_one_by_one(write_study: Any, tmp_pat
     slow = [{"case": c.id, **run_suite_case(plan, build_model(plan, c), suite)} for c in cases]
     assert rows == slow
     assert {r["rocking"] for r in rows} == {"passes", "fails"}  # both verdicts met
+
+
+def test_a_record_timed_from_another_origin(tmp_path: Path) -> None:
+    """Samples timed from 100 s (the engines run them from 0 and shift the times back; a
+    record read from a file starts at 0, this is the API's case): the batched envelope,
+    overturning times included, is rockcli.dynamics.simulate.assess's case by case."""
+    from rockcli.dynamics.simulate import assess
+    from rockcli.model.derive import solver_options, to_block
+    from rockcli.studies.assess import settings_from
+
+    base = spring_wall(position="top", k=0.0)
+    axes = [
+        {"path": "geometry.alpha", "values": [0.05, 0.1, 0.2]},
+        {"path": "geometry.R", "values": [0.05, 0.1, 0.5, 1.0]},
+        {"path": "restrainers[0].k", "values": [0.0, 1e3]},
+    ]
+    plan = write_plan(tmp_path, base, axes)
+    form = batch.batch_form(plan)
+    assert form is not None
+    cases = list(expand(plan))
+    record = worker.read_source(plan.records[0])
+    time = record.time + 100.0
+    found = batch.run_arrays(form, cases, time, record.accel, record.dt)
+    assert found is not None
+    rows = batch.rows_of(cases, *found)
+    for case, row in zip(cases, rows, strict=True):
+        model = build_model(plan, case)
+        result = assess(to_block(model), time, record.accel, record.dt,
+                        settings=settings_from(solver_options(model)))  # fmt: skip
+        expected = worker.rocking_columns(result)
+        assert {k: row[k] for k in expected} == expected
+    assert any(r["t_overturn"] is not None and r["t_overturn"] > 100.0 for r in rows)
