@@ -1,9 +1,10 @@
 """Many rocking runs of plain blocks under one record in one compiled call (a study's chunk).
 
 A *plain* block is the rectangular block of paper Eq. (1)–(2) on the ground, without loads,
-thrusts, a body of another shape or a chain, whose restrainers have no memory (elastic, no
-pretension, no yield, no rupture: rules.py runs them as springs) and are never lost. A study
-that varies such a block's sizes, weight, restitution and restrainer stiffnesses gives each
+thrusts, a body of another shape or a chain; its restrainers are any of rock's members
+(rules.py: elastic, yielding, pretensioned, lost past an elongation, anchored, tie-rods),
+packed as ``pack_springs`` packs them and set at rest by the same ``rules.reset_laws``. A study
+that varies such a block's sizes, weight, restitution and spring stiffnesses gives each
 case's kernel inputs here as arrays (:class:`Blocks`): the parameter vector and restrainer
 table of :func:`rockcli.dynamics.simulate.pack_parameters` and ``pack_springs``, one row per
 case, with the same arithmetic in the same order, so that every run is bit for bit the run
@@ -110,6 +111,8 @@ class Blocks:
         """mechanics.mirror_symmetric of each block: two-sided, each restrainer the same from
         either pivot (a plain block has one restitution and no loads)."""
         same = np.full(self.size, not self.base.one_sided)
+        if not all(sp.yield_pos == sp.yield_neg for sp in self.base.restrainers):
+            return np.zeros(self.size, dtype=bool)
         if self.k_pos.shape[1]:
             sides = (
                 (self.k_pos == self.k_neg)
@@ -183,6 +186,8 @@ def pack_spring_tables(blocks: Blocks) -> np.ndarray:
                 c0 = np.where(k[:, j] > 0.0, -sp.pretension / k[:, j], 0.0)
             table[:, j, rules.COL_C0 + col] = c0
             table[:, j, rules.COL_C + col] = c0
+    if any(sp.has_memory for sp in b.base.restrainers):  # each member's state at rest
+        rules.reset_laws(table.reshape(-1, table.shape[2]), lin)
     return table
 
 

@@ -2,11 +2,13 @@
 compiled call, no model per case.
 
 A study is *batched* when it asks for the rocking analysis alone with the fast engine (no
-tolerance check, no suite) of a block that rockcli.dynamics.batch can run as arrays (a plain
-block on the ground: no loads, thrusts, wall, floor; springs without memory that are never
-lost) and its axes change only the values of :data:`BATCH_FIELDS` that its first case already
-gives (a study that changes the form of a table, e.g. sets ``geometry.R`` on a block given by
-thickness and height, runs case by case, where each case's model says what is wrong).
+tolerance check; records or suites) of a block that rockcli.dynamics.batch can run as arrays
+(a plain block on the ground: no loads, thrusts, wall, floor; restrainers of any law, unless
+some are checked by their strength and others only by their failure elongation, whose
+utilisation column case by case cannot be made) and its axes change only the values of
+:data:`BATCH_FIELDS` that its first case already gives (a study that changes the form of a
+table, e.g. sets ``geometry.R`` on a block given by thickness and height, runs case by case,
+where each case's model says what is wrong).
 
 For a batched study:
 
@@ -152,11 +154,12 @@ def plain_block(model: Model, ground: bool) -> Block | None:
         return None
     if block.loaded or block.e_neg is not None:
         return None
-    for sp, table in zip(block.restrainers, model.restrainers, strict=True):
-        if table.kind.value != "spring" or sp.has_memory or math.isfinite(sp.lost_at):
-            return None
-        if math.isfinite(sp.strength) or sp.can_fail:
-            return None
+    checked = [sp for sp in block.restrainers if math.isfinite(sp.strength) or sp.can_fail]
+    with_strength = [sp for sp in checked if math.isfinite(sp.strength)]
+    if with_strength and len(with_strength) < len(checked):
+        return None  # a utilisation of some restrainers and none of others: case by case
+    if not with_strength and len(checked) > 1:
+        return None
     return block
 
 
@@ -258,11 +261,13 @@ def derive(form: Form, indices: np.ndarray) -> tuple[Blocks, np.ndarray]:
             e = housner_e(alpha, factor)
         sides: list[list[np.ndarray]] = [[], [], [], [], [], []]
         for i, table in enumerate(model.restrainers):
-            if table.k is not None:
+            sp = base.restrainers[i]
+            if table.kind.value == "tie-rod":  # E·A/L of its bar: not a batched value
+                k_pos, k_neg = np.full(n, sp.k_pos), np.full(n, sp.k_neg)
+            elif table.k is not None:
                 k_pos = k_neg = value("restrainers", i, "k")
             else:
                 k_pos, k_neg = value("restrainers", i, "k_pos"), value("restrainers", i, "k_neg")
-            sp = base.restrainers[i]
             if table.position is not None:  # the top corner
                 r_pos = r_neg = 2 * R
                 phi_pos = phi_neg = alpha
@@ -304,6 +309,11 @@ def valid_blocks(model: Model, blocks: Blocks, b: np.ndarray) -> np.ndarray:
         stiff = np.zeros(blocks.size, dtype=bool)
         for i, table in enumerate(model.restrainers):
             stiff |= (blocks.k_pos[:, i] != 0.0) | (blocks.k_neg[:, i] != 0.0)
+            if table.effective_law.value == "elastic-plastic" and table.kind.value == "spring":
+                # schema.Restrainer._check_law: a stiff side needs its yield force
+                for k, key in ((blocks.k_pos, "yield_pos"), (blocks.k_neg, "yield_neg")):
+                    if getattr(table, key) is None:
+                        ok &= ~(k[:, i] != 0.0)
             if table.from_pivot is not None:
                 ok &= ~(table.from_pivot > 2.0 * b * (1 + CONTAINMENT_RTOL))
         if blocks.mass is None:
@@ -476,7 +486,27 @@ def envelope(blocks: Blocks, runs: Runs) -> dict[str, np.ndarray]:
         "overturned": over.any(axis=1),
         "t_overturn": t,
         "rocking": verdict,
+        "utilisation": utilisation(blocks, runs),
     }
+
+
+def utilisation(blocks: Blocks, runs: Runs) -> np.ndarray:
+    """worker.max_utilisation of each case: the largest, over the restrainers with a strength
+    (in their order), of the larger peak force of the two polarities over the strength
+    (rockcli.studies.strength.check_row); nan where no restrainer has a strength."""
+    from rockcli.dynamics import layout as L
+    from rockcli.dynamics.batch import python_max
+
+    out = np.full(blocks.size, np.nan)
+    first = True
+    for j, sp in enumerate(blocks.base.restrainers):
+        if not math.isfinite(sp.strength):
+            continue
+        peaks = runs.spring_out[:, :, j, L.S_MAX_FORCE]
+        ratio = python_max(peaks[:, 0], peaks[:, 1]) / sp.strength
+        out = ratio if first else python_max(out, ratio)
+        first = False
+    return out
 
 
 def rows_of(cases: Sequence[Case], blocks: Blocks, runs: Runs) -> list[dict[str, Any]]:
@@ -485,7 +515,8 @@ def rows_of(cases: Sequence[Case], blocks: Blocks, runs: Runs) -> list[dict[str,
     e = envelope(blocks, runs)
     columns = zip(
         *(e[k].tolist() for k in ("block_R", "block_alpha", "max_ratio", "max_ratio_pos",
-                                  "max_ratio_neg", "overturned", "t_overturn", "rocking")),
+                                  "max_ratio_neg", "overturned", "t_overturn", "rocking",
+                                  "utilisation")),
         strict=True,
     )  # fmt: skip
     return [
@@ -500,9 +531,9 @@ def rows_of(cases: Sequence[Case], blocks: Blocks, runs: Runs) -> list[dict[str,
             "overturned": o,
             "t_overturn": None if math.isnan(tt) else tt,
             "rocking": v,
-            "utilisation": None,
+            "utilisation": None if math.isnan(u) else u,
         }
-        for case, (R, alpha, m, p, q, o, tt, v) in zip(cases, columns, strict=True)
+        for case, (R, alpha, m, p, q, o, tt, v, u) in zip(cases, columns, strict=True)
     ]
 
 
@@ -517,7 +548,8 @@ def result_cells(blocks: Blocks, runs: Runs) -> dict[str, list[str]]:
     from rockcli.studies.sweep.output import cell, csv_field
 
     e = envelope(blocks, runs)
-    floats = ("block_R", "block_alpha", "max_ratio", "max_ratio_pos", "max_ratio_neg", "t_overturn")
+    floats = ("block_R", "block_alpha", "max_ratio", "max_ratio_pos", "max_ratio_neg",
+              "t_overturn", "utilisation")  # fmt: skip
     out = {k: float_cells(e[k]) for k in floats}
     out["overturned"] = ["true" if o else "false" for o in e["overturned"].tolist()]
     out["rocking"] = [csv_field(cell(v)) for v in e["rocking"].tolist()]
