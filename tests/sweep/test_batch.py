@@ -224,11 +224,7 @@ def test_the_check_refuses_what_the_loader_refuses(tmp_path: Path, study: Any) -
     except InputError:  # the first case is invalid: the loader's own message
         assert not loader_accepts(plan, expand(plan)[0])
         return
-    checked = [r for r in base.get("restrainers", []) if set(r) & {"fails_at", "anchor_capacity",
-               "yield_pos", "grade"}]  # fmt: skip
-    if len(checked) < 2:
-        assert form is not None, "a plain block's study on batched paths is batched"
-    assume(form is not None)
+    assert form is not None, "a plain block's study on batched paths is batched"
     cases = expand(plan)
     indices = batch.grid_indices(plan, 0, len(cases))
     _, valid = batch.derive(form, indices)
@@ -265,7 +261,7 @@ def test_a_chunk_in_one_call_is_the_cases_one_by_one(tmp_path: Path, study: Any)
         form = batch.batch_form(plan)
     except InputError:  # a rule between GOOD values (a yield missing on a stiff side)
         assume(False)
-    assume(form is not None)  # restrainers checked some by strength, some by elongation
+    assert form is not None
     cases = [c for c in expand(plan) if loader_accepts(plan, c)]
     if not cases:
         return
@@ -438,3 +434,25 @@ def test_a_record_timed_from_another_origin(tmp_path: Path) -> None:
         expected = worker.rocking_columns(result)
         assert {k: row[k] for k in expected} == expected
     assert any(r["t_overturn"] is not None and r["t_overturn"] > 100.0 for r in rows)
+
+
+def test_a_member_checked_by_its_elongation_beside_one_with_a_strength(tmp_path: Path) -> None:
+    """One spring has an anchor (a strength), another is lost past 4 mm (no strength): the
+    utilisation column is the first's force over its strength. Case by case it used to take
+    the max over a number and None, and every case was an internal error; batched and case by
+    case now give the same rows."""
+    base = spring_wall(position="top", k=1e4, anchor_capacity=3000.0)
+    base["restrainers"].append({"name": "lost", "k": 2e4, "fails_at": 0.004,
+                                "height": 1.0, "from_pivot": 0.05})  # fmt: skip
+    axes = [{"path": "geometry.alpha", "values": [0.05, 0.1]},
+            {"path": "restrainers[1].k", "values": [0.0, 2e4]}]  # fmt: skip
+    plan = write_plan(tmp_path, base, axes)
+    form = batch.batch_form(plan)
+    assert form is not None
+    cases = list(expand(plan))
+    record = worker.read_source(plan.records[0])
+    found = batch.run_arrays(form, cases, record.time, record.accel, record.dt)
+    assert found is not None
+    slow = per_case_rows(plan, cases)
+    assert batch.rows_of(cases, *found) == slow
+    assert all(isinstance(r["utilisation"], float) and r["utilisation"] > 0 for r in slow), slow

@@ -3,9 +3,8 @@ compiled call, no model per case.
 
 A study is *batched* when it asks for the rocking analysis alone with the fast engine (no
 tolerance check; records or suites) of a block that rockcli.dynamics.batch can run as arrays
-(a plain block on the ground: no loads, thrusts, wall, floor; restrainers of any law, unless
-some are checked by their strength and others only by their failure elongation, whose
-utilisation column case by case cannot be made) and its axes change only the values of
+(a plain block on the ground: no loads, thrusts, wall, floor; restrainers of any law) and its
+axes change only the values of
 :data:`BATCH_FIELDS` that its first case already gives (a study that changes the form of a
 table, e.g. sets ``geometry.R`` on a block given by thickness and height, runs case by case,
 where each case's model says what is wrong).
@@ -153,12 +152,6 @@ def plain_block(model: Model, ground: bool) -> Block | None:
     except InputError:
         return None
     if block.loaded or block.e_neg is not None:
-        return None
-    checked = [sp for sp in block.restrainers if math.isfinite(sp.strength) or sp.can_fail]
-    with_strength = [sp for sp in checked if math.isfinite(sp.strength)]
-    if with_strength and len(with_strength) < len(checked):
-        return None  # a utilisation of some restrainers and none of others: case by case
-    if not with_strength and len(checked) > 1:
         return None
     return block
 

@@ -241,8 +241,9 @@ def max_utilisation(block: Block, result: Assessment) -> float | None:
     """The largest force/strength of the restrainers that have a strength (None: none has)."""
     from rockcli.studies.strength import restrainer_checks
 
-    checks = restrainer_checks(block, result)
-    return _number(max(c["utilisation"] for c in checks)) if checks else None
+    known = [c["utilisation"] for c in restrainer_checks(block, result)]
+    known = [u for u in known if u is not None]  # a member checked by its elongation alone
+    return _number(max(known)) if known else None
 
 
 def rocking_columns(result: Assessment) -> dict[str, Any]:
