@@ -19,7 +19,7 @@ from rockcli.studies.parallel import executor as sweep_exec
 from rockcli.studies.parallel.executor import START_METHODS, local_executor, start_method
 from rockcli.studies.sweep.run import run_sweep
 from rockcli.studies.sweep.study import load_study
-from tests.sweep.conftest import WriteStudy
+from tests.sweep.conftest import STUDY, WriteStudy
 
 HAS_DISTRIBUTED = importlib.util.find_spec("distributed") is not None
 
@@ -38,10 +38,17 @@ def test_local_lanes() -> None:
 
 
 @pytest.mark.skipif(not HAS_DISTRIBUTED, reason="distributed not installed: pip install '.[dask]'")
-def test_a_dask_cluster_gives_the_same_csv(write_study: WriteStudy, tmp_path: Path) -> None:
+@pytest.mark.parametrize(
+    "analyses",
+    ["", 'analyses = ["rocking"]\n'],
+    ids=["case by case", "batched (rockcli/studies/sweep/batch.py)"],
+)
+def test_a_dask_cluster_gives_the_same_csv(
+    write_study: WriteStudy, tmp_path: Path, analyses: str
+) -> None:
     from distributed import LocalCluster
 
-    study = write_study()
+    study = write_study(analyses + STUDY)
     with local_executor(1) as lanes:
         run_sweep(load_study(str(study)), str(tmp_path / "local"), lanes)
     with LocalCluster(
