@@ -1,0 +1,97 @@
+"""The fragility fits (rockcli/fragility/fit.py) against independent computations.
+
+- IDA: θ and β against numpy on the logs of the collapse intensities, and against
+  scipy.stats.lognorm.fit with its location at 0 (the maximum likelihood, divisor n); with
+  ddof = 1 against numpy's std with divisor n − 1 (Baker 2015's β). Tolerance 1e-12 relative:
+  the same closed form evaluated in another order.
+- MSA: θ and β against the optimum of the binomial log-likelihood found by brute force on a
+  fine grid of (θ, β), for a hand-made data set (seven stripes of 20 runs); the fit must be
+  within two grid steps of it and its likelihood at least the grid's best.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+from scipy import stats
+
+from rockcli.fragility.fit import BETA_DDOF, ida_band, ida_fit, msa_band, msa_fit
+
+#: Collapse intensities of ten records [g] (hand-made).
+COLLAPSES = np.array([0.21, 0.34, 0.29, 0.45, 0.18, 0.52, 0.39, 0.27, 0.61, 0.33])
+#: Seven stripes: intensity [g], runs, exceedances (hand-made, increasing as a fragility).
+LEVELS = np.array([0.1, 0.2, 0.3, 0.4, 0.6, 0.8, 1.0])
+RUNS = np.full(7, 20)
+EXCEEDANCES = np.array([0, 1, 4, 9, 14, 18, 19])
+
+
+def test_ida_is_the_lognormal_of_the_logs() -> None:
+    fit = ida_fit(COLLAPSES)
+    logs = np.log(COLLAPSES)
+    assert fit.median == pytest.approx(np.exp(logs.mean()), rel=1e-12)
+    assert fit.beta == pytest.approx(logs.std(ddof=0), rel=1e-12)
+    assert fit.beta_ddof == BETA_DDOF == 0 and fit.n == 10
+    shape, loc, scale = stats.lognorm.fit(COLLAPSES, floc=0)
+    assert loc == 0 and fit.beta == pytest.approx(shape, rel=1e-9)
+    assert fit.median == pytest.approx(scale, rel=1e-9)
+    baker = ida_fit(COLLAPSES, ddof=1)
+    assert baker.beta == pytest.approx(logs.std(ddof=1), rel=1e-12)
+    assert baker.median == fit.median
+
+
+def log_likelihood(theta: np.ndarray, beta: np.ndarray) -> np.ndarray:
+    """The binomial log-likelihood of LEVELS, RUNS, EXCEEDANCES at every (θ, β) of a grid,
+    written here from the definition (Baker 2015), with the binomial coefficients."""
+    from scipy.special import gammaln
+
+    u = (np.log(LEVELS)[None, None, :] - np.log(theta)[:, None, None]) / beta[None, :, None]
+    z, n = EXCEEDANCES, RUNS
+    coefficient = gammaln(n + 1) - gammaln(z + 1) - gammaln(n - z + 1)
+    terms = coefficient + z * stats.norm.logcdf(u) + (n - z) * stats.norm.logcdf(-u)
+    return terms.sum(axis=2)
+
+
+def test_msa_is_the_binomial_maximum_likelihood() -> None:
+    fit = msa_fit(LEVELS, RUNS, EXCEEDANCES)
+    theta = np.linspace(0.3, 0.6, 601)  # steps of 5e-4 g
+    beta = np.linspace(0.2, 0.9, 701)  # steps of 1e-3
+    grid = log_likelihood(theta, beta)
+    i, j = np.unravel_index(np.argmax(grid), grid.shape)
+    assert fit.median == pytest.approx(theta[i], abs=2 * (theta[1] - theta[0]))
+    assert fit.beta == pytest.approx(beta[j], abs=2 * (beta[1] - beta[0]))
+    at_fit = log_likelihood(np.array([fit.median]), np.array([fit.beta]))[0, 0]
+    assert at_fit >= grid.max() - 1e-9
+    assert fit.beta_ddof is None and fit.n == 140
+
+
+@pytest.mark.parametrize(
+    ("z", "why"),
+    [
+        (np.zeros(7), "none exceeds"),
+        (RUNS.copy(), "every run exceeds"),
+        (np.array([0, 1, 4, 9, 14, 18, 21]), "more exceedances than runs"),
+        (np.array([0, 1, 4, 9.5, 14, 18, 19]), "half an exceedance"),
+    ],
+)
+def test_an_msa_data_set_that_defines_no_fit_says_why(z: np.ndarray, why: str) -> None:
+    with pytest.raises(ValueError):
+        msa_fit(LEVELS, RUNS, z)
+
+
+@pytest.mark.parametrize("im", [[0.3], [0.3, 0.3, 0.3], [0.3, -0.1], [0.3, np.nan]])
+def test_an_ida_data_set_that_defines_no_fit_says_why(im: list[float]) -> None:
+    with pytest.raises(ValueError):
+        ida_fit(np.array(im))
+
+
+def test_the_bootstrap_bands_hold_the_fit_and_repeat_with_their_seed() -> None:
+    at = np.array([0.2, 0.4, 0.8])
+    for band, fit in (
+        (msa_band(LEVELS, RUNS, EXCEEDANCES, at, samples=300), msa_fit(LEVELS, RUNS, EXCEEDANCES)),
+        (ida_band(COLLAPSES, at, samples=300), ida_fit(COLLAPSES)),
+    ):
+        assert band.shape == (3, 2) and np.all(band[:, 0] <= band[:, 1])
+        p = fit.probability(at)
+        assert np.all((band[:, 0] <= p) & (p <= band[:, 1]))
+    again = msa_band(LEVELS, RUNS, EXCEEDANCES, at, samples=300)
+    assert np.array_equal(again, msa_band(LEVELS, RUNS, EXCEEDANCES, at, samples=300))
