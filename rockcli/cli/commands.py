@@ -6,6 +6,7 @@ import click
 
 from rockcli.cli.assess import assess
 from rockcli.cli.compare import compare
+from rockcli.cli.fragility import fragility
 from rockcli.cli.init import init
 from rockcli.cli.kinematic import kinematic
 from rockcli.cli.record import record
@@ -28,3 +29,4 @@ ALL.append(retrofit)
 ALL.append(suite)
 ALL.append(report)
 ALL.append(validate)
+ALL.append(fragility)

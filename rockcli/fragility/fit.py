@@ -23,13 +23,15 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
-from scipy import optimize, stats
+from scipy import optimize, special, stats
 
 #: The divisor of β² in an IDA fit: n (maximum likelihood), not n − 1.
 BETA_DDOF = 0
 #: Bootstrap resamples of a confidence band, and its two-sided level.
 BOOTSTRAP_SAMPLES = 1000
 CONFIDENCE = 0.95
+#: Tolerance of a bootstrap refit in ln θ and ln β (1e-6: far below the band's own spread).
+BAND_TOLERANCE = 1e-6
 
 
 @dataclass(frozen=True)
@@ -63,10 +65,17 @@ def ida_fit(im: np.ndarray, ddof: int = BETA_DDOF) -> Fit:
     return Fit(float(np.exp(np.mean(logs))), beta, ddof, int(x.size))
 
 
-def msa_fit(im: np.ndarray, runs: np.ndarray, exceedances: np.ndarray) -> Fit:
+def msa_fit(
+    im: np.ndarray,
+    runs: np.ndarray,
+    exceedances: np.ndarray,
+    start: tuple[float, float] | None = None,
+    tolerance: float = 1e-10,
+) -> Fit:
     """The maximum-likelihood lognormal fit of exceedance counts at intensity levels (MSA):
-    θ, β maximising the binomial log-likelihood (module docstring), searched over ln θ and
-    ln β from the moments of the levels weighted by their exceedances."""
+    θ, β maximising the binomial log-likelihood (module docstring), searched (Nelder–Mead)
+    over ln θ and ln β to ``tolerance``, from ``start`` (θ, β) or else from the moments of the
+    levels weighted by their exceedances."""
     x, n, z = (np.asarray(a, dtype=float) for a in (im, runs, exceedances))
     if not (x.shape == n.shape == z.shape) or x.size < 2:
         raise ValueError("an MSA fit needs two or more intensity levels, each with its runs "
@@ -78,10 +87,11 @@ def msa_fit(im: np.ndarray, runs: np.ndarray, exceedances: np.ndarray) -> Fit:
     if not (z.sum() > 0 and (n - z).sum() > 0):
         raise ValueError("every run exceeds, or none does: the data set defines no median")
     logs = np.log(x)
-    start = _start(logs, n, z)
+    first = _start(logs, n, z) if start is None else np.log(np.array(start, dtype=float))
     found = optimize.minimize(
-        _negative_log_likelihood, start, args=(logs, n, z), method="Nelder-Mead",
-        options={"xatol": 1e-10, "fatol": 1e-12, "maxiter": 20_000, "maxfev": 40_000},
+        _negative_log_likelihood, first, args=(logs, n, z), method="Nelder-Mead",
+        options={"xatol": tolerance, "fatol": tolerance * 1e-2, "maxiter": 20_000,
+                 "maxfev": 40_000},
     )  # fmt: skip
     ln_theta, ln_beta = found.x
     return Fit(float(math.exp(ln_theta)), float(math.exp(ln_beta)), None, int(n.sum()))
@@ -105,7 +115,7 @@ def _negative_log_likelihood(
     """−Σ [z ln p + (n − z) ln(1 − p)], p = Φ((ln x − ln θ)/β), by log-CDFs (no 0·log 0)."""
     ln_theta, ln_beta = params
     u = (logs - ln_theta) / math.exp(ln_beta)
-    return float(-(z * stats.norm.logcdf(u) + (n - z) * stats.norm.logcdf(-u)).sum())
+    return float(-(z * special.log_ndtr(u) + (n - z) * special.log_ndtr(-u)).sum())
 
 
 def msa_band(
@@ -119,15 +129,18 @@ def msa_band(
     """The bootstrap confidence band of an MSA fragility at the intensities ``at``, shape
     (len(at), 2): at each level, z*_j ~ Binomial(n_j, z_j/n_j) is drawn again, the
     fragility refitted, and the band is the (1 ∓ CONFIDENCE)/2 quantiles of the refitted
-    probabilities (resamples that define no fit are left out). ``seed`` fixes the draws."""
+    probabilities (resamples that define no fit are left out). ``seed`` fixes the draws; each
+    refit starts from the data's own fit, to BAND_TOLERANCE in ln θ and ln β."""
     n = np.asarray(runs, dtype=int)
     p = np.asarray(exceedances, dtype=float) / n
+    whole = msa_fit(im, n, exceedances)
     rng = np.random.default_rng(seed)
     curves = []
     for _ in range(samples):
         z = rng.binomial(n, p)
         try:
-            curves.append(msa_fit(im, n, z).probability(at))
+            refit = msa_fit(im, n, z, (whole.median, whole.beta), BAND_TOLERANCE)
+            curves.append(refit.probability(at))
         except ValueError:
             continue
     return _quantiles(np.array(curves), len(at))
