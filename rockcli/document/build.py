@@ -64,7 +64,6 @@ class Inputs:
 def build_document(parts: Sequence[Part], lang: str) -> Document:
     """The report of the comparisons of one wall or several (``parts``: each its inputs, its
     comparison, its JSON document and its other mechanisms in full) in language ``lang``."""
-    from rockcli.document.front import own_sections
     from rockcli.document.walls import summary_section
 
     w = Words(lang)
@@ -84,15 +83,24 @@ def build_document(parts: Sequence[Part], lang: str) -> Document:
     names = [part.doc["rocking"]["model"]["name"] for part in parts]
     subtitle = (w("report.subtitle_many", n=len(parts), record=record) if many
                 else w("report.subtitle", model=names[0], record=record))  # fmt: skip
+    return assemble(inputs, w, subtitle, names, (*summary, *body))
+
+
+def assemble(
+    inputs: Any, w: Words, subtitle: str, names: Sequence[str], sections: Sequence[Section]
+) -> Document:
+    """A report: the identification, the project's own sections, then ``sections`` (the
+    summary and each element's), the software's section; its front matter names the models."""
+    from rockcli.document.front import own_sections
+
     return Document(
-        lang=lang,
+        lang=w.lang,
         title=w("report.title"),
         subtitle=subtitle,
         sections=(
             identification(inputs, w),
             *own_sections(inputs.project),
-            *summary,
-            *body,
+            *sections,
             software_section(inputs.casebook, w, inputs.casebook_place),
         ),  # fmt: skip
         **front_matter(inputs, ", ".join(names), w),

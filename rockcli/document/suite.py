@@ -14,15 +14,14 @@ from typing import TYPE_CHECKING, Any
 
 from rockcli.document.build import (
     Inputs,
+    assemble,
     check_position,
     code_spectra_of,
     figure,
     floor_figure,
     hazard_grid,
-    identification,
     kinematic_section,
     model_section,
-    software_section,
 )
 from rockcli.document.content import Block, Document, Grid, Paragraph, Section
 from rockcli.document.tolerance import other_suite_warnings, suite_paragraphs
@@ -54,8 +53,6 @@ class SuitePart:
 def build_suite_document(parts: Sequence[SuitePart], lang: str) -> Document:
     """The report of a suite comparison of one model or several (a building's walls: one
     summary over them, then each model's sections titled with its name)."""
-    from rockcli.document.build import front_matter
-    from rockcli.document.front import own_sections
     from rockcli.document.walls import merged_files, rekeyed
 
     w = Words(lang)
@@ -73,19 +70,7 @@ def build_suite_document(parts: Sequence[SuitePart], lang: str) -> Document:
     suite = parts[0].doc["suite_name"]
     subtitle = (w("report.subtitle_suite_many", n=len(parts), suite=suite) if many
                 else w("report.subtitle_suite", model=names[0], suite=suite))  # fmt: skip
-    return Document(
-        lang=lang,
-        title=w("report.title"),
-        subtitle=subtitle,
-        sections=(
-            identification(inputs, w),
-            *own_sections(inputs.project),
-            *summary,
-            *body,
-            software_section(inputs.casebook, w, inputs.casebook_place),
-        ),  # fmt: skip
-        **front_matter(inputs, ", ".join(names), w),
-    )
+    return assemble(inputs, w, subtitle, names, (*summary, *body))
 
 
 def suite_sections(part: SuitePart, w: Words) -> list[Section]:
