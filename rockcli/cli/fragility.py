@@ -1,16 +1,44 @@
-"""`rock fragility`: fragility functions (for now, `rock fragility fit` of a data set)."""
+"""`rock fragility STUDY.toml` (run IDA or MSA, fit the fragility) and `rock fragility fit`."""
 
 from __future__ import annotations
+
+from typing import TYPE_CHECKING
 
 import click
 
 from rockcli.cli.inputs import InputPath, RockCommand, RockCommands
-from rockcli.cli.options import output_format
+from rockcli.cli.options import AsciiIntRange, output_format
+from rockcli.cli.plot_option import plot_option
+
+if TYPE_CHECKING:
+    from rockcli.fragility.study import FragilityPlan
 
 
-@click.group(cls=RockCommands, short_help="Fragility functions: fit a lognormal fragility.")
+class FragilityCommands(RockCommands):
+    """``rock fragility STUDY.toml`` runs the study (the hidden ``run`` command); a known
+    command name (``fit``) runs that command."""
+
+    def resolve_command(
+        self, ctx: click.Context, args: list[str]
+    ) -> tuple[str | None, click.Command | None, list[str]]:
+        if args and args[0] not in self.commands and not args[0].startswith("-"):
+            return "run", self.commands["run"], args
+        return super().resolve_command(ctx, args)
+
+
+@click.group(
+    cls=FragilityCommands,
+    short_help="Fragility curves: run IDA or MSA on a study, or fit a data set.",
+)
 def fragility() -> None:
-    """Fragility functions: the probability of a damage state given the intensity."""
+    """Fragility curves: the probability of a damage state given the intensity.
+
+    \b
+    rock fragility STUDY.toml [options]   run the study's IDA or MSA and fit each state
+    rock fragility fit DATA.csv           fit a data set you already have
+
+    `rock fragility run --help` lists the study's options.
+    """
 
 
 @fragility.command(cls=RockCommand, short_help="Fit a lognormal fragility to IDA or MSA data.")
@@ -55,6 +83,168 @@ def fit(data, method, ddof, output):
             at = found.im
             band = msa_band(found.im, found.runs, found.exceedances, at)
     except ValueError as exc:
-        raise InputError(str(exc), file=data, allowed="a data set that defines a fragility "
-                         "(some runs reach the damage state, some do not)") from None  # fmt: skip
+        raise InputError(
+            str(exc),
+            file=data,
+            allowed="a data set that defines a fragility "
+            "(some runs reach the damage state, some do not)",
+        ) from None
     show(fit_document(found, result, at, band), output, fit_report)
+
+
+@fragility.command(
+    "run",
+    cls=RockCommand,
+    hidden=True,
+    short_help="Run a fragility study STUDY.toml (also: rock fragility STUDY.toml).",
+)
+@click.argument("study_path", metavar="STUDY", type=InputPath())
+@click.option(
+    "--out",
+    default=None,
+    type=click.Path(file_okay=False),
+    help="Output folder for cases.csv and fragility.json [default: ./fragility-STUDY].",
+)
+@click.option(
+    "--jobs",
+    "-j",
+    type=AsciiIntRange(min=1),
+    default=None,
+    help="Workers on this machine: this process and N − 1 worker processes, at most the CPU "
+    "count and the number of records × grid points [default: the CPU count].",
+)
+@click.option("--resume", is_flag=True, help="Keep the runs an interrupted run finished.")
+@click.option(
+    "--force",
+    "--overwrite",
+    "overwrite",
+    is_flag=True,
+    help="Start over in an output folder that holds another or an unfinished study.",
+)
+@click.option(
+    "--allow-outside",
+    is_flag=True,
+    help="Let the study's files (model, records) lie outside the study file's folder.",
+)
+@click.option(
+    "--scheduler",
+    default=None,
+    envvar="DASK_SCHEDULER_ADDRESS",
+    show_envvar=True,
+    metavar="ADDRESS",
+    help="Run on a dask cluster, e.g. tcp://host:8786 (needs the dask extra).",
+)
+@click.option(
+    "--records-dir",
+    default=None,
+    envvar="ROCK_RECORDS_DIR",
+    show_envvar=True,
+    type=InputPath("folder"),
+    help="Folder the study's record paths are relative to (replaces records_dir).",
+)
+@click.option(
+    "--progress/--no-progress",
+    default=None,
+    help="Progress bar on stderr [default: when stderr is a terminal].",
+)
+@click.option(
+    "--extrapolate",
+    is_flag=True,
+    help="--plot: draw the curves beyond the analysed intensities (from 0 to twice the last).",
+)
+@plot_option
+@output_format
+def run(
+    study_path,
+    out,
+    jobs,
+    resume,
+    overwrite,
+    allow_outside,
+    scheduler,
+    records_dir,
+    progress,
+    extrapolate,
+    plot_path,
+    output,
+):
+    """Run the fragility study STUDY.toml: IDA (each record scaled up until each damage state
+    is first reached) or MSA (each record at each intensity level), then the lognormal
+    fragility of each damage state with its 95 % bootstrap band.
+
+    Every run goes to OUT/cases.csv as its record completes; --resume continues an
+    interrupted study (Ctrl-C or SIGTERM: exit 130, finished records kept).
+    """
+    import os
+    import time
+
+    from rockcli.cli.options import announce_written
+    from rockcli.cli.sweep import (
+        EXIT_INTERRUPTED,
+        exit_now_if_busy,
+        terminate_as_interrupt,
+        worker_count,
+    )
+    from rockcli.fragility.analysis import FragilityInterrupted, run_fragility
+    from rockcli.fragility.study import load_fragility
+    from rockcli.process import interrupted
+    from rockcli.studies.parallel.executor import dask_executor, local_executor
+    from rockcli.terminal.fragility import study_report
+    from rockcli.terminal.sweep import progress_bar
+    from rockcli.terminal.table import show
+
+    started = time.perf_counter()
+    if resume and overwrite:
+        raise click.UsageError("--resume and --force exclude each other")
+    plan = load_fragility(study_path, records_dir, allow_outside=allow_outside)
+    count = len(plan.study.records) * max(1, _points(plan))
+    jobs = worker_count(jobs, count)
+    out = out or default_out(study_path)
+    where = dask_executor(scheduler) if scheduler else local_executor(jobs)
+    facts = {"jobs": None if scheduler else jobs, "scheduler": scheduler}
+    try:
+        with terminate_as_interrupt(), where as lanes, progress_bar(progress) as bar:
+            result = run_fragility(
+                plan,
+                out,
+                lanes,
+                resume=resume,
+                overwrite=overwrite,
+                progress=bar,
+                run_facts=facts,
+                started=started,
+            )
+    except FragilityInterrupted as exc:
+        click.echo(
+            f"interrupted: {exc.saved} of {exc.total} records saved in {exc.out}; "
+            "rerun with --resume",
+            err=True,
+        )
+        exit_now_if_busy(EXIT_INTERRUPTED)
+        raise SystemExit(EXIT_INTERRUPTED) from None
+    except (KeyboardInterrupt, SystemError) as exc:  # SystemError: Ctrl-C in compiled code
+        if not interrupted(exc):
+            raise
+        click.echo("interrupted before any record ran", err=True)
+        raise SystemExit(EXIT_INTERRUPTED) from None
+    for name in ("cases.csv", "fragility.json"):
+        announce_written(os.path.join(result.out, name))
+    if plot_path:
+        from rockcli.plots.fragility import plot_fragility
+
+        plot_fragility(result.document, plot_path, extrapolate=extrapolate)
+        announce_written(plot_path)
+    show(result.document, output, study_report)
+
+
+def _points(plan: FragilityPlan) -> int:
+    import math
+
+    return math.prod(len(a.values) for a in plan.study.axes)
+
+
+def default_out(study_path: str) -> str:
+    """``fragility-STUDY`` in the current folder (cut and hashed when long, as a sweep's)."""
+    from rockcli.cli.sweep import default_out as sweep_out
+
+    return "fragility-" + sweep_out(study_path).removeprefix("sweep-")

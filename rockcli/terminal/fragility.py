@@ -88,3 +88,88 @@ def fit_report(doc: dict[str, Any]) -> Report:
             + ("the records drawn again" if ida else "each level's counts drawn again"),
         ),
     )
+
+
+def _point_text(point: dict[str, Any] | None) -> str:
+    return ", ".join(f"{k} = {v}" for k, v in (point or {}).items())
+
+
+def study_report(doc: dict[str, Any]) -> Report:
+    """The Report of `rock fragility STUDY.toml`: each damage state's median and dispersion
+    (each grid point's), then each record's first exceedances (IDA) or errors."""
+    ida = doc["method"] == "ida"
+    has_points = any("point" in s for s in doc["damage_states"])
+    unit = doc["im_label"].rpartition("[")[2].rstrip("]")
+    cols = (
+        *((Column("point", "point"),) if has_points else ()),
+        Column("name", "damage state"),
+        Column("median", "median θ", unit, "{:.4g}"),
+        Column("beta", "dispersion β", "", "{:.3f}", short="β"),
+        Column("n_records", "records", fmt="{}"),
+        *((Column("not_reached", "not reached", fmt="{}", short="not"),) if ida else ()),
+        Column("n_runs", "runs", fmt="{}"),
+    )
+    rows = tuple({**s, "point": _point_text(s.get("point"))} for s in doc["damage_states"])
+    tables = [Table(f"Fragility, IM = {doc['im_label']}", cols, rows)]
+    if ida:
+        names = [s["name"] for s in doc["damage_states"][: _states_per_point(doc)]]
+        rec_cols = (
+            *((Column("point", "point"),) if has_points else ()),
+            Column("name", "record"),
+            *(Column(f"ds{k}", n, unit, "{:.4g}") for k, n in enumerate(names)),
+        )
+        rec_rows = tuple(
+            {
+                "point": _point_text(r.get("point")),
+                "name": r["name"],
+                **{f"ds{k}": (r["first_exceedance"] or {}).get(n) for k, n in enumerate(names)},
+            }
+            for r in doc["records"]
+        )
+        tables.append(Table("First exceedance of each damage state", rec_cols, rec_rows))
+    return Report(
+        title=f"rock fragility — {doc['study']}",
+        tables=tuple(tables),
+        notes=tuple(_study_notes(doc)),
+    )
+
+
+def _states_per_point(doc: dict[str, Any]) -> int:
+    first = doc["damage_states"][0].get("point")
+    return sum(1 for s in doc["damage_states"] if s.get("point") == first)
+
+
+def _study_notes(doc: dict[str, Any]) -> list[str]:
+    notes = ["P(DS | IM) = Φ(ln(IM/θ)/β), θ the median, β the dispersion."]
+    if doc["method"] == "ida":
+        ddof = next((s["beta_ddof"] for s in doc["damage_states"] if s["beta_ddof"] is not None), 0)
+        notes.append(
+            f"IDA: each record scaled up from {doc['scan_first']:g} in steps of "
+            f"{doc['scan_step']:g} to {doc['scan_last']:g}, then bisected to "
+            f"{doc['tolerance']:g} inside the first step that reaches each state; a window "
+            "narrower than the step can be missed. β² divides by "
+            + ("n (maximum likelihood)." if ddof == 0 else "n − 1.")
+        )
+        if any(s.get("not_reached") for s in doc["damage_states"]):
+            notes.append(
+                "Records that do not reach a state by the scan's end are left out of "
+                "its fit (not reached): the fit holds up to the scan's end only."
+            )
+    else:
+        levels = ", ".join(f"{x:g}" for x in doc["levels"])
+        notes.append(
+            f"MSA: every record at each level ({levels}); θ and β by maximum "
+            "likelihood on the binomial counts (Baker 2015)."
+        )
+    errors = [r for r in doc["records"] if r["error"]]
+    for r in errors:
+        notes.append(f"record {r['name']} failed: {r['error']}")
+    for s in doc["damage_states"]:
+        if s.get("note"):
+            notes.append(f"{s['name']}: no fit ({s['note']}).")
+    run = doc["run"]
+    notes.append(
+        f"{run['computed_runs']} runs computed ({run['resumed_runs']} read back) in "
+        f"{run['wall_time_s']:.1f} s; every run in {run['out']}/cases.csv."
+    )
+    return notes

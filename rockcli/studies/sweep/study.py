@@ -329,7 +329,21 @@ def load_study(
     """
     from rockcli.model.load import read_toml
 
-    study = validate_study(read_toml(file), file)
+    return study_plan(read_toml(file), file, records_dir, allow_outside, grid_file)
+
+
+def study_plan(
+    data: Mapping[str, Any],
+    file: str,
+    records_dir: str | None = None,
+    allow_outside: bool = False,
+    grid_file: str | None = None,
+) -> StudyPlan:
+    """The plan of a study table read from ``file`` (:func:`load_study`; rock fragility
+    passes the part of its own study file that names the model, axes and records)."""
+    from rockcli.model.load import read_toml
+
+    study = validate_study(data, file)
     here = Path(file).parent
     base_file = str(here / study.base)
     if not allow_outside:
@@ -347,8 +361,8 @@ def load_study(
     base = read_toml(base_file)
     _check_code_demand(study, base, file)
     axes = check_axes(study.axes, base, file)
-    folder = _records_folder(study, here, records_dir)
-    records, skipped = _records(study.records, folder, file, allow_outside)
+    folder = records_folder(study.records_dir, here, records_dir)
+    records, skipped = record_sources(study.records, folder, file, allow_outside)
     if Analysis.ROCKING in study.analyses and not records:
         raise InputError(
             "no record to run" + (" (every record is optional and absent)" if skipped else ""),
@@ -387,13 +401,15 @@ def _check_code_demand(study: Study, base: Mapping[str, Any], file: str) -> None
         )
 
 
-def _records_folder(study: Study, here: Path, override: str | None) -> Path:
+def records_folder(given: str | None, here: Path, override: str | None) -> Path:
+    """The folder of the record paths: --records-dir, else the file's records_dir (from the
+    study file's folder ``here``), else the study file's folder."""
     if override:
         return Path(override)
-    return here / study.records_dir if study.records_dir else here
+    return here / given if given else here
 
 
-def _records(
+def record_sources(
     specs: Sequence[RecordSpec], folder: Path, file: str, allow_outside: bool = False
 ) -> tuple[tuple[RecordSource, ...], tuple[SkippedRecord, ...]]:
     """The records present (paths resolved) and the optional ones absent."""

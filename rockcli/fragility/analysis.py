@@ -1,0 +1,119 @@
+"""Run a fragility study on the sweep's executors (local processes or a dask cluster).
+
+The tasks (rockcli.fragility.run) go to the lanes as chunks of one task each
+(rockcli.studies.parallel.chunks); each task's runs are appended to cases.csv as it completes,
+so Ctrl-C keeps every finished task, and ``--resume`` hands each task the runs already on
+disk. The document is made from every task's runs once all are done.
+"""
+
+from __future__ import annotations
+
+import time
+from collections.abc import Callable, MutableSequence
+from dataclasses import dataclass
+from typing import Any
+
+from rockcli.fragility.output import Folder, Kept
+from rockcli.fragility.run import Task, TaskResult, run_task, tasks
+from rockcli.fragility.study import FragilityPlan
+from rockcli.studies.parallel.executor import Lane
+
+Progress = Callable[[int, int], None]
+
+
+class FragilityInterrupted(KeyboardInterrupt):
+    """Ctrl-C (or SIGTERM) during the study: the tasks saved, and where."""
+
+    def __init__(self, saved: int, total: int, out: str) -> None:
+        super().__init__(f"{saved} of {total} records saved")
+        self.saved, self.total, self.out = saved, total, out
+
+
+@dataclass(frozen=True)
+class FragilityResult:
+    """The document and the output folder."""
+
+    document: dict[str, Any]
+    out: str
+
+
+def run_fragility(
+    plan: FragilityPlan,
+    out: str,
+    lanes: MutableSequence[Lane],
+    *,
+    resume: bool = False,
+    overwrite: bool = False,
+    progress: Progress | None = None,
+    run_facts: dict[str, Any] | None = None,
+    started: float | None = None,
+) -> FragilityResult:
+    """Every task of the study, the runs on disk kept with ``resume``; the document."""
+    from rockcli.fragility.results import document
+    from rockcli.process import interrupted
+    from rockcli.studies.parallel.chunks import run_chunks
+    from rockcli.studies.parallel.setup import warm
+
+    start = time.perf_counter() if started is None else started
+    folder = Folder(out, plan)
+    with folder.lock():
+        kept = folder.check(resume=resume, overwrite=overwrite)
+        todo = tasks(plan, kept.runs)
+        folder.start()
+        results = failed_results(todo, kept)
+        resumed = sum(len(r) for r in kept.runs.values())
+        pending = [t for t in todo if t.id not in results]
+        tell = progress or (lambda done, total: None)
+        tell(len(results), len(todo))
+        warm()
+        computed = 0
+        try:
+            for found in run_chunks(lanes, pending, run_task):
+                for result in _results(found):
+                    folder.append(result, task_labels(plan, todo[result.id]))
+                    results[result.id] = result
+                    computed += len(result.new)
+                tell(len(results), len(todo))
+        except BaseException as exc:
+            if interrupted(exc):
+                raise FragilityInterrupted(len(results), len(todo), out) from None
+            raise
+        wall = time.perf_counter() - start
+        run = {
+            "out": out,
+            **(run_facts or {}),
+            "tasks": len(todo),
+            "computed_runs": computed,
+            "resumed_runs": resumed,
+            "wall_time_s": wall,
+            "runs_per_s": computed / wall if wall > 0 else None,
+        }
+        doc = document(plan, todo, results, run)
+        folder.finish(doc)
+    return FragilityResult(doc, out)
+
+
+def failed_results(todo: list[Task], kept: Kept) -> dict[int, TaskResult]:
+    """The tasks an earlier run found failing (not run again, as a sweep's failed cases)."""
+    return {
+        t.id: TaskResult(t.id, kept.mechanisms.get(t.id), None, {}, (), kept.failed[t.id])
+        for t in todo
+        if t.id in kept.failed
+    }
+
+
+def _results(found: Any) -> list[TaskResult]:
+    """A chunk's result, or the error rows of a chunk whose worker died, as TaskResults."""
+    if isinstance(found, TaskResult):
+        return [found]
+    return [TaskResult(row["case"], None, None, {}, (), row["error"]) for row in found]
+
+
+def task_labels(plan: FragilityPlan, task: Task) -> dict[str, Any]:
+    """The first cells of a task's lines: its point, axis values and record."""
+    study = plan.study
+    return {
+        "point": task.point,
+        **{a.name: a.label(i) for a, i in zip(study.axes, task.indices, strict=True)},
+        "record": study.records[task.record].name,
+    }

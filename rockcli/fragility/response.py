@@ -1,0 +1,108 @@
+"""The response of a model to a scaled earthquake, as fragility and overturning spectra need it.
+
+A model, a ground motion and (for a wall) a mechanism are prepared once (:func:`prepare`):
+the block the time history rocks and the motion it sees, exactly as `rock assess` derives
+them (rockcli.studies.assess.rocked_input: a block at height on its floor motion, a wall's
+mechanism the one named or the governing one). The floor motion is a linear filter of the
+ground motion (rockcli.studies.floor), so the ground scaled by s gives the floor motion scaled
+by s, and each run scales the prepared motion.
+
+The response of a run (:meth:`Rocker.response`) is the damage measure of the search
+(rockcli.fragility.search): max|θ|/α over both polarities, +inf when either polarity
+overturns (spec/rocking.md: the verdict is the worse polarity's).
+
+Pure and silent apart from the model derivation's own InputErrors.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import TYPE_CHECKING
+
+import numpy as np
+
+if TYPE_CHECKING:
+    from rockcli.dynamics.settings import SolverSettings
+    from rockcli.mechanics import Block
+    from rockcli.model.schema import Model
+    from rockcli.records.record import Record
+
+
+class UndecidedRun(ValueError):
+    """A run that decides nothing (a non-finite number, a step budget exhausted)."""
+
+
+@dataclass(frozen=True)
+class Rocker:
+    """What a scaled run needs: the block, the motion it sees at scale 1, the settings.
+
+    Attributes:
+        block: the rocked block (a wall's mechanism as a block of its own shape).
+        time, accel, dt: the motion the block sees at scale 1 [s], [g], [s].
+        settings: the model's solver settings.
+        engine: "fast" or "reference".
+        mechanism: the mechanism's name (None: a model of one block).
+        floor: True when the block rocks on a floor motion.
+    """
+
+    block: Block
+    time: np.ndarray
+    accel: np.ndarray
+    dt: float
+    settings: SolverSettings
+    engine: str = "fast"
+    mechanism: str | None = None
+    floor: bool = False
+
+    def response(self, scale: float) -> float:
+        """max|θ|/α over both polarities of the motion × scale; +inf when it overturns.
+
+        Raises:
+            UndecidedRun: a run met a non-finite number or did not finish.
+        """
+        from rockcli.dynamics.result import Verdict
+        from rockcli.dynamics.settings import Engine
+        from rockcli.dynamics.simulate import assess
+
+        result = assess(
+            self.block,
+            self.time,
+            self.accel * scale,
+            self.dt,
+            settings=self.settings,
+            engine=Engine(self.engine),
+        )
+        verdict = result.verdict
+        if verdict is Verdict.OVERTURNS:
+            return math.inf
+        if verdict is not Verdict.SURVIVES:
+            message = next((r.message for r in result.runs if r.message), "undecided")
+            raise UndecidedRun(f"the run at scale {scale:.6g} decides nothing: {message}")
+        return result.max_ratio
+
+
+def prepare(
+    model: Model,
+    record: Record,
+    *,
+    mechanism: str | None = None,
+    ground: bool = False,
+    engine: str = "fast",
+    file: str | None = None,
+) -> Rocker:
+    """The model's rocked block and the motion it sees under the record at scale 1."""
+    from rockcli.model.derive import solver_options
+    from rockcli.studies.assess import rocked_input, settings_from
+
+    block, shaking, floor, rocked = rocked_input(model, record, ground, file, mechanism)
+    return Rocker(
+        block=block,
+        time=shaking.time,
+        accel=np.asarray(shaking.accel, dtype=float),
+        dt=shaking.dt,
+        settings=settings_from(solver_options(model)),
+        engine=engine,
+        mechanism=rocked[0] if rocked is not None else None,
+        floor=floor is not None,
+    )
