@@ -13,6 +13,7 @@ from collections.abc import Callable, MutableSequence
 from dataclasses import dataclass
 from typing import Any
 
+from rockcli.errors import InputError
 from rockcli.fragility.output import Folder, Kept
 from rockcli.fragility.run import Task, TaskResult, run_task, tasks
 from rockcli.fragility.study import FragilityPlan
@@ -90,7 +91,23 @@ def run_fragility(
         }
         doc = document(plan, todo, results, run)
         folder.finish(doc)
+        if all(r.error is not None for r in results.values()):
+            raise nothing_succeeded(plan, todo, results, folder)
     return FragilityResult(doc, out)
+
+
+def nothing_succeeded(
+    plan: FragilityPlan, todo: list[Task], results: dict[int, TaskResult], folder: Folder
+) -> InputError:
+    """The error of a study whose every record failed: bad input (exit 2), the first
+    record's error (every one's is in cases.csv, written all the same)."""
+    first = results[todo[0].id]
+    name = plan.study.records[todo[0].record].name
+    return InputError(
+        f"no record of the study gave a result (each one's error is in {folder.cases}); "
+        f"record {name}: {first.error}",
+        file=plan.file,
+    )
 
 
 def failed_results(todo: list[Task], kept: Kept) -> dict[int, TaskResult]:

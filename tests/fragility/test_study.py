@@ -1,0 +1,284 @@
+"""`rock fragility STUDY.toml`: IDA and MSA end to end against Housner's closed form, the
+intensity measures, resume, the JSON contract and each bad input as one line, exit 2.
+
+The block and pulses are the casebook's (examples/validation/thresholds.toml, case
+housner.rectangular-short): a linearized block R = 3 m, α = 0.2 rad, e = 0.9 under a
+rectangular pulse of duration t1 overturns iff a/α ≥ 1/(1 − e^(−p·t1)) (Housner 1963, BSSA
+53(2):403–417; derivation in docs/validation.md). The response to a single pulse is monotonic
+in its amplitude (after the pulse the block rocks freely and only loses energy at impacts), so
+each record's first exceedance of overturning in an IDA is that threshold. Tolerance: the
+casebook's 1e-3 relative (a sample of the step down at dt = 1e-4 s) plus the bisection's 1e-4 g.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+from pathlib import Path
+
+import numpy as np
+import pytest
+from click.testing import CliRunner
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
+from rockcli.cli.main import cli
+from rockcli.errors import InputError
+from rockcli.fragility.fit import ida_fit
+from rockcli.fragility.study import load_fragility
+
+ALPHA, R, G = 0.2, 3.0, 9.81
+P = math.sqrt(3.0 * G / (4.0 * R))  # Housner's p of a rectangular block, [rad/s]
+DURATIONS = (0.32, 0.5)  # t1 [s] of the two records
+DT = 1e-4
+#: The casebook's tolerance (relative) and the bisection's (absolute, in g).
+REL, BISECT = 1e-3, 1e-4
+
+MODEL = f"""name = "Linearized block"
+kind = "wall"
+geometry = {{ R = {R}, alpha = {ALPHA} }}
+restitution = {{ e = 0.9 }}
+analysis = {{ linearized = true }}
+"""
+
+
+def threshold(t1: float) -> float:
+    """Housner's overturning amplitude [g] of the rectangular pulse of duration t1."""
+    return ALPHA / (1.0 - math.exp(-P * t1))
+
+
+def study_text(method: str = "ida", measure: str = "pga", extra: str = "") -> str:
+    body = f"""name = "Housner IDA"
+model = "model.toml"
+method = "{method}"
+
+[intensity]
+measure = "{measure}"
+
+[[damage_states]]
+level = 0.5
+
+[[damage_states]]
+level = "overturning"
+
+[[records]]
+path = "rect-0.32.txt"
+
+[[records]]
+path = "rect-0.5.txt"
+"""
+    if method == "ida":
+        scan = {"pga": (0.2, 0.05, 1.0), "pgv": (0.2, 0.05, 3.0)}.get(measure, (0.5, 0.25, 5.0))
+        tol = BISECT if measure == "pga" else 1e-4
+        body += (
+            f"\n[ida]\nfirst = {scan[0]}\nstep = {scan[1]}\nlast = {scan[2]}\ntolerance = {tol}\n"
+        )
+    return body + extra
+
+
+@pytest.fixture(scope="module")
+def folder(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    """A study folder: the model, the two pulses (written by `rock record pulse`)."""
+    here = tmp_path_factory.mktemp("fragility")
+    (here / "model.toml").write_text(MODEL, encoding="utf-8")
+    for t1 in DURATIONS:
+        out = here / f"rect-{t1:g}.txt"
+        args = ["record", "pulse", "rectangular", "--amplitude", "1", "--period", str(t1),
+                "--dt", str(DT), "-o", str(out)]  # fmt: skip
+        assert CliRunner().invoke(cli, args).exit_code == 0
+    return here
+
+
+def run(folder: Path, text: str, *args: str, name: str = "study.toml") -> tuple[int, str, str]:
+    (folder / name).write_text(text, encoding="utf-8")
+    result = CliRunner().invoke(
+        cli, ["fragility", str(folder / name), "--format", "json", "--no-progress", *args]
+    )
+    return result.exit_code, result.stdout, result.stderr
+
+
+def test_ida_finds_housners_thresholds_and_fits_them(folder: Path, tmp_path: Path) -> None:
+    code, out, err = run(folder, study_text(), "--out", str(tmp_path / "o"), "--jobs", "1")
+    assert code == 0, err
+    doc = json.loads(out)
+    assert doc["method"] == "ida" and doc["im"] == "pga" and doc["scan_step"] == 0.05
+    found = [r["first_exceedance"]["overturning"] for r in doc["records"]]
+    for x, t1 in zip(found, DURATIONS, strict=True):
+        assert x == pytest.approx(threshold(t1), rel=REL, abs=BISECT)
+    over = doc["damage_states"][1]
+    assert over["level"] == "overturning" and over["n_records"] == 2 and over["beta_ddof"] == 0
+    # The fit is the lognormal of the two found intensities (numpy, by hand).
+    logs = np.log(found)
+    assert over["median"] == pytest.approx(math.exp(logs.mean()), rel=1e-12)
+    assert over["beta"] == pytest.approx(logs.std(), rel=1e-12)
+    # θ/α ≥ 0.5 is reached no later than the overturning.
+    for r in doc["records"]:
+        assert r["first_exceedance"]["θ/α ≥ 0.5"] <= r["first_exceedance"]["overturning"]
+    assert {"name", "level", "median", "beta", "beta_ddof", "n_records", "n_runs", "ci"} <= set(
+        over
+    )
+
+
+def test_pgv_scales_the_same_runs(folder: Path, tmp_path: Path) -> None:
+    """PGV of a rectangular pulse is a·g·t1 (the velocity at its end): the first exceedance
+    in PGV is the PGA threshold × g·t1 (tolerance: the casebook's, the trapezoid is exact for
+    the step, and the bisection's 1e-4 m/s)."""
+    code, out, err = run(folder, study_text(measure="pgv"), "--out", str(tmp_path / "v"))
+    assert code == 0, err
+    doc = json.loads(out)
+    for r, t1 in zip(doc["records"], DURATIONS, strict=True):
+        pgv = r["first_exceedance"]["overturning"]
+        assert pgv == pytest.approx(threshold(t1) * G * t1, rel=REL, abs=1e-4)
+        # The sampled pulse steps down over one sample: its trapezoid ends dt/2 short.
+        assert r["im_at_scale_1"] == pytest.approx(G * (t1 - DT / 2), rel=1e-9)
+
+
+def test_dimensionless_pga_is_pga_over_tan_alpha(folder: Path, tmp_path: Path) -> None:
+    """PGA/(g·tan α): the linearized block uplifts at a = α·g (tan α in the full equation):
+    its uplift acceleration is the block's own (rockcli.mechanics)."""
+    code, out, err = run(folder, study_text(measure="pga-ratio"), "--out", str(tmp_path / "r"))
+    assert code == 0, err
+    doc = json.loads(out)
+    for r, t1 in zip(doc["records"], DURATIONS, strict=True):
+        x = r["first_exceedance"]["overturning"]
+        assert x == pytest.approx(1.0 / (1.0 - math.exp(-P * t1)), rel=REL, abs=1e-4 / ALPHA)
+
+
+def test_msa_counts_follow_the_thresholds(folder: Path, tmp_path: Path) -> None:
+    """Levels below both thresholds, between them, above both: 0, 1, 2 overturn."""
+    lo, hi = sorted(threshold(t1) for t1 in DURATIONS)
+    levels = [0.9 * lo, 0.5 * (lo + hi), 1.1 * hi]
+    text = study_text("msa") + f"\n[msa]\nlevels = {levels}\n"
+    code, out, err = run(folder, text, "--out", str(tmp_path / "m"))
+    assert code == 0, err
+    doc = json.loads(out)
+    over = doc["damage_states"][1]
+    assert [s["exceedances"] for s in over["stripes"]] == [0, 1, 2]
+    assert [s["runs"] for s in over["stripes"]] == [2, 2, 2]
+    assert over["beta_ddof"] is None and doc["levels"] == levels
+
+
+def test_resume_computes_only_what_is_missing(folder: Path, tmp_path: Path) -> None:
+    out = tmp_path / "res"
+    code, first, err = run(folder, study_text(), "--out", str(out))
+    assert code == 0, err
+    whole = json.loads(first)
+    # Again into the same folder: refused without --resume.
+    code, _, err = run(folder, study_text(), "--out", str(out))
+    assert code == 2 and "--resume" in err and err.count("\n") == 1
+    # The second record's lines lost (an interruption), and the last line cut in the middle.
+    cases = out / "cases.csv"
+    lines = cases.read_text(encoding="utf-8").splitlines(keepends=True)
+    kept = [ln for ln in lines if not ln.startswith("1,")]
+    cases.write_text("".join(kept) + kept[-1][:7], encoding="utf-8")
+    (out / "fragility.json").unlink()
+    code, again, err = run(folder, study_text(), "--out", str(out), "--resume")
+    assert code == 0, err
+    doc = json.loads(again)
+    assert doc["run"]["resumed_runs"] == len(kept) - 1
+    assert 0 < doc["run"]["computed_runs"] == whole["run"]["computed_runs"] - len(kept) + 1
+    assert doc["damage_states"] == whole["damage_states"]
+    assert doc["records"] == whole["records"]
+    # Another study into that folder is refused.
+    code, _, err = run(folder, study_text(measure="pgv"), "--out", str(out), "--resume")
+    assert code == 2 and "another study" in err
+
+
+def test_jobs_two_gives_the_same_fragility(folder: Path, tmp_path: Path) -> None:
+    code, one, err = run(folder, study_text(), "--out", str(tmp_path / "j1"), "--jobs", "1")
+    assert code == 0, err
+    code, two, err = run(folder, study_text(), "--out", str(tmp_path / "j2"), "--jobs", "2")
+    assert code == 0, err
+    assert json.loads(one)["damage_states"] == json.loads(two)["damage_states"]
+    assert (tmp_path / "j1" / "cases.csv").read_bytes() == (
+        tmp_path / "j2" / "cases.csv"
+    ).read_bytes()
+
+
+def test_a_record_without_the_measure_is_refused(folder: Path, tmp_path: Path) -> None:
+    """A record of zeros has no PGA to scale: every record fails, exit 2, one line."""
+    (folder / "zeros.txt").write_text("0 0\n0.01 0\n0.02 0\n0.03 0\n0.04 0\n", encoding="utf-8")
+    text = (
+        study_text()
+        .replace("rect-0.32.txt", "zeros.txt")
+        .replace('[[records]]\npath = "rect-0.5.txt"\n', "")
+    )
+    code, _, err = run(folder, text, "--out", str(tmp_path / "z"), name="zeros.toml")
+    assert code == 2, err
+    assert err.count("\n") == 1 and "gives no PGA" in err
+
+
+@pytest.mark.parametrize(
+    ("change", "where"),
+    [
+        (('level = "overturning"', "level = 0.3"), "damage_states[1].level"),  # out of order
+        (("level = 0.5", "level = -1.0"), "damage_states[0].level"),
+        (("last = 1.0", "last = 0.1"), "ida.last"),  # an empty scan
+        (("first = 0.2", "first = 0.0"), "ida.first"),  # non-positive
+        (("step = 0.05", "step = -0.05"), "ida.step"),
+        (('measure = "pga"', 'measure = "sa"\nperiod = 500.0'), "intensity.period"),
+        (('measure = "pga"', 'measure = "sa"'), "intensity.period"),  # no period
+        (('measure = "pga"', 'measure = "pga"\nperiod = 1.0'), "intensity.period"),
+        (('measure = "pga"', 'measure = "arias"'), "intensity.measure"),
+        (('method = "ida"', 'method = "ida"\ncolour = 1'), "colour"),
+        (('model = "model.toml"', 'model = "absent.toml"'), "model"),
+        (('path = "rect-0.5.txt"', 'path = "absent.txt"'), "records[1].path"),
+    ],
+)
+def test_bad_studies_are_one_line(
+    folder: Path, tmp_path: Path, change: tuple[str, str], where: str
+) -> None:
+    text = study_text().replace(*change, 1)
+    assert text != study_text()
+    code, out, err = run(folder, text, "--out", str(tmp_path / "bad"), name="bad.toml")
+    assert code == 2 and out == ""
+    assert err.count("\n") == 1 and err.startswith("error: ") and where in err, err
+
+
+def test_msa_needs_increasing_levels(folder: Path, tmp_path: Path) -> None:
+    text = study_text("msa") + "\n[msa]\nlevels = [0.3, 0.2]\n"
+    code, _, err = run(folder, text, "--out", str(tmp_path / "l"), name="l.toml")
+    assert code == 2 and "msa.levels[1]" in err and err.count("\n") == 1
+
+
+def test_ida_fit_matches_scipy_on_the_study_data(folder: Path, tmp_path: Path) -> None:
+    """The fit the study reports is rockcli.fragility.fit's (tested against scipy there)."""
+    code, out, _ = run(folder, study_text(), "--out", str(tmp_path / "f"))
+    doc = json.loads(out)
+    over = doc["damage_states"][1]
+    fit = ida_fit(np.array(over["collapse_im"]))
+    assert (fit.median, fit.beta) == (over["median"], over["beta"])
+
+
+_TOP = st.sampled_from(["model", "method", "intensity", "damage_states", "ida", "msa", "x"])
+_VALUES = st.recursive(
+    st.none() | st.booleans() | st.floats(allow_nan=True) | st.integers() | st.text(max_size=8),
+    lambda inner: (
+        st.lists(inner, max_size=3) | st.dictionaries(st.text(max_size=6), inner, max_size=3)
+    ),
+    max_leaves=8,
+)
+
+
+@settings(
+    max_examples=150, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture]
+)
+@given(data=st.dictionaries(_TOP, _VALUES, max_size=6))
+def test_reader_never_fails_otherwise(folder: Path, data: dict[str, object]) -> None:
+    """Whatever the study table holds, the reader gives a plan or one InputError."""
+    import tomli_w
+
+    base = {"model": "model.toml", "method": "ida", "intensity": {"measure": "pga"},
+            "damage_states": [{"level": "overturning"}], "records": [{"path": "rect-0.5.txt"}],
+            "ida": {"first": 0.1, "step": 0.1, "last": 1.0}}  # fmt: skip
+    base.update({k: v for k, v in data.items() if v is not None})
+    try:
+        text = tomli_w.dumps(base)
+    except (TypeError, ValueError):
+        return
+    path = folder / "fuzz.toml"
+    path.write_text(text, encoding="utf-8")
+    try:
+        load_fragility(str(path))
+    except InputError:
+        pass
