@@ -34,8 +34,8 @@ def fragility() -> None:
     """Fragility curves: the probability of a damage state given the intensity.
 
     \b
-    rock fragility STUDY.toml [options]   run the study's IDA or MSA and fit each state
-    rock fragility fit DATA.csv           fit a data set you already have
+    rock fragility STUDY.toml [OPTIONS]  run the study's IDA or MSA, fit each state
+    rock fragility fit DATA.csv          fit a data set you already have
 
     `rock fragility run --help` lists the study's options.
     """
