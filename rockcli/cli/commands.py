@@ -9,6 +9,7 @@ from rockcli.cli.compare import compare
 from rockcli.cli.fragility import fragility
 from rockcli.cli.init import init
 from rockcli.cli.kinematic import kinematic
+from rockcli.cli.overturning import spectrum
 from rockcli.cli.record import record
 from rockcli.cli.report import report
 from rockcli.cli.retrofit import retrofit
@@ -30,3 +31,4 @@ ALL.append(suite)
 ALL.append(report)
 ALL.append(validate)
 ALL.append(fragility)
+ALL.append(spectrum)

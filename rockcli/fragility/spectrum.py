@@ -83,12 +83,15 @@ class Threshold:
         below: the highest intensity known not to overturn under it (None: the first tried
             overturns, or none does).
         runs: the intensities run (each both polarities).
+        unsettled: the runs taken as survivals although the block still moved at the end
+            of the tail (a block vibrating on its restrainers).
         undecided: why the point has no value when a run decided nothing (else None).
     """
 
     value: float | None
     below: float | None
     runs: int
+    unsettled: int = 0
     undecided: str | None = None
 
 
@@ -124,28 +127,40 @@ def overturn_response(
     dt: float,
     settings: SolverSettings,
     engine: Engine = Engine.FAST,
-) -> float:
+) -> tuple[float, bool]:
     """max|θ|/α over both polarities of the motion ``accel`` [g] at ``time`` [s] (``dt``:
-    the tail's interval [s]); +inf when either polarity overturns.
+    the tail's interval [s]), +inf when either polarity overturns; and whether the runs
+    settled (overturned, or at rest on a ground at rest at the end of the tail).
 
-    A run still rocking at the end of its tail is run again with the tail doubled (up to
-    TAIL_DOUBLINGS times): a survival is a block at rest on a ground at rest.
+    A free block still rocking at the end of its tail is run again with the tail doubled (up
+    to TAIL_DOUBLINGS times): it comes to rest (impacts dissipate) unless it is on its way
+    over. A block with restrainers can vibrate on them for ever without impacts: its run,
+    not overturned at the end of the tail, is a survival that did not settle (as `rock
+    assess` reads it).
 
     Raises:
-        UndecidedRun: a run met a non-finite number, a guard, or never settled.
+        UndecidedRun: a run met a non-finite number or a guard, or a free block never settled.
     """
     tail = max(settings.tail_for(block.p), TAIL_OVER_P / block.p)
     for _ in range(TAIL_DOUBLINGS + 1):
-        result = assess(block, time, accel, dt, settings=replace(settings, tail=tail),
-                        engine=engine, history=True)  # fmt: skip
+        result = assess(
+            block,
+            time,
+            accel,
+            dt,
+            settings=replace(settings, tail=tail),
+            engine=engine,
+            history=True,
+        )
         if any(run.status is RunStatus.NONFINITE for run in result.runs):
             raise UndecidedRun(next(r.message for r in result.runs if r.message))
         if any(run.overturned for run in result.runs):
-            return OVERTURN
+            return OVERTURN, True
         if any(run.status is not RunStatus.COMPLETED for run in result.runs):
             raise UndecidedRun(next(r.message for r in result.runs if r.message))
-        if all(_at_rest(run.history) for run in result.runs):
-            return result.max_ratio
+        settled = all(_at_rest(run.history) for run in result.runs)
+        if settled or block.restrainers:
+            return result.max_ratio, settled
         tail *= 2.0
     raise UndecidedRun(f"still rocking {tail / 2.0:.4g} s after the motion")
 
@@ -159,12 +174,21 @@ def _at_rest(history: object) -> bool:
     return bool(theta[-1] == 0.0 and omega[-1] == 0.0)
 
 
-def lowest_overturn(response: Callable[[float], float], scan: Scan) -> Threshold:
+def lowest_overturn(response: Callable[[float], tuple[float, bool]], scan: Scan) -> Threshold:
     """The lowest intensity of the scan at which ``response`` overturns (+inf), bisected to
-    scan.tolerance inside the first step that does; an undecided run ends the search."""
+    scan.tolerance inside the first step that does (``response``: the response and whether
+    its runs settled, as :func:`overturn_response`); an undecided run ends the search."""
+    unsettled: set[float] = set()
+
+    def measure(intensity: float) -> float:
+        value, settled = response(intensity)
+        if not settled:
+            unsettled.add(intensity)
+        return value
+
     try:
         (found,), runs = first_exceedances(
-            response,
+            measure,
             [OVERTURN],
             first=scan.first,
             step=scan.step,
@@ -173,4 +197,4 @@ def lowest_overturn(response: Callable[[float], float], scan: Scan) -> Threshold
         )
     except UndecidedRun as exc:
         return Threshold(None, None, 0, undecided=str(exc))
-    return Threshold(found.scale, found.below, runs)
+    return Threshold(found.scale, found.below, runs, len(unsettled))

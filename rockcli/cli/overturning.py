@@ -1,0 +1,564 @@
+"""`rock spectrum overturning`: the lowest overturning pulse against ωp/p, or the lowest
+overturning scale of records against the block's size (rockcli.fragility.spectrum), run on
+the sweep's executor (rockcli.studies.overturning)."""
+
+from __future__ import annotations
+
+import math
+
+import click
+
+from rockcli.cli.inputs import InputPath, RockCommands
+from rockcli.cli.options import (
+    ASCII_FLOAT,
+    announce_written,
+    check_outputs,
+    engine_option,
+    force_option,
+    jobs_option,
+    plain_dt,
+    plain_units,
+    record_format,
+)
+from rockcli.cli.plot_option import plot_option
+from rockcli.errors import InputError
+
+#: Most points a scan may try per spectrum point ((last − first)/step): a bound on a typo.
+MAX_SCAN_POINTS = 100_000
+#: Most values of --ratios, --p or --R.
+MAX_VALUES = 200
+PULSES = ("one-sine", "one-cosine", "ricker")
+DEFAULT_RATIOS = "1,2,3,4,6,8"
+
+
+@click.group(cls=RockCommands, short_help="Overturning spectra of pulses and records.")
+def spectrum() -> None:
+    """Spectra of rocking blocks: the lowest intensity that overturns, point by point."""
+
+
+@spectrum.command(short_help="Lowest overturning pulse or record scale, as a spectrum.")
+@click.option(
+    "--pulse",
+    type=click.Choice(PULSES),
+    default=None,
+    help="A pulse spectrum: the lowest ap that overturns against ωp/p.",
+)
+@click.option(
+    "--record",
+    "record_paths",
+    multiple=True,
+    type=InputPath(),
+    help="A record spectrum (repeat for several): the lowest scale that overturns "
+    "against the size (--p or --R).",
+)
+@record_format
+@plain_dt
+@plain_units
+@click.option("--alpha", type=ASCII_FLOAT, default=None, help="A block of slenderness α [rad].")
+@click.option(
+    "--e",
+    "e",
+    type=ASCII_FLOAT,
+    default=None,
+    help="The block's restitution [default: Housner's, 1 − 1.5 sin²α].",
+)
+@click.option("--linearized", is_flag=True, help="The block's linearized equation (sin x ≈ x).")
+@click.option(
+    "--model",
+    "model_path",
+    type=InputPath(),
+    default=None,
+    help="A pulse spectrum of MODEL's block or mechanism (instead of --alpha).",
+)
+@click.option("--mechanism", default=None, help="The wall's mechanism to rock (with --model).")
+@click.option(
+    "--ground",
+    is_flag=True,
+    help="With --model at height: the pulse at the block's base, not its floor's.",
+)
+@click.option(
+    "--ratios",
+    default=None,
+    metavar="R1,R2,…",
+    help=f"The pulses' ωp/p [default: {DEFAULT_RATIOS}].",
+)
+@click.option(
+    "--p",
+    "p_values",
+    default=None,
+    metavar="P1,P2,…",
+    help="Records: the blocks' frequency parameters p [rad/s].",
+)
+@click.option(
+    "--R",
+    "R_values",
+    default=None,
+    metavar="R1,R2,…",
+    help="Records: the blocks' semi-diagonals R [m].",
+)
+@click.option(
+    "--scan-from",
+    type=ASCII_FLOAT,
+    default=1.0,
+    show_default=True,
+    help="The scan's first intensity, ap/a0 or PGA·scale/a0 (a0: the uplift "
+    "acceleration; nothing uplifts below 1).",
+)
+@click.option(
+    "--scan-step",
+    type=ASCII_FLOAT,
+    default=0.05,
+    show_default=True,
+    help="The scan's step (a window of overturning narrower than it can be missed).",
+)
+@click.option(
+    "--scan-to",
+    type=ASCII_FLOAT,
+    default=20.0,
+    show_default=True,
+    help="The scan's last intensity.",
+)
+@click.option(
+    "--tolerance",
+    type=ASCII_FLOAT,
+    default=1e-3,
+    show_default=True,
+    help="The bisection's last bracket inside the first overturning step.",
+)
+@engine_option
+@jobs_option("Workers: this process and N − 1 worker processes (one spectrum point each).")
+@click.option(
+    "--scheduler",
+    default=None,
+    envvar="DASK_SCHEDULER_ADDRESS",
+    show_envvar=True,
+    metavar="ADDRESS",
+    help="Run on a dask cluster, e.g. tcp://host:8786 (needs the dask extra).",
+)
+@click.option(
+    "--progress/--no-progress",
+    default=None,
+    help="Progress bar on stderr [default: when stderr is a terminal].",
+)
+@click.option(
+    "--format",
+    "output",
+    type=click.Choice(["table", "json", "csv"]),
+    default="table",
+    show_default=True,
+    help="A table, one JSON document, or CSV.",
+)
+@plot_option
+@force_option
+def overturning(
+    pulse,
+    record_paths,
+    record_format,
+    dt,
+    units,
+    alpha,
+    e,
+    linearized,
+    model_path,
+    mechanism,
+    ground,
+    ratios,
+    p_values,
+    R_values,
+    scan_from,
+    scan_step,
+    scan_to,
+    tolerance,
+    engine,
+    jobs,
+    scheduler,
+    progress,
+    output,
+    plot_path,
+    force,
+):
+    """The overturning spectrum: for each pulse ωp/p (--pulse) the lowest ap/a0 that
+    overturns the block (--alpha, or --model), or for each block size (--p or --R at
+    --alpha) the lowest scale of each --record that overturns it. a0 is the uplift
+    acceleration (g·tan α for a block). The search scans the intensity up at --scan-step and
+    bisects inside the first step that overturns: the lowest overturn, not a boundary of the
+    safe region above it (docs/spectra.md)."""
+    scan = make_scan(scan_from, scan_step, scan_to, tolerance)
+    check_outputs(force, plot=plot_path)
+    if pulse is not None:
+        check_mode("--pulse", record=record_paths, p=p_values, R=R_values)
+        target, subject, cases = pulse_plan(
+            pulse, ratios, alpha, e, linearized, model_path, mechanism, ground, engine, scan
+        )
+    else:
+        check_mode("--record", ratios=ratios, mechanism=mechanism, ground=ground)
+        target, subject, cases, (records, sizes) = record_plan(
+            record_paths,
+            record_format,
+            dt,
+            units,
+            alpha,
+            e,
+            linearized,
+            model_path,
+            p_values,
+            R_values,
+            engine,
+        )
+    rows = run_points(target, scan, cases, jobs, scheduler, progress)
+    doc = (
+        pulse_doc(pulse, cases, rows, scan, subject, target)
+        if pulse is not None
+        else record_doc(records, sizes, rows, scan, subject)
+    )
+    show_spectrum(doc, output, plot_path)
+
+
+def make_scan(first: float, step: float, last: float, tolerance: float):
+    """The Scan of the options (InputError naming the option at fault)."""
+    from rockcli.fragility.spectrum import Scan
+
+    for option, value in (
+        ("--scan-from", first),
+        ("--scan-step", step),
+        ("--tolerance", tolerance),
+    ):
+        if not (math.isfinite(value) and value > 0.0):
+            raise InputError(
+                "not a positive number", where=option, value=value, allowed="a finite number > 0"
+            )
+    if not (math.isfinite(last) and last >= first):
+        raise InputError(
+            "ends before the scan starts",
+            where="--scan-to",
+            value=last,
+            allowed=f"a finite number ≥ --scan-from ({first:g})",
+        )
+    if (last - first) / step > MAX_SCAN_POINTS:
+        raise InputError(
+            "too many scan points",
+            where="--scan-step",
+            value=step,
+            allowed=f"a step ≥ (scan-to − scan-from)/{MAX_SCAN_POINTS}",
+        )
+    if tolerance >= step:
+        raise InputError(
+            "not below the scan step",
+            where="--tolerance",
+            value=tolerance,
+            allowed=f"0 < tolerance < --scan-step ({step:g})",
+        )
+    return Scan(first, step, last, tolerance)
+
+
+#: What each way of naming the rocked thing takes.
+MODES = {
+    "--pulse": "--pulse with --ratios and --alpha or --model; --record with --p or --R",
+    "--record": "--record FILE with --alpha A [--e E] and --p or --R",
+    "--alpha": "--alpha A [--e E] [--linearized]; --mechanism and --ground go with --model",
+    "--model": "--model MODEL [--mechanism NAME] [--ground]; --e and --linearized go with "
+    "--alpha (a model sets its own)",
+}
+
+
+def check_mode(mode: str, **given) -> None:
+    """Refuse the options that do not go with ``mode`` (InputError)."""
+    for name, value in given.items():
+        if value:
+            raise InputError(f"not used with {mode}", where=f"--{name}", allowed=MODES[mode])
+
+
+def parse_values(text: str, option: str) -> list[float]:
+    """``2,4,6`` → [2.0, 4.0, 6.0]: finite, > 0, at most MAX_VALUES (InputError)."""
+    from rockcli.numbers import ascii_float
+
+    items = [item.strip() for item in text.split(",")]
+    try:
+        values = [ascii_float(item) for item in items]
+    except ValueError:
+        values = []
+    if (
+        not values
+        or len(values) > MAX_VALUES
+        or not all(math.isfinite(v) and v > 0.0 for v in values)
+    ):
+        raise InputError(
+            "not a list of positive numbers",
+            where=option,
+            value=text,
+            allowed=f"1 to {MAX_VALUES} numbers > 0, comma-separated: 2,4,6",
+        )
+    return values
+
+
+#: Where the block table's errors point: its fields → the options that set them.
+BLOCK_OPTIONS = {"geometry.alpha": "--alpha", "restitution.e": "--e", "geometry.R": "--R"}
+
+
+def block_table(alpha: float, e: float | None, linearized: bool, R: float = 1.0) -> dict:
+    """The model table of a free block (as the casebook's threshold cases write it)."""
+    restitution = {"model": "housner"} if e is None else {"model": "explicit", "e": e}
+    return {
+        "name": f"block alpha = {alpha:g} rad",
+        "kind": "wall",
+        "geometry": {"R": R, "alpha": alpha},
+        "restitution": restitution,
+        "analysis": {"linearized": linearized},
+    }
+
+
+def validate_block(table: dict, size_option: str = "--R"):
+    """The validated block model (the loader's errors, naming the options)."""
+    from rockcli.model.load import validate_model
+
+    try:
+        return validate_model(table)
+    except InputError as exc:
+        where = BLOCK_OPTIONS.get(exc.where or "", exc.where)
+        where = size_option if where == "--R" else where
+        if where == "--p":  # the loader saw R = 3g/(4p²): say it in p
+            raise InputError(
+                "out of range",
+                where=where,
+                value=p_of(table["geometry"]["R"]),
+                allowed=_p_allowed(),
+            ) from None
+        raise InputError(exc.problem, where=where, value=exc.value, allowed=exc.allowed) from None
+
+
+def p_of(R: float) -> float:
+    """p = √(3g/(4R)) [rad/s] (Housner 1963), g = DEFAULT_GRAVITY."""
+    from rockcli.units import DEFAULT_GRAVITY
+
+    return math.sqrt(3.0 * DEFAULT_GRAVITY / (4.0 * R))
+
+
+def _p_allowed() -> str:
+    from rockcli.model.bounds import MAX_LENGTH, MIN_LENGTH
+
+    return (
+        f"{p_of(MAX_LENGTH):.4g} ≤ p ≤ {p_of(MIN_LENGTH):.4g} rad/s, the blocks of "
+        f"{MIN_LENGTH:g} m ≤ R ≤ {MAX_LENGTH:g} m"
+    )
+
+
+def pulse_plan(pulse, ratios, alpha, e, linearized, model_path, mechanism, ground, engine, scan):
+    """(target, subject, cases) of a pulse spectrum, every ratio's period checked."""
+    from rockcli.studies.overturning import PulseCase, pulse_period_of, rocked_block
+
+    values = parse_values(DEFAULT_RATIOS if ratios is None else ratios, "--ratios")
+    target = pulse_target(alpha, e, linearized, model_path, mechanism, ground, engine)
+    block, floor = rocked_block(_validated(target), target)
+    for ratio in values:
+        check_ratio(ratio, pulse_period_of(ratio, block))
+    check_top(scan.last * block.uplift_acceleration)
+    subject = {
+        "kind": "block" if model_path is None else "model",
+        "alpha": alpha,
+        "model": model_path,
+        "mechanism": target.mechanism,
+        "floor": floor is not None,
+    }
+    return target, subject, [PulseCase(i, pulse, r) for i, r in enumerate(values)]
+
+
+def pulse_target(alpha, e, linearized, model_path, mechanism, ground, engine):
+    """The Target of --alpha/--e/--linearized or of --model/--mechanism/--ground."""
+    from rockcli.studies.overturning import Target
+
+    if (alpha is None) == (model_path is None):
+        raise InputError(
+            "needs a block or a model",
+            where="--pulse",
+            allowed="--alpha A [--e E] or --model MODEL, one of them",
+        )
+    if model_path is None:
+        check_mode("--alpha", mechanism=mechanism, ground=ground)
+        return Target(validate_block_table(alpha, e, linearized), engine=engine)
+    check_mode("--model", e=e is not None, linearized=linearized)
+    from rockcli.model.load import read_toml, validate_model
+
+    table = read_toml(model_path)
+    model = validate_model(table, file=model_path)
+    name = wall_mechanism(model, model_path, mechanism)
+    return Target(table, model_path, name, ground, engine)
+
+
+def validate_block_table(alpha, e, linearized, R: float = 1.0, size_option: str = "--R") -> dict:
+    table = block_table(alpha, e, linearized, R)
+    validate_block(table, size_option)
+    return table
+
+
+def wall_mechanism(model, model_path: str, mechanism: str | None) -> str | None:
+    """The mechanism a wall rocks: the one named, else the governing one under the model's
+    own demand; a wall without a demand of its own needs --mechanism (InputError)."""
+    from rockcli.model.derive_wall import is_wall
+
+    if not is_wall(model) or mechanism is not None:
+        return mechanism
+    if model.ntc is None or model.ntc.demand is None:
+        from rockcli.studies.rocked import rockable_names
+
+        names = ", ".join(str(n) for n in rockable_names(model_path) if n is not None)
+        raise InputError(
+            "a wall needs the mechanism to rock (no demand of its own chooses one)",
+            file=model_path,
+            where="--mechanism",
+            allowed=f"--mechanism NAME: {names}",
+        )
+    from rockcli.records.pulses import make_pulse
+    from rockcli.studies.assess import rocked_input
+
+    probe = make_pulse("one-sine", 0.1, 1.0, dt=0.01)  # the model's demand chooses, not it
+    rocked = rocked_input(model, probe, False, model_path, None)[3]
+    return None if rocked is None else rocked[0]
+
+
+def check_ratio(ratio: float, period: float) -> None:
+    from rockcli.records.periods import MAX_PERIOD, MIN_PERIOD
+
+    if not MIN_PERIOD <= period <= MAX_PERIOD:
+        raise InputError(
+            f"gives a pulse period Tp = {period:.4g} s",
+            where="--ratios",
+            value=ratio,
+            allowed=f"ratios whose Tp = 2π/(ratio·p) lies in [{MIN_PERIOD:g}, {MAX_PERIOD:g}] s",
+        )
+
+
+def check_top(amplitude: float) -> None:
+    from rockcli.records.lines import MAX_ABS_ACCEL_G
+
+    if amplitude > MAX_ABS_ACCEL_G:
+        raise InputError(
+            f"reaches ap = {amplitude:.4g} g",
+            where="--scan-to",
+            allowed=f"a scan whose pulses stay ≤ {MAX_ABS_ACCEL_G:g} g",
+        )
+
+
+def _validated(target):
+    from rockcli.model.load import validate_model
+
+    return validate_model(target.table, file=target.file)
+
+
+def record_plan(
+    record_paths,
+    record_format,
+    dt,
+    units,
+    alpha,
+    e,
+    linearized,
+    model_path,
+    p_values,
+    R_values,
+    engine,
+):
+    """(target, subject, cases, (records, (option, sizes))) of a record spectrum: every
+    record read, every size validated as a block."""
+    from rockcli.cli.options import load_record
+    from rockcli.studies.overturning import RecordCase, Target, radius_of
+    from rockcli.units import DEFAULT_GRAVITY
+
+    if not record_paths:
+        raise InputError(
+            "needs --pulse or --record",
+            where="spectrum overturning",
+            allowed="--pulse one-sine|one-cosine|ricker, or --record FILE",
+        )
+    check_mode("--record", model=model_path)
+    if alpha is None:
+        raise InputError("needs --alpha", where="--record", allowed="--alpha A with --p or --R")
+    if (p_values is None) == (R_values is None):
+        raise InputError(
+            "needs the sizes", where="--record", allowed="--p P1,P2,… or --R R1,R2,…, one of them"
+        )
+    option = "--p" if p_values is not None else "--R"
+    sizes = parse_values(p_values or R_values, option)
+    radii = [radius_of(p, DEFAULT_GRAVITY) for p in sizes] if option == "--p" else sizes
+    tables = [validate_block_table(alpha, e, linearized, R, option) for R in radii]
+    records = [load_record(path, record_format, dt, units, None, None) for path in record_paths]
+    for path, rec in zip(record_paths, records, strict=True):
+        if not (abs(rec.accel).max() > 0.0):
+            raise InputError(
+                "the record is all zeros",
+                file=path,
+                where="--record",
+                allowed="a record with some motion",
+            )
+    cases = [
+        RecordCase(i * len(radii) + j, rec, R)
+        for i, rec in enumerate(records)
+        for j, R in enumerate(radii)
+    ]
+    subject = {"kind": "block", "alpha": alpha}
+    return Target(tables[0], engine=engine), subject, cases, (records, (option, sizes))
+
+
+def run_points(target, scan, cases, jobs, scheduler, progress):
+    """Every point's row, on local workers or a dask cluster, with a progress bar."""
+    from rockcli.cli.sweep import worker_count
+    from rockcli.studies.overturning import run_spectrum
+    from rockcli.studies.parallel.executor import dask_executor, local_executor
+    from rockcli.terminal.sweep import progress_bar
+
+    where = (
+        dask_executor(scheduler) if scheduler else local_executor(worker_count(jobs, len(cases)))
+    )
+    with where as lanes, progress_bar(progress) as bar:
+        return run_spectrum(target, scan, cases, lanes, bar)
+
+
+def pulse_doc(pulse, cases, rows, scan, subject, target):
+    """The pulse spectrum's document; its threshold in units of the block's a0, named."""
+    from rockcli.terminal.overturning import pulse_document
+
+    if subject["kind"] == "model" and not _plain_block(target):
+        name = "a_p/a_0"
+    else:
+        name = "a_p/(g alpha)" if rows[0]["linearized"] else "a_p/(g tan alpha)"
+    return pulse_document(pulse, [c.ratio for c in cases], rows, scan, subject, name)
+
+
+def _plain_block(target) -> bool:
+    """A model of one rectangular block without loads (its a0 is g·tan α, or g·α)."""
+    from rockcli.model.derive import to_block
+    from rockcli.model.derive_wall import is_wall
+
+    model = _validated(target)
+    if is_wall(model) and target.mechanism is not None:
+        return False
+    block = to_block(model)
+    return not block.loaded and not block.restrainers and not block.one_sided
+
+
+def record_doc(records, sizes, rows, scan, subject):
+    """The record spectrum's document: ``sizes`` (option, values), rows record by record."""
+    from rockcli.terminal.overturning import records_document
+
+    option, values = sizes
+    per = [rows[i * len(values) : (i + 1) * len(values)] for i in range(len(records))]
+    named = [
+        {"name": rec.name, "file": rec.source, "pga_g": float(abs(rec.accel).max())}
+        for rec in records
+    ]
+    return records_document(named, option.lstrip("-"), values, per, scan, subject)
+
+
+def show_spectrum(doc, output: str, plot_path: str | None) -> None:
+    """The plot (when asked), then the table, JSON or CSV on stdout."""
+    from rockcli.terminal.overturning import overturning_csv, overturning_report
+    from rockcli.terminal.table import show
+
+    if plot_path:
+        from rockcli.plots.overturning import plot_overturning
+
+        plot_overturning(doc, plot_path)
+        announce_written(plot_path)
+    if output == "csv":
+        click.echo(overturning_csv(doc), nl=False)
+        return
+    show(doc, output, overturning_report)
