@@ -7,7 +7,15 @@ from typing import TYPE_CHECKING
 import click
 
 from rockcli.cli.inputs import InputPath, RockCommand, RockCommands
-from rockcli.cli.options import AsciiIntRange, output_format
+from rockcli.cli.options import (
+    AsciiIntRange,
+    output_format,
+    overwrite_option,
+    progress_option,
+    records_dir_option,
+    resume_option,
+    scheduler_option,
+)
 from rockcli.cli.plot_option import plot_option
 
 if TYPE_CHECKING:
@@ -113,40 +121,16 @@ def fit(data, method, ddof, output):
     help="Workers on this machine: this process and N − 1 worker processes, at most the CPU "
     "count and the number of records × grid points [default: the CPU count].",
 )
-@click.option("--resume", is_flag=True, help="Keep the runs an interrupted run finished.")
-@click.option(
-    "--force",
-    "--overwrite",
-    "overwrite",
-    is_flag=True,
-    help="Start over in an output folder that holds another or an unfinished study.",
-)
+@resume_option
+@overwrite_option
 @click.option(
     "--allow-outside",
     is_flag=True,
     help="Let the study's files (model, records) lie outside the study file's folder.",
 )
-@click.option(
-    "--scheduler",
-    default=None,
-    envvar="DASK_SCHEDULER_ADDRESS",
-    show_envvar=True,
-    metavar="ADDRESS",
-    help="Run on a dask cluster, e.g. tcp://host:8786 (needs the dask extra).",
-)
-@click.option(
-    "--records-dir",
-    default=None,
-    envvar="ROCK_RECORDS_DIR",
-    show_envvar=True,
-    type=InputPath("folder"),
-    help="Folder the study's record paths are relative to (replaces records_dir).",
-)
-@click.option(
-    "--progress/--no-progress",
-    default=None,
-    help="Progress bar on stderr [default: when stderr is a terminal].",
-)
+@scheduler_option
+@records_dir_option
+@progress_option
 @click.option(
     "--extrapolate",
     is_flag=True,

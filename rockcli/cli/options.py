@@ -297,6 +297,43 @@ def scale_record(record, scale, pga):
     return record
 
 
+#: Where a study runs: a dask cluster instead of this machine's processes.
+scheduler_option = click.option(
+    "--scheduler",
+    default=None,
+    envvar="DASK_SCHEDULER_ADDRESS",
+    show_envvar=True,
+    metavar="ADDRESS",
+    help="Run on a dask cluster, e.g. tcp://host:8786 (needs the dask extra: pip install "
+    "'.[dask]' from the repository's folder).",
+)
+#: A progress bar on stderr (default: when stderr is a terminal).
+progress_option = click.option(
+    "--progress/--no-progress",
+    default=None,
+    help="Progress bar on stderr [default: when stderr is a terminal].",
+)
+#: The folder a study's record paths are relative to.
+records_dir_option = click.option(
+    "--records-dir",
+    default=None,
+    envvar="ROCK_RECORDS_DIR",
+    show_envvar=True,
+    type=InputPath("folder"),
+    help="Folder the study's record paths are relative to (replaces records_dir).",
+)
+#: Continue a study an interruption left, or start it over.
+resume_option = click.option(
+    "--resume", is_flag=True, help="Keep what an interrupted run of the study finished."
+)
+overwrite_option = click.option(
+    "--force",
+    "--overwrite",
+    "overwrite",
+    is_flag=True,
+    help="Start over in an output folder that holds another or an unfinished study.",
+)
+
 ground_option = click.option(
     "--ground",
     is_flag=True,

@@ -18,7 +18,9 @@ from rockcli.cli.options import (
     jobs_option,
     plain_dt,
     plain_units,
+    progress_option,
     record_format,
+    scheduler_option,
 )
 from rockcli.cli.plot_option import plot_option
 from rockcli.errors import InputError
@@ -127,19 +129,8 @@ def spectrum() -> None:
 )
 @engine_option
 @jobs_option("Workers: this process and N − 1 worker processes (one spectrum point each).")
-@click.option(
-    "--scheduler",
-    default=None,
-    envvar="DASK_SCHEDULER_ADDRESS",
-    show_envvar=True,
-    metavar="ADDRESS",
-    help="Run on a dask cluster, e.g. tcp://host:8786 (needs the dask extra).",
-)
-@click.option(
-    "--progress/--no-progress",
-    default=None,
-    help="Progress bar on stderr [default: when stderr is a terminal].",
-)
+@scheduler_option
+@progress_option
 @click.option(
     "--format",
     "output",

@@ -16,6 +16,10 @@ from rockcli.cli.options import (
     announce_written,
     hazard_grid_option,
     output_format,
+    overwrite_option,
+    progress_option,
+    records_dir_option,
+    scheduler_option,
 )
 from rockcli.cli.plot_option import plot_option
 
@@ -110,46 +114,21 @@ def terminate_as_interrupt() -> Iterator[None]:
     "count and the number of cases [default: the CPU count].",
 )
 @click.option("--resume", is_flag=True, help="Skip the cases an interrupted run finished.")
-@click.option(
-    "--force",
-    "--overwrite",
-    "overwrite",
-    is_flag=True,
-    help="Start over in an output folder that holds another or an unfinished study.",
-)
+@overwrite_option
 @click.option(
     "--allow-outside",
     is_flag=True,
     help="Let the study's files (base model, records) lie outside the study file's folder.",
 )
-@click.option(
-    "--scheduler",
-    default=None,
-    envvar="DASK_SCHEDULER_ADDRESS",
-    show_envvar=True,
-    metavar="ADDRESS",
-    help="Run on a dask cluster, e.g. tcp://host:8786 (needs the dask extra: pip install "
-    "'.[dask]' from the repository's folder).",
-)
-@click.option(
-    "--records-dir",
-    default=None,
-    envvar="ROCK_RECORDS_DIR",
-    show_envvar=True,
-    type=InputPath("folder"),
-    help="Folder the study's record paths are relative to (replaces records_dir).",
-)
+@scheduler_option
+@records_dir_option
 @click.option(
     "--chunk-size",
     type=AsciiIntRange(min=1),
     default=None,
     help="Cases per chunk [default: about 1 s of work].",
 )
-@click.option(
-    "--progress/--no-progress",
-    default=None,
-    help="Progress bar on stderr [default: when stderr is a terminal].",
-)
+@progress_option
 @click.option(
     "--output",
     "cases_format",

@@ -282,3 +282,33 @@ def test_reader_never_fails_otherwise(folder: Path, data: dict[str, object]) -> 
         load_fragility(str(path))
     except InputError:
         pass
+
+
+def test_sa_at_the_blocks_own_period(folder: Path, tmp_path: Path) -> None:
+    """Sa(2π/p): the record's 5 %-damped Sa at the rocked block's 2π/p (rockcli.fragility
+    .intensity, itself tested against closed forms), computed here independently of the study."""
+    from rockcli.fragility.intensity import sa
+    from rockcli.records.files import read_record
+
+    text = study_text(measure="sa").replace(
+        'measure = "sa"', 'measure = "sa"\nperiod = "mechanism"'
+    )
+    code, out, err = run(folder, text, "--out", str(tmp_path / "sa"))
+    assert code == 0, err
+    doc = json.loads(out)
+    assert doc["im_label"] == "Sa(2π/p) [g]"
+    for r, t1 in zip(doc["records"], DURATIONS, strict=True):
+        rec = read_record(str(folder / f"rect-{t1:g}.txt"))
+        assert r["im_at_scale_1"] == pytest.approx(
+            sa(rec.time, rec.accel, 2 * math.pi / P), rel=1e-12
+        )
+
+
+def test_plot_draws_the_curves(folder: Path, tmp_path: Path) -> None:
+    pytest.importorskip("matplotlib")
+    for extra in ((), ("--extrapolate",)):
+        png = tmp_path / f"c{len(extra)}.png"
+        code, _, err = run(folder, study_text(), "--out", str(tmp_path / f"p{len(extra)}"),
+                           "--plot", str(png), *extra)  # fmt: skip
+        assert code == 0, err
+        assert png.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
