@@ -99,6 +99,14 @@ def spectrum() -> None:
     help="Records: the blocks' semi-diagonals R [m].",
 )
 @click.option(
+    "--floor-periods",
+    "floor_periods",
+    default=None,
+    metavar="T1,T2,…",
+    help="Records with --model at height: the building's periods T1 [s] (its floor motion "
+    "follows).",
+)
+@click.option(
     "--scan-from",
     type=ASCII_FLOAT,
     default=1.0,
@@ -156,6 +164,7 @@ def overturning(
     ratios,
     p_values,
     R_values,
+    floor_periods,
     scan_from,
     scan_step,
     scan_to,
@@ -177,25 +186,25 @@ def overturning(
     scan = make_scan(scan_from, scan_step, scan_to, tolerance)
     check_outputs(force, plot=plot_path)
     if pulse is not None:
-        check_mode("--pulse", record=record_paths, p=p_values, R=R_values)
+        check_mode(
+            "--pulse", record=record_paths, p=p_values, R=R_values, floor_periods=floor_periods
+        )
         target, subject, cases = pulse_plan(
             pulse, ratios, alpha, e, linearized, model_path, mechanism, ground, engine, scan
         )
     else:
-        check_mode("--record", ratios=ratios, mechanism=mechanism, ground=ground)
-        target, subject, cases, (records, sizes) = record_plan(
-            record_paths,
-            record_format,
-            dt,
-            units,
-            alpha,
-            e,
-            linearized,
-            model_path,
-            p_values,
-            R_values,
-            engine,
-        )
+        check_mode("--record", ratios=ratios)
+        records = read_records(record_paths, record_format, dt, units)
+        if model_path is None:
+            check_mode("--alpha", mechanism=mechanism, ground=ground, floor_periods=floor_periods)
+            target, subject, cases, sizes = block_sizes(
+                records, alpha, e, linearized, p_values, R_values, engine
+            )
+        else:
+            check_mode("--model", e=e is not None, linearized=linearized, alpha=alpha is not None)
+            target, subject, cases, sizes = model_sizes(
+                records, model_path, mechanism, ground, p_values, R_values, floor_periods, engine
+            )
     rows = run_points(target, scan, cases, jobs, scheduler, progress)
     doc = (
         pulse_doc(pulse, cases, rows, scan, subject, target)
@@ -244,11 +253,14 @@ def make_scan(first: float, step: float, last: float, tolerance: float):
 
 #: What each way of naming the rocked thing takes.
 MODES = {
-    "--pulse": "--pulse with --ratios and --alpha or --model; --record with --p or --R",
-    "--record": "--record FILE with --alpha A [--e E] and --p or --R",
-    "--alpha": "--alpha A [--e E] [--linearized]; --mechanism and --ground go with --model",
-    "--model": "--model MODEL [--mechanism NAME] [--ground]; --e and --linearized go with "
-    "--alpha (a model sets its own)",
+    "--pulse": "--pulse with --ratios and --alpha or --model; --record with --p, --R or "
+    "--floor-periods",
+    "--record": "--record FILE with --alpha A [--e E] or --model MODEL, and --p, --R or "
+    "--floor-periods (--ratios goes with --pulse)",
+    "--alpha": "--alpha A [--e E] [--linearized]; --mechanism, --ground and --floor-periods go "
+    "with --model",
+    "--model": "--model MODEL [--mechanism NAME] [--ground]; --alpha, --e and --linearized go "
+    "with a block (a model sets its own)",
 }
 
 
@@ -435,24 +447,9 @@ def _validated(target):
     return validate_model(target.table, file=target.file)
 
 
-def record_plan(
-    record_paths,
-    record_format,
-    dt,
-    units,
-    alpha,
-    e,
-    linearized,
-    model_path,
-    p_values,
-    R_values,
-    engine,
-):
-    """(target, subject, cases, (records, (option, sizes))) of a record spectrum: every
-    record read, every size validated as a block."""
+def read_records(record_paths, record_format, dt, units) -> list:
+    """The --record files, each with some motion (InputError otherwise)."""
     from rockcli.cli.options import load_record
-    from rockcli.studies.overturning import RecordCase, Target, radius_of
-    from rockcli.units import DEFAULT_GRAVITY
 
     if not record_paths:
         raise InputError(
@@ -460,17 +457,6 @@ def record_plan(
             where="spectrum overturning",
             allowed="--pulse one-sine|one-cosine|ricker, or --record FILE",
         )
-    check_mode("--record", model=model_path)
-    if alpha is None:
-        raise InputError("needs --alpha", where="--record", allowed="--alpha A with --p or --R")
-    if (p_values is None) == (R_values is None):
-        raise InputError(
-            "needs the sizes", where="--record", allowed="--p P1,P2,… or --R R1,R2,…, one of them"
-        )
-    option = "--p" if p_values is not None else "--R"
-    sizes = parse_values(p_values or R_values, option)
-    radii = [radius_of(p, DEFAULT_GRAVITY) for p in sizes] if option == "--p" else sizes
-    tables = [validate_block_table(alpha, e, linearized, R, option) for R in radii]
     records = [load_record(path, record_format, dt, units, None, None) for path in record_paths]
     for path, rec in zip(record_paths, records, strict=True):
         if not (abs(rec.accel).max() > 0.0):
@@ -480,13 +466,102 @@ def record_plan(
                 where="--record",
                 allowed="a record with some motion",
             )
-    cases = [
-        RecordCase(i * len(radii) + j, rec, R)
-        for i, rec in enumerate(records)
-        for j, R in enumerate(radii)
-    ]
+    return records
+
+
+def block_sizes(records, alpha, e, linearized, p_values, R_values, engine):
+    """(target, subject, cases, (option, sizes)) of a record spectrum of free blocks of
+    slenderness --alpha: every size validated as a block."""
+    from rockcli.studies.overturning import Target
+
+    if alpha is None:
+        raise InputError(
+            "needs a block or a model",
+            where="--record",
+            allowed="--alpha A or --model MODEL, with --p or --R",
+        )
+    option, sizes, radii = parse_sizes(p_values, R_values)
+    tables = [validate_block_table(alpha, e, linearized, R, option) for R in radii]
     subject = {"kind": "block", "alpha": alpha}
-    return Target(tables[0], engine=engine), subject, cases, (records, (option, sizes))
+    cases = record_cases(records, radii, "R")
+    return Target(tables[0], engine=engine), subject, cases, (option, sizes)
+
+
+def parse_sizes(p_values, R_values) -> tuple[str, list[float], list[float]]:
+    """(option, its values, the semi-diagonals R [m]) of --p or --R, exactly one given."""
+    from rockcli.studies.overturning import radius_of
+    from rockcli.units import DEFAULT_GRAVITY
+
+    if (p_values is None) == (R_values is None):
+        raise InputError(
+            "needs the sizes", where="--record", allowed="--p P1,P2,… or --R R1,R2,…, one of them"
+        )
+    option = "--p" if p_values is not None else "--R"
+    sizes = parse_values(p_values or R_values, option)
+    radii = [radius_of(p, DEFAULT_GRAVITY) for p in sizes] if option == "--p" else sizes
+    return option, sizes, radii
+
+
+def model_sizes(records, model_path, mechanism, ground, p_values, R_values, periods, engine):
+    """(target, subject, cases, (option, values)) of a record spectrum of MODEL: its block at
+    each size (--p or --R, α kept: a model of one block), or in a building of each period
+    (--floor-periods: a model at height, on its floor motion)."""
+    from rockcli.model.derive_wall import is_wall
+    from rockcli.model.load import read_toml, validate_model
+    from rockcli.studies.overturning import Target, sized_table, with_period
+
+    table = read_toml(model_path)
+    model = validate_model(table, file=model_path)
+    if periods is not None:
+        check_mode("--floor-periods", p=p_values, R=R_values)
+        if model.building is None or not model.building.Z > 0.0 or ground:
+            raise InputError(
+                "needs a model at height on its floor motion",
+                file=model_path,
+                where="--floor-periods",
+                allowed="a model with [building] Z > 0, without --ground",
+            )
+        option, values, key = "--floor-periods", parse_values(periods, "--floor-periods"), "T1"
+        tables = [with_period(table, T1) for T1 in values]
+    else:
+        if is_wall(model):
+            raise InputError(
+                "a wall's size is its storeys'",
+                file=model_path,
+                where="--p" if p_values is not None else "--R",
+                allowed="a model of one block for --p or --R; --floor-periods for a wall at height",
+            )
+        option, values, radii = parse_sizes(p_values, R_values)
+        key = "R"
+        tables = [sized_table(table, R) for R in radii]
+        values_run = radii
+    for value, sized in zip(values, tables, strict=True):
+        try:
+            validate_model(sized, file=model_path)
+        except InputError as exc:
+            raise InputError(
+                f"gives a model the loader refuses: {exc.where}: {exc.problem}",
+                file=model_path,
+                where=option,
+                value=value,
+                allowed=exc.allowed,
+            ) from None
+    name = wall_mechanism(model, model_path, mechanism)
+    target = Target(table, model_path, name, ground, engine)
+    subject = {"kind": "model", "model": model_path, "mechanism": name}
+    run_values = values if key == "T1" else values_run
+    return target, subject, record_cases(records, run_values, key), (option, values)
+
+
+def record_cases(records, values, key: str) -> list:
+    """One case per record and value, records outermost."""
+    from rockcli.studies.overturning import RecordCase
+
+    return [
+        RecordCase(i * len(values) + j, rec, v, key)
+        for i, rec in enumerate(records)
+        for j, v in enumerate(values)
+    ]
 
 
 def run_points(target, scan, cases, jobs, scheduler, progress):
@@ -536,7 +611,8 @@ def record_doc(records, sizes, rows, scan, subject):
         {"name": rec.name, "file": rec.source, "pga_g": float(abs(rec.accel).max())}
         for rec in records
     ]
-    return records_document(named, option.lstrip("-"), values, per, scan, subject)
+    name = {"--p": "p", "--R": "R", "--floor-periods": "T1"}[option]
+    return records_document(named, name, values, per, scan, subject)
 
 
 def show_spectrum(doc, output: str, plot_path: str | None) -> None:

@@ -26,8 +26,9 @@ def plot_overturning(doc: Mapping[str, Any], path: str | Path) -> None:
         title = f"Overturning spectrum, {doc['pulse']} pulse"
     else:
         series = [(r["name"], t) for r, t in zip(doc["records"], doc["threshold"], strict=True)]
-        unit = "rad/s" if doc["x_name"] == "p" else "m"
-        ax.set_xlabel(f"{doc['x_name']} [{unit}]")
+        from rockcli.terminal.overturning import SIZE_UNITS
+
+        ax.set_xlabel(f"{doc['x_name']} [{SIZE_UNITS[doc['x_name']]}]")
         ax.set_ylabel("lowest overturning scale of the record")
         title = "Overturning spectrum of records"
     for label, values in series:

@@ -59,11 +59,13 @@ class PulseCase:
 
 @dataclass(frozen=True)
 class RecordCase:
-    """One point of a record spectrum: the record and the block's semi-diagonal R [m]."""
+    """One point of a record spectrum: the record and the size that varies, the block's
+    semi-diagonal R [m] (``key`` "R") or the building's period T1 [s] (``key`` "T1")."""
 
     id: int
     record: Record
-    R: float
+    value: float
+    key: str = "R"
 
 
 @dataclass(frozen=True)
@@ -104,8 +106,13 @@ def pulse_row(target: Target, scan: Scan, case: PulseCase) -> dict[str, Any]:
 
 
 def record_row(target: Target, scan: Scan, case: RecordCase) -> dict[str, Any]:
-    """The lowest scale of the record that overturns the block of semi-diagonal case.R."""
-    table = sized_table(target.table, case.R)
+    """The lowest scale of the record that overturns the block of semi-diagonal R, or the
+    model in a building of period T1 (case.key, case.value)."""
+    table = (
+        sized_table(target.table, case.value)
+        if case.key == "R"
+        else with_period(target.table, case.value)
+    )
     model = _model(Target(table, target.file, target.mechanism, target.ground, target.engine))
     block, _ = rocked_block(model, target)
     pga = float(max(abs(case.record.accel.max()), abs(case.record.accel.min())))
@@ -159,10 +166,23 @@ def rocked_block(model: Model, target: Target) -> tuple[Block, Floor | None]:
     return block, floor
 
 
+#: Geometry keys that give a block's size and slenderness (replaced by R and α).
+SIZE_KEYS = ("R", "alpha", "thickness", "height")
+
+
 def sized_table(table: dict[str, Any], R: float) -> dict[str, Any]:
-    """The model table with the block's semi-diagonal R [m] (its α kept)."""
-    geometry = {**table["geometry"], "R": R}
-    return {**table, "geometry": geometry}
+    """The model table with the block's semi-diagonal R [m], its slenderness α kept (a block
+    given by thickness and height is given by R and α instead; its other keys kept)."""
+    from rockcli.model.load import validate_model
+
+    alpha = validate_model(table).geometry.polar[1]
+    kept = {k: v for k, v in table["geometry"].items() if k not in SIZE_KEYS}
+    return {**table, "geometry": {**kept, "R": R, "alpha": alpha}}
+
+
+def with_period(table: dict[str, Any], T1: float) -> dict[str, Any]:
+    """The model table in a building of first period T1 [s] (its floor motion follows)."""
+    return {**table, "building": {**table["building"], "T1": T1}}
 
 
 def _model(target: Target) -> Model:

@@ -186,13 +186,16 @@ def _a0(doc: dict[str, Any]) -> str:
     return f"{a0:.4g} g, the uplift acceleration ({doc['threshold_name']} in the JSON)"
 
 
+#: The unit of each size a record spectrum runs over.
+SIZE_UNITS = {"p": "rad/s", "R": "m", "T1": "s"}
+
+
 def _size_label(doc: dict[str, Any]) -> str:
-    return "p [rad/s]" if doc["x_name"] == "p" else "R [m]"
+    return f"{doc['x_name']} [{SIZE_UNITS[doc['x_name']]}]"
 
 
 def _record_columns(doc: dict[str, Any]) -> tuple[Column, ...]:
-    unit = "rad/s" if doc["x_name"] == "p" else "m"
-    size = Column("x", doc["x_name"], unit, fmt="{:.4g}")
+    size = Column("x", doc["x_name"], SIZE_UNITS[doc["x_name"]], fmt="{:.4g}")
     return (RECORD_COLUMNS[0], size, *RECORD_COLUMNS[2:])
 
 

@@ -251,3 +251,59 @@ def test_two_workers_give_the_same_spectrum() -> None:
 def test_bad_input_is_one_line_and_exit_2(args: list[str], line: str) -> None:
     code, out, err = rock(*args)
     assert (code, out, err) == (2, "", line + "\n")
+
+
+# --- records on a model: its block's sizes, or its building's period ----------------------------
+
+RICKER = str(ROOT / "records" / "ricker_Tp0.5s_0.5g.txt")
+
+
+def test_a_models_block_at_each_size_is_the_free_block_of_its_alpha(tmp_path: Path) -> None:
+    """A model of one block given by thickness and height (α = atan(b/h)) sized by --R is the
+    block of that α and R: the same thresholds as --alpha with Housner's e, to the digit (the
+    same runs)."""
+    model = tmp_path / "block.toml"
+    model.write_text(
+        'name = "b"\nkind = "wall"\ngeometry = { thickness = 0.4, height = 2.0 }\n'
+        'restitution = { model = "housner" }\n',
+        encoding="utf-8",
+    )
+    alpha = repr(math.atan(0.4 / 2.0))
+    common = ("--record", RICKER, "--R", "0.5,2", "--format", "json", "--scan-to", "6")
+    code, by_model, err = rock("--model", str(model), *common)
+    assert code == 0, err
+    code, by_alpha, err = rock("--alpha", alpha, *common)
+    assert code == 0, err
+    assert json.loads(by_model)["threshold"] == json.loads(by_alpha)["threshold"]
+
+
+def test_floor_periods_change_the_floor_motion() -> None:
+    """The altar at height (examples/altar.toml) on the Ricker record in buildings of three
+    periods: x is T1, one threshold per period, and the period matters (the floor motion is
+    the building's filter of the ground's: rockcli.studies.floor)."""
+    altar = str(ROOT / "examples" / "altar.toml")
+    code, out, err = rock("--model", altar, "--record", RICKER, "--floor-periods", "0.3,1.09,2",
+                          "--format", "json")  # fmt: skip
+    assert code == 0, err
+    doc = json.loads(out)
+    assert doc["x_name"] == "T1" and doc["x"] == [0.3, 1.09, 2.0]
+    found = doc["threshold"][0]
+    assert all(t is not None and t > 0 for t in found) and len(set(found)) == 3
+
+
+@pytest.mark.parametrize(
+    ("args", "where"),
+    [
+        (["--model", "examples/wall.toml", "--floor-periods", "0.5"], "--floor-periods"),
+        (["--model", "examples/altar.toml", "--floor-periods", "0.5", "--ground"],
+         "--floor-periods"),
+        (["--alpha", "0.2", "--floor-periods", "0.5"], "--floor-periods"),
+        (["--model", "examples/altar.toml", "--alpha", "0.2", "--R", "1"], "--alpha"),
+        (["--model", "examples/two-storey-facade.toml", "--R", "1"], "--R"),
+        (["--model", "examples/altar.toml", "--R", "1e-9"], "--R"),
+    ],
+)  # fmt: skip
+def test_bad_model_records_input_is_one_line(args: list[str], where: str) -> None:
+    args = [str(ROOT / a) if a.startswith("examples/") else a for a in args]
+    code, out, err = rock("--record", RICKER, *args)
+    assert code == 2 and out == "" and err.count("\n") == 1 and where in err, err
