@@ -29,10 +29,6 @@ if TYPE_CHECKING:
     from rockcli.records.record import Record
 
 
-class UndecidedRun(ValueError):
-    """A run that decides nothing (a non-finite number, a step budget exhausted)."""
-
-
 @dataclass(frozen=True)
 class Rocker:
     """What a scaled run needs: the block, the motion it sees at scale 1, the settings.
@@ -59,11 +55,13 @@ class Rocker:
         """max|θ|/α over both polarities of the motion × scale; +inf when it overturns.
 
         Raises:
-            UndecidedRun: a run met a non-finite number or did not finish.
+            UndecidedRun (rockcli.fragility.spectrum): a run met a non-finite number or did
+            not finish.
         """
         from rockcli.dynamics.result import Verdict
         from rockcli.dynamics.settings import Engine
         from rockcli.dynamics.simulate import assess
+        from rockcli.fragility.spectrum import UndecidedRun
 
         result = assess(
             self.block,

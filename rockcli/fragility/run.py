@@ -96,7 +96,7 @@ def tasks(
 
 def run_task(task: Task) -> TaskResult:
     """The task's runs; a failure is the result's error (the study goes on)."""
-    from rockcli.fragility.response import UndecidedRun
+    from rockcli.fragility.spectrum import UndecidedRun
     from rockcli.studies.sweep.worker import one_line
 
     runs: dict[float, float] = dict(task.known)

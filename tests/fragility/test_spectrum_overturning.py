@@ -307,3 +307,20 @@ def test_bad_model_records_input_is_one_line(args: list[str], where: str) -> Non
     args = [str(ROOT / a) if a.startswith("examples/") else a for a in args]
     code, out, err = rock("--record", RICKER, *args)
     assert code == 2 and out == "" and err.count("\n") == 1 and where in err, err
+
+
+@pytest.mark.skipif(
+    __import__("importlib").util.find_spec("distributed") is None,
+    reason="distributed not installed: pip install '.[dask]'",
+)
+def test_a_dask_cluster_gives_the_same_spectrum() -> None:
+    from distributed import LocalCluster
+
+    args = ("--pulse", "one-sine", "--alpha", "0.2", "--ratios", "2,3", "--format", "csv")
+    local = rock(*args)
+    with LocalCluster(
+        n_workers=1, threads_per_worker=2, processes=False, dashboard_address=None
+    ) as cluster:
+        remote = rock(*args, "--scheduler", cluster.scheduler_address)
+    assert local[0] == remote[0] == 0
+    assert local[1] == remote[1]

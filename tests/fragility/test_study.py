@@ -312,3 +312,27 @@ def test_plot_draws_the_curves(folder: Path, tmp_path: Path) -> None:
                            "--plot", str(png), *extra)  # fmt: skip
         assert code == 0, err
         assert png.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+
+
+@pytest.mark.skipif(
+    __import__("importlib").util.find_spec("distributed") is None,
+    reason="distributed not installed: pip install '.[dask]'",
+)
+def test_a_dask_cluster_gives_the_same_fragility(folder: Path, tmp_path: Path) -> None:
+    """The records run as tasks on a dask LocalCluster (as rock sweep's chunks do): the same
+    cases.csv and fragility as in this process."""
+    from distributed import LocalCluster
+
+    code, local, err = run(folder, study_text(), "--out", str(tmp_path / "local"), "--jobs", "1")
+    assert code == 0, err
+    with LocalCluster(
+        n_workers=1, threads_per_worker=2, processes=False, dashboard_address=None
+    ) as cluster:
+        code, remote, err = run(folder, study_text(), "--out", str(tmp_path / "dask"),
+                                "--scheduler", cluster.scheduler_address)  # fmt: skip
+    assert code == 0, err
+    assert json.loads(remote)["run"]["scheduler"].startswith("inproc://")
+    assert json.loads(remote)["damage_states"] == json.loads(local)["damage_states"]
+    assert (tmp_path / "dask" / "cases.csv").read_bytes() == (
+        tmp_path / "local" / "cases.csv"
+    ).read_bytes()
