@@ -336,3 +336,47 @@ def test_a_dask_cluster_gives_the_same_fragility(folder: Path, tmp_path: Path) -
     assert (tmp_path / "dask" / "cases.csv").read_bytes() == (
         tmp_path / "local" / "cases.csv"
     ).read_bytes()
+
+
+def test_ctrl_c_keeps_the_finished_records_and_resume_ends_the_study(
+    folder: Path, tmp_path: Path
+) -> None:
+    """SIGINT once the first record is on disk: exit 130, one line saying what is saved; the
+    lines on disk stay and --resume computes only the rest (time bound: 60 s)."""
+    import os
+    import signal
+    import subprocess
+    import sys
+    import time
+
+    records = "".join(f'\n[[records]]\nname = "r{k}"\npath = "rect-0.5.txt"\n' for k in range(8))
+    text = study_text().split("[[records]]")[0] + records
+    text += "\n[ida]\nfirst = 0.2\nstep = 0.005\nlast = 1.0\ntolerance = 0.0001\n"
+    (folder / "long.toml").write_text(text, encoding="utf-8")
+    out = tmp_path / "long"
+    args = [sys.executable, "-m", "rockcli", "fragility", str(folder / "long.toml"), "--out",
+            str(out), "--jobs", "1", "--no-progress", "--format", "json"]  # fmt: skip
+    proc = subprocess.Popen(args, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                            start_new_session=True)  # fmt: skip
+    try:
+        deadline = time.monotonic() + 60
+        cases = out / "cases.csv"
+        while time.monotonic() < deadline:
+            if cases.exists() and "\n0," in cases.read_text(encoding="utf-8"):
+                break
+            assert proc.poll() is None, "the study ended before it was stopped"
+            time.sleep(0.02)
+        os.killpg(proc.pid, signal.SIGINT)
+        _, err = proc.communicate(timeout=30)
+    finally:
+        if proc.poll() is None:
+            os.killpg(proc.pid, signal.SIGKILL)
+    text_err = err.decode()
+    assert proc.returncode == 130, text_err
+    assert text_err.count("\n") == 1 and text_err.startswith("interrupted: "), text_err
+    assert "of 8 records saved" in text_err
+    code, again, err2 = run(folder, (folder / "long.toml").read_text(), "--out", str(out),
+                            "--resume", name="long.toml")  # fmt: skip
+    assert code == 0, err2
+    doc = json.loads(again)
+    assert doc["run"]["resumed_runs"] > 0 and doc["damage_states"][1]["n_records"] == 8
