@@ -101,7 +101,7 @@ def study_report(doc: dict[str, Any]) -> Report:
     has_points = any("point" in s for s in doc["damage_states"])
     unit = doc["im_label"].rpartition("[")[2].rstrip("]")
     cols = (
-        *((Column("point", "point"),) if has_points else ()),
+        *((Column("point", "point", align="left"),) if has_points else ()),
         Column("name", "damage state"),
         Column("median", "median θ", unit, "{:.4g}"),
         Column("beta", "dispersion β", "", "{:.3f}", short="β"),
@@ -114,7 +114,7 @@ def study_report(doc: dict[str, Any]) -> Report:
     if ida:
         names = [s["name"] for s in doc["damage_states"][: _states_per_point(doc)]]
         rec_cols = (
-            *((Column("point", "point"),) if has_points else ()),
+            *((Column("point", "point", align="left"),) if has_points else ()),
             Column("name", "record"),
             *(Column(f"ds{k}", n, unit, "{:.4g}") for k, n in enumerate(names)),
         )

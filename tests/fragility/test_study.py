@@ -380,3 +380,18 @@ def test_ctrl_c_keeps_the_finished_records_and_resume_ends_the_study(
     assert code == 0, err2
     doc = json.loads(again)
     assert doc["run"]["resumed_runs"] > 0 and doc["damage_states"][1]["n_records"] == 8
+
+
+def test_axes_give_one_fragility_per_grid_point(folder: Path, tmp_path: Path) -> None:
+    """An axis over the block's R: each point's records reach overturning at Housner's
+    threshold for its own p = √(3g/(4R)) (tolerances as above)."""
+    axis = '\n[[axes]]\npath = "geometry.R"\nname = "R"\nvalues = [3.0, 1.5]\n'
+    code, out, err = run(folder, study_text() + axis, "--out", str(tmp_path / "ax"))
+    assert code == 0, err
+    doc = json.loads(out)
+    assert [s["point"] for s in doc["damage_states"]] == [{"R": 3.0}] * 2 + [{"R": 1.5}] * 2
+    for r in doc["records"]:
+        t1 = DURATIONS[0] if r["name"] == "rect-0.32" else DURATIONS[1]
+        p = math.sqrt(3.0 * G / (4.0 * r["point"]["R"]))
+        expected = ALPHA / (1.0 - math.exp(-p * t1))
+        assert r["first_exceedance"]["overturning"] == pytest.approx(expected, rel=REL, abs=BISECT)
