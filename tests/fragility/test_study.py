@@ -395,3 +395,31 @@ def test_axes_give_one_fragility_per_grid_point(folder: Path, tmp_path: Path) ->
         p = math.sqrt(3.0 * G / (4.0 * r["point"]["R"]))
         expected = ALPHA / (1.0 - math.exp(-p * t1))
         assert r["first_exceedance"]["overturning"] == pytest.approx(expected, rel=REL, abs=BISECT)
+
+
+def test_a_suite_entry_is_its_records_at_their_scales(folder: Path, tmp_path: Path) -> None:
+    """A [[records]] suite (the code's rule needs three records or more) = its records, each at
+    the suite's scale: an IDA on PGA finds the
+    same first exceedances (the PGA is the scaled record's), and each record's PGA at scale 1
+    is its suite scale × 1 g."""
+    args = ["record", "pulse", "rectangular", "--amplitude", "1", "--period", "0.4", "--dt",
+            str(DT), "-o", str(folder / "rect-0.4.txt"), "--force"]  # fmt: skip
+    assert CliRunner().invoke(cli, args).exit_code == 0
+    (folder / "pulses.toml").write_text(
+        'name = "pulses"\n[target]\nag = 0.2\nF0 = 2.5\nTc_star = 0.3\n'
+        '[[records]]\npath = "rect-0.32.txt"\nscale = 1.0\n'
+        '[[records]]\npath = "rect-0.5.txt"\nscale = 2.0\n'
+        '[[records]]\npath = "rect-0.4.txt"\nscale = 0.5\n',
+        encoding="utf-8",
+    )
+    text = study_text().split("[[records]]")[0] + '[[records]]\nsuite = "pulses.toml"\n'
+    text += "\n[ida]\nfirst = 0.2\nstep = 0.05\nlast = 1.0\ntolerance = 0.0001\n"
+    code, out, err = run(folder, text, "--out", str(tmp_path / "suite"), name="suite.toml")
+    assert code == 0, err
+    doc = json.loads(out)
+    names = ["pulses/rect-0.32", "pulses/rect-0.5", "pulses/rect-0.4"]
+    assert [r["name"] for r in doc["records"]] == names
+    assert [r["im_at_scale_1"] for r in doc["records"]] == [1.0, 2.0, 0.5]
+    for r, t1 in zip(doc["records"], (*DURATIONS, 0.4), strict=True):
+        x = r["first_exceedance"]["overturning"]
+        assert x == pytest.approx(threshold(t1), rel=REL, abs=BISECT)
