@@ -187,7 +187,7 @@ def run(
     where = dask_executor(scheduler) if scheduler else local_executor(jobs)
     facts = {"jobs": None if scheduler else jobs, "scheduler": scheduler}
     try:
-        with terminate_as_interrupt(), where as lanes, progress_bar(progress) as bar:
+        with terminate_as_interrupt(), where as lanes, progress_bar(progress, "records") as bar:
             result = run_fragility(
                 plan,
                 out,

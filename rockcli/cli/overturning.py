@@ -574,7 +574,7 @@ def run_points(target, scan, cases, jobs, scheduler, progress):
     where = (
         dask_executor(scheduler) if scheduler else local_executor(worker_count(jobs, len(cases)))
     )
-    with where as lanes, progress_bar(progress) as bar:
+    with where as lanes, progress_bar(progress, "points") as bar:
         return run_spectrum(target, scan, cases, lanes, bar)
 
 

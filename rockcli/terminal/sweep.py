@@ -218,10 +218,12 @@ def suite_note(row: dict[str, Any]) -> str:
 
 
 @contextmanager
-def progress_bar(show: bool | None) -> Iterator[Callable[[int, int], None] | None]:
-    """A rich progress bar of cases on stderr, as a callback (done, total); None when off.
+def progress_bar(
+    show: bool | None, what: str = "cases"
+) -> Iterator[Callable[[int, int], None] | None]:
+    """A rich progress bar on stderr, as a callback (done, total); None when off.
 
-    show: True, False, or None for "when stderr is a terminal".
+    show: True, False, or None for "when stderr is a terminal". what: what it counts.
     """
     from rich.console import Console
     from rich.progress import (
@@ -237,8 +239,8 @@ def progress_bar(show: bool | None) -> Iterator[Callable[[int, int], None] | Non
         yield None
         return
     columns = (BarColumn(), MofNCompleteColumn(), TimeElapsedColumn(), TimeRemainingColumn())
-    with Progress("cases", *columns, console=console, transient=False) as bar:
-        task = bar.add_task("cases", total=None)
+    with Progress(what, *columns, console=console, transient=False) as bar:
+        task = bar.add_task(what, total=None)
 
         def update(done: int, total: int) -> None:
             bar.update(task, completed=done, total=total)
