@@ -10,6 +10,11 @@ analysis", Earthquake Spectra 31(1):579–599, the lognormal fragility function)
   (ln IM_i − ln θ)², dividing by n (``BETA_DDOF = 0``), as ``scipy.stats.lognorm.fit`` with
   its location at 0 does. Baker (2015) writes β with n − 1 (the unbiased variance of ln IM);
   :func:`ida_fit` gives that one with ``ddof=1``.
+- IDA with records that do not reach the damage state by the end of their scan: those are
+  right-censored at the scan's end c_k (the state lies above it), and θ, β maximise the
+  censored log-likelihood Σ_i ln[φ(u_i)/(β x_i)] + Σ_k ln[1 − Φ(u_k)], u = (ln x − ln θ)/β
+  (the lognormal with right-censored observations; scipy.stats.CensoredData with
+  lognorm.fit gives the same). Without censored records it is the maximum likelihood above.
 - MSA: at each intensity level x_j, z_j of n_j runs reach the damage state; θ and β
   maximise the binomial likelihood Σ_j [z_j ln p_j + (n_j − z_j) ln(1 − p_j)],
   p_j = Φ(ln(x_j/θ)/β) (Baker 2015, the maximum-likelihood fit to MSA data).
@@ -63,6 +68,43 @@ def ida_fit(im: np.ndarray, ddof: int = BETA_DDOF) -> Fit:
     if not beta > 0.0:
         raise ValueError("the collapse intensities are all equal: no dispersion to fit")
     return Fit(float(np.exp(np.mean(logs))), beta, ddof, int(x.size))
+
+
+def ida_censored_fit(im: np.ndarray, censored: np.ndarray, tolerance: float = 1e-10) -> Fit:
+    """The maximum-likelihood lognormal of collapse intensities ``im`` and of records
+    right-censored at ``censored`` (each the intensity below which such a record was seen
+    not to reach the state; module docstring), searched (Nelder–Mead) over ln θ and ln β to
+    ``tolerance`` from the uncensored intensities' own fit. Without censored records: ida_fit
+    with ddof 0, in closed form."""
+    x = np.asarray(im, dtype=float)
+    c = np.asarray(censored, dtype=float)
+    if c.size == 0:
+        return ida_fit(x, 0)
+    if np.any(c <= 0.0) or not np.all(np.isfinite(c)):
+        raise ValueError("censoring intensities must be finite and > 0")
+    first = ida_fit(x, 0)  # the checks of the collapse intensities, and the start
+    start = np.array([math.log(first.median), math.log(first.beta)])
+    found = optimize.minimize(
+        _censored_negative_log_likelihood, start, args=(np.log(x), np.log(c)),
+        method="Nelder-Mead",
+        options={"xatol": tolerance, "fatol": tolerance * 1e-2, "maxiter": 20_000,
+                 "maxfev": 40_000},
+    )  # fmt: skip
+    ln_theta, ln_beta = found.x
+    return Fit(float(math.exp(ln_theta)), float(math.exp(ln_beta)), 0, int(x.size + c.size))
+
+
+def _censored_negative_log_likelihood(
+    params: np.ndarray, logs: np.ndarray, censored_logs: np.ndarray
+) -> float:
+    """−(Σ ln φ(u_i) − n ln β + Σ ln(1 − Φ(u_k))), u = (ln x − ln θ)/β (the Σ ln x_i of the
+    density does not depend on θ, β and is left out)."""
+    ln_theta, ln_beta = params
+    beta = math.exp(ln_beta)
+    u = (logs - ln_theta) / beta
+    v = (censored_logs - ln_theta) / beta
+    density = -0.5 * u * u - ln_beta
+    return float(-(density.sum() + special.log_ndtr(-v).sum()))
 
 
 def msa_fit(
@@ -162,6 +204,42 @@ def ida_band(
         except ValueError:
             continue
     return _quantiles(np.array(curves), len(at))
+
+
+def ida_censored_band(
+    im: np.ndarray, censored: np.ndarray, at: np.ndarray, samples: int = BOOTSTRAP_SAMPLES,
+    seed: int = 0,
+) -> np.ndarray:  # fmt: skip
+    """The bootstrap band of :func:`ida_censored_fit`: the records (collapse intensities and
+    censored ones together) drawn again with replacement, refitted; quantiles as msa_band's."""
+    x = np.asarray(im, dtype=float)
+    c = np.asarray(censored, dtype=float)
+    every = np.concatenate([x, c])
+    reached = np.concatenate([np.ones(x.size, bool), np.zeros(c.size, bool)])
+    whole = ida_censored_fit(x, c)
+    rng = np.random.default_rng(seed)
+    curves = []
+    for _ in range(samples):
+        pick = rng.integers(0, every.size, every.size)
+        try:
+            refit = _refit_censored(every[pick][reached[pick]], every[pick][~reached[pick]], whole)
+            curves.append(refit.probability(at))
+        except ValueError:
+            continue
+    return _quantiles(np.array(curves), len(at))
+
+
+def _refit_censored(x: np.ndarray, c: np.ndarray, whole: Fit) -> Fit:
+    """A bootstrap refit, from the whole data's fit, to BAND_TOLERANCE."""
+    if c.size == 0:
+        return ida_fit(x, 0)
+    ida_fit(x, 0)  # the same checks as the whole data's
+    found = optimize.minimize(
+        _censored_negative_log_likelihood, np.log([whole.median, whole.beta]),
+        args=(np.log(x), np.log(c)), method="Nelder-Mead",
+        options={"xatol": BAND_TOLERANCE, "fatol": BAND_TOLERANCE * 1e-2, "maxiter": 20_000},
+    )  # fmt: skip
+    return Fit(float(math.exp(found.x[0])), float(math.exp(found.x[1])), 0, x.size + c.size)
 
 
 def _quantiles(curves: np.ndarray, size: int) -> np.ndarray:

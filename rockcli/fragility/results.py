@@ -3,8 +3,9 @@
 - IDA: each record's first exceedance of the state (the intensity, found again from the
   runs by the same search: rockcli.fragility.run.exceedances) and the lognormal of those
   intensities (rockcli.fragility.fit.ida_fit); a record that does not reach the state by the
-  scan's last intensity is counted apart (``not_reached``): the fit, over the records that
-  reach it, then holds only up to the scan's end (docs/fragility.md).
+  scan's last intensity is right-censored there (``not_reached``), and the fit is then the
+  censored maximum likelihood (rockcli.fragility.fit.ida_censored_fit: β with divisor n,
+  whatever ddof asks: docs/fragility.md).
 - MSA: at each level, the records run and those whose max θ/α reaches the state's level, and
   the binomial maximum likelihood over the levels (rockcli.fragility.fit.msa_fit).
 
@@ -21,8 +22,17 @@ from typing import Any
 import numpy as np
 
 from rockcli import __version__
-from rockcli.fragility.fit import Fit, ida_band, ida_fit, msa_band, msa_fit
+from rockcli.fragility.fit import (
+    Fit,
+    ida_band,
+    ida_censored_band,
+    ida_censored_fit,
+    ida_fit,
+    msa_band,
+    msa_fit,
+)
 from rockcli.fragility.run import Task, TaskResult, exceedances, stripe_counts
+from rockcli.fragility.search import scan_points
 from rockcli.fragility.study import FragilityPlan, State
 
 SCHEMA = 1
@@ -104,14 +114,19 @@ def _state_entry(
     fit: Fit | None = None
     try:
         if plan.method == "ida":
-            reached = np.array([x for x in firsts if x is not None], dtype=float)
-            entry["n_records"] = int(reached.size)
-            entry["not_reached"] = sum(r.error is None for r in found) - int(reached.size)
-            fit = ida_fit(reached, plan.ddof)
             assert plan.scan is not None
-            at = np.linspace(plan.scan[0], plan.scan[2], BAND_POINTS)
+            reached = np.array([x for x in firsts if x is not None], dtype=float)
+            entry["n_records"] = sum(r.error is None for r in found)
+            censored = np.full(entry["n_records"] - reached.size, scan_points(*plan.scan[:3])[-1])
+            entry["not_reached"] = int(censored.size)
             entry["collapse_im"] = sorted(reached.tolist())
-            band = ida_band(reached, at, ddof=plan.ddof)
+            at = np.linspace(plan.scan[0], plan.scan[2], BAND_POINTS)
+            if censored.size:
+                fit = ida_censored_fit(reached, censored)
+                band = ida_censored_band(reached, censored, at)
+            else:
+                fit = ida_fit(reached, plan.ddof)
+                band = ida_band(reached, at, ddof=plan.ddof)
         else:
             runs, hits = stripe_counts(plan, found, state.level)
             entry["n_records"] = sum(r.error is None for r in found)

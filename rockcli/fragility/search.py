@@ -42,6 +42,12 @@ class Exceedance:
     below: float | None
 
 
+def scan_points(first: float, step: float, last: float) -> list[float]:
+    """The scan's scales: first, first + step, … up to last (to 1e-9 of a step)."""
+    count = int(math.floor((last - first) / step + 1e-9)) + 1
+    return [first + k * step for k in range(count)]
+
+
 def first_exceedances(
     response: Callable[[float], float],
     levels: Sequence[float],
@@ -65,8 +71,8 @@ def first_exceedances(
             known[scale] = response(scale)
         return known[scale]
 
-    count = int(math.floor((last - first) / step + 1e-9)) + 1
-    scales = [first + k * step for k in range(count)]
+    scales = scan_points(first, step, last)
+    count = len(scales)
     found, start = [], 0
     for level in levels:
         hit = next((k for k in range(start, count) if measure(scales[k]) >= level), None)

@@ -152,8 +152,9 @@ def _study_notes(doc: dict[str, Any]) -> list[str]:
         )
         if any(s.get("not_reached") for s in doc["damage_states"]):
             notes.append(
-                "Records that do not reach a state by the scan's end are left out of "
-                "its fit (not reached): the fit holds up to the scan's end only."
+                "Records that do not reach a state by the scan's end (not reached) are "
+                "right-censored there: that state's θ and β are the censored maximum "
+                "likelihood (β² divided by n)."
             )
     else:
         levels = ", ".join(f"{x:g}" for x in doc["levels"])

@@ -95,3 +95,56 @@ def test_the_bootstrap_bands_hold_the_fit_and_repeat_with_their_seed() -> None:
         assert np.all((band[:, 0] <= p) & (p <= band[:, 1]))
     again = msa_band(LEVELS, RUNS, EXCEEDANCES, at, samples=300)
     assert np.array_equal(again, msa_band(LEVELS, RUNS, EXCEEDANCES, at, samples=300))
+
+
+#: Three records of COLLAPSES' study that did not reach the state by the scan's end, 0.7 g.
+CENSORED = np.full(3, 0.7)
+
+
+def censored_log_likelihood(theta: np.ndarray, beta: np.ndarray) -> np.ndarray:
+    """The log-likelihood of COLLAPSES with CENSORED right-censored, at every (θ, β) of a grid,
+    from the definition: Σ ln pdf_lognormal(x_i) + Σ ln(1 − CDF(c_k)) (scipy.stats.lognorm)."""
+    s, scale = beta[None, :, None], theta[:, None, None]
+    density = stats.lognorm.logpdf(COLLAPSES[None, None, :], s, scale=scale).sum(axis=2)
+    survival = stats.lognorm.logsf(CENSORED[None, None, :], s, scale=scale).sum(axis=2)
+    return density + survival
+
+
+def test_censored_ida_is_the_censored_maximum_likelihood() -> None:
+    """Against a brute-force grid (within two steps; its likelihood at least the grid's best)
+    and against scipy's own censored fit, stats.lognorm.fit(CensoredData, floc=0), whose
+    optimiser stops earlier (agreement 1e-3; rock's likelihood at least scipy's)."""
+    from rockcli.fragility.fit import ida_censored_fit
+
+    fit = ida_censored_fit(COLLAPSES, CENSORED)
+    theta = np.linspace(0.3, 0.7, 801)  # steps of 5e-4 g
+    beta = np.linspace(0.3, 1.0, 701)  # steps of 1e-3
+    grid = censored_log_likelihood(theta, beta)
+    i, j = np.unravel_index(np.argmax(grid), grid.shape)
+    assert fit.median == pytest.approx(theta[i], abs=2 * (theta[1] - theta[0]))
+    assert fit.beta == pytest.approx(beta[j], abs=2 * (beta[1] - beta[0]))
+    at_fit = censored_log_likelihood(np.array([fit.median]), np.array([fit.beta]))[0, 0]
+    assert at_fit >= grid.max() - 1e-9
+    data = stats.CensoredData(uncensored=COLLAPSES, right=CENSORED)
+    shape, _, scale = stats.lognorm.fit(data, floc=0)
+    assert fit.median == pytest.approx(scale, rel=1e-3)
+    assert fit.beta == pytest.approx(shape, rel=1e-3)
+    at_scipy = censored_log_likelihood(np.array([scale]), np.array([shape]))[0, 0]
+    assert at_fit >= at_scipy - 1e-12
+    # Censored records pull the median up: they lie above every collapse but one.
+    assert fit.median > ida_fit(COLLAPSES).median and fit.n == 13
+
+
+def test_censored_ida_without_censored_records_is_the_closed_form() -> None:
+    from rockcli.fragility.fit import ida_censored_fit
+
+    assert ida_censored_fit(COLLAPSES, np.array([])) == ida_fit(COLLAPSES)
+
+
+def test_the_censored_band_holds_its_fit() -> None:
+    from rockcli.fragility.fit import ida_censored_band, ida_censored_fit
+
+    at = np.array([0.2, 0.4, 0.8])
+    band = ida_censored_band(COLLAPSES, CENSORED, at, samples=200)
+    p = ida_censored_fit(COLLAPSES, CENSORED).probability(at)
+    assert band.shape == (3, 2) and np.all((band[:, 0] <= p) & (p <= band[:, 1]))

@@ -423,3 +423,26 @@ def test_a_suite_entry_is_its_records_at_their_scales(folder: Path, tmp_path: Pa
     for r, t1 in zip(doc["records"], (*DURATIONS, 0.4), strict=True):
         x = r["first_exceedance"]["overturning"]
         assert x == pytest.approx(threshold(t1), rel=REL, abs=BISECT)
+
+
+def test_records_that_do_not_reach_a_state_are_censored(folder: Path, tmp_path: Path) -> None:
+    """A scan that ends at 0.45 g: the t1 = 0.5 s pulse overturns at 0.368 g, the 0.32 s one
+    (0.507 g) is censored at the scan's last intensity, 0.45 g; with a third record (t1 =
+    0.4 s, 0.430 g) the fit is the censored maximum likelihood of the two collapses and one
+    censored record (rockcli.fragility.fit.ida_censored_fit, tested against scipy)."""
+    from rockcli.fragility.fit import ida_censored_fit
+
+    args = ["record", "pulse", "rectangular", "--amplitude", "1", "--period", "0.4", "--dt",
+            str(DT), "-o", str(folder / "rect-0.4.txt"), "--force"]  # fmt: skip
+    assert CliRunner().invoke(cli, args).exit_code == 0
+    text = study_text().replace("last = 1.0", "last = 0.45")
+    text += '\n[[records]]\npath = "rect-0.4.txt"\n'
+    code, out, err = run(folder, text, "--out", str(tmp_path / "cens"), name="cens.toml")
+    assert code == 0, err
+    over = json.loads(out)["damage_states"][1]
+    assert (over["n_records"], over["not_reached"]) == (3, 1)
+    found = np.array(over["collapse_im"])
+    assert found == pytest.approx([threshold(0.5), threshold(0.4)], rel=REL, abs=BISECT)
+    fit = ida_censored_fit(found, np.array([0.45]))
+    assert (over["median"], over["beta"]) == (fit.median, fit.beta)
+    assert over["median"] > math.exp(np.log(found).mean())
