@@ -59,6 +59,7 @@ def run_fragility(
     folder = Folder(out, plan)
     with folder.lock():
         kept = folder.check(resume=resume, overwrite=overwrite)
+        read_records(plan)  # a bad record file fails here, before any work
         todo = tasks(plan, kept.runs)
         folder.start()
         results = failed_results(todo, kept)
@@ -94,6 +95,19 @@ def run_fragility(
         if all(r.error is not None for r in results.values()):
             raise nothing_succeeded(plan, todo, results, folder)
     return FragilityResult(doc, out)
+
+
+def read_records(plan: FragilityPlan) -> None:
+    """Read every record of the study once (InputError for the first bad file, as a sweep's
+    reader gives it: rockcli.studies.sweep.run.unquoted)."""
+    from rockcli.studies.sweep.run import unquoted
+    from rockcli.studies.sweep.worker import read_source
+
+    for source in plan.study.records:
+        try:
+            read_source(source)
+        except InputError as exc:
+            raise unquoted(exc) from None
 
 
 def nothing_succeeded(

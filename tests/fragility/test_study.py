@@ -446,3 +446,23 @@ def test_records_that_do_not_reach_a_state_are_censored(folder: Path, tmp_path: 
     fit = ida_censored_fit(found, np.array([0.45]))
     assert (over["median"], over["beta"]) == (fit.median, fit.beta)
     assert over["median"] > math.exp(np.log(found).mean())
+
+
+@pytest.mark.parametrize(
+    ("content", "problem"),
+    [
+        ("0 0.1\n0.01 0.2\n0.02\n", "line 3"),  # a row cut short
+        ("0 0.1\n0.01 abc\n", "line 2"),
+        ("", "unrecognised record format"),
+    ],
+)
+def test_a_bad_record_is_refused_before_any_run(
+    folder: Path, tmp_path: Path, content: str, problem: str
+) -> None:
+    (folder / "bad.txt").write_text(content, encoding="utf-8")
+    text = study_text().replace("rect-0.5.txt", "bad.txt")
+    out = tmp_path / "badrec"
+    code, stdout, err = run(folder, text, "--out", str(out), name="badrec.toml")
+    assert code == 2 and stdout == "" and err.count("\n") == 1, err
+    assert "bad.txt" in err and problem in err, err
+    assert not (out / "cases.csv").exists() or (out / "cases.csv").read_text().count("\n") <= 1
