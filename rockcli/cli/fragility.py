@@ -214,10 +214,16 @@ def run(
     for name in ("cases.csv", "fragility.json"):
         announce_written(os.path.join(result.out, name))
     if plot_path:
-        from rockcli.plots.fragility import plot_fragility
+        from rockcli.plots.fragility import grid_points, plot_fragility
 
-        plot_fragility(result.document, plot_path, extrapolate=extrapolate)
+        drawn = plot_fragility(result.document, plot_path, extrapolate=extrapolate)
         announce_written(plot_path)
+        if drawn < len(grid_points(result.document)):
+            click.echo(
+                f"note: --plot draws the first {drawn} grid points; every point's fragility "
+                "is in fragility.json",
+                err=True,
+            )
     show(result.document, output, study_report)
 
 

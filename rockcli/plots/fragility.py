@@ -2,7 +2,7 @@
 points it was fitted to (IDA: each record's first exceedance as the empirical distribution,
 (i − ½)/n at the i-th smallest; MSA: the fraction of records reaching the state at each
 stripe, labelled k/n). The curves are drawn inside the analysed intensities only, unless
-``extrapolate`` (from 0 to twice the last)."""
+``extrapolate`` (from 0 to twice the last). A study with axes has a panel per grid point."""
 
 from __future__ import annotations
 
@@ -28,19 +28,59 @@ def analysed_range(doc: Mapping[str, Any]) -> tuple[float, float]:
     return float(doc["levels"][0]), float(doc["levels"][-1])
 
 
-def plot_fragility(doc: Mapping[str, Any], path: str | Path, *, extrapolate: bool = False) -> None:
-    """Every damage state's curve (of the first grid point), its band and its data."""
-    from scipy.special import ndtr
+#: Most panels of one figure (grid points); the others are in fragility.json.
+MAX_PANELS = 12
+#: Panels per row, and the size of one panel [in].
+PANELS_PER_ROW = 3
+PANEL_SIZE = (4.6, 3.6)
 
+
+def grid_points(doc: Mapping[str, Any]) -> list[Any]:
+    """The grid points of the document, in order (one [None] for a study without axes)."""
+    points: list[Any] = []
+    for state in doc["damage_states"]:
+        if state.get("point") not in points:
+            points.append(state.get("point"))
+    return points
+
+
+def plot_fragility(doc: Mapping[str, Any], path: str | Path, *, extrapolate: bool = False) -> int:
+    """Every damage state's curve, its band and its data; a panel per grid point (at most
+    MAX_PANELS). Returns the panels drawn."""
+    points = grid_points(doc)[:MAX_PANELS]
     lo, hi = analysed_range(doc)
     if extrapolate:
         x = np.linspace(0.0, EXTRAPOLATE_TO * hi, CURVE_POINTS)[1:]
     else:
         x = np.linspace(lo, hi, CURVE_POINTS)
-    fig = new_figure(path, FIGURE_SIZE)
-    ax = fig.subplots()
-    first = doc["damage_states"][0].get("point")
-    states = [s for s in doc["damage_states"] if s.get("point") == first]
+    if len(points) == 1:
+        fig = new_figure(path, FIGURE_SIZE)
+        axes = [fig.subplots()]
+    else:
+        cols = min(PANELS_PER_ROW, len(points))
+        rows = -(-len(points) // cols)
+        size = (PANEL_SIZE[0] * cols, PANEL_SIZE[1] * rows)
+        fig = new_figure(path, size)
+        axes = list(np.atleast_1d(fig.subplots(rows, cols, squeeze=False)).ravel())
+        for ax in axes[len(points) :]:
+            ax.set_visible(False)
+    method = "IDA" if doc["method"] == "ida" else "MSA"
+    for ax, point in zip(axes, points, strict=False):
+        states = [s for s in doc["damage_states"] if s.get("point") == point]
+        _draw_panel(ax, doc, states, x)
+        where = "" if point is None else ", ".join(f"{k} = {v}" for k, v in point.items())
+        title = f"{doc['study']}: {method} fragility" if point is None else where
+        ax.set_title(title, fontsize="medium")
+    if len(points) > 1:
+        fig.suptitle(f"{doc['study']}: {method} fragility", fontsize="medium")
+    save(fig, path)
+    return len(points)
+
+
+def _draw_panel(ax: Any, doc: Mapping[str, Any], states: list[Any], x: np.ndarray) -> None:
+    """One grid point's curves, bands and data."""
+    from scipy.special import ndtr
+
     for k, state in enumerate(states):
         color = f"C{k}"
         label = state["name"]
@@ -70,10 +110,6 @@ def plot_fragility(doc: Mapping[str, Any], path: str | Path, *, extrapolate: boo
     ax.set_xlim(left=0.0)
     ax.grid(True, lw=0.3)
     ax.legend(fontsize="small", loc="lower right")
-    where = "" if first is None else " (" + ", ".join(f"{k} = {v}" for k, v in first.items()) + ")"
-    method = "IDA" if doc["method"] == "ida" else "MSA"
-    ax.set_title(f"{doc['study']}: {method} fragility{where}", fontsize="medium")
-    save(fig, path)
 
 
 def _draw_data(

@@ -388,6 +388,10 @@ def test_axes_give_one_fragility_per_grid_point(folder: Path, tmp_path: Path) ->
     axis = '\n[[axes]]\npath = "geometry.R"\nname = "R"\nvalues = [3.0, 1.5]\n'
     code, out, err = run(folder, study_text() + axis, "--out", str(tmp_path / "ax"))
     assert code == 0, err
+    if __import__("importlib").util.find_spec("matplotlib") is not None:
+        from rockcli.plots.fragility import plot_fragility
+
+        assert plot_fragility(json.loads(out), tmp_path / "panels.png") == 2  # one per point
     doc = json.loads(out)
     assert [s["point"] for s in doc["damage_states"]] == [{"R": 3.0}] * 2 + [{"R": 1.5}] * 2
     for r in doc["records"]:
