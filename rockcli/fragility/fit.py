@@ -177,15 +177,66 @@ def msa_band(
     p = np.asarray(exceedances, dtype=float) / n
     whole = msa_fit(im, n, exceedances)
     rng = np.random.default_rng(seed)
+    draws = np.array([rng.binomial(n, p) for _ in range(samples)])
+    logs = np.log(np.asarray(im, dtype=float))
+    theta, beta, done = probit_refits(logs, n, draws, whole)
     curves = []
-    for _ in range(samples):
-        z = rng.binomial(n, p)
-        try:
-            refit = msa_fit(im, n, z, (whole.median, whole.beta), BAND_TOLERANCE)
-            curves.append(refit.probability(at))
-        except ValueError:
+    for k, z in enumerate(draws):
+        if not (z.sum() > 0 and (n - z).sum() > 0):
+            continue  # the resample defines no fit (msa_fit's ValueError)
+        if done[k]:
+            curves.append(Fit(float(theta[k]), float(beta[k]), None, 0).probability(at))
             continue
+        refit = msa_fit(im, n, z, (whole.median, whole.beta), BAND_TOLERANCE)
+        curves.append(refit.probability(at))
     return _quantiles(np.array(curves), len(at))
+
+
+#: Fisher-scoring iterations of the bootstrap's refits, and their convergence in (a, b).
+SCORING_ITERATIONS = 100
+SCORING_TOLERANCE = 1e-12
+
+
+def probit_refits(
+    logs: np.ndarray, n: np.ndarray, draws: np.ndarray, start: Fit
+) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The binomial maximum likelihood of every resample ``draws`` (K × levels) at once: θ, β
+    and whether each converged. With p = Φ(a + b·ln x), b = 1/β and a = −ln θ/β, the fit is a
+    probit regression, solved by Fisher scoring (McCullagh & Nelder 1989, Generalized Linear
+    Models, §4.4: the binomial score and expected information, here with the probit link),
+    vectorised over the resamples, from the data's own fit. A resample whose data are
+    separated (no finite maximum), or that does not converge, is left to the Nelder–Mead
+    search of msa_fit (``converged`` False)."""
+    k = draws.shape[0]
+    z = draws.astype(float)
+    a = np.full(k, -math.log(start.median) / start.beta)
+    b = np.full(k, 1.0 / start.beta)
+    converged = np.zeros(k, dtype=bool)
+    with np.errstate(all="ignore"):
+        for _ in range(SCORING_ITERATIONS):
+            eta = a[:, None] + b[:, None] * logs[None, :]
+            log_pdf = -0.5 * eta * eta - 0.5 * math.log(2.0 * math.pi)
+            up, down = special.log_ndtr(eta), special.log_ndtr(-eta)
+            score = z * np.exp(log_pdf - up) - (n - z) * np.exp(log_pdf - down)
+            weight = n * np.exp(2.0 * log_pdf - up - down)
+            s0, s1 = score.sum(axis=1), (score * logs).sum(axis=1)
+            w0, w1, w2 = (
+                weight.sum(axis=1),
+                (weight * logs).sum(axis=1),
+                (weight * logs * logs).sum(axis=1),
+            )
+            det = w0 * w2 - w1 * w1
+            da, db = (w2 * s0 - w1 * s1) / det, (w0 * s1 - w1 * s0) / det
+            a, b = a + da, b + db
+            step = np.maximum(np.abs(da), np.abs(db))
+            converged = np.isfinite(step) & (step < SCORING_TOLERANCE * (1.0 + np.abs(b)))
+            if converged.all():
+                break
+    ok = converged & np.isfinite(a) & np.isfinite(b) & (b > 0.0)
+    with np.errstate(all="ignore"):
+        beta = np.where(ok, 1.0 / b, np.nan)
+        theta = np.where(ok, np.exp(-a / b), np.nan)
+    return theta, beta, ok
 
 
 def ida_band(
@@ -211,26 +262,35 @@ def ida_censored_band(
     seed: int = 0,
 ) -> np.ndarray:  # fmt: skip
     """The bootstrap band of :func:`ida_censored_fit`: the records (collapse intensities and
-    censored ones together) drawn again with replacement, refitted; quantiles as msa_band's."""
+    censored ones together) drawn again with replacement, refitted (all at once by Newton's
+    method, :func:`censored_refits`; a resample it does not settle by Nelder–Mead, as
+    ida_censored_fit); quantiles as msa_band's."""
     x = np.asarray(im, dtype=float)
     c = np.asarray(censored, dtype=float)
-    every = np.concatenate([x, c])
-    reached = np.concatenate([np.ones(x.size, bool), np.zeros(c.size, bool)])
     whole = ida_censored_fit(x, c)
     rng = np.random.default_rng(seed)
+    picks = rng.integers(0, x.size + c.size, (samples, x.size + c.size))
+    counts = np.stack([np.bincount(p, minlength=x.size + c.size) for p in picks])
+    theta, beta, done = censored_refits(np.log(x), np.log(c), counts, whole)
+    every = np.concatenate([x, c])
+    reached = np.arange(every.size) < x.size
     curves = []
-    for _ in range(samples):
-        pick = rng.integers(0, every.size, every.size)
+    for k, pick in enumerate(picks):
+        xs, cs = every[pick][reached[pick]], every[pick][~reached[pick]]
         try:
-            refit = _refit_censored(every[pick][reached[pick]], every[pick][~reached[pick]], whole)
-            curves.append(refit.probability(at))
+            refit = (
+                Fit(float(theta[k]), float(beta[k]), 0, pick.size)
+                if done[k] and cs.size and _defines_fit(xs)
+                else _refit_censored(xs, cs, whole)
+            )
         except ValueError:
             continue
+        curves.append(refit.probability(at))
     return _quantiles(np.array(curves), len(at))
 
 
 def _refit_censored(x: np.ndarray, c: np.ndarray, whole: Fit) -> Fit:
-    """A bootstrap refit, from the whole data's fit, to BAND_TOLERANCE."""
+    """A bootstrap refit by Nelder–Mead, from the whole data's fit, to BAND_TOLERANCE."""
     if c.size == 0:
         return ida_fit(x, 0)
     ida_fit(x, 0)  # the same checks as the whole data's
@@ -240,6 +300,75 @@ def _refit_censored(x: np.ndarray, c: np.ndarray, whole: Fit) -> Fit:
         options={"xatol": BAND_TOLERANCE, "fatol": BAND_TOLERANCE * 1e-2, "maxiter": 20_000},
     )  # fmt: skip
     return Fit(float(math.exp(found.x[0])), float(math.exp(found.x[1])), 0, x.size + c.size)
+
+
+def _defines_fit(x: np.ndarray) -> bool:
+    """Two or more collapse intensities, not all equal (ida_fit's own conditions)."""
+    return x.size >= 2 and bool(np.ptp(x) > 0.0)
+
+
+#: Newton iterations of the censored refits, and their convergence in (ln θ, ln β).
+NEWTON_ITERATIONS = 100
+NEWTON_TOLERANCE = 1e-12
+#: Halvings of a Newton step that would lower the likelihood (a damped Newton's method).
+HALVINGS = 30
+
+
+def censored_refits(
+    logs: np.ndarray, censored_logs: np.ndarray, counts: np.ndarray, start: Fit
+) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The censored maximum likelihood of every resample at once: θ, β and whether each
+    converged. ``counts`` (K × records) is how many times each record (the collapse
+    intensities ``logs``, then the censored ``censored_logs``) is drawn. Newton's method on
+    μ = ln θ and τ = ln β with the exact gradient and Hessian of the log-likelihood of the
+    module docstring (for a censored record, with h = φ(v)/Φ(−v), v = (ln c − μ)/β:
+    ∂ℓ/∂μ = h/β, ∂ℓ/∂τ = h·v, and h' = h(h − v)), from the data's own fit, each step halved
+    while it would lower the likelihood (and a gradient step where the Hessian is not
+    negative definite)."""
+    nx = logs.size
+    mx, mc = counts[:, :nx].astype(float), counts[:, nx:].astype(float)
+    k = counts.shape[0]
+    mu = np.full(k, math.log(start.median))
+    tau = np.full(k, math.log(start.beta))
+    converged = np.zeros(k, dtype=bool)
+
+    def likelihood(mu: np.ndarray, tau: np.ndarray) -> np.ndarray:
+        sigma = np.exp(tau)[:, None]
+        u = (logs[None, :] - mu[:, None]) / sigma
+        v = (censored_logs[None, :] - mu[:, None]) / sigma
+        return (mx * (-0.5 * u * u - tau[:, None])).sum(1) + (mc * special.log_ndtr(-v)).sum(1)
+
+    with np.errstate(all="ignore"):
+        for _ in range(NEWTON_ITERATIONS):
+            sigma = np.exp(tau)[:, None]
+            u = (logs[None, :] - mu[:, None]) / sigma
+            v = (censored_logs[None, :] - mu[:, None]) / sigma
+            h = np.exp(-0.5 * v * v - 0.5 * math.log(2.0 * math.pi) - special.log_ndtr(-v))
+            dh = h * (h - v)
+            g_mu = (mx * u / sigma).sum(1) + (mc * h / sigma).sum(1)
+            g_tau = (mx * (u * u - 1.0)).sum(1) + (mc * h * v).sum(1)
+            h_mumu = -(mx / sigma**2).sum(1) - (mc * dh / sigma**2).sum(1)
+            h_mutau = -(mx * 2.0 * u / sigma).sum(1) - (mc * (dh * v + h) / sigma).sum(1)
+            h_tautau = -(mx * 2.0 * u * u).sum(1) - (mc * (dh * v * v + h * v)).sum(1)
+            det = h_mumu * h_tautau - h_mutau * h_mutau
+            d_mu = -(h_tautau * g_mu - h_mutau * g_tau) / det
+            d_tau = -(h_mumu * g_tau - h_mutau * g_mu) / det
+            uphill = (h_mumu < 0.0) & (det > 0.0)  # the Hessian negative definite
+            d_mu = np.where(uphill, d_mu, g_mu * 1e-2)  # else a short gradient step
+            d_tau = np.where(uphill, d_tau, g_tau * 1e-2)
+            before = likelihood(mu, tau)
+            for _ in range(HALVINGS):  # halve the step until the likelihood does not drop
+                worse = ~(likelihood(mu + d_mu, tau + d_tau) >= before - 1e-12 * np.abs(before))
+                if not worse.any():
+                    break
+                d_mu, d_tau = np.where(worse, d_mu / 2, d_mu), np.where(worse, d_tau / 2, d_tau)
+            mu, tau = mu + d_mu, tau + d_tau
+            step = np.maximum(np.abs(d_mu), np.abs(d_tau))
+            converged = np.isfinite(step) & (step < NEWTON_TOLERANCE * (1.0 + np.abs(mu)))
+            if converged.all():
+                break
+    ok = converged & np.isfinite(mu) & np.isfinite(tau)
+    return np.where(ok, np.exp(mu), np.nan), np.where(ok, np.exp(tau), np.nan), ok
 
 
 def _quantiles(curves: np.ndarray, size: int) -> np.ndarray:

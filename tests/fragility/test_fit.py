@@ -148,3 +148,46 @@ def test_the_censored_band_holds_its_fit() -> None:
     band = ida_censored_band(COLLAPSES, CENSORED, at, samples=200)
     p = ida_censored_fit(COLLAPSES, CENSORED).probability(at)
     assert band.shape == (3, 2) and np.all((band[:, 0] <= p) & (p <= band[:, 1]))
+
+
+def test_the_bands_refits_are_the_maximum_likelihood_of_each_resample() -> None:
+    """The band refits every resample by Fisher scoring at once (fit.probit_refits): each
+    equals msa_fit's Nelder–Mead search on that resample (to 1e-6, the search's own
+    tolerance); a separated resample (no finite maximum) is left to msa_fit."""
+    from rockcli.fragility.fit import probit_refits
+
+    whole = msa_fit(LEVELS, RUNS, EXCEEDANCES)
+    rng = np.random.default_rng(7)
+    draws = np.array([rng.binomial(RUNS, EXCEEDANCES / RUNS) for _ in range(50)])
+    separated = np.array([0, 0, 0, 20, 20, 20, 20])
+    theta, beta, ok = probit_refits(np.log(LEVELS), RUNS, np.vstack([draws, separated]), whole)
+    assert ok[:-1].all() and not ok[-1]
+    for k, z in enumerate(draws):
+        fit = msa_fit(LEVELS, RUNS, z, (whole.median, whole.beta), 1e-12)
+        assert theta[k] == pytest.approx(fit.median, rel=1e-6)
+        assert beta[k] == pytest.approx(fit.beta, rel=1e-6)
+
+
+def test_the_censored_refits_are_the_censored_maximum_likelihood_of_each_resample() -> None:
+    """fit.censored_refits (Newton's method, every resample at once) against
+    ida_censored_fit's Nelder–Mead search on each resample, to 1e-6 (the search's)."""
+    from rockcli.fragility.fit import censored_refits, ida_censored_fit
+
+    whole = ida_censored_fit(COLLAPSES, CENSORED)
+    every = np.concatenate([COLLAPSES, CENSORED])
+    reached = np.arange(every.size) < COLLAPSES.size
+    rng = np.random.default_rng(11)
+    picks = rng.integers(0, every.size, (60, every.size))
+    counts = np.stack([np.bincount(p, minlength=every.size) for p in picks])
+    theta, beta, ok = censored_refits(np.log(COLLAPSES), np.log(CENSORED), counts, whole)
+    checked = 0
+    for k, pick in enumerate(picks):
+        xs, cs = every[pick][reached[pick]], every[pick][~reached[pick]]
+        if not cs.size or np.ptp(xs) == 0.0:
+            continue
+        fit = ida_censored_fit(xs, cs, 1e-12)
+        assert ok[k]
+        assert theta[k] == pytest.approx(fit.median, rel=1e-6)
+        assert beta[k] == pytest.approx(fit.beta, rel=1e-6)
+        checked += 1
+    assert checked > 40
