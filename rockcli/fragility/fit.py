@@ -28,7 +28,7 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
-from scipy import optimize, special, stats
+from scipy import optimize, special
 
 #: The divisor of β² in an IDA fit: n (maximum likelihood), not n − 1.
 BETA_DDOF = 0
@@ -54,7 +54,7 @@ class Fit:
         """P(damage state reached | IM = im) = Φ(ln(im/θ)/β)."""
         x = np.asarray(im, dtype=float)
         with np.errstate(divide="ignore"):
-            return np.asarray(stats.norm.cdf(np.log(x / self.median) / self.beta))
+            return np.asarray(special.ndtr(np.log(x / self.median) / self.beta))
 
 
 def ida_fit(im: np.ndarray, ddof: int = BETA_DDOF) -> Fit:
