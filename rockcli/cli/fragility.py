@@ -163,15 +163,9 @@ def run(
     import time
 
     from rockcli.cli.options import announce_written
-    from rockcli.cli.sweep import (
-        EXIT_INTERRUPTED,
-        exit_now_if_busy,
-        terminate_as_interrupt,
-        worker_count,
-    )
+    from rockcli.cli.sweep import interrupt_exits, terminate_as_interrupt, worker_count
     from rockcli.fragility.analysis import FragilityInterrupted, run_fragility
     from rockcli.fragility.study import load_fragility
-    from rockcli.process import interrupted
     from rockcli.studies.parallel.executor import dask_executor, local_executor
     from rockcli.terminal.fragility import study_report
     from rockcli.terminal.sweep import progress_bar
@@ -186,7 +180,7 @@ def run(
     out = out or default_out(study_path)
     where = dask_executor(scheduler) if scheduler else local_executor(jobs)
     facts = {"jobs": None if scheduler else jobs, "scheduler": scheduler}
-    try:
+    with interrupt_exits("record", FragilityInterrupted):
         with terminate_as_interrupt(), where as lanes, progress_bar(progress, "records") as bar:
             result = run_fragility(
                 plan,
@@ -198,19 +192,6 @@ def run(
                 run_facts=facts,
                 started=started,
             )
-    except FragilityInterrupted as exc:
-        click.echo(
-            f"interrupted: {exc.saved} of {exc.total} records saved in {exc.out}; "
-            "rerun with --resume",
-            err=True,
-        )
-        exit_now_if_busy(EXIT_INTERRUPTED)
-        raise SystemExit(EXIT_INTERRUPTED) from None
-    except (KeyboardInterrupt, SystemError) as exc:  # SystemError: Ctrl-C in compiled code
-        if not interrupted(exc):
-            raise
-        click.echo("interrupted before any record ran", err=True)
-        raise SystemExit(EXIT_INTERRUPTED) from None
     for name in ("cases.csv", "fragility.json"):
         announce_written(os.path.join(result.out, name))
     if plot_path:

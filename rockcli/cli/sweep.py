@@ -93,6 +93,30 @@ def terminate_as_interrupt() -> Iterator[None]:
         signal.signal(signal.SIGTERM, previous)
 
 
+@contextmanager
+def interrupt_exits(unit: str, saved_type: type[BaseException]) -> Iterator[None]:
+    """Ctrl-C or SIGTERM during a study as one line on stderr and exit 130: how many
+    ``unit``s are saved (``saved_type``, raised by the study with saved, total and out), or
+    that none ran yet."""
+    from rockcli.process import interrupted
+
+    try:
+        yield
+    except saved_type as exc:
+        saved, total, out = exc.saved, exc.total, exc.out  # type: ignore[attr-defined]
+        click.echo(
+            f"interrupted: {saved} of {total} {unit}s saved in {out}; rerun with --resume",
+            err=True,
+        )
+        exit_now_if_busy(EXIT_INTERRUPTED)
+        raise SystemExit(EXIT_INTERRUPTED) from None
+    except (KeyboardInterrupt, SystemError) as exc:  # SystemError: Ctrl-C in compiled code
+        if not interrupted(exc):
+            raise
+        click.echo(f"interrupted before any {unit} ran", err=True)
+        raise SystemExit(EXIT_INTERRUPTED) from None
+
+
 @click.command(
     cls=RockCommand, short_help="Run a systemic study STUDY.toml in parallel, with its summary."
 )
@@ -173,7 +197,6 @@ def sweep(
     kept). A case that fails is a row with its error, and the study goes on; a study in
     which no case succeeds exits 2.
     """
-    from rockcli.process import interrupted
     from rockcli.studies.parallel.executor import dask_executor, local_executor
     from rockcli.studies.sweep.cases import expand
     from rockcli.studies.sweep.run import SweepInterrupted, run_sweep
@@ -194,7 +217,7 @@ def sweep(
     out = out or default_out(study_path)
     where = dask_executor(scheduler) if scheduler else local_executor(jobs)
     facts = {"jobs": None if scheduler else jobs, "scheduler": scheduler}
-    try:
+    with interrupt_exits("case", SweepInterrupted):
         with terminate_as_interrupt(), where as lanes, progress_bar(progress) as bar:
             result = run_sweep(
                 plan,
@@ -208,19 +231,6 @@ def sweep(
                 started=started,
                 parquet=cases_format == "parquet",
             )
-    except SweepInterrupted as exc:
-        click.echo(
-            f"interrupted: {exc.saved} of {exc.total} cases saved in {exc.out}; "
-            "rerun with --resume",
-            err=True,
-        )
-        exit_now_if_busy(EXIT_INTERRUPTED)
-        raise SystemExit(EXIT_INTERRUPTED) from None
-    except (KeyboardInterrupt, SystemError) as exc:  # SystemError: Ctrl-C in compiled code
-        if not interrupted(exc):
-            raise
-        click.echo("interrupted before any case ran", err=True)
-        raise SystemExit(EXIT_INTERRUPTED) from None
     names = ("cases.csv", "cases.parquet") if cases_format == "parquet" else ("cases.csv",)
     for name in (*names, "summary.json"):
         announce_written(os.path.join(result.out, name))
