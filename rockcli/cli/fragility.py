@@ -57,7 +57,8 @@ def fragility() -> None:
     default="msa",
     show_default=True,
     help="msa: columns im, runs, exceedances (counts at intensity levels); ida: column im "
-    "(each record's intensity at which the damage state is first reached).",
+    "(each record's intensity at which the damage state is first reached) and optionally "
+    "censored (1: the record did not reach it up to im).",
 )
 @click.option(
     "--ddof",
@@ -75,13 +76,25 @@ def fit(data, method, ddof, output):
 
     from rockcli.errors import InputError
     from rockcli.fragility.data import read_data
-    from rockcli.fragility.fit import ida_band, ida_fit, msa_band, msa_fit
+    from rockcli.fragility.fit import (
+        ida_band,
+        ida_censored_band,
+        ida_censored_fit,
+        ida_fit,
+        msa_band,
+        msa_fit,
+    )
     from rockcli.terminal.fragility import fit_document, fit_report
     from rockcli.terminal.table import show
 
     found = read_data(data, method)
     try:
-        if method == "ida":
+        if method == "ida" and found.censored is not None and found.censored.any():
+            reached, censored = found.im[~found.censored], found.im[found.censored]
+            result = ida_censored_fit(reached, censored)
+            at = np.sort(found.im)
+            band = ida_censored_band(reached, censored, at)
+        elif method == "ida":
             result = ida_fit(found.im, int(ddof))
             at = np.sort(found.im)
             band = ida_band(found.im, at, ddof=int(ddof))

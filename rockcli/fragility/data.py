@@ -4,7 +4,9 @@ A CSV file with a header row:
 
 - MSA: columns ``im``, ``runs``, ``exceedances`` — at each intensity level, the runs made and
   how many reached the damage state;
-- IDA: a column ``im`` — each record's intensity at which the damage state is first reached.
+- IDA: a column ``im`` — each record's intensity at which the damage state is first reached;
+  and optionally a column ``censored`` (0 or 1, false or true): 1 for a record that did not
+  reach the state up to ``im``, the highest intensity it was run at (right-censored there).
 
 Other columns are ignored; blank lines and lines starting with ``#`` are skipped. Every bad
 cell is an InputError naming the file, the line, the value and what is allowed.
@@ -24,6 +26,8 @@ from rockcli.textfile import TOML_LIMIT, read_text
 
 #: Columns each method needs.
 COLUMNS = {"msa": ("im", "runs", "exceedances"), "ida": ("im",)}
+#: The words of the censored column.
+FLAGS = {"0": 0.0, "1": 1.0, "false": 0.0, "true": 1.0}
 #: What an intensity may be.
 IM_ALLOWED = "a finite number > 0 (the intensity measure, in its unit)"
 
@@ -37,6 +41,8 @@ class FragilityData:
     im: np.ndarray
     runs: np.ndarray | None = None
     exceedances: np.ndarray | None = None
+    #: IDA: True for a right-censored record (its im is the highest intensity run).
+    censored: np.ndarray | None = None
 
 
 def read_data(path: str, method: str) -> FragilityData:
@@ -52,8 +58,9 @@ def read_data(path: str, method: str) -> FragilityData:
     if missing:
         raise InputError(f"no column {missing[0]!r}", file=path, where=f"line {lines[0][0]}",
                          value=",".join(header), allowed=_header_allowed(method))  # fmt: skip
-    where = {c: header.index(c) for c in COLUMNS[method]}
-    values: dict[str, list[float]] = {c: [] for c in COLUMNS[method]}
+    wanted = [*COLUMNS[method], *(["censored"] if method == "ida" and "censored" in header else [])]
+    where = {c: header.index(c) for c in wanted}
+    values: dict[str, list[float]] = {c: [] for c in wanted}
     for (number, _), row in zip(lines[1:], rows[1:], strict=True):
         for column, index in where.items():
             cell = row[index].strip() if index < len(row) else ""
@@ -63,7 +70,8 @@ def read_data(path: str, method: str) -> FragilityData:
                          allowed="two or more rows under the header")  # fmt: skip
     im = np.array(values["im"])
     if method == "ida":
-        return FragilityData(path, method, im)
+        censored = np.array(values["censored"], dtype=bool) if "censored" in values else None
+        return FragilityData(path, method, im, censored=censored)
     runs, exceed = np.array(values["runs"]), np.array(values["exceedances"])
     for k, (n, z) in enumerate(zip(runs, exceed, strict=True)):
         if z > n:
@@ -75,6 +83,13 @@ def read_data(path: str, method: str) -> FragilityData:
 
 def _number(cell: str, column: str, path: str, line: int) -> float:
     """A cell as a number of its column's kind (InputError naming the line otherwise)."""
+    if column == "censored":
+        flag = FLAGS.get(cell.lower())
+        if flag is None:
+            raise InputError("column censored: not a usable value", file=path,
+                             where=f"line {line}", value=cell[:40],
+                             allowed="0 or 1 (false or true)")  # fmt: skip
+        return flag
     whole = column in ("runs", "exceedances")
     allowed = (
         IM_ALLOWED if column == "im" else

@@ -32,6 +32,11 @@ def fit_document(data: FragilityData, fit: Fit, at: np.ndarray, band: np.ndarray
         "beta": fit.beta,
         "beta_ddof": fit.beta_ddof,
         "n_records": int(data.im.size) if ida else None,
+        **(
+            {"not_reached": int(data.censored.sum()) if data.censored is not None else 0}
+            if ida
+            else {}
+        ),
         "n_runs": fit.n,
         "ci_im": at.tolist(),
         "ci": [[_finite(lo), _finite(hi)] for lo, hi in band.tolist()],
@@ -74,6 +79,8 @@ def fit_report(doc: dict[str, Any]) -> Report:
         divisor = "n" if state["beta_ddof"] == 0 else "n − 1"
         items.append(("β² divisor", divisor, "", ""))
         items.append(("records", state["n_records"], "", "{}"))
+        if state.get("not_reached"):
+            items.append(("of which censored", state["not_reached"], "", "{}"))
     else:
         items.append(("runs", state["n_runs"], "", "{}"))
     rows = tuple(
@@ -86,6 +93,14 @@ def fit_report(doc: dict[str, Any]) -> Report:
         notes=(
             "P(DS | IM) = Φ(ln(IM/θ)/β); the band: bootstrap, "
             + ("the records drawn again" if ida else "each level's counts drawn again"),
+            *(
+                (
+                    "censored records (censored = 1) did not reach the state up to their im: the "
+                    "fit is the censored maximum likelihood, β² divided by n",
+                )
+                if state.get("not_reached")
+                else ()
+            ),
         ),
     )
 

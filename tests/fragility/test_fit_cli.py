@@ -107,3 +107,22 @@ def test_the_reader_reads_or_refuses_any_text(text: str, method: str) -> None:
     if method == "msa":
         assert data.runs is not None and data.exceedances is not None
         assert np.all(data.exceedances <= data.runs) and np.all(data.runs >= 1)
+
+
+def test_ida_with_censored_records_is_the_censored_fit(tmp_path: Path) -> None:
+    """An IDA data set with a censored column: the fit is fit.ida_censored_fit's (itself
+    tested against scipy's censored fit); the document counts the censored records."""
+    from rockcli.fragility.fit import ida_censored_fit
+
+    data = tmp_path / "ida.csv"
+    data.write_text("im,censored\n0.21,0\n0.34,0\n0.29,false\n0.45,0\n0.7,1\n0.7,true\n",
+                    encoding="utf-8")  # fmt: skip
+    code, out, _ = run(str(data), "--method", "ida", "--format", "json")
+    assert code == 0
+    state = json.loads(out)["damage_states"][0]
+    fit = ida_censored_fit(np.array([0.21, 0.34, 0.29, 0.45]), np.array([0.7, 0.7]))
+    assert (state["median"], state["beta"]) == (fit.median, fit.beta)
+    assert (state["n_records"], state["not_reached"], state["beta_ddof"]) == (6, 2, 0)
+    data.write_text("im,censored\n0.21,0\n0.34,maybe\n", encoding="utf-8")
+    code, _, err = run(str(data), "--method", "ida")
+    assert code == 2 and "line 3" in err and "censored" in err and err.count("\n") == 1
