@@ -105,6 +105,10 @@ class Folder:
         """What to keep: nothing for a new folder or with overwrite; the runs on disk with
         resume (InputError: a folder of another study, or of this one without either)."""
         empty = Kept({}, {}, {})
+        if not overwrite and not self.state.exists() and self.cases.exists():
+            raise InputError("the folder holds a cases.csv of another run (no state.json)",
+                             where="--out", value=str(self.folder),
+                             allowed="another --out, or --force to start over in it")  # fmt: skip
         if overwrite or not self.state.exists():
             for path in (self.cases, self.state, self.folder / RESULT_FILE):
                 path.unlink(missing_ok=True)

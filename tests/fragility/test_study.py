@@ -470,3 +470,15 @@ def test_a_bad_record_is_refused_before_any_run(
     assert code == 2 and stdout == "" and err.count("\n") == 1, err
     assert "bad.txt" in err and problem in err, err
     assert not (out / "cases.csv").exists() or (out / "cases.csv").read_text().count("\n") <= 1
+
+
+def test_a_folder_of_another_run_is_not_overwritten(folder: Path, tmp_path: Path) -> None:
+    """A cases.csv that no fragility study wrote (a sweep's folder): refused without --force."""
+    out = tmp_path / "sweep"
+    out.mkdir()
+    (out / "cases.csv").write_text("case,record\n0,x\n", encoding="utf-8")
+    code, _, err = run(folder, study_text(), "--out", str(out))
+    assert code == 2 and "another run" in err and err.count("\n") == 1
+    assert (out / "cases.csv").read_text(encoding="utf-8") == "case,record\n0,x\n"
+    code, _, err = run(folder, study_text(), "--out", str(out), "--force")
+    assert code == 0, err
