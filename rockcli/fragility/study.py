@@ -193,6 +193,7 @@ def load_fragility(
     plan = sweep_plan(
         {**shared, "base": study.model, "analyses": ["rocking"]}, file, records_dir, allow_outside
     )
+    check_mechanism(study.mechanism, plan.base_file, file)
     return FragilityPlan(
         file=file,
         name=study.name or Path(file).stem,
@@ -308,6 +309,25 @@ def _table_in(annotation: Any) -> type[BaseModel] | None:
         if found is not None:
             return found
     return None
+
+
+def check_mechanism(name: str | None, model_file: str, file: str) -> None:
+    """A named mechanism must be one the model's time history rocks (its catalogue's; a
+    model of one block has only its own)."""
+    if name is None:
+        return
+    from rockcli.studies.assess import BLOCK_MECHANISM
+    from rockcli.studies.rocked import rockable_names
+
+    names = [str(n) for n in rockable_names(model_file) if n is not None] or [str(BLOCK_MECHANISM)]
+    if name not in names:
+        raise InputError(
+            "no such mechanism in the model",
+            file=file,
+            where="mechanism",
+            value=name,
+            allowed="one of: " + "; ".join(names),
+        )
 
 
 def check_period(intensity: Intensity, file: str) -> float | str | None:

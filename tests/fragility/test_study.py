@@ -482,3 +482,34 @@ def test_a_folder_of_another_run_is_not_overwritten(folder: Path, tmp_path: Path
     assert (out / "cases.csv").read_text(encoding="utf-8") == "case,record\n0,x\n"
     code, _, err = run(folder, study_text(), "--out", str(out), "--force")
     assert code == 0, err
+
+
+def test_a_walls_named_mechanism_is_rocked(tmp_path: Path) -> None:
+    """A wall (examples/two-storey-facade.toml) rocks the mechanism the study names, on the
+    Ricker pulse of the repository's records; an unknown name is refused up front."""
+    root = Path(__file__).resolve().parents[2]
+    here = tmp_path / "wall"
+    here.mkdir()
+    for name in ("two-storey-facade.toml",):
+        (here / name).write_text((root / "examples" / name).read_text("utf-8"), "utf-8")
+    ricker = root / "records" / "ricker_Tp0.5s_0.5g.txt"
+    (here / "ricker.txt").write_bytes(ricker.read_bytes())
+    text = """model = "two-storey-facade.toml"
+method = "ida"
+mechanism = "gable"
+[intensity]
+measure = "pga"
+[[damage_states]]
+level = "overturning"
+[[records]]
+path = "ricker.txt"
+[ida]
+first = 0.05
+step = 0.05
+last = 3.0
+"""
+    code, out, err = run(here, text, "--out", str(tmp_path / "o"))
+    assert code == 0, err
+    assert [r["mechanism"] for r in json.loads(out)["records"]] == ["gable"]
+    code, _, err = run(here, text.replace('"gable"', '"roof"'), "--out", str(tmp_path / "p"))
+    assert code == 2 and "mechanism" in err and "gable" in err and err.count("\n") == 1
