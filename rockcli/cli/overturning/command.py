@@ -53,7 +53,7 @@ def spectrum() -> None:
     multiple=True,
     type=InputPath(),
     help="A record spectrum (repeat for several): the lowest scale that overturns "
-    "against the size (--p or --R).",
+    "against the size (--p or --R) or the building's period (--floor-periods).",
 )
 @record_format
 @plain_dt
@@ -72,7 +72,7 @@ def spectrum() -> None:
     "model_path",
     type=InputPath(),
     default=None,
-    help="A pulse spectrum of MODEL's block or mechanism (instead of --alpha).",
+    help="MODEL's block or mechanism (instead of --alpha).",
 )
 @click.option("--mechanism", default=None, help="The wall's mechanism to rock (with --model).")
 @click.option(
@@ -91,14 +91,14 @@ def spectrum() -> None:
     "p_values",
     default=None,
     metavar="P1,P2,…",
-    help="Records: the blocks' frequency parameters p [rad/s].",
+    help="Records: the blocks' frequency parameters p [rad/s] (α kept).",
 )
 @click.option(
     "--R",
     "R_values",
     default=None,
     metavar="R1,R2,…",
-    help="Records: the blocks' semi-diagonals R [m].",
+    help="Records: the blocks' semi-diagonals R [m] (α kept).",
 )
 @click.option(
     "--floor-periods",
@@ -180,8 +180,9 @@ def overturning(
     force,
 ):
     """The overturning spectrum: for each pulse ωp/p (--pulse) the lowest ap/a0 that
-    overturns the block (--alpha, or --model), or for each block size (--p or --R at
-    --alpha) the lowest scale of each --record that overturns it. a0 is the uplift
+    overturns the block (--alpha, or --model), or for each block size (--p or --R, of
+    --alpha or of --model's block) or building period (--floor-periods, --model at height)
+    the lowest scale of each --record that overturns it. a0 is the uplift
     acceleration (g·tan α for a block). The search scans the intensity up at --scan-step and
     bisects inside the first step that overturns: the lowest overturn, not a boundary of the
     safe region above it (docs/spectra.md)."""
