@@ -1,4 +1,4 @@
-"""The overturning spectrum (rockcli/fragility/spectrum.py, rockcli/studies/overturning.py,
+"""The overturning spectrum (rockcli/fragility/spectrum.py, rockcli/fragility/overturning.py,
 `rock spectrum overturning`): size independence, the casebook's published pulse thresholds,
 a lowest overturn below a safe band that a bisection misses, the record spectrum against the
 pulse spectrum, the JSON contract, bad input and a run on two workers.
@@ -18,8 +18,7 @@ import pytest
 from click.testing import CliRunner
 
 from rockcli.cli.main import cli
-from rockcli.fragility.spectrum import Scan, pulse_period
-from rockcli.studies.overturning import (
+from rockcli.fragility.overturning import (
     PulseCase,
     RecordCase,
     Target,
@@ -27,6 +26,7 @@ from rockcli.studies.overturning import (
     record_row,
     rocked_block,
 )
+from rockcli.fragility.spectrum import Scan, pulse_period
 
 ROOT = Path(__file__).resolve().parents[2]
 CASES = {

@@ -1,6 +1,6 @@
 """`rock spectrum overturning`: the lowest overturning pulse against ωp/p, or the lowest
 overturning scale of records against the block's size or the building's period
-(rockcli.fragility.spectrum), run on the sweep's executor (rockcli.studies.overturning); the
+(rockcli.fragility.spectrum), run on the sweep's executor (rockcli.fragility.overturning); the
 options are read into the plan of the runs by rockcli.cli.overturning.plan."""
 
 from __future__ import annotations
@@ -220,7 +220,7 @@ def overturning(
 def run_points(target, scan, cases, jobs, scheduler, progress):
     """Every point's row, on local workers or a dask cluster, with a progress bar."""
     from rockcli.cli.sweep import worker_count
-    from rockcli.studies.overturning import run_spectrum
+    from rockcli.fragility.overturning import run_spectrum
     from rockcli.studies.parallel.executor import dask_executor, local_executor
     from rockcli.terminal.sweep import progress_bar
 

@@ -150,7 +150,7 @@ def _p_allowed() -> str:
 
 def pulse_plan(pulse, ratios, alpha, e, linearized, model_path, mechanism, ground, engine, scan):
     """(target, subject, cases) of a pulse spectrum, every ratio's period checked."""
-    from rockcli.studies.overturning import PulseCase, pulse_period_of, rocked_block
+    from rockcli.fragility.overturning import PulseCase, pulse_period_of, rocked_block
 
     values = parse_values(DEFAULT_RATIOS if ratios is None else ratios, "--ratios")
     target = pulse_target(alpha, e, linearized, model_path, mechanism, ground, engine)
@@ -170,7 +170,7 @@ def pulse_plan(pulse, ratios, alpha, e, linearized, model_path, mechanism, groun
 
 def pulse_target(alpha, e, linearized, model_path, mechanism, ground, engine):
     """The Target of --alpha/--e/--linearized or of --model/--mechanism/--ground."""
-    from rockcli.studies.overturning import Target
+    from rockcli.fragility.overturning import Target
 
     if (alpha is None) == (model_path is None):
         raise InputError(
@@ -275,7 +275,7 @@ def read_records(record_paths, record_format, dt, units) -> list:
 def block_sizes(records, alpha, e, linearized, p_values, R_values, engine):
     """(target, subject, cases, (option, sizes)) of a record spectrum of free blocks of
     slenderness --alpha: every size validated as a block."""
-    from rockcli.studies.overturning import Target
+    from rockcli.fragility.overturning import Target
 
     if alpha is None:
         raise InputError(
@@ -292,7 +292,7 @@ def block_sizes(records, alpha, e, linearized, p_values, R_values, engine):
 
 def parse_sizes(p_values, R_values) -> tuple[str, list[float], list[float]]:
     """(option, its values, the semi-diagonals R [m]) of --p or --R, exactly one given."""
-    from rockcli.studies.overturning import radius_of
+    from rockcli.fragility.overturning import radius_of
     from rockcli.units import DEFAULT_GRAVITY
 
     if (p_values is None) == (R_values is None):
@@ -309,9 +309,9 @@ def model_sizes(records, model_path, mechanism, ground, p_values, R_values, peri
     """(target, subject, cases, (option, values)) of a record spectrum of MODEL: its block at
     each size (--p or --R, α kept: a model of one block), or in a building of each period
     (--floor-periods: a model at height, on its floor motion)."""
+    from rockcli.fragility.overturning import Target, sized_table, with_period
     from rockcli.model.derive_wall import is_wall
     from rockcli.model.load import read_toml, validate_model
-    from rockcli.studies.overturning import Target, sized_table, with_period
 
     table = read_toml(model_path)
     model = validate_model(table, file=model_path)
@@ -358,7 +358,7 @@ def model_sizes(records, model_path, mechanism, ground, p_values, R_values, peri
 
 def record_cases(records, values, key: str) -> list:
     """One case per record and value, records outermost."""
-    from rockcli.studies.overturning import RecordCase
+    from rockcli.fragility.overturning import RecordCase
 
     return [
         RecordCase(i * len(values) + j, rec, v, key)
