@@ -1,0 +1,25 @@
+"""rockcli.fragility (the fits, the searches, the fragility and overturning-spectrum runs) sits
+above the studies: it uses the sweep's lanes, records and models, and the studies know nothing
+of it; like a study module, it imports no document, terminal or command layer. Read from the
+source with ast (tests/sweep/test_layers.py), so a lazy import inside a function counts."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from tests.sweep.test_layers import ROOT, forbidden, imported_modules
+
+FRAGILITY = sorted((ROOT / "fragility").rglob("*.py"))
+
+
+@pytest.mark.parametrize("path", FRAGILITY, ids=lambda p: str(p.relative_to(ROOT)))
+def test_a_fragility_module_imports_no_report_cli_click_or_rich(path: Path) -> None:
+    assert not forbidden(imported_modules(path))
+
+
+def test_the_studies_import_nothing_of_fragility() -> None:
+    for path in sorted((ROOT / "studies").rglob("*.py")):
+        wrong = {n for n in imported_modules(path) if n.startswith("rockcli.fragility")}
+        assert not wrong, f"{path.relative_to(ROOT)} imports {sorted(wrong)}"
