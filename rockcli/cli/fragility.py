@@ -76,33 +76,20 @@ def fit(data, method, ddof, output):
 
     from rockcli.errors import InputError
     from rockcli.fragility.data import read_data
-    from rockcli.fragility.fit import (
-        ida_band,
-        ida_censored_band,
-        ida_censored_fit,
-        ida_fit,
-        msa_band,
-        msa_fit,
-    )
+    from rockcli.fragility.fit import ida_curve, msa_curve
     from rockcli.terminal.fragility import fit_document, fit_report
     from rockcli.terminal.table import show
 
     found = read_data(data, method)
     try:
-        if method == "ida" and found.censored is not None and found.censored.any():
-            reached, censored = found.im[~found.censored], found.im[found.censored]
-            result = ida_censored_fit(reached, censored)
+        if method == "ida":
+            flags = found.censored if found.censored is not None else np.zeros(found.im.size, bool)
             at = np.sort(found.im)
-            band = ida_censored_band(reached, censored, at)
-        elif method == "ida":
-            result = ida_fit(found.im, int(ddof))
-            at = np.sort(found.im)
-            band = ida_band(found.im, at, ddof=int(ddof))
+            result, band = ida_curve(found.im[~flags], found.im[flags], at, int(ddof))
         else:
             assert found.runs is not None and found.exceedances is not None
-            result = msa_fit(found.im, found.runs, found.exceedances)
             at = found.im
-            band = msa_band(found.im, found.runs, found.exceedances, at)
+            result, band = msa_curve(found.im, found.runs, found.exceedances, at)
     except ValueError as exc:
         raise InputError(
             str(exc),

@@ -46,6 +46,21 @@ output_format = click.option(
     show_default=True,
     help="Rich tables for people, one JSON document for machines.",
 )
+
+
+def output_format_csv(help_text: str):
+    """``--format table|json|csv``: output_format with CSV, ``help_text`` saying what each
+    gives."""
+    return click.option(
+        "--format",
+        "output",
+        type=click.Choice(["table", "json", "csv"]),
+        default="table",
+        show_default=True,
+        help=help_text,
+    )
+
+
 record_format = click.option(
     "--as",
     "record_format",

@@ -16,6 +16,7 @@ from rockcli.cli.options import (
     announce_written,
     check_outputs,
     force_option,
+    output_format_csv,
     plain_dt,
     plain_units,
     record_format,
@@ -52,14 +53,7 @@ DAMPING_ALLOWED = "a fraction of critical, 0 < ζ < 1 (0.05 = 5 %)"
     f"[default: {GRID_COUNT} log-spaced from {GRID_FIRST:g} to {GRID_LAST:g} s and the round "
     "periods 0.05, 0.1, 0.15, 0.2, 0.3, 0.4, 0.5, 0.75, 1, 1.5, 2, 3 s].",
 )
-@click.option(
-    "--format",
-    "output",
-    type=click.Choice(["table", "json", "csv"]),
-    default="table",
-    show_default=True,
-    help="A table (up to 3 records), one JSON document, or CSV (a row per period).",
-)
+@output_format_csv("A table (up to 3 records), one JSON document, or CSV (a row per period).")
 @plot_option
 @force_option
 def spectrum(files, record_format, dt, units, scale, pga, damping, periods, output, plot_path,

@@ -371,6 +371,23 @@ def censored_refits(
     return np.where(ok, np.exp(mu), np.nan), np.where(ok, np.exp(tau), np.nan), ok
 
 
+def ida_curve(
+    im: np.ndarray, censored: np.ndarray, at: np.ndarray, ddof: int = BETA_DDOF
+) -> tuple[Fit, np.ndarray]:
+    """An IDA fragility and its band at ``at``: the censored maximum likelihood when some
+    records are censored (β² over n whatever ddof), else the closed form with ``ddof``."""
+    if np.asarray(censored).size:
+        return ida_censored_fit(im, censored), ida_censored_band(im, censored, at)
+    return ida_fit(im, ddof), ida_band(im, at, ddof=ddof)
+
+
+def msa_curve(
+    im: np.ndarray, runs: np.ndarray, exceedances: np.ndarray, at: np.ndarray
+) -> tuple[Fit, np.ndarray]:
+    """An MSA fragility and its band at ``at``."""
+    return msa_fit(im, runs, exceedances), msa_band(im, runs, exceedances, at)
+
+
 def _quantiles(curves: np.ndarray, size: int) -> np.ndarray:
     if not curves.size:
         return np.full((size, 2), np.nan)

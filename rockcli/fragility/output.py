@@ -210,10 +210,10 @@ class Folder:
 
 
 def _sort_key(line: str) -> tuple[int, float]:
-    task, _, rest = line.partition(",")
+    """A line of cases.csv by task, then intensity (an error line, with none, first)."""
     row = next(csv.reader([line]))
-    im = row[-5]
-    return int(task), float(im) if im else -1.0
+    im = row[-len(RUN_COLUMNS) + RUN_COLUMNS.index("im")]
+    return int(row[0]), float(im) if im else -1.0
 
 
 def _replace(path: Path, text: str) -> None:

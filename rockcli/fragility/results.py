@@ -22,15 +22,7 @@ from typing import Any
 import numpy as np
 
 from rockcli import __version__
-from rockcli.fragility.fit import (
-    Fit,
-    ida_band,
-    ida_censored_band,
-    ida_censored_fit,
-    ida_fit,
-    msa_band,
-    msa_fit,
-)
+from rockcli.fragility.fit import Fit, ida_curve, msa_curve
 from rockcli.fragility.run import Task, TaskResult, exceedances, stripe_counts
 from rockcli.fragility.search import scan_points
 from rockcli.fragility.study import FragilityPlan, State
@@ -121,12 +113,7 @@ def _state_entry(
             entry["not_reached"] = int(censored.size)
             entry["collapse_im"] = sorted(reached.tolist())
             at = np.linspace(plan.scan[0], plan.scan[2], BAND_POINTS)
-            if censored.size:
-                fit = ida_censored_fit(reached, censored)
-                band = ida_censored_band(reached, censored, at)
-            else:
-                fit = ida_fit(reached, plan.ddof)
-                band = ida_band(reached, at, ddof=plan.ddof)
+            fit, band = ida_curve(reached, censored, at, plan.ddof)
         else:
             runs, hits = stripe_counts(plan, found, state.level)
             entry["n_records"] = sum(r.error is None for r in found)
@@ -135,8 +122,7 @@ def _state_entry(
                 for x, n, k in zip(plan.levels, runs, hits, strict=True)
             ]
             at = np.array(plan.levels, dtype=float)
-            fit = msa_fit(at, np.array(runs), np.array(hits))
-            band = msa_band(at, np.array(runs), np.array(hits), at)
+            fit, band = msa_curve(at, np.array(runs), np.array(hits), at)
     except ValueError as exc:
         entry.update(
             median=None,

@@ -191,13 +191,18 @@ def unit_intensity(plan: FragilityPlan, rocker: Rocker, record: Record) -> float
     return value
 
 
-def respond(
-    plan: FragilityPlan, response: Callable[[float], float]
-) -> list[Exceedance] | list[float]:
-    """Run the method over ``response`` (max θ/α by intensity): IDA's first exceedance of
-    each state, or MSA's response at each level."""
+def respond(plan: FragilityPlan, response: Callable[[float], float]) -> None:
+    """Run the method's intensities through ``response`` (max θ/α by intensity): IDA's
+    search, or MSA's levels."""
     if plan.method == "msa":
-        return [response(level) for level in plan.levels]
+        for level in plan.levels:
+            response(level)
+    else:
+        ida_search(plan, response)
+
+
+def ida_search(plan: FragilityPlan, response: Callable[[float], float]) -> list[Exceedance]:
+    """IDA: each damage state's first exceedance by ``response``, over the study's scan."""
     assert plan.scan is not None
     first, step, last, tolerance = plan.scan
     levels = [s.level for s in plan.states]
@@ -213,9 +218,7 @@ def exceedances(plan: FragilityPlan, runs: Mapping[float, float]) -> list[Exceed
     Raises:
         KeyError: a run the search needs is not among them (an incomplete task).
     """
-    found = respond(plan, lambda im: runs[im])
-    assert all(isinstance(f, Exceedance) for f in found)
-    return [f for f in found if isinstance(f, Exceedance)]
+    return ida_search(plan, lambda im: runs[im])
 
 
 def stripe_counts(

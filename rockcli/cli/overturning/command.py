@@ -15,6 +15,7 @@ from rockcli.cli.options import (
     engine_option,
     force_option,
     jobs_option,
+    output_format_csv,
     plain_dt,
     plain_units,
     progress_option,
@@ -141,14 +142,7 @@ def spectrum() -> None:
 @jobs_option("Workers: this process and N − 1 worker processes (one spectrum point each).")
 @scheduler_option
 @progress_option
-@click.option(
-    "--format",
-    "output",
-    type=click.Choice(["table", "json", "csv"]),
-    default="table",
-    show_default=True,
-    help="A table, one JSON document, or CSV.",
-)
+@output_format_csv("A table, one JSON document, or CSV.")
 @plot_option
 @force_option
 def overturning(
