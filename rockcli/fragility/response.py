@@ -39,7 +39,6 @@ class Rocker:
         settings: the model's solver settings.
         engine: "fast" or "reference".
         mechanism: the mechanism's name (None: a model of one block).
-        floor: True when the block rocks on a floor motion.
     """
 
     block: Block
@@ -49,7 +48,6 @@ class Rocker:
     settings: SolverSettings
     engine: str = "fast"
     mechanism: str | None = None
-    floor: bool = False
 
     def response(self, scale: float) -> float:
         """max|θ|/α over both polarities of the motion × scale; +inf when it overturns.
@@ -93,7 +91,7 @@ def prepare(
     from rockcli.model.derive import solver_options
     from rockcli.studies.assess import rocked_input, settings_from
 
-    block, shaking, floor, rocked = rocked_input(model, record, ground, file, mechanism)
+    block, shaking, _, rocked = rocked_input(model, record, ground, file, mechanism)
     return Rocker(
         block=block,
         time=shaking.time,
@@ -102,5 +100,4 @@ def prepare(
         settings=settings_from(solver_options(model)),
         engine=engine,
         mechanism=rocked[0] if rocked is not None else None,
-        floor=floor is not None,
     )
