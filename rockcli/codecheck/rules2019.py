@@ -89,6 +89,23 @@ def floor_spectrum(
     return a_z * amp / (1.0 + (amp - 1.0) * (T / (PLATEAU_B * T1) - 1.0) ** 1.2)
 
 
+def bounded_floor_spectrum(spec: Spectrum, T: float, pos: Position, xi_mechanism: float) -> float:
+    """S_eZ(T, ξ, z) [g] of the ground spectrum ``spec`` at the position: the floor spectrum
+    of the first mode, not below the ground spectrum S_e(T, ξ) for T > T1.
+
+    Circolare 7/2019 §C7.2.3, Eq. C7.2.5: "S_eZ(T, ξ, z) = √(Σ S_eZ,k²) (≥ S_e(T, ξ) per
+    T > T1)": the floor spectrum at height may not fall below the ground spectrum beyond the
+    building's first period, with the mechanism's damping ξ. A record's floor spectrum is
+    bounded by the record's own response spectrum likewise (``spec`` is the demand's spectrum
+    either way).
+    """
+    assert pos.T1 is not None
+    value = floor_spectrum(
+        T, floor_acceleration(spec, pos), pos.T1, xi_mechanism, 100.0 * pos.damping
+    )
+    return max(value, spec.Se(T, xi_mechanism)) if T > pos.T1 else value
+
+
 def floor_displacement(
     T: float,
     a_z: float,
@@ -97,7 +114,9 @@ def floor_displacement(
     g: float,
     xi_building: float = BUILDING_DAMPING,
 ) -> float:
-    """S_eZ(T)·T²/4π² [m], not less than S_eZ(T1)·(b T1)²/4π² for T > b·T1 (§C8.7.1.2.1)."""
+    """S_eZ(T)·T²/4π² [m] of the first mode's floor spectrum, not less than
+    S_eZ(T1)·(b T1)²/4π² for T > b·T1 (§C8.7.1.2.1; the ground bound of Eq. C7.2.5 is
+    :func:`bounded_floor_displacement`'s)."""
     d = floor_spectrum(T, a_z, T1, xi_mechanism, xi_building) * g * T**2 / (4.0 * math.pi**2)
     if T > PLATEAU_B * T1:
         floor = (
@@ -166,14 +185,25 @@ def displacement_measure(
     T: float, xi: float, pos: Position, g: float
 ) -> Callable[[Spectrum], float]:
     """The displacement demand [m] a spectrum gives the mechanism of secant period T [s] and
-    damping ξ [%]: SDe(T, ξ) at the ground, S_eZ(T)·T²/4π² at height (§C8.7.1.2.1, C7.2.3)."""
+    damping ξ [%]: SDe(T, ξ) at the ground, S_eZ(T)·T²/4π² at height, not below the ground's
+    SDe(T, ξ) for T > T1 (§C8.7.1.2.1; §C7.2.3, Eq. C7.2.5)."""
     if not pos.at_height:
         return lambda sp: sp.SDe(T, xi)
+    return lambda sp: bounded_floor_displacement(sp, T, pos, xi, g)
+
+
+def bounded_floor_displacement(
+    spec: Spectrum, T: float, pos: Position, xi_mechanism: float, g: float
+) -> float:
+    """The displacement demand at height [m]: :func:`floor_displacement` of the first mode,
+    not below the ground spectrum's SDe(T, ξ) for T > T1 (Circolare 7/2019 §C7.2.3,
+    Eq. C7.2.5, the bound of :func:`bounded_floor_spectrum` read as a displacement,
+    SDe = S_e·T²/4π² on the branches the secant periods reach)."""
     assert pos.T1 is not None
-    T1 = pos.T1
-    return lambda sp: floor_displacement(
-        T, floor_acceleration(sp, pos), T1, xi, g, 100.0 * pos.damping
+    d = floor_displacement(
+        T, floor_acceleration(spec, pos), pos.T1, xi_mechanism, g, 100.0 * pos.damping
     )
+    return max(d, spec.SDe(T, xi_mechanism)) if T > pos.T1 else d
 
 
 def spectral_demand(

@@ -238,17 +238,15 @@ def floor_curve_2019(
     spectrum: ElasticSpectrum, state: str, pos: Position, periods: np.ndarray
 ) -> tuple[np.ndarray, np.ndarray]:
     """(T, S_eZ(T)) [s, g]: the floor spectrum of Circolare 7/2019 §C7.2.3 as the check reads
-    it (§C8.7.1.2.1): rules2019.floor_spectrum with a_Z = rules2019.floor_acceleration of the
-    spectrum at the position, the building's T1 and damping ξ_k, the mechanism's damping of
-    the limit state's check (rules2019.DAMPING)."""
+    it (§C8.7.1.2.1): rules2019.bounded_floor_spectrum, the first mode's floor spectrum at the
+    position (the building's T1 and damping ξ_k) not below the ground spectrum for T > T1
+    (Eq. C7.2.5), at the mechanism's damping of the limit state's check (rules2019.DAMPING)."""
     import numpy as np
 
     from rockcli.codecheck import rules2019
 
-    assert pos.T1 is not None
-    a_z = rules2019.floor_acceleration(spectrum, pos)
-    xi, xi_k = rules2019.DAMPING[state], 100.0 * pos.damping
-    values = [rules2019.floor_spectrum(float(T), a_z, pos.T1, xi, xi_k) for T in periods]
+    xi = rules2019.DAMPING[state]
+    values = [rules2019.bounded_floor_spectrum(spectrum, float(T), pos, xi) for T in periods]
     return np.asarray(periods, dtype=float), np.array(values)
 
 

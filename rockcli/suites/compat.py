@@ -91,15 +91,15 @@ def floor_target(
     """The code's floor spectrum S_eZ(T) [g] at 5 % at the periods, and its floor
     acceleration a_Z [g], from the ground target (Circolare 7/2019 §C7.2.3, with NTC 2018
     §7.2.3: a_Z = Se(T1, ξ_k)·|γ·ψ(Z)|·√(1 + 0.0004·ξ_k²), then the plateau 0.8–1.1·T1 and
-    its branches; ξ_k the building's damping, read as in rock kinematic)."""
+    its branches, not below the ground target for T > T1 (Eq. C7.2.5); ξ_k the building's
+    damping, read as in rock kinematic)."""
     from rockcli.codecheck.position import Position
-    from rockcli.codecheck.rules2019 import floor_acceleration, floor_spectrum
+    from rockcli.codecheck.rules2019 import bounded_floor_spectrum, floor_acceleration
 
     pos = Position(Z=floor.Z or 0.0, T1=floor.T1, gamma=floor.gamma, psi=floor.psi,
                    damping=floor.xi)  # fmt: skip
     a_z = floor_acceleration(spectrum, pos)
-    xi_k = 100.0 * floor.xi
-    curve = np.array([floor_spectrum(T, a_z, floor.T1, TARGET_DAMPING, xi_k) for T in periods])
+    curve = np.array([bounded_floor_spectrum(spectrum, T, pos, TARGET_DAMPING) for T in periods])
     return curve, a_z
 
 
