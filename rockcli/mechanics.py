@@ -868,6 +868,60 @@ def uplift_accelerations(block: Block) -> tuple[float, float]:
     return out[0], out[1]
 
 
+#: Points that bracket the zero of a chain's restoring moment before bisection, and the
+#: bisection's steps (the rotation resolved to end·2⁻⁶⁰/COLLAPSE_POINTS).
+COLLAPSE_POINTS, COLLAPSE_STEPS = 200, 60
+
+
+def collapse_rotations(block: Block) -> tuple[float, float]:
+    """(θc⁺, θc⁻): the rotation of each side at which the restoring moment of the weights,
+    loads and thrusts vanishes [rad] — where the mechanism, left alone, stops returning and
+    falls (the rectangle: α on both sides; a chain: its instability rotation of each side).
+
+    The damage measure max θ/θc of every mechanism divides by it, side by side
+    (docs/interpretations.md). Restrainers are left out: a tie holding the mechanism beyond
+    it (a positive stiffness) does not move the mechanism's own collapse rotation, so the
+    measure stays the same with and without the tie. With loads and thrusts (point_moments)
+    the restoring moment about pivot s is G − s·T = A·cos a − B·sin a, A = Σ P_bears·x −
+    s·Σ d·F·z, B = Σ P_bears·z + s·Σ d·F·x, which vanishes at a = atan2(A, B) (capped at π/2,
+    where the run counts the block overturned). A chain: the zero of its tabulated G − T by
+    bracketing and bisection on [0, end] (end when it never vanishes there).
+    """
+    if block.chain is not None:
+        return _chain_collapse(block.chain, POSITIVE), _chain_collapse(block.chain, NEGATIVE)
+    if not block.loaded:
+        return block.alpha, block.alpha
+    points = point_table(block)
+    out = []
+    for s in (POSITIVE, NEGATIVE):
+        g0, _, t0, _, _ = point_moments(points, s, 0.0, 1.0)  # A: G − s·T at a = 0
+        g1, _, t1, _, _ = point_moments(points, s, 1.0, 0.0)  # −B: G − s·T at a = π/2
+        out.append(min(math.atan2(g0 - s * t0, -(g1 - s * t1)), 0.5 * math.pi))
+    return out[0], out[1]
+
+
+def _chain_collapse(chain: Chain, s: int) -> float:
+    """The first zero of the chain's G − T on side s in [0, end] [rad] (end: none there)."""
+
+    def restoring(a: float) -> float:
+        g, _, t, _, _ = chain_terms(chain.table, s, a)
+        return g - t
+
+    lo = 0.0
+    for k in range(1, COLLAPSE_POINTS + 1):
+        hi = chain.end * k / COLLAPSE_POINTS
+        if restoring(hi) <= 0.0:
+            for _ in range(COLLAPSE_STEPS):
+                mid = 0.5 * (lo + hi)
+                if restoring(mid) > 0.0:
+                    lo = mid
+                else:
+                    hi = mid
+            return 0.5 * (lo + hi)
+        lo = hi
+    return chain.end
+
+
 def impact_restitution(block: Block, s: int) -> float:
     """Housner's coefficient of restitution for an impact ending a phase on side s, with loads.
 

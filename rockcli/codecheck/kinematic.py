@@ -54,12 +54,17 @@ class Mechanism:
             (e* = 0.75 for a lone rectangle), False when lumped at its centroid (e* = 1).
         geometry: the mechanism's one geometry (rockcli.mechanisms.side.ChainSide); None:
             the block's closed forms (rockcli.mechanisms.block.BlockSide).
+        per_block: True for the 2019 sums of M*, e* and d* over the rigid blocks, each the
+            resultant of its own and carried weights (Circ. 7/2019 Eqs. C8.7.1.4–C8.7.1.5
+            of §C8.7.1.2.1.3, P_k of §C8.7.1.2.1.1); False for the 2009 sums over the
+            weights (Circ. 617/2009 Eqs. C8A.4.2–C8A.4.3), where ``distributed`` applies.
     """
 
     block: Block | None = None
     side: int = 1
     distributed: bool = False
     geometry: ChainSide | None = None
+    per_block: bool = False
 
     @cached_property
     def view(self) -> BlockSide | ChainSide:
@@ -122,18 +127,23 @@ def activation_terms(mech: Mechanism) -> dict[str, float]:
 
 
 def _moments(mech: Mechanism) -> tuple[float, float]:
-    """(Σ P δx, Σ P δx²) per unit virtual rotation [N·m, N·m²], each body lumped or spread.
+    """(Σ P δx, Σ P δx²) per unit virtual rotation [N·m, N·m²].
 
-    The block spread over its height 2h: Σ P δx = W h, Σ P δx² = W (2h)²/3 (integrals of z and
-    z²); a body of the catalogue adds P·var_z (rockcli.mechanisms.side).
+    2019 (``per_block``): over the rigid blocks, each one resultant at its point (Circ.
+    7/2019 Eqs. C8.7.1.4–C8.7.1.5, k = 1…N blocks; P_k of §C8.7.1.2.1.1). 2009: over the weights,
+    each body lumped or spread: the block spread over its height 2h gives Σ P δx = W h,
+    Σ P δx² = W (2h)²/3 (integrals of z and z²); a body of the catalogue adds P·var_z
+    (rockcli.mechanisms.side).
     """
+    if mech.per_block:
+        return mech.view.block_moments()
     return mech.view.first_moments(mech.distributed)
 
 
 def participating_mass(mech: Mechanism) -> float:
-    """M* = (Σ P_i δx,i)² / (g Σ P_i δx,i²) [kg].
-
-    Circolare 617/2009 Eq. C8A.4.2; Circolare 7/2019 Eq. C8.7.1.2.
+    """M* = (Σ P δx)² / (g Σ P δx²) [kg]: over the weights (Circolare 617/2009 Eq. C8A.4.2),
+    or over the rigid blocks for 2019, where M* = e*·Σ(P_k + Q_k)/g (Circolare 7/2019 defines
+    only e*, Eq. C8.7.1.5, whose numerator and denominator these are).
     """
     first, second = _moments(mech)
     return first**2 / (mech.g * second)
@@ -142,8 +152,8 @@ def participating_mass(mech: Mechanism) -> float:
 def e_star(mech: Mechanism) -> float:
     """Participating mass fraction e* = g M* / Σ P_i [-], over the weights that move.
 
-    Circolare 617/2009 Eq. C8A.4.3; Circolare 7/2019 Eq. C8.7.1.3. Block alone: 1 lumped,
-    0.75 spread over the height (spec/ntc.md).
+    Circolare 617/2009 Eq. C8A.4.3 (over the weights: a block alone 1 lumped, 0.75 spread over
+    its height); Circolare 7/2019 Eq. C8.7.1.5 (over the blocks: one block 1).
     """
     total = mech.view.moving_weight
     return mech.g * participating_mass(mech) / total
@@ -152,7 +162,7 @@ def e_star(mech: Mechanism) -> float:
 def a0_star(alpha_0: float, e_s: float, FC: float, g: float) -> float:
     """Spectral acceleration of activation a0* = α0 g / (e* FC) [m/s²].
 
-    Circolare 617/2009 Eq. C8A.4.4; Circolare 7/2019 Eq. C8.7.1.4.
+    Circolare 617/2009 Eq. C8A.4.4; Circolare 7/2019 Eq. C8.7.1.3 at α(d_C) = α0.
     """
     return alpha_0 * g / (e_s * FC)
 
@@ -160,7 +170,8 @@ def a0_star(alpha_0: float, e_s: float, FC: float, g: float) -> float:
 def displacement_factor(mech: Mechanism) -> float:
     """d*/d_k = Σ P δx² / (δx_k Σ P δx), control point the block's centroid (δx_k = h) [-].
 
-    Circolare 617/2009 Eq. C8A.4.5; Circolare 7/2019 Eq. C8.7.1.5.
+    Circolare 617/2009 Eq. C8A.4.5 (over the weights); Circolare 7/2019 Eq. C8.7.1.4 (over the
+    blocks).
     """
     first, second = _moments(mech)
     return second / (mech.view.control_delta * first)

@@ -109,6 +109,8 @@ class KinematicResult:
             first (rockcli.studies.catalogue.MechanismResult); this result is the governing
             mechanism's. governing: its name. mechanism: the name of the mechanism this
             result describes (None: the block, outside a catalogue).
+        FC_rule: why the check used that FC (given, a knowledge level's, LC1's by
+            Circolare 7/2019 §C8.7.1.2.1.3).
     """
 
     edition: str
@@ -129,6 +131,7 @@ class KinematicResult:
     catalogue: tuple[Any, ...] = ()
     governing: str | None = None
     mechanism: str | None = None
+    FC_rule: str = ""
 
     def verdict(self) -> dict[str, bool | None]:
         """DLS and ULS satisfied? (None: not evaluated).

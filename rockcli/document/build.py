@@ -546,8 +546,8 @@ def mechanisms(model: Model, kin: Mapping[str, Any], block: Any = None) -> dict[
 
 def participating_mass_of(mechs: Mapping[int, Any], kin: Mapping[str, Any]) -> float:
     """M* of the side the check governs (Circolare 617/2009 Eq. C8A.4.2; Circolare 7/2019
-    Eq. C8.7.1.2), by codecheck.kinematic.participating_mass, the function e* comes from; a
-    wall's mechanism: the catalogue's own (each body lumped at its centroid)."""
+    e*·Σ P/g of Eq. C8.7.1.5), by codecheck.kinematic.participating_mass, the function e*
+    comes from; a wall's mechanism: the catalogue's own."""
     from rockcli.codecheck.kinematic import participating_mass
 
     for entry in kin.get("mechanisms", ()):

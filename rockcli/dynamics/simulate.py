@@ -32,6 +32,7 @@ from rockcli.mechanics import (
     Block,
     Restrainer,
     chain_terms,
+    collapse_rotations,
     mirror_symmetric,
     point_moments,
     point_table,
@@ -342,6 +343,14 @@ def plastic_elongation(springs: np.ndarray, j: int) -> float:
     )
 
 
+def side_ratio(block: Block, theta_max: float, theta_min: float) -> float:
+    """max |θ|/θc over the run, each side's extreme over its own collapse rotation
+    (mechanics.collapse_rotations): the damage measure every mechanism shares [-]. The
+    rectangle's θc is α on both sides: max|θ|/α."""
+    c_pos, c_neg = collapse_rotations(block)
+    return float(max(theta_max / c_pos, -theta_min / c_neg, 0.0))
+
+
 def _unpack(
     block, par, engine, rtol, atol, polarity, out_f, out_i, spring_out, springs, hist
 ) -> RockingRun:
@@ -362,7 +371,7 @@ def _unpack(
         polarity=polarity,
         status=status,
         message=_message(status, out_f, out_i, par, block),
-        max_ratio=float(out_f[L.O_MAX_A] / block.alpha),
+        max_ratio=side_ratio(block, out_f[L.O_THETA_MAX], out_f[L.O_THETA_MIN]),
         theta_max=float(out_f[L.O_THETA_MAX]),
         theta_min=float(out_f[L.O_THETA_MIN]),
         max_velocity=float(out_f[L.O_MAX_OMEGA]),

@@ -119,6 +119,13 @@ class BlockSide:
         second = own_2 + sum(w * z**2 for w, z in loads)
         return first, second
 
+    def block_moments(self) -> tuple[float, float]:
+        """(Σ_k P_k δx_k, Σ_k P_k δx_k²) over the rigid blocks [N·m, N·m²] (Circ. 7/2019
+        Eqs. C8.7.1.4–C8.7.1.5 with §C8.7.1.2.1.1): the block and the loads that move with it
+        as one resultant P at its point, δx = Σ P_i z_i / P; e* = 1."""
+        first = sum(w * z for w, z in self.moving)
+        return first, first * first / self.moving_weight
+
     @property
     def moving_weight(self) -> float:
         """Σ P of the weights that move [N]."""

@@ -11,8 +11,9 @@ From the one configuration function (the motion's link states) come, at any rota
   a unit horizontal load multiplier), T = Σ F_open·δx (the thrusts pushing the mechanism open),
   and the restrainers' F·δx; in equilibrium α(θ) = (G − T + Σ F_k δx_k) / H — at θ = 0 the
   Circolare's α0, along θ its capacity curve by finite rotations (§C8A.4.2.3);
-- M* and e* from the δx of the masses at θ = 0 (Circ. 7/2019 §C8.7.1.2.1.3; Circ. 617/2009
-  Eq. C8A.4.2–3), each body lumped at its centroid or spread over its section;
+- M* and e* from the δx of the masses at θ = 0 (Circ. 7/2019 §C8.7.1.2.1.3, Eq. C8.7.1.5,
+  over the blocks; Circ. 617/2009 Eq. C8A.4.2–3, over the weights, each body lumped at its
+  centroid or spread over its section);
 - the control point's displacement d_k(θ) (the bodies' centre of mass) for d*;
 - the equation of motion's M(θ), V(θ), Γ(θ) (rockcli.mechanisms.motion).
 
@@ -155,8 +156,8 @@ class ChainSide:
             t -= th.opens * th.force * dx
         return g, t, h
 
-    def masses_at_rest(self) -> list[tuple[float, float, float]]:
-        """(P, δx, P·δx² spread) of every moving weight at θ = 0: the bodies (δx of the
+    def masses_at_rest(self) -> list[tuple[int, float, float, float]]:
+        """(link, P, δx, P·δx² spread) of every moving weight at θ = 0: the bodies (δx of the
         centroid; the spread adds P·φ′²·var_z, ∫(z − z_G)² dm of a rotation) and the loads
         that move (point masses)."""
         states = self.states(0.0)
@@ -164,25 +165,41 @@ class ChainSide:
         for link, body in self.bodies:
             dx = -states[link].place(body.x, body.z)[2]
             spread = body.weight * states[link].dphi ** 2 * body.var_z
-            out.append((body.weight, dx, spread))
+            out.append((link, body.weight, dx, spread))
         for ld in self.loads:
             if ld.moves:
-                out.append((ld.weight, -states[ld.at.link].place(ld.at.x, ld.at.z)[2], 0.0))
+                at = ld.at
+                out.append((at.link, ld.weight, -states[at.link].place(at.x, at.z)[2], 0.0))
         return out
 
     def first_moments(self, distributed: bool) -> tuple[float, float]:
-        """(Σ P δx, Σ P δx²) per unit virtual rotation [N·m, N·m²] (Circ. 7/2019
-        §C8.7.1.2.1.3): each body lumped at its centroid, or spread over its section."""
+        """(Σ P δx, Σ P δx²) per unit virtual rotation over the weights [N·m, N·m²]
+        (Circ. 617/2009 Eqs. C8A.4.2–C8A.4.3, the sums over the n+m weights P_i): each body
+        lumped at its centroid, or spread over its section."""
         first = second = 0.0
-        for p, dx, spread in self.masses_at_rest():
+        for _, p, dx, spread in self.masses_at_rest():
             first += p * dx
             second += p * dx * dx + (spread if distributed else 0.0)
+        return first, second
+
+    def block_moments(self) -> tuple[float, float]:
+        """(Σ_k P_k δx_k, Σ_k P_k δx_k²) over the rigid blocks [N·m, N·m²] (Circ. 7/2019
+        Eqs. C8.7.1.4–C8.7.1.5 with §C8.7.1.2.1.1): each link's moving weights as one
+        resultant P_k at its point, whose virtual displacement is the P-weighted mean of
+        theirs (δx is affine in the position on a rigid link). One block: e* = 1."""
+        per_link: dict[int, list[float]] = {}
+        for link, p, dx, _ in self.masses_at_rest():
+            w = per_link.setdefault(link, [0.0, 0.0])
+            w[0] += p
+            w[1] += p * dx
+        first = sum(f for _, f in per_link.values())
+        second = sum(f * f / p for p, f in per_link.values() if p > 0.0)
         return first, second
 
     @property
     def moving_weight(self) -> float:
         """Σ P of the weights that move [N]."""
-        return sum(p for p, _, _ in self.masses_at_rest())
+        return sum(p for _, p, _, _ in self.masses_at_rest())
 
     def _centre(self, theta: float) -> tuple[float, float]:
         """(X, dX/dθ) of the bodies' centre of mass (the control point)."""

@@ -9,9 +9,15 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from rockcli.model.ntc import Ntc
+from rockcli.errors import InputError
+from rockcli.model.ntc import KNOWLEDGE_LEVEL_FC, Ntc
 from rockcli.model.schema import Model
 from rockcli.notes import Note
+
+#: The confidence factor of knowledge level LC1 (Circolare 7/2019 §C8.5.4).
+LC1_FC = KNOWLEDGE_LEVEL_FC["LC1"]
+#: The clause that asks for LC1's FC when α ignores the masonry's compressive strength.
+LC1_CLAUSE = "Circolare 7/2019 §C8.7.1.2.1.3"
 
 
 @dataclass(frozen=True)
@@ -47,7 +53,8 @@ class NtcSettings:
     """Everything the kinematic check needs from the model file (defaults applied).
 
     Attributes:
-        edition: "2009" or "2019". FC, q: as in the code. soil, topography: category names.
+        edition: "2009" or "2019". FC, q: as in the code (FC the factor used). FC_rule: why
+        that FC (a note). soil, topography: category names.
         VN [years], CU [-]. building: the element's place in the building ([building]).
         distributed: mass spread over the height for M*, e*. limit: local ultimate
         displacement of the control point [m]. site: (lon, lat) or None. demand: per limit
@@ -57,6 +64,7 @@ class NtcSettings:
 
     edition: str
     FC: float
+    FC_rule: str
     q: float
     soil: str
     topography: str
@@ -70,8 +78,9 @@ class NtcSettings:
     defaults: tuple[Note, ...]
 
 
-def ntc_settings(model: Model) -> NtcSettings:
-    """The [ntc] settings of a model (an absent table means every default)."""
+def ntc_settings(model: Model, edition: str | None = None) -> NtcSettings:
+    """The [ntc] settings of a model (an absent table means every default); ``edition``: the
+    command line's, in place of the model's."""
     ntc = model.ntc if model.ntc is not None else Ntc.model_validate({})
     given = ntc.model_fields_set
     demand = {}
@@ -80,9 +89,12 @@ def ntc_settings(model: Model) -> NtcSettings:
             p = getattr(ntc.demand, ls)
             if p is not None:
                 demand[ls] = (p.ag, p.F0, p.Tc_star)
+    edition = ntc.edition.value if edition is None else edition
+    FC, rule = confidence_factor(ntc, edition, uses_strength(model))
     return NtcSettings(
-        edition=ntc.edition.value,
-        FC=ntc.confidence_factor,
+        edition=edition,
+        FC=FC,
+        FC_rule=rule,
         q=ntc.q,
         soil=ntc.soil.value,
         topography=ntc.topography.value,
@@ -95,6 +107,53 @@ def ntc_settings(model: Model) -> NtcSettings:
         demand=demand,
         defaults=_defaults(ntc, given),
     )
+
+
+def uses_strength(model: Model) -> bool:
+    """True when α0 takes the masonry's compressive strength into account: a wall of storeys
+    or mechanisms with ``[masonry] f_m`` (its hinges set back by the stress block); a block's
+    α0 never does."""
+    from rockcli.model.derive_wall import is_wall
+
+    return is_wall(model) and model.masonry is not None and model.masonry.f_m is not None
+
+
+def confidence_factor(ntc: Ntc, edition: str, strength: bool) -> tuple[float, str]:
+    """(FC, why): the factor the check divides the capacity by, and its rule as a note.
+
+    Circolare 7/2019 §C8.7.1.2.1.3: "nel caso in cui, per la valutazione del moltiplicatore α,
+    non si tenga conto della resistenza a compressione della muratura, il fattore di
+    confidenza da utilizzare sarà comunque quello relativo al livello di conoscenza LC1". So
+    for the 2019 edition without the strength in α0 a knowledge level's lower FC is raised to
+    LC1's (with the note), and a lower FC given as a number is refused: it would be ignored,
+    or silently unconservative. The 2009 edition keeps the FC given (docs/interpretations.md).
+
+    Raises:
+        InputError: an FC below LC1's for the 2019 edition where α0 ignores the strength.
+    """
+    FC = ntc.confidence_factor
+    if ntc.FC is not None:
+        source = Note("fc_given", "FC = {FC:g} as given", FC=FC)
+    elif ntc.knowledge_level is not None:
+        source = Note("fc_level", "FC = {FC:g} of knowledge level {level}", FC=FC,
+                      level=ntc.knowledge_level.value)  # fmt: skip
+    else:
+        source = Note("fc_default", "FC = {FC:g} (LC1), by default", FC=FC)
+    if edition != "2019" or strength or FC >= LC1_FC:
+        return FC, source
+    if ntc.FC is not None:
+        raise InputError(
+            f"below the FC of LC1 ({LC1_FC:g}), which {LC1_CLAUSE} requires when α0 does not "
+            "use the masonry's compressive strength",
+            where="ntc.FC",
+            value=FC,
+            allowed=f"FC = {LC1_FC:g} (or knowledge_level = 'LC1'); a lower FC needs [masonry] "
+            "f_m on a wall of storeys, whose hinges then use it",
+        )
+    return LC1_FC, Note(
+        "fc_lc1", "FC = {FC:g} of LC1 in place of {level}'s {given:g}: α0 does not use the "
+        "masonry's compressive strength ({clause})", FC=LC1_FC, level=str(ntc.knowledge_level),
+        given=FC, clause=LC1_CLAUSE)  # fmt: skip
 
 
 def _defaults(ntc: Ntc, given: set[str]) -> tuple[Note, ...]:

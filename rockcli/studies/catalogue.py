@@ -108,7 +108,12 @@ def mechanism_of(wall: Wall, spec: MechanismSpec, side: int, settings: NtcSettin
             allowed="a strength at which the weight above each hinge needs a stress block "
             "thinner than the wall (a = N/(f_m·width))",
         ) from None
-    return Mechanism(side=side, distributed=settings.distributed, geometry=geometry)
+    return Mechanism(
+        side=side,
+        distributed=settings.distributed,
+        geometry=geometry,
+        per_block=settings.edition == "2019",
+    )
 
 
 def resolved(wall: Wall, spec: MechanismSpec, sides: tuple[int, ...], settings: NtcSettings):

@@ -43,7 +43,12 @@ def mechanism(block: Block, settings: NtcSettings, side: int) -> Mechanism:
     """The mechanism on one side: the block with its loads and thrusts (the model's own)."""
     if block.mass is None:
         block = replace(block, mass=UNIT_MASS)
-    return Mechanism(block=block, side=side, distributed=settings.distributed)
+    return Mechanism(
+        block=block,
+        side=side,
+        distributed=settings.distributed,
+        per_block=settings.edition == "2019",
+    )
 
 
 def governing_capacity(block: Block, settings: NtcSettings) -> Capacity:
@@ -235,6 +240,8 @@ def analyse_capacity(
 ) -> KinematicResult:
     """The checks of the settings' edition on one mechanism's capacity at its position."""
     notes = [*pos.notes, *extra_notes]
+    if getattr(settings.FC_rule, "key", None) == "fc_lc1":
+        notes.append(settings.FC_rule)
     if settings.defaults:
         notes.append(Note("defaults", "defaults (not in the model's [ntc]): {settings}",
                           settings=Items(settings.defaults)))  # fmt: skip
@@ -281,6 +288,7 @@ def analyse_capacity(
         notes=tuple(notes),
         alpha0_by_side=alpha0_by_side,
         restrainer_actions=actions,
+        FC_rule=str(settings.FC_rule),
     )
 
 
@@ -395,13 +403,11 @@ def check_settings(model: Model, edition: str | None = None) -> NtcSettings:
     """The model's code-check settings, with the edition of the command line when given."""
     from rockcli.model.derive_ntc import ntc_settings
 
-    settings = ntc_settings(model)
+    settings = ntc_settings(model, edition)
     if edition is None:
         return settings
     return replace(
-        settings,
-        edition=edition,
-        defaults=tuple(d for d in settings.defaults if not d.startswith("edition")),
+        settings, defaults=tuple(d for d in settings.defaults if not d.startswith("edition"))
     )
 
 

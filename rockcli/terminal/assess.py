@@ -15,6 +15,7 @@ from rockcli.dynamics.result import Assessment, RockingRun
 from rockcli.dynamics.tolerance import sensitive
 from rockcli.mechanics import (
     Block,
+    collapse_rotations,
     linear_global_stiffness,
     restrainer_coefficient,
     uplift_accelerations,
@@ -253,6 +254,7 @@ def model_document(name: str, kind: str, block: Block, e_rule: str) -> dict[str,
             zip(("1", "-1"), uplift_accelerations(block), strict=True)
         ),
         "e_by_side": {"1": block.restitution(1), "-1": block.restitution(-1)},
+        "collapse_rotation_by_side": dict(zip(("1", "-1"), collapse_rotations(block), strict=True)),
         "chain": chain_document(block),
         "loads": [
             {
@@ -362,7 +364,8 @@ def assessment_document(
         "effectiveness": effectiveness(block),
         "verdict": str(result.verdict),
         "max_ratio": result.max_ratio,
-        # max_ratio of an overturned run is the overturn angle over α, not an amplitude
+        # max_ratio: max |θ|/θc with θc the collapse rotation of the side of θ
+        # (model.collapse_rotation_by_side); of an overturned run, the overturn angle over it
         "max_ratio_overturned": any(r.overturned for r in result.runs),
         "sensitive": sensitive(result.runs),
         "warnings": [

@@ -109,6 +109,7 @@ def mechanism_document(
         "e_star": result.e_star,
         "a0_star": result.a0_star,
         "FC": result.FC,
+        "FC_rule": result.FC_rule,
         "d0_star": result.d0_star,
         **{k: _number(v) for k, v in result.quantities.items()},
         "linear_curve": result.linear_curve,

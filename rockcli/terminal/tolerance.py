@@ -51,7 +51,7 @@ def tol(x: float) -> str:
 
 
 def ratio_text(run: Mapping[str, Any], impacts: str) -> str:
-    """``0.1641 (104 impacts)``, or ``overturns`` for an overturned run."""
+    """``0.2727 (116 impacts)``, or ``overturns`` for an overturned run."""
     if run["overturned"]:
         return "overturns"
     return f"{run['max_ratio']:.4f} ({run['impacts']}{impacts})"

@@ -72,7 +72,13 @@ def test_the_floor_curve_is_the_checks_floor_spectrum(wall) -> None:
     for state, xi in (("SLD", 5.0), ("SLV", 8.0), ("SLC", 10.0)):
         spectrum = demands[state].spectrum
         T, values = floor_curve(spectrum, state, pos, "2019", np.array(PERIODS))
-        expected = [clause_floor_spectrum(t, spectrum.Se(T1), T1, 1.2 * 0.5, xi) for t in PERIODS]
+        # Eq. C7.2.5: not below the ground spectrum S_e(T, ξ) for T > T1.
+        expected = [
+            max(clause_floor_spectrum(t, spectrum.Se(T1), T1, 1.2 * 0.5, xi), spectrum.Se(t, xi))
+            if t > T1
+            else clause_floor_spectrum(t, spectrum.Se(T1), T1, 1.2 * 0.5, xi)
+            for t in PERIODS
+        ]
         assert list(T) == list(PERIODS)
         assert values == pytest.approx(expected, rel=1e-12), state
 
