@@ -63,6 +63,9 @@ class Restrainer:
         overstrength: a steel bar's γ_ov·A·f_y, the force its anchorage must exceed [N]
             (0: not a bar of known steel; codecheck.tie).
         ductility_rule: where ε_u comes from (for reports; "" when not a bar).
+        slack_side: the side on which a tension-only member would push and goes slack in the
+            kinematic check (−1: a tie-rod acting both ways, which can only pull the wall
+            back from outward; 0: none). The time history keeps its spring on both sides.
     """
 
     name: str
@@ -87,6 +90,7 @@ class Restrainer:
     elongation_capacity: float = math.inf
     overstrength: float = 0.0
     ductility_rule: str = ""
+    slack_side: int = 0
 
     def side(self, s: int) -> tuple[float, float, float]:
         """(K [N/m], r [m], φ [rad]) for pivot side s = ±1."""

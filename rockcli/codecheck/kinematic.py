@@ -194,6 +194,13 @@ def rotation_at(mech: Mechanism, d_k: float) -> float:
 FORCE = "force"
 
 
+def code_stiffness(sp: Restrainer, s: int) -> float:
+    """K of restrainer ``sp`` on side s in the kinematic check [N/m]: its stiffness there, 0
+    on the side where a tension-only member would push (a tie-rod goes slack: it adds
+    nothing to α0 or the curve of that side; mechanics.Restrainer.slack_side)."""
+    return 0.0 if s == sp.slack_side else sp.side(s)[0]
+
+
 def force_at(
     sp: Restrainer, s: int, theta: float, place: Polar | ChainPoint | None = None
 ) -> float:
@@ -203,9 +210,10 @@ def force_at(
     Circolare 7/2019 §C8.7.1.1: a tie-rod is an external force in the virtual work of α0).
     "spring": P0 + K·u(θ) (pretension plus the spring, mechanics.spring_elongation), capped at
     :func:`force_cap`. 0 on a side where the member does not work (K = 0). ``place``: its
-    point on a catalogue mechanism (default: its r, φ about the block's pivot of side s).
+    point on a catalogue mechanism (default: its r, φ about the block's pivot of side s). A
+    tie-rod on the side where it would push: 0 (:func:`code_stiffness`).
     """
-    k = sp.side(s)[0]
+    k = code_stiffness(sp, s)
     if k == 0.0:
         return 0.0
     if sp.code_action == FORCE:
@@ -226,14 +234,28 @@ def force_cap(sp: Restrainer, s: int) -> float:
 def loss_elongation(sp: Restrainer, s: int) -> float:
     """Elongation from rest at which the member is lost in the check on side s [m] (inf: never).
 
-    Its ``fails_at``; for a spring also the elongation at which its elastic force P0 + K·u
-    reaches the anchor's ``rupture_force`` before it yields (the anchor gives way). A force
-    is constant, at most the anchor's capacity: only ``fails_at`` ends it.
+    Its ``fails_at``; a steel bar's design elongation ε_u·L/γ_ε from its unstressed length,
+    the pretension's P0/K included (the limit of its ductility check, codecheck.tie): a force
+    or a spring, the bar cannot follow the mechanism further, so the Circolare's
+    "rotture di elementi, quali catene" (§C8.7.1.2.1.6) happen where its own check says; for
+    a spring also the elongation at which its elastic force P0 + K·u reaches the anchor's
+    ``rupture_force`` before it yields (the anchor gives way). A force is constant, at most
+    the anchor's capacity.
     """
-    k = sp.side(s)[0]
+    k = code_stiffness(sp, s)
+    limit = min(sp.fails_at, ductile_elongation(sp, k))
     if sp.code_action == FORCE or k == 0.0 or sp.rupture_force > sp.yield_force(s):
-        return sp.fails_at
-    return min(sp.fails_at, max(0.0, (sp.rupture_force - sp.pretension) / k))
+        return limit
+    return min(limit, max(0.0, (sp.rupture_force - sp.pretension) / k))
+
+
+def ductile_elongation(sp: Restrainer, k: float) -> float:
+    """The spring elongation from rest at which a bar reaches ε_u·L/γ_ε [m] (inf: not a bar of
+    known steel): its capacity less the pretension's P0/K."""
+    if not math.isfinite(sp.elongation_capacity):
+        return math.inf
+    preload = sp.pretension / k if k > 0.0 else 0.0
+    return max(0.0, sp.elongation_capacity - preload)
 
 
 def loss_rotation(sp: Restrainer, s: int, place: Polar | ChainPoint | None = None) -> float:
@@ -242,7 +264,8 @@ def loss_rotation(sp: Restrainer, s: int, place: Polar | ChainPoint | None = Non
 
 
 def can_be_lost(sp: Restrainer, s: int) -> bool:
-    """True when the member can be lost on side s (it is left out of the sure curve)."""
+    """True when the member can be lost on side s (it is left out of the curve of the members
+    sure to last, the table's "α sure")."""
     return math.isfinite(loss_elongation(sp, s))
 
 
@@ -306,13 +329,18 @@ def _bisect(f, lo: float, hi: float) -> float:
 
 
 def zero_rotation(mech: Mechanism) -> float | None:
-    """θ0 where the sure capacity curve first reaches α = 0, or None (positive stiffness).
+    """θ0 where the capacity curve first reaches α = 0, or None (positive stiffness).
 
-    The sure curve leaves out restrainers that can fail (spec/ntc.md, d0*).
+    The curve of "solamente le azioni di cui è verificata la presenza fino al collasso"
+    (Circolare 7/2019 §C8.7.1.2.1.6; Circolare 617/2009 §C8A.4.2.3): each restrainer until it
+    is lost (:func:`loss_rotation`), where the curve drops. A member lost before the curve
+    vanishes is absent at collapse and d0 is the zero of the curve without it; one that holds
+    until the curve without it is already negative is present until collapse, which happens
+    when it is lost (the curve drops through zero there). docs/interpretations.md.
     """
 
     def f(t: float) -> float:
-        return load_multiplier(mech, t, sure_only=True)
+        return load_multiplier(mech, t)
 
     prev = 0.0
     limit = mech.view.limit
@@ -333,7 +361,8 @@ def failure_rotations(mech: Mechanism) -> list[tuple[str, float, float]]:
     for i, sp in enumerate(mech.restrainers):
         place = mech.placement(i)
         theta_f = loss_rotation(sp, mech.side, place)
-        if sp.side(mech.side)[0] == 0.0 or not math.isfinite(theta_f) or theta_f >= THETA_MAX:
+        acts = code_stiffness(sp, mech.side) > 0.0
+        if not acts or not math.isfinite(theta_f) or theta_f >= THETA_MAX:
             continue
         moment = restrainer_moment(sp, mech.side, theta_f, place)
         before = load_multiplier(mech, theta_f, intact=True)
@@ -371,7 +400,7 @@ class Capacity:
         if self.linear and self.d0_star is not None:
             return self.a0_star * (1.0 - d_star / self.d0_star)
         theta = rotation_at(self.mech, d_star / self.factor)
-        alpha = load_multiplier(self.mech, theta, sure_only=True)
+        alpha = load_multiplier(self.mech, theta)
         return alpha * self.mech.g / (self.e_star * self.FC)
 
     def d_star_at(self, theta: float) -> float:
@@ -380,14 +409,11 @@ class Capacity:
 
 
 def constant_forces_only(mech: Mechanism) -> bool:
-    """True when the code's straight line holds: no restrainer on the sure curve and none
-    giving a force at rest (a force or a pretension that can be lost would start the line at
-    an a0* the sure curve does not have)."""
+    """True when the code's straight line holds: no restrainer acts on the side checked (a
+    spring's force grows with the rotation, and any member ends where it is lost: the curve
+    is then α(θ) itself)."""
     s = mech.side
-    return not any(
-        sp.side(s)[0] and (not can_be_lost(sp, s) or force_at(sp, s, 0.0, mech.placement(i)) > 0.0)
-        for i, sp in enumerate(mech.restrainers)
-    )
+    return not any(code_stiffness(sp, s) for sp in mech.restrainers)
 
 
 def capacity(mech: Mechanism, FC: float) -> Capacity:
@@ -395,7 +421,8 @@ def capacity(mech: Mechanism, FC: float) -> Capacity:
 
     The straight line a0*(1 − d*/d0*) is the Circolare's curve under constant forces
     (§C8A.4.2.3: "può essere assunta lineare"); with restrainers the curve α(θ) itself
-    (spec/ntc.md). d0* is the zero of the sure curve (restrainers that can fail left out).
+    (spec/ntc.md). d0* is the zero of the curve with each restrainer until it is lost
+    (:func:`zero_rotation`).
     """
     a_0 = alpha0(mech)
     e_s = e_star(mech)

@@ -16,6 +16,7 @@ import math
 from rockcli.codecheck.kinematic import (
     FORCE,
     Capacity,
+    code_stiffness,
     force_at,
     loss_rotation,
     rotation_at,
@@ -61,14 +62,15 @@ def restrainer_action(
     s = cap.mech.side
     place = None if index is None else cap.mech.placement(index)
     strength = sp.strength if math.isfinite(sp.strength) else None
-    acts = sp.side(s)[0] > 0.0
+    acts = code_stiffness(sp, s) > 0.0
     force = force_at(sp, s, 0.0, place)
+    theta_lost = loss_rotation(sp, s, place) if acts else math.inf
     demand: float | None
     if sp.code_action == FORCE:
         demand = sp.code_force
     else:
         demand = None if theta is None else force_at(sp, s, theta, place)
-    lost = acts and theta is not None and theta > loss_rotation(sp, s, place)
+    lost = acts and theta is not None and theta > theta_lost
     use = None if strength is None or demand is None else demand / strength
     passed = False if lost else (None if use is None or not acts else use <= 1.0)
     return RestrainerAction(
@@ -82,7 +84,17 @@ def restrainer_action(
         lost=lost,
         passed=passed,
         clause=member_clause(sp),
+        lost_at_d_star=lost_at(cap, theta_lost),
+        slack=sp.slack_side == s,
     )
+
+
+def lost_at(cap: Capacity, theta: float) -> float | None:
+    """The spectral displacement d* [m] at which a member lost at rotation θ is lost (None:
+    never within the mechanism's range)."""
+    if not math.isfinite(theta) or theta >= cap.mech.view.limit:
+        return None
+    return cap.d_star_at(theta)
 
 
 #: The basis of the check of a member known only by its failure elongation (the paper's vault).

@@ -188,6 +188,9 @@ class RestrainerAction:
         lost: True when the member is lost (rupture) before the rotation of ``demand_at``.
         passed: demand ≤ strength and not lost (None: strength not known and not lost).
         clause: the clause of its strength.
+        lost_at_d_star: the spectral displacement d* at which the member is lost in the
+            check [m] (None: never): its fails_at, a bar's ε_u·L/γ_ε, an anchor giving way.
+        slack: True on the side where a tie-rod would push: it adds nothing there.
     """
 
     name: str
@@ -200,3 +203,5 @@ class RestrainerAction:
     lost: bool
     passed: bool | None
     clause: str
+    lost_at_d_star: float | None = None
+    slack: bool = False

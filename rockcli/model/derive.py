@@ -327,8 +327,18 @@ def to_restrainer(model: Model, index: int) -> Restrainer:
         anchor_capacity=math.inf if table.anchor_capacity is None else table.anchor_capacity,
         code_action=table.effective_code_action.value,
         code_force=code_force,
+        slack_side=slack_side(table),
         **bar_verification(table),
     )
+
+
+def slack_side(table: RestrainerTable) -> int:
+    """The side on which a member can only push (rockcli.mechanics.Restrainer.slack_side):
+    −1 for a tie-rod acting both ways (a bar anchored in the building pulls the wall back when
+    it turns outward and goes slack when it turns inward), else 0."""
+    if table.kind is RestrainerKind.TIE_ROD and (table.acts or Acts.BOTH) is Acts.BOTH:
+        return NEGATIVE
+    return 0
 
 
 def bar_verification(table: RestrainerTable) -> dict[str, Any]:

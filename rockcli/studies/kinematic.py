@@ -255,6 +255,17 @@ def analyse_capacity(
     )  # fmt: skip
     if cap.d0_star is None:
         notes.append(Note("no_d0", "positive global stiffness: α never vanishes, no d0*"))
+    notes += [
+        Note(
+            "tie_slack",
+            "{name}: a tie-rod only pulls, so it adds nothing when the mechanism "
+            "opens inward (side −1: α0 and the curve without it); the time history keeps its "
+            "spring on both sides",
+            name=sp.name,
+        )  # fmt: skip
+        for sp in cap.mech.restrainers
+        if sp.slack_side
+    ]
     if settings.edition == "2009":
         values, checks = rules2009.check_2009(
             cap, dem["SLD"], dem["SLV"], pos, settings.q, _limit(cap, settings)

@@ -136,6 +136,8 @@ def action_document(a: RestrainerAction) -> dict[str, Any]:
         "lost": a.lost,
         "passed": a.passed,
         "clause": a.clause,
+        "lost_at_d_star": a.lost_at_d_star,
+        "slack": a.slack,
     }
 
 
@@ -185,6 +187,7 @@ ACTION_COLUMNS = (
     Column("demand_kN", "demand", "kN", "{:.4g}"),
     Column("strength_kN", "strength", "kN", "{:.4g}"),
     Column("utilisation", "use", "", "{:.3f}"),
+    Column("lost_at_d_star", "lost at d*", "m", "{:.4g}"),
     Column("passed", "ok"),
 )
 #: N → kN for the terminal.

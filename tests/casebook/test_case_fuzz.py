@@ -65,7 +65,9 @@ def mutate(data: dict[str, Any], path: tuple[Any, ...], how: int, value: Any) ->
         parent = parent[key]
     key = path[-1]
     if how == 0 or isinstance(parent, list):
-        parent[key] = value
+        # A copy: the same table or array put twice could end up inside itself (a later
+        # mutation's path runs through it), which no TOML file can say.
+        parent[key] = copy.deepcopy(value)
     elif how == 1:
         del parent[key]
     else:

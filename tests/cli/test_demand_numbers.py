@@ -16,6 +16,8 @@ from rockcli.cli.main import cli
 from tests.cli.conftest import ROOT
 
 ALTAR = ROOT / "examples" / "altar.toml"
+#: The altar with LC1's FC, which the 2019 rules ask of a block (§C8.7.1.2.1.3).
+ALTAR_2019 = ROOT / "tests" / "data" / "altar-2019.toml"
 GRID = ROOT.parent / "shared" / "ntc" / "AllegatoB.txt"
 #: The keys of a code spectrum's demand (NTC 2018 §3.2.3.2.1) and of a record's.
 SPECTRUM_KEYS = {"TR", "ag", "F0", "Tc_star", "SS", "ST", "S", "TB", "TC", "TD", "source"}
@@ -72,7 +74,7 @@ def test_site_on_the_hazard_grid_gives_the_return_periods() -> None:
             "(rock does not ship it; see Development in the README)"
         )
     doc = kinematic_json(
-        str(ALTAR), "--site", "10.807,44.918", "--hazard-grid", str(GRID), "--edition", "2019"
+        str(ALTAR_2019), "--site", "10.807,44.918", "--hazard-grid", str(GRID), "--edition", "2019"
     )
     # The altar: VN = 50 years, CU = 1.0, so VR = 50 years; TR = −VR/ln(1 − PVR) (NTC 2018
     # §3.2.1): 50.3, 474.6 and 974.8 years.

@@ -115,9 +115,16 @@ def test_legacy_block_lists_itself() -> None:
 
 def test_assess_rocks_the_governing_rigid_mechanism() -> None:
     # Issue 22, a first part: a mechanism that is one rigid body rocks as a block of its own
-    # shape. The façade's governing mechanism (its own [ntc.demand]) is the gable, which
-    # rocks on the floor motion at its hinge (Z + 7.5 m).
+    # shape. The façade's governing mechanism (its own [ntc.demand]) is the overturning of
+    # storey 2, which rocks on the floor motion at its hinge (Z + 4 m); the gable at 7.5 m.
     code, out, err = run("assess", str(FACADE), "--record", str(RICKER), "--format", "json")
+    assert code == 0, err
+    doc = json.loads(out)
+    assert doc["mechanism"] == {"name": "overturning, storey 2", "type": "overturning"}
+    assert doc["record"]["input"] == "floor" and doc["record"]["floor"]["Z"] == 4.0
+    code, out, err = run(
+        "assess", str(FACADE), "--record", str(RICKER), "--mechanism", "gable", "--format", "json"
+    )
     assert code == 0, err
     doc = json.loads(out)
     assert doc["mechanism"] == {"name": "gable", "type": "gable"}

@@ -31,6 +31,8 @@ ACTION_KEYS = {
     "lost",
     "passed",
     "clause",
+    "lost_at_d_star",
+    "slack",
 }
 #: The wall: 0.6 m × 8 m, 300 kN (b = 0.3 m, h_G = 4 m); a tie-rod at h_T = 7.5 m.
 B, H, W, H_T = 0.3, 4.0, 300e3, 7.5
@@ -40,7 +42,7 @@ REL = 1e-12
 DEMAND = """
 [ntc]
 edition = "{edition}"
-FC = 1.0
+FC = 1.35
 [ntc.demand.SLD]
 ag = 0.05
 F0 = 2.5

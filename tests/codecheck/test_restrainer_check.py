@@ -158,9 +158,13 @@ def test_slv_displacement_demand_2019_at_the_ground() -> None:
 
 
 def test_lost_force_makes_the_curve_not_the_straight_line() -> None:
-    # A force that can be lost starts α0 above the sure curve: the checks must read α(θ) of
-    # the sure curve, not a0*(1 − d*/d0*) from an a0* it does not have.
+    # A force that can be lost holds until it is lost (Circolare 7/2019 §C8.7.1.2.1.6: the
+    # curve of the actions present until collapse): the checks read α(θ) with it until then,
+    # not a0*(1 − d*/d0*). At rest: α0 = (W·b + F·z_T)/(W·h), e* = FC = 1.
     lost = cap_of(member("force", 5e4, fails_at=0.01))
     assert not lost.linear
-    assert lost.a_star(0.0) == pytest.approx(G * B / H, rel=REL)  # gravity alone, e* = FC = 1
-    assert cap_of(member("spring", 5e4, fails_at=0.01)).linear  # no force at rest
+    assert lost.a_star(0.0) == pytest.approx(G * (W * B + 5e4 * Z_TIE) / (W * H), rel=REL)
+    # Past its loss (u = 0.01 m at the top, θ ≈ 0.01/7.5) only gravity: tan(α − θ) at θ = 0.1.
+    d = lost.d_star_at(0.1)
+    assert lost.a_star(d) == pytest.approx(G * math.tan(math.atan2(B, H) - 0.1), rel=1e-9)
+    assert not cap_of(member("spring", 5e4, fails_at=0.01)).linear  # a spring's force grows

@@ -74,7 +74,7 @@ def test_the_summary_lists_every_mechanism_as_compare_does(wall_page: str) -> No
 
 
 def test_every_other_mechanism_has_its_section(wall_page: str) -> None:
-    code, out, _ = run("kinematic", str(WALL), "--format", "json")
+    code, out, _ = run("kinematic", str(WALL), "--record", str(RICKER), "--format", "json")
     names = [m["name"] for m in json.loads(out)["mechanisms"]]
     sections = re.findall(r'<section id="(mechanism-\d+)"', wall_page)
     assert len(sections) == len(names) - 1
@@ -105,13 +105,16 @@ def test_several_walls_make_one_report(tmp_path: Path) -> None:
 
 
 def test_the_retrofit_in_the_conclusions_is_rock_retrofits(tmp_path: Path) -> None:
-    # The façade under the one-sine pulse fails with its Ø20 rod (docs/report.md): the report
-    # names the diameter `rock retrofit` chooses for the same model and record.
-    code, out, err = run("retrofit", str(FACADE), "--record", str(SINE), "--format", "json")
+    # The façade under the one-sine pulse at 0.6 fails with its Ø20 rod (docs/report.md): the
+    # report names the diameter `rock retrofit` chooses for the same model and record. (At
+    # full scale no rod in the range passes the 2019 code check since a bar breaks at its
+    # ε_u·L/γ_ε: the curve drops there and d_SLV is 0.4 of it.)
+    record = ("--record", str(SINE), "--scale", "0.6")
+    code, out, err = run("retrofit", str(FACADE), *record, "--format", "json")
     assert code == 0, err
     chosen = json.loads(out)["chosen"]
     assert chosen is not None
-    page = report(tmp_path, str(FACADE), "--record", str(SINE), "--retrofit")
+    page = report(tmp_path, str(FACADE), *record, "--retrofit")
     found = re.search(r"Intervention \(rock retrofit[^<]*?is Ø(\d+) mm", page)
     assert found is not None and float(found.group(1)) == chosen["diameter_mm"]
     assert "The rod in the model is Ø20 mm." in page  # facade.toml's tie-rod
@@ -160,8 +163,9 @@ def test_retrofit_is_refused_with_a_suite(tmp_path: Path) -> None:
 
 def test_each_mechanisms_section_shows_its_own_activation_multiplier(wall_page: str) -> None:
     # The virtual-work table of every mechanism's section is the catalogue's own mechanism
-    # (a vertical flexure's two blocks, not the block it rocks as): its α0, the smaller over
-    # the sides it lists, is the summary's.
+    # (a vertical flexure's two blocks, not the block it rocks as): the summary's α0 is that
+    # of the side checked, one of the sides it lists (the side with the smaller d0*, which
+    # with a tie-rod slack inward need not be the smaller α0).
     summary = {r[0]: float(r[1]) for r in summary_rows(wall_page)}
     sections = re.findall(r'<section id="mechanism-\d+".*?</section>', wall_page, flags=re.S)
     assert sections
@@ -170,8 +174,8 @@ def test_each_mechanisms_section_shows_its_own_activation_multiplier(wall_page: 
         table = re.search(r"<caption>[^<]*α0 by virtual work.*?</table>", section, flags=re.S)
         assert table is not None, name
         rows = re.findall(r"<tr>(.*?)</tr>", table.group(0), flags=re.S)[1:]
-        alpha0 = min(float(re.findall(r"<td[^>]*>(.*?)</td>", r)[-1]) for r in rows)
-        assert alpha0 == pytest.approx(summary[name], rel=5e-4), name
+        by_side = [float(re.findall(r"<td[^>]*>(.*?)</td>", r)[-1]) for r in rows]
+        assert any(a == pytest.approx(summary[name], rel=5e-4) for a in by_side), name
 
 
 def test_the_conclusions_name_another_mechanism_that_overturns(tmp_path: Path) -> None:
