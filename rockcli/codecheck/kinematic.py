@@ -16,9 +16,10 @@ Pure and silent: only :mod:`math` and :mod:`rockcli.mechanics`.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from functools import cached_property
 
+from rockcli.codecheck.free import branch_acceleration, branch_end
 from rockcli.mechanics import Block, Restrainer
 from rockcli.mechanisms.block import BlockSide, Polar, polar_of
 from rockcli.mechanisms.side import ChainPoint, ChainSide
@@ -394,9 +395,30 @@ class Capacity:
     factor: float
     d0_star: float | None
     linear: bool
+    T0: float | None = None
+    d_y: float | None = None
+
+    @property
+    def free(self) -> bool:
+        """True for an element free to vibrate: an elastic branch of period T0 before it
+        activates (Circolare 7/2019 §C8.7.1.2.1.3, Eq. C8.7.1.6)."""
+        return self.T0 is not None
+
+    @property
+    def a_y(self) -> float | None:
+        """a_y [m/s²]: the end of the elastic branch, on the rigid curve (None: rigid)."""
+        return None if self.d_y is None else self.rigid_a_star(self.d_y)
 
     def a_star(self, d_star: float) -> float:
-        """Spectral acceleration a*(d*) on the capacity curve [m/s²] (Eq. C8A.4.4 on α(d))."""
+        """Spectral acceleration a*(d*) on the capacity curve [m/s²]: the elastic branch
+        4π²d/T0² up to d_y for an element free to vibrate (Circolare 7/2019 Eq. C8.7.1.6),
+        then the rigid curve (:meth:`rigid_a_star`)."""
+        if self.T0 is not None and self.d_y is not None and d_star < self.d_y:
+            return branch_acceleration(d_star, self.T0)
+        return self.rigid_a_star(d_star)
+
+    def rigid_a_star(self, d_star: float) -> float:
+        """a*(d*) of the mechanism rigid until activation [m/s²] (Eq. C8A.4.4 on α(d))."""
         if self.linear and self.d0_star is not None:
             return self.a0_star * (1.0 - d_star / self.d0_star)
         theta = rotation_at(self.mech, d_star / self.factor)
@@ -416,13 +438,14 @@ def constant_forces_only(mech: Mechanism) -> bool:
     return not any(code_stiffness(sp, s) for sp in mech.restrainers)
 
 
-def capacity(mech: Mechanism, FC: float) -> Capacity:
+def capacity(mech: Mechanism, FC: float, T0: float | None = None) -> Capacity:
     """α0, e*, a0*, d*/d_k and d0* of a mechanism, and which curve the code uses.
 
     The straight line a0*(1 − d*/d0*) is the Circolare's curve under constant forces
     (§C8A.4.2.3: "può essere assunta lineare"); with restrainers the curve α(θ) itself
     (spec/ntc.md). d0* is the zero of the curve with each restrainer until it is lost
-    (:func:`zero_rotation`).
+    (:func:`zero_rotation`). ``T0``: the period of an element free to vibrate (Circolare
+    7/2019 Eq. C8.7.1.7): the curve starts with the elastic branch to (a_y, d_y).
     """
     a_0 = alpha0(mech)
     e_s = e_star(mech)
@@ -430,7 +453,7 @@ def capacity(mech: Mechanism, FC: float) -> Capacity:
     factor = displacement_factor(mech)
     d0 = None if theta0 is None else control_displacement(mech, theta0) * factor
     linear = constant_forces_only(mech)
-    return Capacity(
+    rigid = Capacity(
         mech=mech,
         alpha0=a_0,
         e_star=e_s,
@@ -440,6 +463,25 @@ def capacity(mech: Mechanism, FC: float) -> Capacity:
         d0_star=d0,
         linear=linear,
     )
+    if T0 is None:
+        return rigid
+    d_end = d0 if d0 is not None else rigid.d_star_at(curve_end(mech))
+    return replace(rigid, T0=T0, d_y=branch_end(rigid.rigid_a_star, T0, d_end))
+
+
+def curve_end(mech: Mechanism) -> float:
+    """The rotation the curve is drawn to when α never vanishes [rad]."""
+    return min(CURVE_END, LOCK_SHARE * mech.view.limit)
+
+
+def elastic_rows(cap: Capacity) -> list[dict[str, float]]:
+    """The elastic branch of an element free to vibrate as the curve's first row, at rest
+    (θ = 0, d_k = 0: it has not rocked yet; α = a·e*·FC/g); none for a rigid one. The
+    branch's end (d_y, a_y) is the rigid curve's first row."""
+    if cap.d_y is None:
+        return []
+    return [{"theta": 0.0, "d_k": 0.0, "d_star": 0.0, "alpha": 0.0, "alpha_sure": 0.0,
+             "a_star": 0.0}]  # fmt: skip
 
 
 def curve_points(cap: Capacity, n: int = 11) -> list[dict[str, float]]:
@@ -449,14 +491,11 @@ def curve_points(cap: Capacity, n: int = 11) -> list[dict[str, float]]:
     halves its growth limit, π/4, when there is no d0*).
     """
     mech = cap.mech
-    d_end = (
-        cap.d0_star
-        if cap.d0_star is not None
-        else cap.d_star_at(min(CURVE_END, LOCK_SHARE * mech.view.limit))
-    )
-    rows = []
+    d_end = cap.d0_star if cap.d0_star is not None else cap.d_star_at(curve_end(mech))
+    rows = elastic_rows(cap)
+    d_start = 0.0 if cap.d_y is None else cap.d_y
     for k in range(n):
-        d_star = d_end * k / (n - 1)
+        d_star = d_start + (d_end - d_start) * k / (n - 1)
         theta = rotation_at(mech, d_star / cap.factor)
         rows.append(
             {

@@ -157,11 +157,20 @@ def _period(
     return a, (share_period * math.sqrt(d / a) if a > 0 else None)
 
 
+#: The damping of the SLD check of an element free to vibrate [%] (§C8.7.1.2.1.5: "per uno
+#: smorzamento ξ = 5%").
+FREE_DAMPING = 5.0
+CLAUSE_FREE = "§C8.7.1.2.1.5"
+
+
 def sld_check(cap: Capacity, sld: LimitStateDemand, pos: Position, g: float) -> Check:
     """ag,SLD: the ag at which the acceleration demand reaches a0* (rigid until activation).
 
     Ground: ag·S = a0*/g; at height: a_Z = a0*/g (S_eZ at T = 0 is a_Z). §C8.7.1.2.1 (C8.7.1.8).
+    An element free to vibrate: :func:`free_sld_check`.
     """
+    if cap.free:
+        return free_sld_check(cap, sld, pos, g)
     if pos.at_height:
         ag = capacity_ag(sld, lambda sp: floor_acceleration(sp, pos) * g, cap.a0_star)
         where, note = Location.HEIGHT, "capacity: a_Z(ag) = a0*, floor spectrum at T = 0"
@@ -169,6 +178,36 @@ def sld_check(cap: Capacity, sld: LimitStateDemand, pos: Position, g: float) -> 
         ag = capacity_ag(sld, lambda sp: sp.pga_ground * g, cap.a0_star)
         where, note = Location.GROUND, "capacity: ag·S(ag) = a0*"
     return Check("SLD", Method.LINEAR, where, sld.ag, ag, "g", CLAUSE, note + bound_note(ag))
+
+
+def free_sld_check(cap: Capacity, sld: LimitStateDemand, pos: Position, g: float) -> Check:
+    """ag,SLD of an element free to vibrate: the ag at which the 5 %-damped spectrum at its
+    period T0 reaches a_y, the end of its elastic branch (Circolare 7/2019 §C8.7.1.2.1.5,
+    Eq. C8.7.1.9: S_eZ,SLD(T0) = a_y/FC ≃ α0·g/(e*·FC); a_y is read on the curve of
+    Eq. C8.7.1.3, which carries FC once). At height the floor spectrum not below the ground's
+    for T0 > T1 (Eq. C7.2.5); on the ground S_e(T0).
+    """
+    assert cap.T0 is not None and cap.a_y is not None
+    T0, xi = cap.T0, FREE_DAMPING
+    if pos.at_height:
+
+        def accel(sp: Spectrum) -> float:
+            return bounded_floor_spectrum(sp, T0, pos, xi) * g
+
+        where, rule = Location.HEIGHT, f"S_eZ(T0, {xi:g} %) of the floor spectrum [C8.7.1.9]"
+    else:
+
+        def accel(sp: Spectrum) -> float:
+            return sp.Se(T0, xi) * g
+
+        where, rule = Location.GROUND, f"S_e(T0, {xi:g} %) [C8.7.1.9]"
+    ag = capacity_ag(sld, accel, cap.a_y)
+    at_own = accel(sld.spectrum)
+    spectral = SpectralDemand(xi, T0, at_own * (T0 / (2.0 * math.pi)) ** 2, None,
+                              f"{rule}: {at_own / g:.5g} g at T0", None)  # fmt: skip
+    note = (f"free to vibrate: capacity {rule} = a_y = {cap.a_y:.5g} m/s², T0 = {T0:.4f} s"
+            + bound_note(ag))  # fmt: skip
+    return Check("SLD", Method.LINEAR, where, sld.ag, ag, "g", CLAUSE_FREE, note, spectral)
 
 
 def slv_linear_check(
@@ -207,7 +246,7 @@ def bounded_floor_displacement(
 
 
 def spectral_demand(
-    ls: str, T: float, dem: LimitStateDemand, pos: Position, g: float
+    ls: str, T: float, dem: LimitStateDemand, pos: Position, g: float, t0: float = T0_RIGID
 ) -> SpectralDemand:
     """Where the displacement demand of limit state ``ls`` is read, and its value [m] at the
     limit state's own ag.
@@ -216,7 +255,8 @@ def spectral_demand(
     caratteristici del periodo corrispondenti ai due stati limite"; the code's displacement
     spectrum does not decrease with T there). A record or a suite's mean spectrum (also its
     floor spectrum at height): "il valore massimo dello spostamento spettrale valutato
-    nell'intervallo di periodi [T0, T_SLV]" (§C8.7.1.2.1.8), T0 = T0_RIGID, the same for SLC.
+    nell'intervallo di periodi [T0, T_SLV]" (§C8.7.1.2.1.8), T0 = ``t0``: the period of an
+    element free to vibrate, T0_RIGID for one rigid until activation; the same for SLC.
     A record's spectrum scales linearly with ag, so the period of the maximum is the same at
     every ag and the capacity's root search reads the spectrum there.
     """
@@ -230,13 +270,18 @@ def spectral_demand(
     if dem.record is None:
         rule = f"SDe({name}) of the code spectrum ({CLAUSE_RANGE})"
         return SpectralDemand(xi, T, at_secant, None, rule, at_secant)
-    T_max, value = range_maximum(at, T0_RIGID, T)
-    rule = f"max Sd over [T0, {name}] = [{T0_RIGID:g}, {T:.4g}] s ({CLAUSE_RANGE})"
-    return SpectralDemand(xi, T_max, value, (T0_RIGID, T), rule, at_secant)
+    lo = min(t0, T)
+    T_max, value = range_maximum(at, lo, T)
+    rule = f"max Sd over [T0, {name}] = [{lo:.4g}, {T:.4g}] s ({CLAUSE_RANGE})"
+    return SpectralDemand(xi, T_max, value, (lo, T), rule, at_secant)
 
 
 def slv_displacement_demand(
-    values: dict[str, float | None], slv: LimitStateDemand, pos: Position, g: float
+    values: dict[str, float | None],
+    slv: LimitStateDemand,
+    pos: Position,
+    g: float,
+    t0: float = T0_RIGID,
 ) -> float | None:
     """The SLV displacement demand d* [m] at the site's ag (None: no T_SLV).
 
@@ -246,7 +291,7 @@ def slv_displacement_demand(
     T = values.get("T_SLV")
     if T is None:
         return None
-    return spectral_demand("SLV", T, slv, pos, g).value
+    return spectral_demand("SLV", T, slv, pos, g, t0).value
 
 
 def displacement_check(
@@ -257,6 +302,7 @@ def displacement_check(
     pos: Position,
     g: float,
     sld_cap: float | None,
+    t0: float = T0_RIGID,
 ) -> Check:
     """ag at which the displacement demand reaches d (root search), §C8.7.1.2.1.
 
@@ -277,7 +323,7 @@ def displacement_check(
             "no limit displacement: positive global stiffness and no limit given",
         )
     xi = DAMPING[ls]
-    spectral = spectral_demand(ls, T, dem, pos, g)
+    spectral = spectral_demand(ls, T, dem, pos, g, t0)
     measure = displacement_measure(spectral.period, xi, pos, g)
     ag = capacity_ag(dem, measure, d)
     note = f"{PERIOD_FORMULA[ls]} = {T:.4f} s, ξ = {xi:g} %, d = {d:.5f} m" + bound_note(ag)
@@ -304,11 +350,12 @@ def check_2019(
     a_slv, T_slv = _period(SLV_PERIOD, d_slv, cap)
     a_slc, T_slc = _period(SLC_PERIOD, d_slc, cap)
     sld = sld_check(cap, demands["SLD"], pos, g)
+    t0 = T0_RIGID if cap.T0 is None else cap.T0
     checks = [
         sld,
         slv_linear_check(sld.capacity, demands["SLV"], q, sld.location),
-        displacement_check("SLV", d_slv, T_slv, demands["SLV"], pos, g, sld.capacity),
-        displacement_check("SLC", d_slc, T_slc, demands["SLC"], pos, g, sld.capacity),
+        displacement_check("SLV", d_slv, T_slv, demands["SLV"], pos, g, sld.capacity, t0),
+        displacement_check("SLC", d_slc, T_slc, demands["SLC"], pos, g, sld.capacity, t0),
     ]
     values = {
         "d_SLV": d_slv,
@@ -319,6 +366,8 @@ def check_2019(
         "T_SLC": T_slc,
         "ag_SLD": sld.capacity,
     }
+    if cap.free:
+        values.update({"T0": cap.T0, "d_y": cap.d_y, "a_y": cap.a_y})
     if pos.at_height:
         checks = [replace(c, note=f"{c.note}; ξ_k reading in the notes") for c in checks]
     notes = [n for n in (cap_note, FLOOR_READING if pos.at_height else "") if n]

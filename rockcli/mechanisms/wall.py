@@ -122,6 +122,8 @@ class MechanismSpec:
         storey: vertical flexure: the storey it spans (1 = the ground storey); else None.
         angle: wedge: the crack's angle from the vertical [rad]; else None.
         sides: wedge: 1 or 2 return walls dragged; else None.
+        free: free to vibrate before it activates (Circolare 7/2019 §C8.7.1.2.1.3): its
+            capacity curve starts with an elastic branch.
     """
 
     name: str
@@ -130,6 +132,7 @@ class MechanismSpec:
     storey: int | None = None
     angle: float | None = None
     sides: int | None = None
+    free: bool = False
 
 
 @dataclass(frozen=True)
@@ -149,6 +152,8 @@ class Wall:
             by FC when the model says so) [Pa]; None: infinitely strong (hinges at the edges).
         loads, thrusts, restrainers: as described above, in the wall's frame.
         mechanisms: the mechanisms to check; empty: the whole wall overturning about its base.
+        E: the masonry's Young's modulus for the period of elements free to vibrate [Pa]
+            (None: not given; no mechanism is free).
     """
 
     storeys: tuple[Storey, ...]
@@ -162,6 +167,7 @@ class Wall:
     thrusts: tuple[WallThrust, ...] = field(default_factory=tuple)
     restrainers: tuple[WallRestrainer, ...] = field(default_factory=tuple)
     mechanisms: tuple[MechanismSpec, ...] = field(default_factory=tuple)
+    E: float | None = None
 
     @property
     def height(self) -> float:

@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import math
 
+from rockcli.codecheck.free import type_modulus
 from rockcli.mechanisms.wall import (
     OPTIMAL,
     WHOLE_WALL,
@@ -48,6 +49,7 @@ def to_wall(model: Model) -> Wall:
         gable_height=model.geometry.gable_height,
         return_wall_thickness=None if model.return_walls is None else model.return_walls.thickness,
         f_m=None if model.masonry is None else model.masonry.f_m,
+        E=masonry_modulus(model),
     )
     from dataclasses import replace
 
@@ -58,6 +60,17 @@ def to_wall(model: Model) -> Wall:
         restrainers=tuple(wall_restrainer(model, wall, i) for i in range(len(model.restrainers))),
     )
     return replace(wall, mechanisms=mechanism_specs(model, wall))
+
+
+def masonry_modulus(model: Model) -> float | None:
+    """E for elements free to vibrate [Pa]: ``[masonry] E`` as given, else its ``type``'s
+    (codecheck.free.type_modulus: Tab. C8.5.I's mean, cracked); None: neither."""
+    masonry = model.masonry
+    if masonry is None:
+        return None
+    if masonry.E is not None:
+        return masonry.E
+    return None if masonry.type is None else type_modulus(masonry.type)
 
 
 def unit_weight(model: Model, storeys: tuple[Storey, ...], width: float) -> float:
@@ -140,7 +153,8 @@ def expand(entry: MechanismEntry, wall: Wall) -> list[MechanismSpec]:
         hinge = 0.0 if entry.hinge_height is None else entry.hinge_height
         heights = list(wall.storey_bases()) if hinge == EACH_FLOOR else [float(hinge)]
         return [MechanismSpec(entry.name if entry.name and len(heights) == 1 else
-                              overturning_name(wall, z), kind, z) for z in heights]  # fmt: skip
+                              overturning_name(wall, z), kind, z, free=entry.is_free)
+                for z in heights]  # fmt: skip
     if kind is MechanismType.WEDGE:
         sides = entry.sides or 1
         angle = entry.angle or 0.0
@@ -151,13 +165,14 @@ def expand(entry: MechanismEntry, wall: Wall) -> list[MechanismSpec]:
         )
         return [MechanismSpec(name, kind, angle=math.radians(angle), sides=sides)]
     if kind is MechanismType.GABLE:
-        return [MechanismSpec(entry.name or Note("name_gable", "gable"), kind)]
+        return [MechanismSpec(entry.name or Note("name_gable", "gable"), kind,
+                              free=entry.is_free)]  # fmt: skip
     hinge = OPTIMAL if entry.hinge_height is None else entry.hinge_height
     name = entry.name or Note(
         "name_flexure", "vertical flexure, storey {storey}", storey=entry.storey
     )
     value = hinge if hinge == OPTIMAL else float(hinge)
-    return [MechanismSpec(name, kind, value, storey=entry.storey)]
+    return [MechanismSpec(name, kind, value, storey=entry.storey, free=entry.is_free)]
 
 
 def overturning_name(wall: Wall, hinge: float) -> str:

@@ -17,6 +17,7 @@ from typing import Any
 
 from pydantic import Field, model_validator
 
+from rockcli.codecheck.free import MasonryType
 from rockcli.mechanisms.wall import MechanismType
 from rockcli.model.bounds import MAX_LENGTH, MAX_STOREYS, MIN_LENGTH
 from rockcli.model.rules import number, rule_error
@@ -30,6 +31,9 @@ MAX_WEDGE_ANGLE = 60.0
 MIN_STRENGTH = 1e5
 #: Highest [Pa]: 100 MPa (the strongest squared stone of Tab. C8.5.I is below 10 MPa).
 MAX_STRENGTH = 1e8
+#: Lowest Young's modulus of masonry accepted [Pa]: 100 MPa (Tab. C8.5.I's lowest mean E is
+#: 690 MPa; halved for cracking, 345 MPa). Highest: 50 GPa (a stone, not a masonry).
+MIN_MODULUS, MAX_MODULUS = 1e8, 5e10
 #: hinge_height of an overturning for one mechanism per storey base.
 EACH_FLOOR = "each-floor"
 #: hinge_height of a vertical flexure whose hinge the code finds.
@@ -58,13 +62,27 @@ class ReturnWalls(Table):
 
 
 class Masonry(Table):
-    """The masonry's strength, for the hinges' set-back (off when not given)."""
+    """The masonry: its strength, for the hinges' set-back (off when not given), and its
+    stiffness, for the elastic branch of elements free to vibrate."""
 
     f_m: float | None = number(
         "Compressive strength of the masonry: each hinge moves inward by half the stress "
         "block a = N/(f_m·width) carrying the weight N above it [Pa]",
         ge=MIN_STRENGTH,
         le=MAX_STRENGTH,
+    )
+    E: float | None = number(
+        "Young's modulus of the masonry for the period T0 of an element free to vibrate, as "
+        "used (give a cracked value: Circolare 7/2019 §C8.7.1.2.1.3 suggests a reduced one) "
+        "[Pa]",
+        ge=MIN_MODULUS,
+        le=MAX_MODULUS,
+    )
+    type: MasonryType | None = Field(
+        None,
+        description="The masonry type of Circolare 7/2019 Tab. C8.5.I, for E when not given: "
+        "the mean of its range (§C8.5.4.1) halved for cracking (NTC 2018 §7.2.6). One of: "
+        + ", ".join(f"'{t.value}'" for t in MasonryType),
     )
 
 
@@ -98,6 +116,14 @@ class MechanismEntry(Table):
     sides: int | None = Field(
         None, strict=True, ge=1, le=2, description="wedge: return walls dragged, 1 or 2"
     )
+    free: bool | None = Field(
+        None,
+        strict=True,
+        description="Free to vibrate before it activates (a parapet, a free-standing part of a "
+        "façade: Circolare 7/2019 §C8.7.1.2.1.3): an elastic branch of period T0 and the SLD "
+        "check at T0; needs [masonry] E or type. Default: true for the gable, false otherwise; "
+        "not for a wedge (bonded to its return walls)",
+    )
 
     @model_validator(mode="after")
     def _keys_of_type(self) -> MechanismEntry:
@@ -117,7 +143,17 @@ class MechanismEntry(Table):
         self._check_hinge()
         if self.type is MechanismKind.WEDGE and self.angle is None:
             raise rule_error("angle", "required with type = 'wedge'", _allowed(self.type))
+        if self.type is MechanismKind.WEDGE and self.free:
+            raise rule_error(
+                "free", "a wedge cannot stand free: it is bonded to its return walls, whose "
+                "wedges move with it", "free = false, or no free key", self.free,
+            )  # fmt: skip
         return self
+
+    @property
+    def is_free(self) -> bool:
+        """Free to vibrate: as given, or by default the gable (a cantilever above the eaves)."""
+        return self.free if self.free is not None else self.type is MechanismKind.GABLE
 
     def _check_hinge(self) -> None:
         value = self.hinge_height

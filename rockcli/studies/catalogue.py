@@ -15,6 +15,12 @@ import math
 from dataclasses import dataclass, replace
 
 from rockcli.codecheck.demand import LimitStateDemand
+from rockcli.codecheck.free import (
+    KAPPA_CANTILEVER,
+    KAPPA_FLEXURE,
+    MASONRY_TYPES,
+    elastic_period,
+)
 from rockcli.codecheck.kinematic import Capacity, Mechanism, alpha0, capacity
 from rockcli.codecheck.position import Position, position
 from rockcli.codecheck.result import KinematicResult, deciding
@@ -182,6 +188,66 @@ def spec_base(wall: Wall, spec: MechanismSpec) -> float:
     return hinge_of(spec, wall)
 
 
+def free_period(
+    wall: Wall, spec: MechanismSpec, settings: NtcSettings
+) -> tuple[float | None, tuple[str, ...]]:
+    """(T0 [s], notes) of a mechanism free to vibrate (None: rigid until activation).
+
+    Circolare 7/2019 Eq. C8.7.1.7, T0 = κ·λ·L·√(W/(E·g)) with λ = L/t: the gable, a
+    cantilever of its height on the last storey's thickness (κ = 6.2); an overturning, a
+    cantilever of the wall above its hinge, gable included, on the hinge section's thickness
+    (κ = 6.2); a vertical flexure, a beam of its storey's height and thickness simply
+    supported at its ends (κ = 2.2). The 2009 edition has no elastic branch: a note says the
+    declaration is not used.
+    """
+    if not spec.free:
+        return None, ()
+    if settings.edition != "2019":
+        return None, (Note("free_2009", "free to vibrate: the elastic branch is a rule of "
+                           "Circ. 7/2019 (§C8.7.1.2.1.3); the 2009 check is rigid until "
+                           "activation"),)  # fmt: skip
+    if wall.E is None:
+        default = " (a gable is free by default)" if spec.type is MechanismType.GABLE else ""
+        raise InputError(
+            f"mechanism '{spec.name}' is free to vibrate{default}: its period T0 needs the "
+            "masonry's Young's modulus (Circolare 7/2019 Eq. C8.7.1.7)",
+            where="masonry",
+            allowed="[masonry] E [Pa], or [masonry] type (one of "
+            + ", ".join(MASONRY_TYPES)
+            + "); or free = false on the mechanism",
+        )
+    kappa, length, thickness = free_member(wall, spec)
+    T0 = elastic_period(kappa, length, thickness, wall.unit_weight, wall.E, wall.g)
+    note = Note(
+        "free_T0", "free to vibrate: elastic branch a = 4π²d/T0² to (a_y, d_y) "
+        "[C8.7.1.6], T0 = κ·λ·L·√(W/(E·g)) = {T0:.4f} s [C8.7.1.7] with κ = {kappa:g}, "
+        "L = {length:.3f} m, λ = L/t = {slender:.3g}, E = {E:g} MPa; SLD at S_e(T0) "
+        "[C8.7.1.9]", T0=T0, kappa=kappa, length=length, slender=length / thickness,
+        E=wall.E / 1e6,
+    )  # fmt: skip
+    return T0, (note,)
+
+
+def free_member(wall: Wall, spec: MechanismSpec) -> tuple[float, float, float]:
+    """(κ, L [m], t [m]) of a mechanism free to vibrate (:func:`free_period`)."""
+    gable = wall.gable_height or 0.0
+    if spec.type is MechanismType.GABLE:
+        return KAPPA_CANTILEVER, gable, wall.storeys[-1].thickness
+    if spec.type is MechanismType.VERTICAL_FLEXURE:
+        assert spec.storey is not None
+        storey = wall.storeys[spec.storey - 1]
+        return KAPPA_FLEXURE, storey.height, storey.thickness
+    hinge = hinge_of(spec, wall)
+    k = storey_at_height(wall, hinge)
+    return KAPPA_CANTILEVER, wall.height - hinge + gable, wall.storeys[k].thickness
+
+
+def storey_at_height(wall: Wall, hinge: float) -> int:
+    """The index of the storey whose base is at ``hinge`` (0-based)."""
+    bases = wall.storey_bases()
+    return min(range(len(bases)), key=lambda i: abs(bases[i] - hinge))
+
+
 def flexure_notes(wall: Wall, spec: MechanismSpec) -> tuple[str, ...]:
     """What a vertical flexure carries from above, in a sentence (none for other types)."""
     if spec.type is not MechanismType.VERTICAL_FLEXURE or spec.storey is None:
@@ -223,13 +289,14 @@ def analyse_mechanism(
 
     sides = sides_of(spec, free_side)
     spec, notes = resolved(wall, spec, sides, settings)
-    caps: list[Capacity] = [capacity(mechanism_of(wall, spec, s, settings), settings.FC)
+    T0, free_notes = free_period(wall, spec, settings)
+    caps: list[Capacity] = [capacity(mechanism_of(wall, spec, s, settings), settings.FC, T0)
                             for s in sides]  # fmt: skip
     for c in caps:
         refuse_unstable(spec, c)
     cap = min(caps, key=lambda c: (c.d0_star is None, c.d0_star or 0.0, -c.mech.side))
     by_side = {str(c.mech.side): c.alpha0 for c in caps}
-    notes = (*notes, *flexure_notes(wall, spec))
+    notes = (*notes, *flexure_notes(wall, spec), *free_notes)
     if wall.f_m is not None:
         set_back = Note("set_back", "hinges set back by half the stress block a = N/(f_m·width), "
                         "f_m = {f_m:g} MPa", f_m=wall.f_m / 1e6)  # fmt: skip

@@ -275,8 +275,11 @@ def analyse_capacity(
             cap, dem, pos, settings.q, _limit(cap, settings)
         )
         notes += extra
-        notes.append(Note("rigid", "rigid until activation: the elastic branch of free "
-                          "elements (§C8.7.1.6–7) is not modelled"))  # fmt: skip
+        if not cap.free:
+            notes.append(Note("rigid", "rigid until activation: not declared free to vibrate "
+                              "(the elastic branch of Circ. 7/2019 §C8.7.1.2.1.3, Eqs. "
+                              "C8.7.1.6–7, is for elements free to vibrate: [[mechanisms]] "
+                              "free = true)"))  # fmt: skip
     actions = restrainer_actions(
         cap, *governing_demand(cap, settings.edition, values, checks, dem, pos)
     )
@@ -322,7 +325,8 @@ def governing_demand(
         demand = nonlinear_displacement_demand(checks)
         ultimate, name = values.get("du_star"), "du*"
     else:
-        demand = rules2019.slv_displacement_demand(values, dem["SLV"], pos, cap.mech.g)
+        t0 = cap.T0 if cap.T0 is not None else rules2019.T0_RIGID
+        demand = rules2019.slv_displacement_demand(values, dem["SLV"], pos, cap.mech.g, t0)
         ultimate, name = values.get("d_SLV"), "d_SLV"
     if demand is not None:
         return demand, f"SLV displacement demand d* = {demand:.4g} m"
