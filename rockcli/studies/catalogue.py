@@ -153,8 +153,9 @@ RANGE_END = 1e-6
 
 
 def spec_position(wall: Wall, spec: MechanismSpec, settings: NtcSettings) -> Position:
-    """Where the mechanism stands: Z + the height of its base hinge (a vertical flexure: its
-    storey's base); without the building's H, H = Z + the wall's height, N its storeys."""
+    """Where the mechanism stands: Z + the height of its base hinge (a vertical flexure: the
+    middle of its storey, :func:`spec_base`); without the building's H, H = Z + the wall's
+    height, N its storeys."""
     b = settings.building
     base = spec_base(wall, spec)
     Z = b.Z + base
@@ -181,10 +182,19 @@ def spec_position(wall: Wall, spec: MechanismSpec, settings: NtcSettings) -> Pos
 
 
 def spec_base(wall: Wall, spec: MechanismSpec) -> float:
-    """The height of the mechanism's base hinge above the wall's base [m]."""
+    """The height above the wall's base at which the mechanism stands in the building [m].
+
+    Circolare 617/2009 §C8A.4.2.2 defines Z as "l'altezza, rispetto alla fondazione
+    dell'edificio, del baricentro delle linee di vincolo tra i blocchi interessati dal
+    meccanismo ed il resto della struttura": a rigid mechanism's one line, its base hinge; a
+    vertical flexure's two, its storey's base and its held top, whose centroid is the middle
+    of the storey. Circolare 7/2019 names only "la quota z a cui si colloca il meccanismo"
+    (§C8.7.1.2.1.5) and is read the same way (docs/interpretations.md).
+    """
     if spec.type is MechanismType.VERTICAL_FLEXURE:
         assert spec.storey is not None
-        return wall.storey_bases()[spec.storey - 1]
+        storey = wall.storeys[spec.storey - 1]
+        return wall.storey_bases()[spec.storey - 1] + 0.5 * storey.height
     return hinge_of(spec, wall)
 
 

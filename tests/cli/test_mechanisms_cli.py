@@ -135,15 +135,16 @@ def test_assess_rocks_the_governing_rigid_mechanism() -> None:
     assert doc["model"]["uplift_acceleration_by_side_g"] == kin["alpha0_by_side"]
 
 
-def test_assess_rocks_a_vertical_flexure_on_its_storeys_base() -> None:
+def test_assess_rocks_a_vertical_flexure_at_the_middle_of_its_storey() -> None:
     name = "vertical flexure, storey 2"
     code, out, err = run("assess", str(FACADE), "--record", str(RICKER), "--mechanism", name,
                          "--format", "json")  # fmt: skip
     assert code == 0, err
     doc = json.loads(out)
     assert doc["mechanism"] == {"name": name, "type": "vertical-flexure"}
-    # On the floor motion at the storey's base (4 m), not at its hinge.
-    assert doc["record"]["floor"]["Z"] == 4.0
+    # On the floor motion at the centroid of its lines of restraint (Circ. 617/2009
+    # §C8A.4.2.2), the storey's base (4 m) and its held top (7.5 m): 5.75 m, not its hinge.
+    assert doc["record"]["floor"]["Z"] == 5.75
     # Like with like: each side's uplift acceleration is the code check's α0, bit for bit.
     kin = kinematic_json(FACADE, "--mechanism", name)
     assert doc["model"]["uplift_acceleration_by_side_g"] == kin["alpha0_by_side"]
@@ -512,17 +513,19 @@ def test_retrofit_sizes_the_rod_for_the_walls_governing_mechanism(tmp_path: Path
 
 
 def test_retrofit_says_when_the_rod_is_not_on_the_governing_mechanism() -> None:
-    # The façade's tie at the top floor (7.5 m) is at the gable's hinge: not on the gable,
-    # which governs under this record; no force, and the reason says why nothing helps.
+    # The façade's tie at the top floor (7.5 m) is at the gable's hinge and at the held top
+    # of storey 2's flexure: on neither, and one of them governs under this record with a
+    # Ø12 rod; no force, and the reason says why nothing helps.
     code, out, err = run("retrofit", str(FACADE), "--record", str(RICKER), "--diameters",
                          "12", "--format", "json")  # fmt: skip
     assert code == 0, err
     doc = json.loads(out)
     row = doc["candidates"][0]
-    assert row["mechanism"] == "gable" and row["on_mechanism"] is False
+    assert row["mechanism"] in ("gable", "vertical flexure, storey 2")
+    assert row["on_mechanism"] is False
     assert row["max_force"] is None and doc["record"]["input"] == "floor"
     if doc["chosen"] is None:
-        assert "not on the governing mechanism 'gable'" in doc["reason"]
+        assert f"not on the governing mechanism '{row['mechanism']}'" in doc["reason"]
 
 
 def test_report_of_a_flexure_and_of_every_other_mechanism(tmp_path: Path) -> None:
