@@ -25,13 +25,19 @@ from rockcli.casebook.schema import (
     SuiteInput,
 )
 from rockcli.errors import InputError
-from rockcli.mechanics import Block, linear_global_stiffness, stiffness_coefficient
+from rockcli.mechanics import (
+    Block,
+    collapse_rotations,
+    linear_global_stiffness,
+    stiffness_coefficient,
+)
 from rockcli.model.derive import to_block
 from rockcli.model.schema import Model
 from rockcli.records.record import Record
 
 if TYPE_CHECKING:
     from rockcli.codecheck.result import KinematicResult
+    from rockcli.codecheck.spectra import ElasticSpectrum
     from rockcli.studies.catalogue import MechanismResult
 
 #: NTC 2018 §3.2.3.6 band of the suite case (the ratio itself is what is checked).
@@ -44,6 +50,8 @@ def model_quantity(model: Model, inputs: ModelInput, quantity: str) -> float:
     simple = {"R": block.R, "alpha": block.alpha, "p": block.p, "e": block.e, "c_E": block.p2}
     if quantity in simple:
         return simple[quantity]
+    if quantity in ("theta_c_pos", "theta_c_neg"):
+        return collapse_rotations(block)[0 if quantity == "theta_c_pos" else 1]
     if inputs.restrainer > len(block.restrainers):
         raise InputError(
             "no such restrainer in the model",
@@ -163,9 +171,27 @@ def spectrum_quantity(inputs: SpectrumInput, quantity: str) -> float:
     )
     if quantity == "Se":
         return spectrum.Se(inputs.period, inputs.xi)
+    if quantity == "SeZ":
+        return floor_spectrum_quantity(spectrum, inputs)
     if quantity == "SDe":
         return spectrum.SDe(inputs.period, inputs.xi)
     return float(getattr(spectrum, quantity))
+
+
+def floor_spectrum_quantity(spectrum: ElasticSpectrum, inputs: SpectrumInput) -> float:
+    """S_eZ(T, ξ, z) [g]: the floor spectrum of the first mode, not below the ground's for
+    T > T1 (Circolare 7/2019 §C7.2.3, Eq. C7.2.5), the building's damping 5 %."""
+    from rockcli.codecheck.position import Position
+    from rockcli.codecheck.rules2019 import bounded_floor_spectrum
+
+    if inputs.T1 is None or inputs.gamma is None or inputs.psi is None:
+        raise InputError(
+            "SeZ needs the building's first mode",
+            where="input",
+            allowed="T1 [s], gamma and psi",
+        )
+    pos = Position(Z=1.0, T1=inputs.T1, gamma=inputs.gamma, psi=inputs.psi)
+    return bounded_floor_spectrum(spectrum, inputs.period, pos, inputs.xi)
 
 
 def hazard_quantity(inputs: HazardInput, quantity: str, grid_file: str) -> float:

@@ -64,6 +64,8 @@ QUANTITIES: dict[Kind, dict[str, str]] = {
         "c_K": "1/s²",
         "c_E": "1/s²",
         "positive_stiffness_4KR_mg": "-",
+        "theta_c_pos": "rad",
+        "theta_c_neg": "rad",
     },
     Kind.KINEMATIC: {
         "alpha0": "-",
@@ -82,7 +84,7 @@ QUANTITIES: dict[Kind, dict[str, str]] = {
     Kind.FREE_ROCKING: {"period": "s", "amplitude": "rad"},
     Kind.IMPULSE: {"omega_threshold": "rad/s"},
     Kind.PULSE_THRESHOLD: {"amplitude_threshold": "g"},
-    Kind.SPECTRUM: {"Se": "g", "SDe": "m", "S_S": "-", "C_C": "-", "TD": "s"},
+    Kind.SPECTRUM: {"Se": "g", "SDe": "m", "S_S": "-", "C_C": "-", "TD": "s", "SeZ": "g"},
     Kind.HAZARD: {"ag": "g", "F0": "-", "Tc_star": "s"},
     Kind.RESPONSE_SPECTRUM: {"Sa": "g", "Sd": "m"},
     Kind.FLOOR: {"peak": "g"},
@@ -198,6 +200,9 @@ class SpectrumInput(Table):
     topography: Literal["T1", "T2", "T3", "T4"] = "T1"
     period: float = Field(strict=True, ge=0, le=100, allow_inf_nan=False, description="T [s]")
     xi: Positive = Field(default=5.0, description="damping [%]")
+    T1: Positive | None = Field(default=None, description="SeZ: the building's T1 [s]")
+    gamma: Positive | None = Field(default=None, description="SeZ: the first mode's γ")
+    psi: Positive | None = Field(default=None, description="SeZ: the first mode's ψ(z)")
 
 
 class HazardInput(Table):
