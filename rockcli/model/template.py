@@ -227,7 +227,7 @@ OTHER_KEYS: dict[str, dict[str, Any]] = {
     },
     "geometry.storeys": {"height": 4.0, "thickness": 0.6},
     "return_walls": {"thickness": 0.45},
-    "masonry": {"f_m": 2.0e6},
+    "masonry": {"f_m": 2.0e6, "E": 6.0e8, "type": "rough-cut-stone"},
     "mechanisms": {
         "type": "overturning",
         "hinge_height": "each-floor",
@@ -235,6 +235,7 @@ OTHER_KEYS: dict[str, dict[str, Any]] = {
         "storey": 1,
         "angle": 30.0,
         "sides": 2,
+        "free": False,
     },
     "mass": {"weight": 100.0, "unit_weight": 18.0},
     "restitution": {"model": "explicit", "factor": 0.9, "e": 0.8},
@@ -327,7 +328,11 @@ OPTIONAL_TABLE_NOTES: dict[str, tuple[str, ...]] = {
         "See docs/mechanisms.md.",
     ),
     "return_walls": ("The return walls, where a wedge (compound overturning) can form.",),
-    "masonry": ("The masonry's strength: each hinge moves inward by half the stress block.",),
+    "masonry": (
+        "The masonry's strength (each hinge moves inward by half the stress block) and its "
+        "stiffness (E, or a type of Circolare 7/2019 Tab. C8.5.I) for elements free to "
+        "vibrate.",
+    ),
     "mechanisms": (
         "The local mechanisms to check, one [[mechanisms]] table each (none: overturning about "
         'the base). type = "overturning" | "wedge" | "vertical-flexure" | "gable"; each '
