@@ -963,6 +963,24 @@ def impact_restitution(block: Block, s: int) -> float:
     return num / den
 
 
+def rebound_restitution(block: Block) -> float:
+    """θ̇⁺/θ̇⁻ of a one-sided system's impact before its rebound factor r_f: the ratio that keeps
+    the kinetic energy Housner's impact at the other pivot keeps, the system turning back
+    about the same pivot (docs/physics.md, "One-sided impacts").
+
+    Per unit rate, the velocity field about O is w and about O′ is w′; with N = ∫ w·w′ dm
+    (the numerator of :func:`impact_restitution`, the same for both sides) and the inertias
+    D = ∫ |w|² dm about O and D′ about O′, the impact at O′ keeps N²/(D·D′) of the kinetic
+    energy (Housner's e = N/D′, times (D′/D) for the inertia), and the system turning back
+    about O with that energy has |θ̇⁺/θ̇⁻| = N/√(D·D′) = √(e₊·e₋), e_s of each side
+    (:func:`impact_restitution`). Cauchy–Schwarz: |N| ≤ √(D·D′), equal only for fields that
+    are parallel, so the impact always dissipates; a body symmetric about its mid-plane
+    (D = D′) gives Housner's e itself. Signed as N (e₊ and e₋ share N's sign).
+    """
+    e_pos, e_neg = impact_restitution(block, 1), impact_restitution(block, -1)
+    return math.copysign(math.sqrt(e_pos * e_neg), e_pos)
+
+
 def loaded_stiffness(points: tuple[float, ...], s: int) -> float:
     """d(G − s·T)/da at a = 0 on side s [N·m/rad]: −Σ_bears P z − s·Σ d F x_s.
 

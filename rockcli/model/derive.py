@@ -41,6 +41,7 @@ from rockcli.mechanics import (
     housner_restitution,
     impact_restitution,
     point_polar,
+    rebound_restitution,
     tie_rod_stiffness,
 )
 from rockcli.model.ntc import Ntc
@@ -195,14 +196,17 @@ def derive_block(model: Model) -> Block:
     return with_system_restitution(block, model)
 
 
-def with_system_restitution(block: Block, model: Model, most: float = math.inf) -> Block:
+def with_system_restitution(block: Block, model: Model) -> Block:
     """The block with Housner's e of the block and its loads (or of a wall's mechanism as a
-    body of its own shape), per side.
+    body of its own shape), per side; a one-sided block with the e of its own impact.
 
     Source: mechanics.impact_restitution (Housner 1963, angular momentum about the new pivot,
-    written for the block with its loads; docs/physics.md, "Impacts"). The factor and the clip
-    at 0 apply as for the lone block, and at ``most`` above (a mechanism's impact gives no
-    energy: rockcli.studies.rocked); an explicit e stays as given on both sides.
+    written for the block with its loads; docs/physics.md, "Impacts"): two-sided, e of each
+    side as it is (above 1 too: the new pivot's inertia is then smaller, and the energy kept,
+    e₊·e₋, is below 1). One-sided, mechanics.rebound_restitution on both sides, √(e₊·e₋): the
+    energy Housner's impact at the other pivot keeps, the block turning back about its own
+    (docs/physics.md, "One-sided impacts"). The factor and the clip at 0 apply as for the lone
+    block; an explicit e stays as given on both sides.
     """
     table = model.restitution
     if table.rule is RestitutionModel.EXPLICIT or block.mass is None:
@@ -210,7 +214,10 @@ def with_system_restitution(block: Block, model: Model, most: float = math.inf) 
     if not block.loads and block.body is None and block.chain is None:
         return block
     factor = 1.0 if table.factor is None else table.factor
-    e_pos, e_neg = (min(max(impact_restitution(block, s), 0.0), most) * factor for s in (1, -1))
+    if block.one_sided:
+        e_pos = e_neg = max(rebound_restitution(block), 0.0) * factor
+    else:
+        e_pos, e_neg = (max(impact_restitution(block, s), 0.0) * factor for s in (1, -1))
     return replace(block, e=e_pos, e_neg=e_neg)
 
 

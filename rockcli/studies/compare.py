@@ -7,13 +7,14 @@ document (rockcli.terminal.compare).
 
 from __future__ import annotations
 
+from collections.abc import Callable, Iterable
 from dataclasses import dataclass
 from enum import StrEnum
 from typing import Any
 
 from rockcli.codecheck.demand import Spectrum
 from rockcli.codecheck.result import KinematicResult
-from rockcli.dynamics.result import Assessment, Verdict
+from rockcli.dynamics.result import Assessment, RockingRun, RunStatus, Verdict
 from rockcli.model.schema import Model
 from rockcli.records.record import Record
 from rockcli.studies.assess import AssessmentOutput, assess_model_output
@@ -55,6 +56,114 @@ def rocking_collapse(result: Assessment) -> bool | None:
     """The rocking verdict: overturning in either polarity (None: undecided)."""
     verdict = result.verdict
     return None if verdict is Verdict.UNDECIDED else verdict is Verdict.OVERTURNS
+
+
+#: A second integration of a run: (polarity) → that polarity by the reference engine.
+Rerun = Callable[[int], RockingRun]
+
+
+def decided_collapse(
+    result: Assessment, reference: Rerun | None = None
+) -> tuple[bool | None, str | None]:
+    """The rocking verdict a classification reads, and why it is not decided when its runs
+    ended: :func:`rocking_collapse`, or None when a second integration gives the other
+    verdict (overturns against survives), with a note saying which.
+
+    The second integrations are those the runs already carry, each polarity again at the
+    tolerance check's rtol/1000 (rockcli.dynamics.tolerance), and, with ``reference``, the
+    reference engine's run of an overturning polarity whose two fast runs overturned after
+    different numbers of impacts (their histories parted before the overturn: the tolerance
+    check does not flag two overturns, and a chaotic path to an overturn is where the two
+    engines can disagree). A polarity that overturns after the same impacts at both
+    tolerances decides the envelope alone, and then nothing else is run. A second run that
+    stops at a guard decides nothing (the verdict stands).
+    """
+    collapse = rocking_collapse(result)
+    if collapse is None:
+        return None, None
+    runs = result.runs
+    checks = [r.tolerance for r in runs]
+    if all(c is not None for c in checks):
+        tight = envelope((c.overturned, c.status) for c in checks if c is not None)
+        if tight is not None and tight != collapse:
+            tight_rtol = next(c.rtol for c in checks if c is not None)
+            return None, (
+                f"not decided: the time history {said(collapse)} at rtol {short(runs[0].rtol)} "
+                f"and {said(tight)} at rtol {short(tight_rtol)} (the tolerance check): the "
+                "verdict depends on the integration, the rocking is chaotic at the edge of "
+                "overturning"
+            )
+    if reference is None or not collapse:
+        return collapse, None
+    doubtful = [r for r in runs if diverged(r) and r.mirror_of is None]
+    if not doubtful or any(r.overturned and not diverged(r) for r in runs):
+        return collapse, None
+    again = {r.polarity: reference(r.polarity) for r in doubtful}
+
+    def second(r: RockingRun) -> tuple[bool, RunStatus]:
+        other = again.get(r.polarity if r.mirror_of is None else r.mirror_of)
+        return (r.overturned, r.status) if other is None else (other.overturned, other.status)
+
+    ref = envelope(second(r) for r in runs)
+    if ref is None or ref == collapse:
+        return collapse, None
+    polarities = " and ".join(f"{p:+d}" for p in again)
+    return None, (
+        f"not decided: the fast engine overturns polarity {polarities} (at both tolerances, "
+        "after different numbers of impacts), the reference engine survives it: the two "
+        "engines disagree, the rocking is chaotic at the edge of overturning"
+    )
+
+
+def diverged(run: RockingRun) -> bool:
+    """True when a run overturned at both tolerances of its check after different numbers of
+    impacts (its histories parted before the overturn)."""
+    check = run.tolerance
+    return (
+        run.overturned and check is not None and check.overturned
+        and check.impacts != run.impacts
+    )  # fmt: skip
+
+
+def short(tolerance: float) -> str:
+    """A tolerance as the outputs write it: 1e-8, not 1e-08."""
+    return f"{tolerance:g}".replace("e-0", "e-")
+
+
+def envelope(runs: Iterable[tuple[bool, RunStatus]]) -> bool | None:
+    """Overturning in either polarity from (overturned, status) of each, as
+    Assessment.verdict: None when a run met a non-finite number, or none overturned and one
+    stopped at a guard."""
+    seen = list(runs)
+    if any(status is RunStatus.NONFINITE for _, status in seen):
+        return None
+    if any(over for over, _ in seen):
+        return True
+    return None if any(status is not RunStatus.COMPLETED for _, status in seen) else False
+
+
+def said(collapse: bool) -> str:
+    """ "overturns" or "survives"."""
+    return "overturns" if collapse else "survives"
+
+
+def reference_rerun(model: Model, record: Record, ground: bool, file: str | None,
+                    mechanism: str | None) -> Rerun:  # fmt: skip
+    """The reference engine's run of one polarity of what assess_model_output rocks (the same
+    block, motion and settings)."""
+
+    def run(polarity: int) -> RockingRun:
+        from rockcli.dynamics.settings import Engine
+        from rockcli.dynamics.simulate import simulate
+        from rockcli.model.derive import solver_options
+        from rockcli.studies.assess import rocked_input, settings_from
+
+        block, shaking, _, _ = rocked_input(model, record, ground, file, mechanism)
+        settings = settings_from(solver_options(model))
+        return simulate(block, shaking.time, shaking.accel, shaking.dt, polarity=polarity,
+                        settings=settings, engine=Engine.REFERENCE)  # fmt: skip
+
+    return run
 
 
 def code_sets_demand(model: Model) -> bool:
@@ -100,6 +209,8 @@ class ComparisonOutput:
         kinematic: the code's check. rocking: both polarities and the block.
         classification: how the two collapse verdicts relate.
         code_demand: the earthquake the code check saw (the record, or the model's spectrum).
+        classification_note: why the rocking verdict is not decided though its runs ended
+            (:func:`decided_collapse`), or None.
     """
 
     kinematic: KinematicResult
@@ -107,6 +218,7 @@ class ComparisonOutput:
     classification: Classification
     code_demand: CodeDemand = CodeDemand.RECORD
     mechanisms: tuple[MechanismComparison, ...] = ()
+    classification_note: str | None = None
 
 
 @dataclass(frozen=True)
@@ -121,6 +233,8 @@ class MechanismComparison:
         classification: how its two collapse verdicts relate (None: not rocked).
         not_rocked: why the time history does not rock it (a vertical flexure with a
             restrainer on its upper block), or None.
+        classification_note: why its rocking verdict is not decided though its runs ended
+            (:func:`decided_collapse`), or None.
     """
 
     name: str
@@ -129,6 +243,7 @@ class MechanismComparison:
     rocking: Assessment | None
     classification: Classification | None
     not_rocked: str | None = None
+    classification_note: str | None = None
 
 
 def compare_model_output(
@@ -171,9 +286,21 @@ def compare_model_output(
         mechanism=None if main is None else main.name,
     )  # fmt: skip
     kin = shown_result(kin, main)
-    kind = classify(code_collapse(kin), rocking_collapse(rocking.result))
-    others = catalogue_comparisons(model, record, engine, kin, main, rocking, ground)
-    return ComparisonOutput(kin, rocking, kind, CodeDemand(code_demand), others)
+    name = None if main is None else main.name
+    collapse, why = decided_collapse(rocking.result, rerun(model, record, engine, ground, file,
+                                                           name))  # fmt: skip
+    kind = classify(code_collapse(kin), collapse)
+    others = catalogue_comparisons(model, record, engine, kin, main, (rocking, why), ground)
+    return ComparisonOutput(kin, rocking, kind, CodeDemand(code_demand), others, why)
+
+
+def rerun(model: Model, record: Record, engine: str, ground: bool, file: str | None,
+          mechanism: str | None) -> Rerun | None:  # fmt: skip
+    """The reference engine's second run of a fast comparison (:func:`decided_collapse`);
+    None when the comparison runs the reference engine itself."""
+    if engine != "fast":
+        return None
+    return reference_rerun(model, record, ground, file, mechanism)
 
 
 def main_mechanism(kin: KinematicResult, name: str | None = None) -> Any:
@@ -227,31 +354,39 @@ def mechanism_output(
     rocking = assess_model_output(model, record, engine, history=True, ground=ground, file=file,
                                   mechanism=name)  # fmt: skip
     kin = shown_result(whole.kinematic, main)
-    kind = classify(code_collapse(kin), rocking_collapse(rocking.result))
-    return ComparisonOutput(kin, rocking, kind, whole.code_demand, ())
+    collapse, why = decided_collapse(rocking.result,
+                                     rerun(model, record, engine, ground, file, name))  # fmt: skip
+    kind = classify(code_collapse(kin), collapse)
+    return ComparisonOutput(kin, rocking, kind, whole.code_demand, (), why)
 
 
-def catalogue_comparisons(model, record, engine, kin, main, rocking, ground):
-    """Every mechanism of a wall's catalogue: the main one's comparison as made, each other
-    one run and classified (one the time history refuses is listed with the reason)."""
+def catalogue_comparisons(model, record, engine, kin, main, shown, ground):
+    """Every mechanism of a wall's catalogue: the main one's comparison as made (``shown``:
+    its rocking and the note of its decision), each other one run with its tolerance check
+    and classified (one the time history refuses is listed with the reason)."""
     from rockcli.errors import InputError
 
     if main is None:
         return ()
+    rocking, main_why = shown
     out = []
     for m in kin.catalogue:
         if m.name == main.name:
             run: Assessment = rocking.result
+            why = main_why
+            collapse = None if why is not None else rocking_collapse(run)
         else:
             try:
-                run = assess_model_output(model, record, engine, ground=ground, mechanism=m.name,
-                                          tolerance_check=False).result  # fmt: skip
+                run = assess_model_output(model, record, engine, ground=ground,
+                                          mechanism=m.name).result  # fmt: skip
             except InputError as exc:
                 reason = exc.note()
                 out.append(MechanismComparison(m.name, m.type, m.result, None, None, reason))
                 continue
-        kind = classify(code_collapse(m.result), rocking_collapse(run))
-        out.append(MechanismComparison(m.name, m.type, m.result, run, kind))
+            collapse, why = decided_collapse(run, rerun(model, record, engine, ground, None,
+                                                        m.name))  # fmt: skip
+        kind = classify(code_collapse(m.result), collapse)
+        out.append(MechanismComparison(m.name, m.type, m.result, run, kind, None, why))
     return tuple(out)
 
 

@@ -54,7 +54,7 @@ def governing_spec(model: Model, wall: Wall, record: Record) -> MechanismSpec:
 
 
 def mechanism_block(model: Model, wall: Wall, spec: MechanismSpec) -> Block:
-    """The mechanism as the engine rocks it, with Housner's e of its bodies per side: one
+    """The mechanism as the engine rocks it, with the e of its bodies (system_restitution): one
     rigid body as a Block of its own shape (rockcli.mechanisms.rigid), a vertical flexure as
     a Block carrying its two-block chain (rockcli.mechanisms.flexure; its hinge resolved as
     the code check resolves it)."""
@@ -91,18 +91,15 @@ def mechanism_block(model: Model, wall: Wall, spec: MechanismSpec) -> Block:
 
 
 def system_restitution(block: Block, model: Model) -> Block:
-    """Housner's e of the mechanism's body with its loads, per side, times the model's factor
-    (an explicit e as given): mechanics.impact_restitution, angular momentum about the new
-    pivot (docs/physics.md, "Impacts")."""
+    """The coefficient of restitution of the mechanism's bodies with their loads, per side,
+    times the model's factor (an explicit e as given): two-sided, Housner's balance of angular
+    momentum about the new pivot (mechanics.impact_restitution; a chain's projection on the
+    motion after the impact); one-sided (the wedge, a wall stopped on one side), the energy
+    that impact keeps, the body turning back about its own pivot (mechanics.
+    rebound_restitution, below 1 for every body; docs/physics.md, "One-sided impacts")."""
     from rockcli.model.derive import with_system_restitution
 
-    return with_system_restitution(block, model, MAX_RESTITUTION)
-
-
-#: The largest Housner e a mechanism takes: an impact cannot give energy. A body whose
-#: centroid lies beyond the other pivot (the wedge, inward of the façade's inner edge) gives
-#: e > 1 by the momentum balance about that pivot, about which it never turns (one-sided).
-MAX_RESTITUTION = 1.0
+    return with_system_restitution(block, model)
 
 
 def rocked_mechanism(model: Model, record: Record, name: str | None) -> Rocked:

@@ -68,6 +68,7 @@ def comparison_output_document(out: ComparisonOutput, record: Record) -> dict[st
     kin = kinematic_document(out.rocking.name, out.kinematic, out.rocking.warnings)
     roc = assessment_output_document(out.rocking, record)
     doc = comparison_document(kin, roc, str(out.classification), str(out.code_demand))
+    doc["classification_note"] = out.classification_note
     if out.mechanisms:
         doc["mechanisms"] = [mechanism_comparison(m) for m in out.mechanisms]
         doc["governing"] = out.kinematic.governing
@@ -88,6 +89,7 @@ def mechanism_comparison(m: Any) -> dict[str, Any]:
         "code": m.code.verdict(),
         "rocking": rocking,
         "not_rocked": m.not_rocked,
+        "classification_note": m.classification_note,
     }
 
 
@@ -252,4 +254,17 @@ def comparison_warnings(doc: dict[str, Any]) -> list[str]:
     both = [*doc["kinematic"].get("warnings", ()), *doc["rocking"].get("warnings", ())]
     if doc.get("code_demand") == "model":
         both.insert(0, DIFFERENT_EARTHQUAKES)
-    return list(dict.fromkeys(both))
+    return list(dict.fromkeys(both + undecided_warnings(doc)))
+
+
+def undecided_warnings(doc: dict[str, Any]) -> list[str]:
+    """Why a classification is undetermined though the runs ended (the engines, or the
+    tolerance check, disagree on the verdict): the comparison's, then each other
+    mechanism's."""
+    shown = doc["kinematic"].get("mechanism")
+    out = [f"{doc['classification_note']}"] if doc.get("classification_note") else []
+    return out + [
+        f"'{m['name']}': {m['classification_note']}"
+        for m in doc.get("mechanisms", ())
+        if m.get("classification_note") and m["name"] != shown
+    ]
