@@ -25,8 +25,10 @@ import pytest
 
 from rockcli.model.load import load_model
 from rockcli.studies.kinematic import kinematic_model
+from tests.demand import SOIL_B
 
-WALL = """
+WALL = (
+    """
 name = "flexure with a floor on the lower block"
 kind = "wall"
 [geometry]
@@ -54,19 +56,9 @@ hinge_height = 2.0
 [ntc]
 edition = "2019"
 FC = 1.35
-[ntc.demand.SLD]
-ag = 0.06
-F0 = 2.5
-Tc_star = 0.27
-[ntc.demand.SLV]
-ag = 0.15
-F0 = 2.5
-Tc_star = 0.29
-[ntc.demand.SLC]
-ag = 0.19
-F0 = 2.5
-Tc_star = 0.30
 """
+    + SOIL_B
+)
 
 
 def flexure(tmp_path: Path, edition: str):
@@ -88,7 +80,8 @@ def test_per_weight_2009(tmp_path: Path) -> None:
     assert entry.result.e_star == pytest.approx(25.0 / 27.0, rel=1e-12)
 
 
-ONE_BLOCK = """
+ONE_BLOCK = (
+    """
 name = "block with a floor"
 kind = "wall"
 [geometry]
@@ -105,19 +98,9 @@ from_pivot = 0.25
 [ntc]
 edition = "2019"
 FC = 1.35
-[ntc.demand.SLD]
-ag = 0.06
-F0 = 2.5
-Tc_star = 0.27
-[ntc.demand.SLV]
-ag = 0.15
-F0 = 2.5
-Tc_star = 0.29
-[ntc.demand.SLC]
-ag = 0.19
-F0 = 2.5
-Tc_star = 0.30
 """
+    + SOIL_B
+)
 
 
 def test_one_block_with_a_load_has_e_star_one_in_2019(tmp_path: Path) -> None:

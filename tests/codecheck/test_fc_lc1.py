@@ -18,8 +18,10 @@ from click.testing import CliRunner
 from rockcli.cli.main import cli
 from rockcli.model.load import load_model
 from rockcli.studies.kinematic import kinematic_model
+from tests.demand import SOIL_B
 
-WALL = """
+WALL = (
+    """
 name = "wall"
 kind = "wall"
 [geometry]
@@ -33,19 +35,9 @@ unit_weight = 18.0
 [ntc]
 edition = "2019"
 {fc}
-[ntc.demand.SLD]
-ag = 0.06
-F0 = 2.5
-Tc_star = 0.27
-[ntc.demand.SLV]
-ag = 0.15
-F0 = 2.5
-Tc_star = 0.29
-[ntc.demand.SLC]
-ag = 0.19
-F0 = 2.5
-Tc_star = 0.30
 """
+    + SOIL_B
+)
 STRENGTH = "[masonry]\nf_m = 2.0e6"
 
 

@@ -16,6 +16,7 @@ import pytest
 from click.testing import CliRunner
 
 from rockcli.cli.main import cli
+from tests.demand import SOIL_A_FLAT
 
 ROOT = Path(__file__).resolve().parents[2]
 FACADE = ROOT / "examples" / "two-storey-facade.toml"
@@ -23,7 +24,8 @@ G = 9.81
 #: Tolerance of the hand values that neglect the top restraint's 1 mN.
 REL = 1e-7
 #: A one-storey wall on the ground, 4 m × 0.5 m, 1 m wide, 18 kN/m³, E = 1 GPa; soil A.
-WALL = """
+WALL = (
+    """
 name = "free wall"
 kind = "wall"
 [geometry]
@@ -48,19 +50,9 @@ free = true
 edition = "2019"
 FC = 1.35
 soil = "A"
-[ntc.demand.SLD]
-ag = 0.05
-F0 = 2.5
-Tc_star = 0.3
-[ntc.demand.SLV]
-ag = 0.15
-F0 = 2.5
-Tc_star = 0.3
-[ntc.demand.SLC]
-ag = 0.2
-F0 = 2.5
-Tc_star = 0.3
 """
+    + SOIL_A_FLAT
+)
 
 
 def kinematic(path: Path, *args: str) -> dict:

@@ -22,8 +22,10 @@ import pytest
 from click.testing import CliRunner
 
 from rockcli.cli.main import cli
+from tests.demand import SOIL_A_FLAT
 
-WALL = """
+WALL = (
+    """
 name = "tied wall"
 kind = "wall"
 [geometry]
@@ -43,19 +45,9 @@ from_pivot = 0.0
 [ntc]
 edition = "2019"
 FC = 1.35
-[ntc.demand.SLD]
-ag = 0.05
-F0 = 2.5
-Tc_star = 0.3
-[ntc.demand.SLV]
-ag = 0.15
-F0 = 2.5
-Tc_star = 0.3
-[ntc.demand.SLC]
-ag = 0.2
-F0 = 2.5
-Tc_star = 0.3
 """
+    + SOIL_A_FLAT
+)
 W, B, H, H_T = 300e3, 0.3, 4.0, 7.5
 R, ALPHA = math.hypot(B, H), math.atan2(B, H)
 T = math.pi * 0.01**2 * 275e6 / 1.05

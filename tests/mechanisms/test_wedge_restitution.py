@@ -35,11 +35,13 @@ from rockcli.dynamics.simulate import simulate
 from rockcli.model.derive_wall import to_wall
 from rockcli.model.load import load_model
 from rockcli.studies.rocked import mechanism_block
+from tests.demand import SOIL_B
 
 G = 9.81
 GAMMA, H, T, L, T_R, BETA = 18e3, 5.0, 0.5, 4.0, 0.4, math.radians(30.0)
 
-MODEL = f"""
+MODEL = (
+    f"""
 name = "One storey with one return-wall wedge"
 kind = "wall"
 
@@ -67,22 +69,9 @@ FC = 1.35
 q = 2.0
 soil = "B"
 topography = "T1"
-
-[ntc.demand.SLD]
-ag = 0.06
-F0 = 2.5
-Tc_star = 0.27
-
-[ntc.demand.SLV]
-ag = 0.15
-F0 = 2.5
-Tc_star = 0.29
-
-[ntc.demand.SLC]
-ag = 0.19
-F0 = 2.5
-Tc_star = 0.30
 """
+    + SOIL_B
+)
 
 
 def bodies() -> list[tuple[float, float, float, float]]:
