@@ -118,15 +118,18 @@ def overturn_angle(settings: SolverSettings, block: Block) -> float:
 def restitution_rule(rule: str, block: Block, rocked: tuple[str, str] | None) -> str:
     """How e was obtained, said for what is rocked: the model's rule for its block; for a
     wall's mechanism, Housner's balance about the new pivot of its body (one rigid body) or
-    the projection on the motion after the impact (a chain), times the model's factor (an
-    explicit e as given)."""
+    the projection on the motion after the impact (a chain), or for a one-sided mechanism
+    the energy that impact keeps (mechanics.rebound_restitution), times the model's factor
+    (an explicit e as given)."""
     if rocked is None or rule == "explicit":
         return rule
-    own = (
-        Note("projection", "projection of the chain's motion on the motion after the impact")
-        if block.chain is not None
-        else Note("housner_pivot", "Housner of the mechanism's body about the new pivot")
-    )
+    if block.one_sided:
+        own = Note("one_sided_impact", "the energy Housner's impact at the other edge keeps, "
+                   "the mechanism turning back about its own pivot: √(e₊·e₋)")  # fmt: skip
+    elif block.chain is not None:
+        own = Note("projection", "projection of the chain's motion on the motion after the impact")
+    else:
+        own = Note("housner_pivot", "Housner of the mechanism's body about the new pivot")
     if isinstance(rule, Note) and rule.key == "factored":
         from rockcli.model.derive import factored
 
