@@ -70,8 +70,9 @@ def fragility() -> None:
 @output_format
 def fit(data, method, ddof, output):
     """Fit P(DS | IM) = Φ(ln(IM/θ)/β) to DATA.csv: the median θ and dispersion β, and a 95 %
-    bootstrap band. MSA by maximum likelihood on the binomial counts (Baker 2015); IDA as the
-    lognormal of the collapse intensities."""
+    band (MSA: profile likelihood; IDA: exact noncentral-t, or a parametric bootstrap with
+    censored records). MSA by maximum likelihood on the binomial counts (Baker 2015); IDA
+    as the lognormal of the collapse intensities."""
     import numpy as np
 
     from rockcli.errors import InputError
@@ -154,7 +155,7 @@ def run(
 ):
     """Run the fragility study STUDY.toml: IDA (each record scaled up until each damage state
     is first reached) or MSA (each record at each intensity level), then the lognormal
-    fragility of each damage state with its 95 % bootstrap band.
+    fragility of each damage state with its 95 % band.
 
     Every run goes to OUT/cases.csv as its record completes; --resume continues an
     interrupted study (Ctrl-C or SIGTERM: exit 130, finished records kept).

@@ -9,8 +9,10 @@
 - MSA: at each level, the records run and those whose max θ/α reaches the state's level, and
   the binomial maximum likelihood over the levels (rockcli.fragility.fit.msa_fit).
 
-Each fit has its 95 % bootstrap band at intensities inside the analysed range. The document
-is the `rock fragility --format json` contract.
+Each fit has its 95 % band at intensities inside the analysed range, and ``band_method``
+says what the band is (rockcli.fragility.fit.band_method: the profile likelihood for MSA; for
+IDA the exact noncentral-t band, or with censored records a parametric bootstrap). The
+document is the `rock fragility --format json` contract.
 """
 
 from __future__ import annotations
@@ -22,7 +24,7 @@ from typing import Any
 import numpy as np
 
 from rockcli import __version__
-from rockcli.fragility.fit import Fit, ida_curve, msa_curve
+from rockcli.fragility.fit import Fit, band_method, ida_curve, msa_curve
 from rockcli.fragility.run import Task, TaskResult, exceedances, stripe_counts
 from rockcli.fragility.search import scan_points
 from rockcli.fragility.study import FragilityPlan, State
@@ -104,6 +106,7 @@ def _state_entry(
     entry: dict[str, Any] = {"name": state.name, "level": level_value(state.level)}
     n_runs = sum(len(r.runs) for r in found if r.error is None)
     fit: Fit | None = None
+    censored = np.array([])
     try:
         if plan.method == "ida":
             assert plan.scan is not None
@@ -132,6 +135,7 @@ def _state_entry(
             ci_im=[],
             ci=[],
             probability=[],
+            band_method=None,
             note=str(exc),
         )
         return entry
@@ -143,6 +147,7 @@ def _state_entry(
         ci_im=at.tolist(),
         ci=[[_finite(lo), _finite(hi)] for lo, hi in band.tolist()],
         probability=fit.probability(at).tolist(),
+        band_method=band_method(plan.method, censored.size > 0),
     )
     return entry
 

@@ -3,7 +3,7 @@
 JSON (the contract of `rock fragility`): ``{"schema", "rock_version", "method", "im", "file",
 "damage_states": [{"name", "level", "median", "beta", "beta_ddof", "n_records", "n_runs",
 "ci_im", "ci"}], "records"}``. ``beta_ddof`` is the divisor's offset of β² for IDA (0: n, the
-maximum likelihood; 1: n − 1) and null for MSA (a likelihood fit); ``ci`` is the bootstrap
+maximum likelihood; 1: n − 1) and null for MSA (a likelihood fit); ``ci`` is the 95 %
 band of the probability, [lo, hi] at each intensity of ``ci_im``; ``level`` is null and
 ``records`` empty for a data set read from a file (it names no damage level nor records).
 """
@@ -16,7 +16,7 @@ import numpy as np
 
 from rockcli import __version__
 from rockcli.fragility.data import FragilityData
-from rockcli.fragility.fit import CONFIDENCE, Fit
+from rockcli.fragility.fit import CONFIDENCE, Fit, band_method
 from rockcli.terminal.table import Column, Report, Table, key_value
 
 SCHEMA = 1
@@ -41,6 +41,9 @@ def fit_document(data: FragilityData, fit: Fit, at: np.ndarray, band: np.ndarray
         "ci_im": at.tolist(),
         "ci": [[_finite(lo), _finite(hi)] for lo, hi in band.tolist()],
         "probability": fit.probability(at).tolist(),
+        "band_method": band_method(
+            data.method, bool(ida and data.censored is not None and data.censored.any())
+        ),
     }
     return {
         "schema": SCHEMA,
@@ -91,8 +94,7 @@ def fit_report(doc: dict[str, Any]) -> Report:
         title=f"rock fragility fit — {doc['file']}",
         tables=(key_value("Lognormal fragility", items), Table("Curve", BAND_COLUMNS, rows)),
         notes=(
-            "P(DS | IM) = Φ(ln(IM/θ)/β); the band: bootstrap, "
-            + ("the records drawn again" if ida else "each level's counts drawn again"),
+            f"P(DS | IM) = Φ(ln(IM/θ)/β); the band: {state['band_method']}",
             *(
                 (
                     "censored records (censored = 1) did not reach the state up to their im: the "

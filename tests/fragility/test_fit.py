@@ -84,17 +84,19 @@ def test_an_ida_data_set_that_defines_no_fit_says_why(im: list[float]) -> None:
         ida_fit(np.array(im))
 
 
-def test_the_bootstrap_bands_hold_the_fit_and_repeat_with_their_seed() -> None:
+def test_the_bands_hold_the_fit() -> None:
+    """The MSA band (profile likelihood) and the IDA band (noncentral t) are intervals that
+    hold the fit's own probability: the profile deviance is 0 at the fit, and the exact IDA
+    band holds it with either divisor of β (n or n − 1)."""
     at = np.array([0.2, 0.4, 0.8])
-    for band, fit in (
-        (msa_band(LEVELS, RUNS, EXCEEDANCES, at, samples=300), msa_fit(LEVELS, RUNS, EXCEEDANCES)),
-        (ida_band(COLLAPSES, at, samples=300), ida_fit(COLLAPSES)),
+    for band, fits in (
+        (msa_band(LEVELS, RUNS, EXCEEDANCES, at), [msa_fit(LEVELS, RUNS, EXCEEDANCES)]),
+        (ida_band(COLLAPSES, at), [ida_fit(COLLAPSES), ida_fit(COLLAPSES, ddof=1)]),
     ):
         assert band.shape == (3, 2) and np.all(band[:, 0] <= band[:, 1])
-        p = fit.probability(at)
-        assert np.all((band[:, 0] <= p) & (p <= band[:, 1]))
-    again = msa_band(LEVELS, RUNS, EXCEEDANCES, at, samples=300)
-    assert np.array_equal(again, msa_band(LEVELS, RUNS, EXCEEDANCES, at, samples=300))
+        for fit in fits:
+            p = fit.probability(at)
+            assert np.all((band[:, 0] <= p) & (p <= band[:, 1]))
 
 
 #: Three records of COLLAPSES' study that did not reach the state by the scan's end, 0.7 g.
@@ -141,31 +143,52 @@ def test_censored_ida_without_censored_records_is_the_closed_form() -> None:
     assert ida_censored_fit(COLLAPSES, np.array([])) == ida_fit(COLLAPSES)
 
 
-def test_the_censored_band_holds_its_fit() -> None:
+def test_the_censored_band_holds_its_fit_and_repeats_with_its_seed() -> None:
     from rockcli.fragility.fit import ida_censored_band, ida_censored_fit
 
     at = np.array([0.2, 0.4, 0.8])
     band = ida_censored_band(COLLAPSES, CENSORED, at, samples=200)
     p = ida_censored_fit(COLLAPSES, CENSORED).probability(at)
     assert band.shape == (3, 2) and np.all((band[:, 0] <= p) & (p <= band[:, 1]))
+    assert np.array_equal(band, ida_censored_band(COLLAPSES, CENSORED, at, samples=200))
 
 
-def test_the_bands_refits_are_the_maximum_likelihood_of_each_resample() -> None:
-    """The band refits every resample by Fisher scoring at once (fit.probit_refits): each
-    equals msa_fit's Nelder–Mead search on that resample (to 1e-6, the search's own
-    tolerance); a separated resample (no finite maximum) is left to msa_fit."""
-    from rockcli.fragility.fit import probit_refits
+def test_the_msa_band_is_the_range_of_p_over_the_likelihood_region() -> None:
+    """The MSA band at x is the range of P(x) over the (θ, β) whose deviance from the fit is
+    at most χ²₁(0.95) = 3.84 (the profile likelihood; Venzon & Moolgavkar 1988), checked two
+    independent ways. (1) By brute force on a grid of (θ, β) with the log-likelihood written
+    from the definition (log_likelihood above): every grid point inside the region is a
+    candidate, so the band holds the grid's range, and it exceeds it by at most what one grid
+    step moves P (θ steps of 1.25e-3 g and β steps of 0.5 % move P by < 3e-3 here; 5e-3
+    allowed). (2) At each end η = Φ⁻¹(P), the deviance maximised over β by scipy's bounded
+    scalar search (scipy.stats' log-CDFs) is 3.84, to 1e-6."""
+    from scipy import optimize, special
 
-    whole = msa_fit(LEVELS, RUNS, EXCEEDANCES)
-    rng = np.random.default_rng(7)
-    draws = np.array([rng.binomial(RUNS, EXCEEDANCES / RUNS) for _ in range(50)])
-    separated = np.array([0, 0, 0, 20, 20, 20, 20])
-    theta, beta, ok = probit_refits(np.log(LEVELS), RUNS, np.vstack([draws, separated]), whole)
-    assert ok[:-1].all() and not ok[-1]
-    for k, z in enumerate(draws):
-        fit = msa_fit(LEVELS, RUNS, z, (whole.median, whole.beta), 1e-12)
-        assert theta[k] == pytest.approx(fit.median, rel=1e-6)
-        assert beta[k] == pytest.approx(fit.beta, rel=1e-6)
+    at = np.array([0.2, 0.4, 0.8])
+    fit = msa_fit(LEVELS, RUNS, EXCEEDANCES)
+    band = msa_band(LEVELS, RUNS, EXCEEDANCES, at)
+    theta, beta = np.linspace(0.25, 0.75, 401), np.geomspace(0.2, 1.6, 401)
+    best = log_likelihood(np.array([fit.median]), np.array([fit.beta]))[0, 0]
+    region = 2.0 * (best - log_likelihood(theta, beta)) <= stats.chi2.ppf(0.95, 1)
+    assert not (region[0].any() or region[-1].any() or region[:, 0].any() or region[:, -1].any())
+    p = special.ndtr(np.log(at / theta[:, None, None]) / beta[None, :, None])[region]
+    assert np.all(band[:, 0] <= p.min(axis=0) + 1e-9) and np.all(band[:, 1] >= p.max(axis=0) - 1e-9)
+    assert np.all(p.min(axis=0) - band[:, 0] < 5e-3) and np.all(band[:, 1] - p.max(axis=0) < 5e-3)
+
+    def minus_log_likelihood(u: np.ndarray) -> float:  # u_j = Φ⁻¹(p_j) at each level
+        n, z = RUNS, EXCEEDANCES
+        return -float((z * stats.norm.logcdf(u) + (n - z) * stats.norm.logcdf(-u)).sum())
+
+    at_fit = minus_log_likelihood(np.log(LEVELS / fit.median) / fit.beta)
+    for x, ends in zip(at, band, strict=True):
+        for end in ends:  # Φ⁻¹(P(x)) held at the end, maximised over b = 1/β
+            eta = float(stats.norm.ppf(end))
+            found = optimize.minimize_scalar(
+                lambda b, x=x, eta=eta: minus_log_likelihood(eta + b * np.log(LEVELS / x)),
+                bounds=(1e-6, 50.0), method="bounded", options={"xatol": 1e-10},
+            )  # fmt: skip
+            deviance = 2.0 * (found.fun - at_fit)
+            assert deviance == pytest.approx(stats.chi2.ppf(0.95, 1), abs=1e-6)
 
 
 def test_the_censored_refits_are_the_censored_maximum_likelihood_of_each_resample() -> None:
@@ -178,8 +201,7 @@ def test_the_censored_refits_are_the_censored_maximum_likelihood_of_each_resampl
     reached = np.arange(every.size) < COLLAPSES.size
     rng = np.random.default_rng(11)
     picks = rng.integers(0, every.size, (60, every.size))
-    counts = np.stack([np.bincount(p, minlength=every.size) for p in picks])
-    theta, beta, ok = censored_refits(np.log(COLLAPSES), np.log(CENSORED), counts, whole)
+    theta, beta, ok = censored_refits(np.log(every[picks]), reached[picks], whole)
     checked = 0
     for k, pick in enumerate(picks):
         xs, cs = every[pick][reached[pick]], every[pick][~reached[pick]]

@@ -117,6 +117,7 @@ def test_ida_finds_housners_thresholds_and_fits_them(folder: Path, tmp_path: Pat
     assert {"name", "level", "median", "beta", "beta_ddof", "n_records", "n_runs", "ci"} <= set(
         over
     )
+    assert over["band_method"].startswith("exact for a lognormal (noncentral t")
 
 
 def test_pgv_scales_the_same_runs(folder: Path, tmp_path: Path) -> None:
@@ -156,6 +157,7 @@ def test_msa_counts_follow_the_thresholds(folder: Path, tmp_path: Path) -> None:
     assert [s["exceedances"] for s in over["stripes"]] == [0, 1, 2]
     assert [s["runs"] for s in over["stripes"]] == [2, 2, 2]
     assert over["beta_ddof"] is None and doc["levels"] == levels
+    assert over["band_method"].startswith("profile likelihood of the binomial counts")
 
 
 def test_resume_computes_only_what_is_missing(folder: Path, tmp_path: Path) -> None:
@@ -450,6 +452,7 @@ def test_records_that_do_not_reach_a_state_are_censored(folder: Path, tmp_path: 
     fit = ida_censored_fit(found, np.array([0.45]))
     assert (over["median"], over["beta"]) == (fit.median, fit.beta)
     assert over["median"] > math.exp(np.log(found).mean())
+    assert over["band_method"].startswith("parametric bootstrap of the fitted censored")
 
 
 @pytest.mark.parametrize(
