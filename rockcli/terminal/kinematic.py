@@ -232,6 +232,9 @@ QUANTITIES = {
     "d_SLC": ("d_SLC", "m"),
     "T_SLC": ("T_SLC", "s"),
     "ag_SLD": ("capacity ag,SLD", "g"),
+    "T0": ("T0, free to vibrate [C8.7.1.7]", "s"),
+    "d_y": ("d_y, end of the elastic branch", "m"),
+    "a_y": ("a_y, end of the elastic branch", "m/s²"),
 }
 
 
