@@ -93,6 +93,8 @@ def kinematic_quantity(model: Model, inputs: KinematicInput, quantity: str) -> f
     from rockcli.studies.kinematic import kinematic_model
 
     entry = catalogue_entry(kinematic_model(model, edition=inputs.edition), inputs.mechanism)
+    if quantity == "e_rocking":
+        return rocking_restitution(model, entry.name)
     if quantity == "instability_displacement":
         return instability_displacement(model, inputs.edition, entry)
     result = entry.result
@@ -105,6 +107,17 @@ def kinematic_quantity(model: Model, inputs: KinematicInput, quantity: str) -> f
         "hinge_height": entry.hinge_height,
     }
     return direct[quantity] if quantity in direct else result.quantities.get(quantity)
+
+
+def rocking_restitution(model: Model, name: str) -> float:
+    """The coefficient of restitution the time history gives the mechanism named, side +1
+    (rockcli.studies.rocked.mechanism_block: Housner's about the new pivot, or a one-sided
+    mechanism's √(e₊·e₋))."""
+    from rockcli.model.derive_wall import to_wall
+    from rockcli.studies.rocked import mechanism_block, named_spec
+
+    wall = to_wall(model)
+    return mechanism_block(model, wall, named_spec(wall, name)).restitution(1)
 
 
 def catalogue_entry(result: KinematicResult, name: str | None) -> MechanismResult:

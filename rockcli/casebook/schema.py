@@ -80,6 +80,7 @@ QUANTITIES: dict[Kind, dict[str, str]] = {
         "T0": "s",
         "ag_SLD": "g",
         "d_SLV": "m",
+        "e_rocking": "-",
     },
     Kind.FREE_ROCKING: {"period": "s", "amplitude": "rad"},
     Kind.IMPULSE: {"omega_threshold": "rad/s"},
