@@ -24,6 +24,29 @@ import math
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 
+#: Most scales a scan may try ((last − first)/step + 1): a bound on a typo (a step of 1e-9
+#: would list 10⁹ intensities), for `rock fragility` and `rock spectrum overturning` alike.
+MAX_SCAN_POINTS = 100_000
+#: The narrowest bisection bracket asked for, as a share of the scan's last scale: a float
+#: carries 16 digits, so a tolerance below last·1e-12 cannot be met (the bracket stops
+#: shrinking), and the search would never end.
+MIN_TOLERANCE_SHARE = 1e-12
+#: Most bisection steps of one bracket: a step of the scan halved 200 times is far below any
+#: tolerance a float can tell, so the loop ends whatever it is given.
+MAX_BISECTIONS = 200
+
+
+def scan_problem(first: float, step: float, last: float, tolerance: float) -> str | None:
+    """What makes a scan unbounded (too many scales, or a tolerance narrower than the float
+    spacing at ``last`` allows), None when it is bounded."""
+    if (last - first) / step + 1.0 > MAX_SCAN_POINTS:
+        return f"more than {MAX_SCAN_POINTS} scales: raise the step to at least " \
+               f"{(last - first) / (MAX_SCAN_POINTS - 1):.3g}"  # fmt: skip
+    if tolerance < MIN_TOLERANCE_SHARE * last:
+        return f"a tolerance below {MIN_TOLERANCE_SHARE:g} of the last intensity " \
+               f"({MIN_TOLERANCE_SHARE * last:.3g}), which a float cannot resolve"  # fmt: skip
+    return None
+
 
 @dataclass(frozen=True)
 class Exceedance:
@@ -84,8 +107,10 @@ def first_exceedances(
             found.append(Exceedance(level, scales[0], None))
             continue
         lo, hi = scales[hit - 1], scales[hit]
-        while hi - lo > tolerance:
+        for _ in range(MAX_BISECTIONS):
             mid = 0.5 * (lo + hi)
+            if hi - lo <= tolerance or not lo < mid < hi:  # met, or the floats ran out
+                break
             if measure(mid) >= level:
                 hi = mid
             else:

@@ -31,6 +31,7 @@ from typing import Any, Literal
 from pydantic import BaseModel, Field, ValidationError
 
 from rockcli.errors import InputError
+from rockcli.fragility.search import MAX_SCAN_POINTS, MIN_TOLERANCE_SHARE, scan_problem
 from rockcli.model.schema_base import Table
 from rockcli.records.periods import MAX_PERIOD, MIN_PERIOD
 from rockcli.studies.sweep.paths import AxisSpec
@@ -429,6 +430,17 @@ def check_scan(study: FragilityStudy, file: str) -> tuple[float, float, float, f
             allowed=f"an intensity ≥ first ({scan.first:g})",
         )
     tolerance = scan.tolerance if scan.tolerance is not None else scan.step / 20.0
+    problem = scan_problem(scan.first, scan.step, scan.last, tolerance)
+    if problem is not None:
+        too_many = problem.startswith("more")
+        raise InputError(
+            f"an unbounded scan: {problem}",
+            file=file,
+            where="ida.step" if too_many else "ida.tolerance",
+            value=scan.step if too_many else tolerance,
+            allowed=f"at most {MAX_SCAN_POINTS} scales from first to last, and a tolerance "
+            f"≥ {MIN_TOLERANCE_SHARE:g} × last",
+        )
     return (scan.first, scan.step, scan.last, tolerance)
 
 

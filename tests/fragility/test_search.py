@@ -85,3 +85,16 @@ def test_an_empty_or_non_positive_scan_is_refused(kwargs: dict[str, float]) -> N
 def test_levels_out_of_order_are_refused() -> None:
     with pytest.raises(ValueError):
         first_exceedances(lambda s: s, [0.5, 0.1], first=0.1, step=0.1, last=1.0, tolerance=1e-3)
+
+
+def test_a_tolerance_below_the_float_spacing_ends() -> None:
+    """Issue 34, F5: the bisection stops when the floats run out, whatever the tolerance."""
+    found, _ = first_exceedances(
+        lambda s: math.inf if s >= 0.3 else 0.0,
+        [math.inf],
+        first=0.1,
+        step=0.1,
+        last=1.0,
+        tolerance=1e-300,
+    )
+    assert found[0].scale == pytest.approx(0.3, abs=1e-15)

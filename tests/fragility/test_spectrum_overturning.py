@@ -324,3 +324,10 @@ def test_a_dask_cluster_gives_the_same_spectrum() -> None:
         remote = rock(*args, "--scheduler", cluster.scheduler_address)
     assert local[0] == remote[0] == 0
     assert local[1] == remote[1]
+
+
+def test_a_tolerance_below_the_float_spacing_is_one_line() -> None:
+    """Issue 34, F5: `--tolerance 1e-16` never ended; it is refused at once."""
+    code, _, err = rock("--pulse", "one-sine", "--alpha", "0.2", "--ratios", "2",
+                        "--tolerance", "1e-16")  # fmt: skip
+    assert code == 2 and err.count("\n") == 1 and "--tolerance" in err, err

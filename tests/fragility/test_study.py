@@ -516,3 +516,19 @@ last = 3.0
     assert [r["mechanism"] for r in json.loads(out)["records"]] == ["gable"]
     code, _, err = run(here, text.replace('"gable"', '"roof"'), "--out", str(tmp_path / "p"))
     assert code == 2 and "mechanism" in err and "gable" in err and err.count("\n") == 1
+
+
+@pytest.mark.parametrize(
+    ("scan", "key"),
+    [
+        ("first = 0.2\nstep = 1e-9\nlast = 1.0\ntolerance = 0.001", "ida.step"),
+        ("first = 0.2\nstep = 0.05\nlast = 1e300\ntolerance = 0.001", "ida.step"),
+        ("first = 0.2\nstep = 0.05\nlast = 1.0\ntolerance = 1e-300", "ida.tolerance"),
+    ],
+)
+def test_an_unbounded_scan_is_one_line(folder: Path, tmp_path: Path, scan: str, key: str) -> None:
+    """Issue 34, F5 and F6: a step that lists 10⁹ intensities (MemoryError after minutes), or
+    a tolerance below the float spacing (a bisection that never ends), are refused at once."""
+    text = study_text().split("[ida]")[0] + f"[ida]\n{scan}\n"
+    code, _, err = run(folder, text, "--out", str(tmp_path / "u"))
+    assert code == 2 and err.count("\n") == 1 and key in err, err

@@ -8,9 +8,8 @@ from __future__ import annotations
 import math
 
 from rockcli.errors import InputError
+from rockcli.fragility.search import MAX_SCAN_POINTS, MIN_TOLERANCE_SHARE
 
-#: Most points a scan may try per spectrum point ((last − first)/step): a bound on a typo.
-MAX_SCAN_POINTS = 100_000
 #: Most values of --ratios, --p or --R.
 MAX_VALUES = 200
 PULSES = ("one-sine", "one-cosine", "ricker")
@@ -37,12 +36,20 @@ def make_scan(first: float, step: float, last: float, tolerance: float):
             value=last,
             allowed=f"a finite number ≥ --scan-from ({first:g})",
         )
-    if (last - first) / step > MAX_SCAN_POINTS:
+    if (last - first) / step + 1.0 > MAX_SCAN_POINTS:
         raise InputError(
             "too many scan points",
             where="--scan-step",
             value=step,
-            allowed=f"a step ≥ (scan-to − scan-from)/{MAX_SCAN_POINTS}",
+            allowed=f"a step ≥ (scan-to − scan-from)/{MAX_SCAN_POINTS - 1}",
+        )
+    if tolerance < MIN_TOLERANCE_SHARE * last:
+        raise InputError(
+            "narrower than a float can resolve at the scan's end: the bisection would not end",
+            where="--tolerance",
+            value=tolerance,
+            allowed=f"a tolerance ≥ {MIN_TOLERANCE_SHARE:g} × --scan-to "
+            f"({MIN_TOLERANCE_SHARE * last:.3g})",
         )
     if tolerance >= step:
         raise InputError(
