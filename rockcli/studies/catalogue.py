@@ -33,6 +33,7 @@ from rockcli.mechanisms.catalogue import (
     optimal_hinge,
     overburden_above,
     sides_of,
+    storey_at,
 )
 from rockcli.mechanisms.wall import OPTIMAL, MechanismSpec, MechanismType, Wall
 from rockcli.model.derive_ntc import NtcSettings
@@ -248,14 +249,8 @@ def free_member(wall: Wall, spec: MechanismSpec) -> tuple[float, float, float]:
         storey = wall.storeys[spec.storey - 1]
         return KAPPA_FLEXURE, storey.height, storey.thickness
     hinge = hinge_of(spec, wall)
-    k = storey_at_height(wall, hinge)
+    k = storey_at(wall, hinge)
     return KAPPA_CANTILEVER, wall.height - hinge + gable, wall.storeys[k].thickness
-
-
-def storey_at_height(wall: Wall, hinge: float) -> int:
-    """The index of the storey whose base is at ``hinge`` (0-based)."""
-    bases = wall.storey_bases()
-    return min(range(len(bases)), key=lambda i: abs(bases[i] - hinge))
 
 
 def flexure_notes(wall: Wall, spec: MechanismSpec) -> tuple[str, ...]:

@@ -16,6 +16,7 @@ from click.testing import CliRunner
 
 from rockcli.cli.main import cli
 from tests.cli.conftest import ROOT
+from tests.demand import SOIL_B
 
 FACADE = ROOT / "examples" / "two-storey-facade.toml"
 RICKER = ROOT / "records" / "ricker_Tp0.5s_0.5g.txt"
@@ -39,19 +40,7 @@ height = 4.0
 moves = false
 [ntc]
 edition = "2019"
-[ntc.demand.SLD]
-ag = 0.06
-F0 = 2.5
-Tc_star = 0.27
-[ntc.demand.SLV]
-ag = 0.15
-F0 = 2.5
-Tc_star = 0.29
-[ntc.demand.SLC]
-ag = 0.19
-F0 = 2.5
-Tc_star = 0.30
-"""
+""" + SOIL_B.lstrip("\n")
 
 
 def run(*args: str) -> tuple[int, str, str]:

@@ -19,6 +19,7 @@ from click.testing import CliRunner
 
 from rockcli.cli.main import cli
 from tests.cli.conftest import PULSES
+from tests.demand import SOIL_A_FLAT
 
 ACTION_KEYS = {
     "name",
@@ -43,19 +44,7 @@ DEMAND = """
 [ntc]
 edition = "{edition}"
 FC = 1.35
-[ntc.demand.SLD]
-ag = 0.05
-F0 = 2.5
-Tc_star = 0.3
-[ntc.demand.SLV]
-ag = 0.15
-F0 = 2.5
-Tc_star = 0.3
-[ntc.demand.SLC]
-ag = 0.2
-F0 = 2.5
-Tc_star = 0.3
-"""
+""" + SOIL_A_FLAT.lstrip("\n")
 
 
 def wall(tmp_path: Path, restrainer: str, edition: str = "2009") -> Path:
