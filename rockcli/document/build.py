@@ -178,7 +178,7 @@ def source_digest() -> str:
 
 def identification(inputs: Inputs, w: Words) -> Section:
     from rockcli import __version__
-    from rockcli.studies.sweep.output import file_digest
+    from rockcli.studies.folder.folder import file_digest
 
     software = Grid(
         caption=w("ident.software_caption"),

@@ -20,7 +20,7 @@ from click.testing import CliRunner
 
 from rockcli.cli.main import cli
 from rockcli.errors import InputError
-from rockcli.studies.sweep.lock import LOCK_FILE, lock_folder, unlock_folder
+from rockcli.studies.folder.lock import LOCK_FILE, lock_folder, unlock_folder
 from rockcli.studies.sweep.output import CASES_FILE, STATE_FILE, Output
 from tests.sweep.conftest import ROOT, STUDY, WriteStudy
 

@@ -15,30 +15,27 @@ from __future__ import annotations
 
 import csv
 import functools
-import hashlib
 import io
 import json
 import math
-import os
 from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
-from contextlib import contextmanager, suppress
 from dataclasses import asdict
 from pathlib import Path
 from typing import Any, NoReturn
 
 from rockcli import __version__
 from rockcli.errors import InputError, install_hint
-from rockcli.outfile import replacing, write_text
-from rockcli.studies.sweep.lock import (
-    LOCK_FILE,
-    FolderBusy,
-    NotALockFile,
-    lock_folder,
-    unlock_folder,
+from rockcli.outfile import replacing
+from rockcli.studies.folder.folder import (
+    CASES_FILE,
+    StudyFolder,
+    digest_of,
+    file_digest,
+    source_digest,
 )
-from rockcli.studies.sweep.study import RecordSource, StudyPlan
+from rockcli.studies.folder.lock import LOCK_FILE
+from rockcli.studies.sweep.study import StudyPlan
 
-CASES_FILE = "cases.csv"
 PARQUET_FILE = "cases.parquet"
 #: What --output parquet needs, and how to get it.
 PARQUET_EXTRA = f"{install_hint('parquet')} (pyarrow)"
@@ -47,11 +44,9 @@ SUMMARY_FILE = "summary.json"
 #: Every name a study gives a file in its output folder. Each is written through a new
 #: temporary file beside it (rockcli.outfile.replacing: mkstemp, then a rename that replaces
 #: a link rather than follows it); cases.csv is appended to with O_NOFOLLOW; the lock file is
-#: opened with O_NOFOLLOW (rockcli.studies.sweep.lock).
+#: opened with O_NOFOLLOW (rockcli.studies.folder: the one machinery of study folders).
 FOLDER_FILES = (CASES_FILE, PARQUET_FILE, STATE_FILE, SUMMARY_FILE, LOCK_FILE)
 STATE_SCHEMA = 1
-#: Bytes read at a time when hashing a record file.
-HASH_BLOCK = 1 << 20
 
 #: Result columns and their types, after the case id, the record and the axis columns.
 RESULT_COLUMNS: dict[str, type] = {
@@ -203,36 +198,12 @@ def column_lines(
     return [(",".join(fields) + "\n").encode("utf-8") for fields in zip(*ordered, strict=True)]
 
 
-def file_digest(path: str) -> str:
-    """The sha256 of a file's bytes (a record edited at the same size changes it); a regular
-    file only (rockcli.textfile.open_regular: a FIFO named by a suite would block)."""
-    from rockcli.textfile import open_regular
-
-    digest = hashlib.sha256()
-    with os.fdopen(open_regular(path, "input file"), "rb") as fh:
-        for block in iter(lambda: fh.read(HASH_BLOCK), b""):
-            digest.update(block)
-    return digest.hexdigest()
-
-
-def source_digest(source: RecordSource) -> str:
-    """The sha256 of a record file; of a suite file, over its bytes and its records' (a
-    record of the suite edited changes the study's results)."""
-    if not source.suite:
-        return file_digest(source.path)
-    from rockcli.suites.load import load_suite
-
-    parts = [file_digest(source.path)]
-    entries = load_suite(source.path, allow_outside=True).entries  # checked by load_study
-    parts += [file_digest(str(e.path)) for e in entries]
-    return hashlib.sha256(" ".join(parts).encode()).hexdigest()
-
-
 def fingerprint(plan: StudyPlan) -> str:
     """A hash of what decides the results: rock's version, the study, base model, records
     (each by its bytes, not its name or size)."""
     records = [
-        {**asdict(r), "path": Path(r.path).name, "sha256": source_digest(r)} for r in plan.records
+        {**asdict(r), "path": Path(r.path).name, "sha256": source_digest(r.path, suite=r.suite)}
+        for r in plan.records
     ]
     data = {
         "rock": __version__,
@@ -247,12 +218,12 @@ def fingerprint(plan: StudyPlan) -> str:
     }
     if plan.check_tolerance:  # only then: a study without it keeps its fingerprint
         data["check_tolerance"] = True
-    text = json.dumps(data, sort_keys=True, default=str)
-    return hashlib.sha256(text.encode()).hexdigest()
+    return digest_of(data)
 
 
-class Output:
-    """The output folder of one study run."""
+class Output(StudyFolder):
+    """The output folder of one study run (rockcli.studies.folder.folder: checked, locked,
+    written without following links, resumed by the content of its inputs)."""
 
     def __init__(
         self,
@@ -263,68 +234,25 @@ class Output:
     ) -> None:
         """label_of: a case id's first cells (case, record, axis values) as written, to check
         the rows kept on --resume against."""
+        super().__init__(
+            folder,
+            command="rock sweep",
+            state_file=STATE_FILE,
+            header=columns(plan),
+            fingerprint=fingerprint(plan),
+            row_problem=self._row_problem,
+        )
         self.label_of = label_of
-        self.folder = Path(folder)
-        self.header = columns(plan)
-        self.fingerprint = fingerprint(plan)
         self.n_cases = n_cases
         self.file = str(plan.file)
         # The blocks of rows in cases.csv, in the order written: (first id, last id, byte
         # offset, byte length); None once a block is not in ascending order.
         self._blocks: list[tuple[int, int, int, int]] | None = []
 
-    @property
-    def cases_path(self) -> Path:
-        return self.folder / CASES_FILE
-
-    def _state(self) -> dict[str, Any] | None:
-        try:
-            return dict(json.loads((self.folder / STATE_FILE).read_text(encoding="utf-8")))
-        except (OSError, ValueError):
-            return None
-
-    @contextmanager
-    def lock(self) -> Iterator[None]:
-        """The folder checked, made and locked for the block: no other `rock sweep` writes
-        into it meanwhile (InputError naming the pid of the one that holds it)."""
-        self._check_writable()
-        created = not self.folder.exists()
-        self._make_folder()
-        fd = self._take_lock()
-        try:
-            yield
-        except BaseException:
-            unlock_folder(self.folder, fd)
-            if created:  # refused before writing (a bad study): leave no empty folder
-                with suppress(OSError):
-                    self.folder.rmdir()
-            raise
-        unlock_folder(self.folder, fd)
-
-    def _take_lock(self) -> int | None:
-        try:
-            return lock_folder(self.folder)
-        except FolderBusy as exc:
-            pid = f" (pid {exc.pid})" if exc.pid is not None else ""
-            self._refuse(
-                f"is in use by another rock sweep{pid}",
-                "another --out, or wait until that run ends",
-            )
-        except (NotALockFile, OSError) as exc:
-            reason = (
-                exc.strerror if isinstance(exc, OSError) and exc.strerror else "not a regular file"
-            )
-            self._refuse(f"cannot be locked ({LOCK_FILE}: {reason})", f"remove {LOCK_FILE}")
-
     def check(self, *, resume: bool, overwrite: bool) -> dict[int, dict[str, str]]:
         """Before any work: the folder can be written and may be used; the rows kept from an
         earlier run (by case id) when resuming."""
-        self._check_writable()
-        state = self._state() if self.cases_path.exists() else None
-        same = state is not None and state.get("fingerprint") == self.fingerprint
-        if not overwrite:
-            self._check_reuse(state, same, resume)
-        return self.read_rows() if resume and same and not overwrite else {}
+        return self.read_rows() if self.keeps(resume=resume, overwrite=overwrite) else {}
 
     def start(self, kept: Mapping[int, Mapping[str, str]]) -> None:
         """Mark the study unfinished and rewrite cases.csv with the rows kept."""
@@ -334,113 +262,21 @@ class Output:
         size = self.cases_path.stat().st_size
         self._blocks = [(min(kept), max(kept), header, size - header)] if kept else []
 
-    def _check_writable(self) -> None:
-        folder = self.folder
-        try:
-            os.stat(folder)  # a name too long, a loop of links: refused here, not later
-        except FileNotFoundError:
-            pass
-        except OSError as exc:
-            self._refuse(f"cannot be used: {exc.strerror or exc}", "a shorter, plain folder path")
-        if folder.exists() and not folder.is_dir():
-            self._refuse("is a file", "a folder path")
-        self._check_link()
-        target = folder if folder.is_dir() else _existing_parent(folder)
-        if not os.access(target, os.W_OK | os.X_OK):
-            self._refuse(f"cannot be written ({target} is not writable)", "a writable folder")
-
-    def _check_link(self) -> None:
-        """Refuse an output folder that is a symbolic link leading out of the current folder
-        (a link planted at the default ./sweep-STUDY would send the results elsewhere)."""
-        if not self.folder.is_symlink():
-            return
-        if not self.folder.resolve().is_relative_to(Path.cwd().resolve()):
-            self._refuse(
-                f"is a symbolic link to {self.folder.resolve()}, outside the current folder",
-                "the folder itself as --out, or a link to a folder inside the current one",
-            )
-
-    def _make_folder(self) -> None:
-        try:
-            self.folder.mkdir(parents=True, exist_ok=True)
-        except OSError as exc:
-            self._refuse(f"cannot be made: {exc.strerror or exc}", "a writable folder path")
-
-    def _check_reuse(self, state: dict[str, Any] | None, same: bool, resume: bool) -> None:
-        """Refuse to replace what the folder holds unless it is this study, complete."""
-        if state is None:
-            if self.cases_path.exists():
-                self._refuse("holds a cases.csv that rock did not write", "--force")
-            return
-        if not same:
-            self._refuse(
-                "holds the results of another study (or the base model, the records, rock or "
-                "--check-tolerance changed since)",
-                "--force to start over, or another --out",
-            )
-        if not resume and not state.get("complete"):
-            self._refuse(
-                "holds an unfinished run of this study",
-                "--resume to continue it, or --force to start over",
-            )
-
-    def _refuse(self, problem: str, allowed: str) -> NoReturn:
-        raise InputError(
-            f"the output folder {problem}", file=str(self.folder), where="--out", allowed=allowed
+    def _write_state(self, *, complete: bool) -> None:
+        self.write_state(
+            complete=complete, schema=STATE_SCHEMA, study=self.file, cases=self.n_cases
         )
 
-    def _write_state(self, *, complete: bool) -> None:
-        self._make_folder()
-        try:
-            state = {
-                "schema": STATE_SCHEMA,
-                "study": self.file,
-                "fingerprint": self.fingerprint,
-                "cases": self.n_cases,
-                "columns": self.header,
-                "complete": complete,
-            }
-            write_text(self.folder / STATE_FILE, json.dumps(state, indent=2))
-        except OSError as exc:
-            raise InputError(
-                f"cannot write the output folder: {exc.strerror or exc}",
-                file=str(self.folder),
-                where="--out",
-                allowed="a writable folder",
-            ) from None
-
     def read_rows(self) -> dict[int, dict[str, str]]:
-        """The rows of cases.csv by case id (a half-written last line is dropped).
-
-        Every other line must be a row this study wrote: the header, then a case id below the
-        number of cases and a value of the right type in each result cell. A damaged file is
-        an InputError naming its line (start over with --force), never a silent gap.
-        """
-        try:
-            text = self.cases_path.read_text(encoding="utf-8")
-        except (OSError, UnicodeDecodeError) as exc:
-            self._damaged(None, f"cannot be read ({exc.__class__.__name__})")
-        lines = text.splitlines(keepends=True)
-        if lines and not lines[-1].endswith("\n"):
-            lines.pop()  # interrupted in the middle of a line
-        try:
-            rows = list(csv.reader(lines, strict=True))
-        except csv.Error as exc:
-            self._damaged(None, f"is not valid CSV ({exc})")
-        if not rows or rows[0] != self.header:
-            self._damaged(1, "the header is not this study's columns")
+        """The rows of cases.csv by case id (StudyFolder.read_lines, each row checked by
+        :meth:`_row_problem`; a case's first row kept)."""
         kept: dict[int, dict[str, str]] = {}
-        for number, row in enumerate(rows[1:], start=2):
-            problem = self._row_problem(row)
-            if problem:
-                self._damaged(number, problem)
+        for row in self.read_lines():
             kept.setdefault(int(row[0]), dict(zip(self.header, row, strict=True)))
         return kept
 
     def _row_problem(self, row: Sequence[str]) -> str | None:
         """What is wrong with a row of cases.csv, or None."""
-        if len(row) != len(self.header):
-            return f"{len(row)} cells, not {len(self.header)}"
         if not (row[0].isascii() and row[0].isdigit() and int(row[0]) < self.n_cases):
             return f"not a case id of this study (0 to {self.n_cases - 1})"
         expected = self.label_of(int(row[0])) if self.label_of is not None else None
@@ -454,18 +290,9 @@ class Output:
                 return f"column {name} is not a {kind.__name__}"
         return None
 
-    def _damaged(self, line: int | None, problem: str) -> NoReturn:
-        raise InputError(
-            f"cannot resume: {CASES_FILE} {problem}",
-            file=str(self.cases_path),
-            where=f"line {line}" if line else None,
-            allowed="a cases.csv written by rock sweep, or --force to start over",
-        )
-
     def _rewrite(self, rows: Mapping[int, Mapping[str, str]]) -> None:
         """cases.csv with the header and the given rows sorted by case id (atomically)."""
-        body = [self.header, *([rows[k][c] for c in self.header] for k in sorted(rows))]
-        write_text(self.cases_path, csv_lines(body))
+        self.rewrite([rows[k][c] for c in self.header] for k in sorted(rows))
 
     def append(self, rows: Iterable[Mapping[str, Any]]) -> list[int]:
         """Append the rows of a completed chunk; returns their case ids (append_lines)."""
@@ -474,22 +301,11 @@ class Output:
 
     def append_lines(self, ids: list[int], lines: Sequence[bytes]) -> list[int]:
         """Append the lines of a completed chunk's cases (ids: each line's case); returns the
-        ids.
-
-        A write that fails part-way (a full disk) raises :class:`PartialWrite` with the ids of
-        the rows whose whole line reached the file (--resume keeps those).
-        """
-        data = b"".join(lines)
-        flags = os.O_WRONLY | os.O_APPEND | getattr(os, "O_NOFOLLOW", 0)  # never via a link
-        fd = os.open(self.cases_path, flags)
-        try:
-            offset = os.fstat(fd).st_size
-            write_all(fd, data, lambda written: ids[: whole_lines(lines, written)])
-        finally:
-            os.close(fd)
+        ids (StudyFolder.append_bytes: PartialWrite when the disk fills part-way)."""
+        offset = self.append_bytes(ids, lines)
         if ids and self._blocks is not None:
             if all(a < b for a, b in zip(ids, ids[1:], strict=False)):
-                self._blocks.append((ids[0], ids[-1], offset, len(data)))
+                self._blocks.append((ids[0], ids[-1], offset, sum(map(len, lines))))
             else:
                 self._blocks = None
         return ids
@@ -515,7 +331,7 @@ class Output:
 
     def write_summary(self, summary: dict[str, Any]) -> None:
         """Write summary.json and mark the study complete."""
-        write_text(self.folder / SUMMARY_FILE, json.dumps(summary, indent=2, allow_nan=False))
+        self.write_file(SUMMARY_FILE, json.dumps(summary, indent=2, allow_nan=False))
         self._write_state(complete=True)
 
     def typed_rows(self) -> Iterator[tuple[int, dict[str, Any]]]:
@@ -564,45 +380,6 @@ class Output:
             allowed="one rock sweep at a time in a folder no other program writes to; "
             "rerun with --resume",
         )
-
-
-class PartialWrite(OSError):
-    """A write that failed part-way; ids: the rows whose whole line is in the file."""
-
-    def __init__(self, exc: OSError, ids: list[int]) -> None:
-        super().__init__(exc.errno, exc.strerror)
-        self.ids = ids
-
-
-def write_all(fd: int, data: bytes, saved: Callable[[int], list[int]]) -> None:
-    """Write every byte of data (os.write may write part of it); on an error, PartialWrite
-    with ``saved(bytes written)``."""
-    view = memoryview(data)
-    written = 0
-    while written < len(data):
-        try:
-            written += os.write(fd, view[written:])
-        except OSError as exc:
-            raise PartialWrite(exc, saved(written)) from exc
-
-
-def whole_lines(lines: Sequence[bytes], written: int) -> int:
-    """How many of the lines the first ``written`` bytes of their concatenation hold whole."""
-    count = end = 0
-    for line in lines:
-        end += len(line)
-        if end > written:
-            break
-        count += 1
-    return count
-
-
-def _existing_parent(path: Path) -> Path:
-    """The nearest folder above path that exists (where the output folder will be made)."""
-    for parent in path.absolute().parents:
-        if parent.is_dir():
-            return parent
-    return Path(".")
 
 
 def typed_rows(path: Path) -> Iterator[tuple[int, dict[str, Any]]]:

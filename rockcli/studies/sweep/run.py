@@ -22,11 +22,12 @@ import numpy as np
 
 from rockcli.errors import InputError
 from rockcli.process import interrupted
+from rockcli.studies.folder.folder import PartialWrite
 from rockcli.studies.parallel.chunks import run_chunks
 from rockcli.studies.parallel.executor import Lane
 from rockcli.studies.sweep.batch import check_grid
 from rockcli.studies.sweep.cases import Case, Cases, case_labels, expand
-from rockcli.studies.sweep.output import Output, PartialWrite, cell
+from rockcli.studies.sweep.output import Output, cell
 from rockcli.studies.sweep.study import StudyPlan
 from rockcli.studies.sweep.suite import suite_checks
 from rockcli.studies.sweep.summary import split_axis

@@ -1,4 +1,4 @@
-"""The lock of a study's output folder: one `rock sweep` at a time writes into it.
+"""The lock of a study's output folder: one run at a time writes into it.
 
 Two runs into the same folder (a CI job retried, a command started twice) would append to one
 cases.csv and each mark it complete. The run holds an exclusive ``flock`` on
@@ -23,7 +23,7 @@ except ImportError:  # not POSIX (Windows): no lock taken (docs/examples.md, "ro
     fcntl = None  # type: ignore[assignment]
 
 #: The lock file's name in the output folder.
-LOCK_FILE = "sweep.lock"
+LOCK_FILE = "study.lock"
 #: Times the lock is taken again when the file was replaced between opening and locking it.
 LOCK_ATTEMPTS = 5
 #: Bytes of the lock file read for the holder's pid.
