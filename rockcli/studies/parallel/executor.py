@@ -88,8 +88,54 @@ def start_fork_server(context: multiprocessing.context.BaseContext) -> None:
     # The resource tracker runs already (process_executor): starting it unblocks SIGINT (it
     # blocks, then unblocks, rather than restoring the mask), which would leave the server
     # unprotected.
-    with interrupts_blocked():
+    with interrupts_blocked(), environment(server_environment()):
         forkserver.ensure_running()
+
+
+def package_root() -> str:
+    """The folder holding the ``rockcli`` package this process imported."""
+    import rockcli
+
+    return os.path.dirname(os.path.dirname(os.path.abspath(rockcli.__file__)))
+
+
+def server_environment() -> dict[str, str]:
+    """The variables the fork server starts with, so that it (and every worker, a fork of it)
+    imports ``rockcli`` from where this process did, whatever the current folder.
+
+    The server is ``python -c …``, whose sys.path starts with the current folder; Python 3.11
+    does not give it this process's sys.path (multiprocessing.forkserver.main ignores the
+    ``sys_path`` it is passed), so a clone's root as the current folder had the server import
+    the working tree's ``rockcli`` (and compile the engine into it) instead of the installed
+    one. PYTHONSAFEPATH=1 leaves the current folder out (Python ≥ 3.11); the package's folder
+    goes first on PYTHONPATH unless it is a site folder, which the server reads anyway (a
+    site folder ahead of the standard library could shadow it).
+    """
+    import site
+
+    env = {"PYTHONSAFEPATH": "1"}
+    root = package_root()
+    sites = {os.path.abspath(p) for p in [*site.getsitepackages(), site.getusersitepackages()]}
+    if root not in sites:
+        rest = os.environ.get("PYTHONPATH")
+        env["PYTHONPATH"] = root if not rest else os.pathsep.join((root, rest))
+    return env
+
+
+@contextmanager
+def environment(changes: dict[str, str]) -> Iterator[None]:
+    """This process's environment with ``changes`` for the block (a process started in it
+    inherits them), restored after."""
+    before = {key: os.environ.get(key) for key in changes}
+    os.environ.update(changes)
+    try:
+        yield
+    finally:
+        for key, value in before.items():
+            if value is None:
+                os.environ.pop(key, None)
+            else:
+                os.environ[key] = value
 
 
 def _start(pool: ProcessPoolExecutor, workers: int) -> None:
