@@ -15,7 +15,7 @@ from typing import Any
 
 from rockcli.errors import InputError
 from rockcli.fragility.output import Folder, Kept
-from rockcli.fragility.run import Task, TaskResult, run_task, tasks
+from rockcli.fragility.run import Task, TaskResult, run_task, task_labels, tasks
 from rockcli.fragility.study import FragilityPlan
 from rockcli.studies.parallel.executor import Lane
 
@@ -56,7 +56,7 @@ def run_fragility(
     from rockcli.studies.parallel.setup import warm
 
     start = time.perf_counter() if started is None else started
-    folder = Folder(out, plan)
+    folder = Folder(out, plan, tasks(plan))
     with folder.lock():
         kept = folder.check(resume=resume, overwrite=overwrite)
         read_records(plan)  # a bad record file fails here, before any work
@@ -79,6 +79,9 @@ def run_fragility(
         except BaseException as exc:
             if interrupted(exc):
                 raise FragilityInterrupted(len(results), len(todo), out) from None
+            if isinstance(exc, OSError):  # a full disk, a folder turned read-only
+                saved = f"{len(results)} of {len(todo)} tasks saved"
+                raise folder.unwritable(exc.strerror or str(exc), saved) from None
             raise
         wall = time.perf_counter() - start
         run = {
@@ -138,13 +141,3 @@ def _results(found: Any) -> list[TaskResult]:
     if isinstance(found, TaskResult):
         return [found]
     return [TaskResult(row["case"], None, None, {}, (), row["error"]) for row in found]
-
-
-def task_labels(plan: FragilityPlan, task: Task) -> dict[str, Any]:
-    """The first cells of a task's lines: its point, axis values and record."""
-    study = plan.study
-    return {
-        "point": task.point,
-        **{a.name: a.label(i) for a, i in zip(study.axes, task.indices, strict=True)},
-        "record": study.records[task.record].name,
-    }

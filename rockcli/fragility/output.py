@@ -2,32 +2,31 @@
 
 cases.csv holds every run (one line per task and intensity, appended as each task completes,
 sorted by task and intensity at the end); a failed task is one line with its error.
-state.json names the study (a fingerprint of everything that decides its runs) and whether
-it is complete. ``--resume`` reads the runs back and hands each task its own: only the runs
-not on disk are computed, and the results are the same as an uninterrupted run's.
+state.json names the study (a fingerprint of the contents of everything that decides its runs)
+and whether it is complete. ``--resume`` reads the runs back, each line checked, and hands
+each task its own: only the runs not on disk are computed, and the results are the same as an
+uninterrupted run's.
 
-The folder is locked (rockcli.studies.sweep.lock) from the first look to the last write.
+The folder is the one machinery of study folders (rockcli.studies.folder.folder.StudyFolder,
+as `rock sweep`'s): checked and locked before any work, written without following links,
+resumed by content (a folder copied or moved resumes; a record edited since does not).
 """
 
 from __future__ import annotations
 
 import csv
-import hashlib
 import io
-import json
 import math
-import os
-from collections.abc import Iterator, Sequence
-from contextlib import contextmanager
-from dataclasses import dataclass
+from collections.abc import Sequence
+from dataclasses import asdict, dataclass
 from pathlib import Path
 from typing import Any
 
-from rockcli.errors import InputError
-from rockcli.fragility.run import TaskResult
+from rockcli import __version__
+from rockcli.fragility.run import Task, TaskResult, task_labels
 from rockcli.fragility.study import FragilityPlan
+from rockcli.studies.folder.folder import StudyFolder, digest_of, source_digest
 
-CASES_FILE = "cases.csv"
 STATE_FILE = "state.json"
 RESULT_FILE = "fragility.json"
 FIXED_COLUMNS = ("task", "point")
@@ -40,23 +39,29 @@ def columns(plan: FragilityPlan) -> tuple[str, ...]:
 
 
 def fingerprint(plan: FragilityPlan) -> str:
-    """A hash of what decides the study's runs (not its file's name or place)."""
+    """A hash of what decides the study's runs: rock's version, the model's content, the axes,
+    each record by its bytes (not its path: a folder moved or copied resumes), the options."""
     study = plan.study
-    facts = (
-        study.base,
-        [(a.name, a.paths, a.values) for a in study.axes],
-        [(r.name, r.path, r.fmt, r.dt, r.units, r.scale, r.pga) for r in study.records],
-        study.engine,
-        study.ground,
-        plan.mechanism,
-        plan.measure,
-        plan.period,
-        [(s.name, s.level) for s in plan.states],
-        plan.method,
-        plan.scan,
-        plan.levels,
-    )
-    return hashlib.sha256(repr(facts).encode("utf-8", "surrogateescape")).hexdigest()
+    records = [
+        {**asdict(r), "path": Path(r.path).name, "sha256": source_digest(r.path, suite=r.suite)}
+        for r in study.records
+    ]
+    facts = {
+        "rock": __version__,
+        "base": study.base,
+        "axes": [(a.name, a.texts, a.values) for a in study.axes],
+        "records": records,
+        "engine": study.engine,
+        "ground": study.ground,
+        "mechanism": plan.mechanism,
+        "measure": plan.measure,
+        "period": plan.period,
+        "states": [(s.name, repr(s.level)) for s in plan.states],
+        "method": plan.method,
+        "scan": [repr(x) for x in plan.scan or ()],
+        "levels": [repr(x) for x in plan.levels],
+    }
+    return digest_of(facts)
 
 
 @dataclass(frozen=True)
@@ -68,91 +73,55 @@ class Kept:
     mechanisms: dict[int, str]
 
 
-class Folder:
+class Folder(StudyFolder):
     """The study's output folder."""
 
-    def __init__(self, out: str, plan: FragilityPlan) -> None:
-        self.folder = Path(out)
+    def __init__(self, out: str, plan: FragilityPlan, todo: Sequence[Task]) -> None:
+        """todo: every task of the study (the rows read back are checked against them)."""
+        super().__init__(
+            out,
+            command="rock fragility",
+            state_file=STATE_FILE,
+            header=columns(plan),
+            fingerprint=fingerprint(plan),
+            row_problem=self._row_problem,
+        )
         self.plan = plan
-        self.header = columns(plan)
-        self.cases = self.folder / CASES_FILE
-        self.state = self.folder / STATE_FILE
-
-    @contextmanager
-    def lock(self) -> Iterator[None]:
-        """The folder locked against another run into it (InputError when it is busy)."""
-        from rockcli.studies.sweep.lock import FolderBusy, lock_folder, unlock_folder
-
-        try:
-            self.folder.mkdir(parents=True, exist_ok=True)
-        except OSError as exc:
-            raise self._unwritable(exc) from None
-        try:
-            fd = lock_folder(self.folder)
-        except FolderBusy as exc:
-            raise InputError(
-                "another rock run is writing into this folder",
-                where="--out",
-                value=str(self.folder),
-                allowed=f"another --out (process {exc.pid or '?'} holds it)",
-            ) from None
-        try:
-            yield
-        finally:
-            unlock_folder(self.folder, fd)
+        self.labels = [_label_cells(self.header, t.id, task_labels(plan, t)) for t in todo]
+        self.cases = self.cases_path
+        self._seen: set[tuple[str, str]] = set()
+        self._kept: list[list[str]] = []
 
     def check(self, *, resume: bool, overwrite: bool) -> Kept:
         """What to keep: nothing for a new folder or with overwrite; the runs on disk with
-        resume (InputError: a folder of another study, or of this one without either)."""
-        empty = Kept({}, {}, {})
-        if not overwrite and not self.state.exists() and self.cases.exists():
-            raise InputError("the folder holds a cases.csv of another run (no state.json)",
-                             where="--out", value=str(self.folder),
-                             allowed="another --out, or --force to start over in it")  # fmt: skip
-        if overwrite or not self.state.exists():
-            for path in (self.cases, self.state, self.folder / RESULT_FILE):
-                path.unlink(missing_ok=True)
-            return empty
-        try:
-            state = json.loads(self.state.read_text(encoding="utf-8"))
-            same = state.get("study") == fingerprint(self.plan)
-        except (OSError, ValueError, AttributeError):
-            same = False
-        if not same:
-            raise InputError(
-                "the folder holds another study's results",
-                where="--out",
-                value=str(self.folder),
-                allowed="another --out, or --force to start over in it",
-            )
-        if not resume:
-            raise InputError(
-                "the folder holds this study's results already",
-                where="--out",
-                value=str(self.folder),
-                allowed="--resume to continue it, --force to start over, or another --out",
-            )
+        resume (InputError: a folder of another study, or an unfinished run of this one
+        without --resume or --force; a damaged cases.csv)."""
+        if not self.keeps(resume=resume, overwrite=overwrite):
+            return Kept({}, {}, {})
         return self.read()
 
     def start(self) -> None:
-        """state.json (incomplete), and cases.csv with its header when it is new."""
-        self._write_state(complete=False)
-        if not self.cases.exists() or self.cases.stat().st_size == 0:
-            self.cases.write_text(",".join(self.header) + "\n", encoding="utf-8")
+        """state.json (incomplete), and cases.csv with its header and the lines kept (written
+        whole: a full disk leaves the old file, never an empty one)."""
+        self.write_state(complete=False, study=self.plan.file)
+        self.rewrite(self._kept)
 
     def append(self, result: TaskResult, labels: dict[str, Any]) -> None:
-        """The task's new runs (or its error) appended to cases.csv."""
-        with self.cases.open("a", encoding="utf-8", newline="") as f:
-            f.write(task_lines(self.header, result, labels))
-            f.flush()
+        """The task's new runs (or its error) appended to cases.csv (PartialWrite when the disk
+        fills part-way)."""
+        text = task_lines(self.header, result, labels)
+        lines = [line.encode("utf-8") for line in text.splitlines(keepends=True)]
+        self.append_bytes([result.id] * len(lines), lines)
 
     def read(self) -> Kept:
-        """The runs of cases.csv by task (a last line cut short by an interruption is
-        dropped, and cut from the file)."""
+        """The runs of cases.csv by task, every line checked (a last line cut short by an
+        interruption is dropped)."""
         runs: dict[int, dict[float, float]] = {}
         failed: dict[int, str] = {}
         mechanisms: dict[int, str] = {}
-        for row in self._rows():
+        self._kept = self._checked_lines()
+        for cells in self._kept:
+            row = dict(zip(self.header, cells, strict=True))
             task = int(row["task"])
             if row["mechanism"]:
                 mechanisms[task] = row["mechanism"]
@@ -163,64 +132,80 @@ class Folder:
             runs.setdefault(task, {})[float(row["im"])] = value
         return Kept(runs, failed, mechanisms)
 
-    def _rows(self) -> Iterator[dict[str, str]]:
-        if not self.cases.exists():
-            return
-        data = self.cases.read_bytes()
-        whole = data[: data.rfind(b"\n") + 1]
-        if len(whole) != len(data):
-            with self.cases.open("r+b") as f:
-                f.truncate(len(whole))
-        reader = csv.DictReader(io.StringIO(whole.decode("utf-8")))
-        if tuple(reader.fieldnames or ()) != self.header:
-            raise InputError(
-                "cases.csv is not this study's",
-                file=str(self.cases),
-                allowed="--force to start over",
-            )
-        for row in reader:
-            if None in row.values() or None in row:
-                raise InputError(
-                    "a damaged line in cases.csv",
-                    file=str(self.cases),
-                    where=f"line {reader.line_num}",
-                    allowed="--force to start over",
-                )
-            yield row
+    def _checked_lines(self) -> list[list[str]]:
+        """The lines of cases.csv, each checked (:meth:`_row_problem`)."""
+        self._seen = set()
+        return self.read_lines()
+
+    def _row_problem(self, cells: Sequence[str]) -> str | None:
+        """What is wrong with a line of cases.csv read back, or None: a task of this study with
+        its own point, axis values and record; an error line, or a run at a finite intensity
+        > 0 with its response; no task's intensity (or error) twice."""
+        row = dict(zip(self.header, cells, strict=True))
+        task = row["task"]
+        if not (task.isascii() and task.isdigit() and int(task) < len(self.labels)):
+            return f"not a task of this study (0 to {len(self.labels) - 1})"
+        if list(cells[: len(self.labels[int(task)])]) != self.labels[int(task)]:
+            return "the point, axis values or record are not those of its task"
+        problem = _error_problem(row) if row["error"] else _run_problem(row)
+        if problem is None:
+            key = (task, row["im"])
+            if key in self._seen:
+                return f"task {task} at intensity {row['im'] or '(its error)'} twice"
+            self._seen.add(key)
+        return problem
 
     def finish(self, document: dict[str, Any]) -> None:
         """cases.csv sorted by task and intensity, fragility.json, state.json complete."""
-        lines = self.cases.read_text(encoding="utf-8").splitlines(keepends=True)
-        body = sorted(lines[1:], key=_sort_key)
-        _replace(self.cases, lines[0] + "".join(body))
-        _replace(self.folder / RESULT_FILE, json.dumps(document, indent=1) + "\n")
-        self._write_state(complete=True)
+        import json
 
-    def _write_state(self, *, complete: bool) -> None:
-        state = {"study": fingerprint(self.plan), "complete": complete}
-        _replace(self.state, json.dumps(state) + "\n")
+        rows = sorted(self._checked_lines(), key=self._sort_key)
+        self.rewrite(rows)
+        self.write_file(RESULT_FILE, json.dumps(document, indent=1) + "\n")
+        self.write_state(complete=True, study=self.plan.file)
 
-    def _unwritable(self, exc: OSError) -> InputError:
-        return InputError(
-            f"cannot write the output folder: {exc.strerror or exc}",
-            where="--out",
-            value=str(self.folder),
-            allowed="a writable folder",
-        )
+    def _sort_key(self, row: Sequence[str]) -> tuple[int, float]:
+        """A row by task, then intensity (an error line, with none, first)."""
+        im = row[self.header.index("im")]
+        return int(row[0]), float(im) if im else -1.0
 
 
-def _sort_key(line: str) -> tuple[int, float]:
-    """A line of cases.csv by task, then intensity (an error line, with none, first)."""
-    row = next(csv.reader([line]))
-    im = row[-len(RUN_COLUMNS) + RUN_COLUMNS.index("im")]
-    return int(row[0]), float(im) if im else -1.0
+def _label_cells(header: Sequence[str], task: int, labels: dict[str, Any]) -> list[str]:
+    """A task's first cells as written: its id, point, axis values and record."""
+    cells = {**labels, "task": task}
+    return [_cell(cells.get(k)) for k in header[: header.index("record") + 1]]
 
 
-def _replace(path: Path, text: str) -> None:
-    """Write text to path through a temporary file (a crash leaves the old file whole)."""
-    tmp = path.with_name(path.name + ".tmp")
-    tmp.write_text(text, encoding="utf-8")
-    os.replace(tmp, path)
+def _error_problem(row: dict[str, str]) -> str | None:
+    if any(row[k] for k in ("im", "scale", "max_theta_ratio", "overturned")):
+        return "an error line with a run's values"
+    return None
+
+
+def _run_problem(row: dict[str, str]) -> str | None:
+    im = _finite(row["im"])
+    if im is None or im <= 0.0:
+        return f"intensity {row['im']!r} is not a finite number > 0"
+    if row["overturned"] not in ("true", "false"):
+        return f"overturned {row['overturned']!r} is not true or false"
+    if row["scale"] and _finite(row["scale"]) is None:
+        return f"scale {row['scale']!r} is not a finite number"
+    ratio = row["max_theta_ratio"]
+    if row["overturned"] == "true":
+        return "an overturned run with a max θ/α" if ratio else None
+    value = _finite(ratio)
+    if value is None or value < 0.0:
+        return f"max_theta_ratio {ratio!r} is not a finite number ≥ 0"
+    return None
+
+
+def _finite(text: str) -> float | None:
+    """The finite number a cell holds, or None."""
+    try:
+        value = float(text)
+    except ValueError:
+        return None
+    return value if math.isfinite(value) else None
 
 
 def task_lines(header: Sequence[str], result: TaskResult, labels: dict[str, Any]) -> str:

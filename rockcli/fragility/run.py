@@ -23,7 +23,7 @@ from __future__ import annotations
 import math
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 from rockcli.errors import InputError
 from rockcli.fragility.search import Exceedance, first_exceedances
@@ -232,3 +232,13 @@ def stripe_counts(
         runs.append(len(values))
         hits.append(sum(v >= level for v in values))
     return runs, hits
+
+
+def task_labels(plan: FragilityPlan, task: Task) -> dict[str, Any]:
+    """The first cells of a task's lines: its point, axis values and record."""
+    study = plan.study
+    return {
+        "point": task.point,
+        **{a.name: a.label(i) for a, i in zip(study.axes, task.indices, strict=True)},
+        "record": study.records[task.record].name,
+    }

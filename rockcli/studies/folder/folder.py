@@ -235,7 +235,11 @@ class StudyFolder:
             return False
         if state is None:
             if self.cases_path.exists():
-                self.refuse(f"holds a {CASES_FILE} that rock did not write", "--force")
+                self.refuse(
+                    f"holds a {CASES_FILE} of another run (no {self.state_path.name}: not "
+                    f"{self.command}'s)",
+                    "another --out, or --force to start over in it",
+                )
             return False
         if not same:
             self.refuse(
