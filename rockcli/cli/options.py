@@ -136,23 +136,39 @@ def suite_option(help_text: str):
     )
 
 
-allow_outside_option = click.option(
-    "--allow-outside",
-    is_flag=True,
-    help="Let a suite's records lie outside the suite's folder (an absolute path, '..', a "
-    "link to elsewhere); by default a suite reads only files inside its own folder.",
+def allow_outside(help_text: str):
+    """``--allow-outside``: let the files a file names lie outside its folder, with what it
+    applies to in the command."""
+    return click.option("--allow-outside", is_flag=True, help=help_text)
+
+
+allow_outside_option = allow_outside(
+    "Let a suite's records lie outside the suite's folder (an absolute path, '..', a "
+    "link to elsewhere); by default a suite reads only files inside its own folder."
 )
 
 
-def check_allow_outside(allow_outside: bool, suite_path: str | None) -> None:
-    """Refuse --allow-outside without --suite: it is a suite's rule (InputError)."""
+def check_allow_outside(
+    allow_outside: bool,
+    *paths: str | None,
+    applies_to: str = "a suite",
+    usage: str = "--suite SUITE --allow-outside",
+) -> None:
+    """Refuse --allow-outside when none of ``paths`` (the options of the files it applies to:
+    --suite, and for rock report --project) is given (InputError).
+
+    Args:
+        allow_outside: the flag.
+        paths: the values of the options it applies to.
+        applies_to: what they are, for the message; usage: how the flag is meant.
+    """
     from rockcli.errors import InputError
 
-    if allow_outside and suite_path is None:
+    if allow_outside and all(path is None for path in paths):
         raise InputError(
-            "applies only to a suite",
+            f"applies only to {applies_to}",
             where="--allow-outside",
-            allowed="--suite SUITE --allow-outside, or no --allow-outside",
+            allowed=f"{usage}, or no --allow-outside",
         )
 
 

@@ -10,7 +10,7 @@ import click
 
 from rockcli.cli.inputs import InputPath, RockCommand
 from rockcli.cli.options import (
-    allow_outside_option,
+    allow_outside,
     announce_written,
     check_allow_outside,
     check_outputs,
@@ -47,7 +47,11 @@ EXTRA = install_hint("report")
     "by the code's rule, the code check on the suite's target)."
 )
 @target_option
-@allow_outside_option
+@allow_outside(
+    "Let a suite's records and a project file's sections lie outside their file's folder (an "
+    "absolute path, '..', a link to elsewhere); by default each reads only files inside its "
+    "own folder. A pipe, a device or a file of /proc or /sys is refused either way."
+)
 @click.option(
     "-o",
     "--output",
@@ -149,7 +153,9 @@ def report(
 
     model_paths = model  # MODEL... in the usage, MODEL in a message
 
-    check_allow_outside(allow_outside, suite_path)
+    check_allow_outside(allow_outside, suite_path, project_path,
+                        applies_to="a suite or a project file",
+                        usage="--suite SUITE or --project FILE with --allow-outside")  # fmt: skip
     with_suite = one_record_or_suite(record_path, suite_path, None, None, None, target)
     code_demand = demand_for(code_demand, with_suite)
     check_report_paths(html_path, pdf_path, force, docx_path)
@@ -157,7 +163,7 @@ def report(
     if project_path is not None:  # before any analysis runs
         from rockcli.document.project import load_project
 
-        front["project"] = load_project(project_path)
+        front["project"] = load_project(project_path, allow_outside=allow_outside)
     common = {"html_path": html_path, "pdf_path": pdf_path, "lang": lang,
               "command": shlex.join(INVOKED), "front": front, "docx_path": docx_path}  # fmt: skip
     if with_suite:

@@ -25,7 +25,8 @@ from typing import Literal
 from pydantic import BaseModel, ConfigDict, Field, ValidationError
 
 from rockcli.errors import InputError
-from rockcli.textfile import read_limited, reason
+from rockcli.inside import check_inside
+from rockcli.textfile import check_size, open_regular, reason, too_large
 
 #: The hazard grid's extent (DM 14/01/2008, Allegato B: nodes from 6.5 E to 18.5 E and from
 #: 36.6 N to 47.1 N), widened by a tenth of a degree: a site outside it has no hazard.
@@ -33,6 +34,16 @@ LON_RANGE = (6.4, 18.6)
 LAT_RANGE = (36.5, 47.2)
 #: Markdown sections: each at most this size (a chapter of text, not a book).
 SECTION_LIMIT = 256 * 1024
+#: Where a section's file may be without --allow-outside.
+INSIDE_ALLOWED = "a file inside the project file's folder, or --allow-outside"
+#: What a section's file must be, wherever it is.
+SECTION_ALLOWED = (
+    "a Markdown file (UTF-8, at most 256 KiB, a regular file, not one of /proc or /sys), "
+    "relative to the project file"
+)
+#: The kernel's own file systems: their "files" are the system's state (a process's
+#: environment and its tokens, its memory map), never an engineer's text.
+KERNEL_FOLDERS = ("/proc", "/sys")
 
 
 class _Table(BaseModel):
@@ -43,7 +54,9 @@ class SectionEntry(_Table):
     """``[[project.sections]]``: a chapter of the engineer's own text."""
 
     title: str = Field(min_length=1, max_length=200, description="the section's title")
-    file: str = Field(min_length=1, description="a Markdown file, relative to the project file")
+    file: str = Field(
+        min_length=1, description="a Markdown file inside the project file's folder, relative to it"
+    )
 
 
 class ProjectTable(_Table):
@@ -82,10 +95,20 @@ class Project:
     ed50: tuple[float, float] | None
 
 
-def load_project(path: str | os.PathLike[str]) -> Project:
+def load_project(path: str | os.PathLike[str], *, allow_outside: bool = False) -> Project:
     """Read and check a project file and its Markdown sections (InputError, one line each:
     unknown keys, a datum that is neither WGS84 nor ED50, coordinates outside Italy's grid,
-    a section that is not a readable file)."""
+    a section that is not a readable file or, unless ``allow_outside``, lies outside the
+    project file's folder).
+
+    Args:
+        path: the project file.
+        allow_outside: let a section's file lie outside the project file's folder (an
+            absolute path, ``..``, a link to elsewhere: ``--allow-outside``). A project file
+            received from someone else otherwise reads only its own folder's files. A file
+            of the kernel (``/proc``, ``/sys``) or one that is not a regular file is refused
+            either way.
+    """
     from rockcli.model.load import read_toml, translate_errors
 
     file = os.fspath(path)
@@ -99,7 +122,7 @@ def load_project(path: str | os.PathLike[str]) -> Project:
                          where="project.lon" if table.lon is None else "project.lat")  # fmt: skip
     base = Path(file).parent
     sections = tuple(
-        (entry.title, read_section(base / entry.file, file, k))
+        (entry.title, section_text(base, entry.file, file, k, allow_outside))
         for k, entry in enumerate(table.sections)
     )
     ed50 = None
@@ -108,19 +131,69 @@ def load_project(path: str | os.PathLike[str]) -> Project:
     return Project(table, sections, ed50)
 
 
+def section_text(base: Path, given: str, file: str, index: int, allow_outside: bool) -> str:
+    """The text of section ``index``, whose file is ``given`` relative to ``base`` (the project
+    file's folder): refused outside it (``..`` and every symlink resolved, rockcli.inside)
+    unless ``allow_outside``."""
+    path = base / given
+    if not allow_outside:
+        check_inside(
+            path, base, file=file, where=f"project.sections[{index}].file", value=given,
+            problem="leaves the project file's folder", allowed=INSIDE_ALLOWED,
+        )  # fmt: skip
+    return read_section(path, file, index)
+
+
 def read_section(path: Path, file: str, index: int) -> str:
     """The Markdown text of section ``index`` (InputError naming its key)."""
     try:
-        raw = read_limited(str(path), "Markdown file", SECTION_LIMIT)
-        return raw.decode("utf-8")
+        return read_markdown(path).decode("utf-8")
     except (OSError, ValueError) as exc:
-        raise InputError(
-            f"cannot read the section's file: {reason(exc)}",
-            file=file,
-            where=f"project.sections[{index}].file",
-            value=str(path),
-            allowed="a Markdown file (UTF-8, at most 256 KiB), relative to the project file",
-        ) from None
+        problem = reason(exc)
+    except InputError as exc:  # not a regular file, too large, the kernel's
+        problem = exc.problem
+    raise InputError(
+        f"cannot read the section's file: {problem}",
+        file=file,
+        where=f"project.sections[{index}].file",
+        value=str(path),
+        allowed=SECTION_ALLOWED,
+    )
+
+
+def read_markdown(path: Path) -> bytes:
+    """The bytes of a regular file of at most :data:`SECTION_LIMIT` bytes that is not the
+    kernel's (rockcli.textfile.read_limited, and :func:`kernel_file` on the descriptor read).
+
+    Raises:
+        InputError: not a regular file, too large, or a file of ``/proc`` or ``/sys``.
+        OSError, ValueError: the system refuses the path.
+    """
+    what = "Markdown file"
+    fd = open_regular(path, what)
+    with os.fdopen(fd, "rb") as handle:
+        info = os.fstat(fd)
+        if kernel_file(info.st_dev):
+            raise InputError("a file of the kernel (/proc, /sys): the system's state, not text")
+        check_size(info.st_size, path, what, SECTION_LIMIT)
+        data = handle.read(SECTION_LIMIT + 1)
+    if len(data) > SECTION_LIMIT:
+        raise too_large(f"more than {SECTION_LIMIT:,}", path, what, SECTION_LIMIT)
+    if data and info.st_size == 0:  # a pseudo file system the device test does not know
+        raise InputError("its size says 0 bytes but it holds some: a file the system makes")
+    return data
+
+
+def kernel_file(device: int) -> bool:
+    """Whether a file on ``device`` is one of the kernel's file systems (/proc, /sys, where
+    mounted)."""
+    for folder in KERNEL_FOLDERS:
+        try:
+            if os.path.ismount(folder) and os.stat(folder).st_dev == device:
+                return True
+        except OSError:
+            continue
+    return False
 
 
 def to_ed50(lon: float, lat: float) -> tuple[float, float]:
@@ -157,7 +230,8 @@ designer = "Ing. Maria Rossi"                    # progettista
 designer_registration = "Ordine degli Ingegneri della Provincia dell'Aquila, n. 1234"
 date = 2026-11-27                                # optional; default: the day of the report
 
-# The engineer's own text, in Markdown, placed before the analyses in this order.
+# The engineer's own text, in Markdown, placed before the analyses in this order. Each file
+# lies in this file's folder or below it (rock report --allow-outside lifts that).
 # [[project.sections]]
 # title = "Premessa"
 # file = "premessa.md"
