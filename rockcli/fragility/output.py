@@ -104,7 +104,8 @@ class Folder(StudyFolder):
         """state.json (incomplete), and cases.csv with its header and the lines kept (written
         whole: a full disk leaves the old file, never an empty one)."""
         self.write_state(complete=False, study=self.plan.file)
-        self.rewrite(self._kept)
+        tasks = len({row[0] for row in self._kept})
+        self.rewrite(self._kept, saved=f"{tasks} of {len(self.labels)} tasks saved")
 
     def append(self, result: TaskResult, labels: dict[str, Any]) -> None:
         """The task's new runs (or its error) appended to cases.csv (PartialWrite when the disk

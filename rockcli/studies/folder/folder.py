@@ -274,14 +274,15 @@ class StudyFolder:
         state = {**facts, "fingerprint": self.fingerprint, "columns": self.header}
         self.write_file(self.state_path.name, json.dumps({**state, "complete": complete}, indent=2))
 
-    def write_file(self, name: str, text: str) -> None:
+    def write_file(self, name: str, text: str, *, saved: str = "") -> None:
         """A file of the folder written whole (temporary file beside it, then renamed; a link
-        at either name never followed); InputError when the disk refuses."""
+        at either name never followed); InputError when the disk refuses (saying ``saved``:
+        what is on disk)."""
         self.make_folder()
         try:
             write_text(self.folder / name, text)
         except InputError as exc:
-            raise self.unwritable(str(exc.value), "") from None
+            raise self.unwritable(str(exc.value), saved) from None
 
     def unwritable(self, reason: str, saved: str) -> InputError:
         """The error of a write that failed (a full disk, a folder turned read-only): bad
@@ -334,9 +335,10 @@ class StudyFolder:
             allowed=f"a {CASES_FILE} written by {self.command}, or --force to start over",
         )
 
-    def rewrite(self, rows: Iterable[Sequence[str]]) -> None:
-        """The rows file with the header and the given rows (atomically)."""
-        self.write_file(CASES_FILE, csv_text([self.header, *rows]))
+    def rewrite(self, rows: Iterable[Sequence[str]], *, saved: str = "") -> None:
+        """The rows file with the header and the given rows (atomically: a full disk leaves
+        the old file whole; ``saved``: what it holds, for the error)."""
+        self.write_file(CASES_FILE, csv_text([self.header, *rows]), saved=saved)
 
     def append_bytes(self, ids: list[int], lines: Sequence[bytes]) -> int:
         """Append the lines of completed cases (ids: each line's case); returns the offset

@@ -292,7 +292,8 @@ class Output(StudyFolder):
 
     def _rewrite(self, rows: Mapping[int, Mapping[str, str]]) -> None:
         """cases.csv with the header and the given rows sorted by case id (atomically)."""
-        self.rewrite([rows[k][c] for c in self.header] for k in sorted(rows))
+        saved = f"{len(rows)} of {self.n_cases} cases saved"
+        self.rewrite(([rows[k][c] for c in self.header] for k in sorted(rows)), saved=saved)
 
     def append(self, rows: Iterable[Mapping[str, Any]]) -> list[int]:
         """Append the rows of a completed chunk; returns their case ids (append_lines)."""
