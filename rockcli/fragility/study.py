@@ -26,7 +26,7 @@ from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from enum import StrEnum
 from pathlib import Path
-from typing import Any, Literal
+from typing import Annotated, Any, Literal
 
 from pydantic import BaseModel, Field, ValidationError
 
@@ -58,11 +58,30 @@ MEASURE_NAMES = {
 }
 
 
+#: A number of the study file: a TOML integer or float, never a string or a boolean.
+Number = Annotated[float, Field(strict=True, allow_inf_nan=False)]
+
+#: The largest intensity a study may name, by measure (in its unit): about twice the largest
+#: ever recorded (PGA ≈ 4 g, PGV ≈ 3 m/s; Sa up to 2.5–3 times PGA), beyond which a scan or a
+#: stripe measures nothing physical; the ratios' bound is 10 g over tan α = 0.01.
+MAX_INTENSITY = {
+    Measure.PGA: 10.0,
+    Measure.PGV: 10.0,
+    Measure.SA: 30.0,
+    Measure.PGA_RATIO: 1000.0,
+    Measure.PGV_RATIO: 1000.0,
+}
+
+
+#: The most stripes an MSA may have (each is a run of every record).
+MAX_LEVELS = 1000
+
+
 class Intensity(Table):
     """[intensity]: the measure, and the period of Sa(T)."""
 
     measure: Measure = Field(..., description="one of: pga, pgv, sa, pga-ratio, pgv-ratio")
-    period: float | Literal["mechanism"] | None = Field(
+    period: Number | Literal["mechanism"] | None = Field(
         None,
         description=f"the period of Sa(T): a number in [{MIN_PERIOD:g}, {MAX_PERIOD:g}] s, or "
         '"mechanism" (2π/p of the rocked block)',
@@ -73,7 +92,7 @@ class DamageState(Table):
     """A [[damage_states]] entry: a level of max θ/α, or overturning."""
 
     name: str | None = Field(None, min_length=1, description="a non-empty label")
-    level: float | Literal["overturning"] = Field(
+    level: Number | Literal["overturning"] = Field(
         ..., description='a level of max θ/α > 0, or "overturning"'
     )
 
@@ -81,16 +100,16 @@ class DamageState(Table):
 class IdaScan(Table):
     """[ida]: the intensities of the scan, in the measure's unit."""
 
-    first: float = Field(..., gt=0, allow_inf_nan=False, description="the first intensity > 0")
-    step: float = Field(..., gt=0, allow_inf_nan=False, description="the scan's step > 0")
-    last: float = Field(..., gt=0, allow_inf_nan=False, description="the last intensity ≥ first")
-    tolerance: float | None = Field(
+    first: Number = Field(..., gt=0, description="the first intensity > 0")
+    step: Number = Field(..., gt=0, description="the scan's step > 0")
+    last: Number = Field(..., gt=0, description="the last intensity ≥ first")
+    tolerance: Number | None = Field(
         None,
         gt=0,
         allow_inf_nan=False,
         description="the bisection's tolerance > 0 [default: step / 20]",
     )
-    ddof: Literal[0, 1] = Field(
+    ddof: Annotated[int, Field(strict=True, ge=0, le=1)] = Field(
         0, description="the divisor of β²: 0 (n, the maximum likelihood) or 1 (n − 1)"
     )
 
@@ -98,8 +117,11 @@ class IdaScan(Table):
 class MsaLevels(Table):
     """[msa]: the intensity levels (stripes), in the measure's unit."""
 
-    levels: tuple[float, ...] = Field(
-        ..., min_length=2, description="at least two increasing intensities > 0"
+    levels: tuple[Number, ...] = Field(
+        ...,
+        min_length=2,
+        max_length=MAX_LEVELS,
+        description=f"from 2 to {MAX_LEVELS} increasing intensities > 0",
     )
 
 
@@ -429,6 +451,7 @@ def check_scan(study: FragilityStudy, file: str) -> tuple[float, float, float, f
             value=scan.last,
             allowed=f"an intensity ≥ first ({scan.first:g})",
         )
+    check_bound(scan.last, "ida.last", study.intensity.measure, file)
     tolerance = scan.tolerance if scan.tolerance is not None else scan.step / 20.0
     problem = scan_problem(scan.first, scan.step, scan.last, tolerance)
     if problem is not None:
@@ -473,4 +496,19 @@ def check_levels(study: FragilityStudy, file: str) -> tuple[float, ...]:
                 value=level,
                 allowed="finite intensities > 0 in increasing order",
             )
+        check_bound(level, f"msa.levels[{i}]", study.intensity.measure, file)
     return levels
+
+
+def check_bound(value: float, where: str, measure: Measure, file: str) -> None:
+    """An intensity of the study at most :data:`MAX_INTENSITY` of its measure."""
+    bound = MAX_INTENSITY[measure]
+    if value > bound:
+        name, unit = MEASURE_NAMES[measure]
+        raise InputError(
+            "beyond any earthquake's intensity",
+            file=file,
+            where=where,
+            value=value,
+            allowed=f"{name} ≤ {bound:g}" + ("" if unit == "-" else f" {unit}"),
+        )
