@@ -24,7 +24,18 @@ def main() -> None:
     except SystemExit as exc:
         if exc.code == EXIT_INTERRUPTED:
             _exit_at_once(EXIT_INTERRUPTED)
+        _ignore_late_interrupts()
         raise
+
+
+def _ignore_late_interrupts() -> None:
+    """The command has ended (its output written, its code decided): a Ctrl-C from now on is
+    ignored. CPython's finalization puts SIGINT back to the system's default before the
+    process ends, so a Ctrl-C in those last milliseconds killed it by the signal (the parent
+    saw −2, neither the command's code nor 130); an ignored signal stays ignored."""
+    import signal
+
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
 
 
 def _exit_at_once(code: int) -> None:

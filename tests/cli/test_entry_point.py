@@ -84,3 +84,22 @@ def test_ctrl_c_while_the_script_loads(moment: float | str) -> None:
         return
     assert proc.returncode == 130, text
     assert "Traceback" not in text and text.strip() == "interrupted", text
+
+
+def test_a_ctrl_c_after_the_command_ended_keeps_its_exit_code() -> None:
+    """A Ctrl-C that lands after the command has ended, while the interpreter shuts down (an
+    exit hook here; CPython's finalization next), neither kills the process by the signal nor
+    prints a traceback: the command's exit code stands (the flaky −2 of the test above at
+    0.6 s, when the command had just ended)."""
+    code = (
+        "import atexit, os, signal, sys, time\n"
+        "import rockcli.__main__ as m\n"
+        "atexit.register(lambda: (os.kill(os.getpid(), signal.SIGINT), time.sleep(0.2)))\n"
+        "sys.argv = ['rock', '--version']\n"
+        "m.main()\n"
+    )
+    proc = subprocess.run(
+        [sys.executable, "-c", code], capture_output=True, timeout=120, preexec_fn=limits
+    )
+    assert proc.returncode == 0, proc.stderr.decode()
+    assert b"Traceback" not in proc.stderr and b"KeyboardInterrupt" not in proc.stderr
