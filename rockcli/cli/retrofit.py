@@ -44,7 +44,7 @@ EXIT_NONE = 1
     "--diameters",
     default=None,
     metavar="D1,D2,…",
-    help="Diameters to try [mm] [default: 10,12,14,16,18,20,22,24,27,30,33,36,40].",
+    help="Diameters to try [mm], at most 1000 [default: 10,12,14,16,18,20,22,24,27,30,33,36,40].",
 )
 @click.option(
     "--grade",

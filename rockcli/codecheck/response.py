@@ -363,11 +363,22 @@ class RecordSpectrum:
 
     def Se(self, T: float, xi: float = 5.0) -> float:
         """Pseudo-acceleration Sa(T) [g] at damping ξ [%] (5.0 = 5 %)."""
-        return self._values(np.array([T]), xi)[0][0]
+        return self._value(T, xi)[0]
 
     def SDe(self, T: float, xi: float = 5.0) -> float:
         """Displacement Sd(T) [m] at damping ξ [%] (5.0 = 5 %)."""
-        return self._values(np.array([T]), xi)[1][0]
+        return self._value(T, xi)[1]
+
+    def _value(self, T: float, xi: float) -> tuple[float, float]:
+        """(Sa [g], Sd [m]) at one period: the cached pair as it is (a pair is cached once its
+        period was checked), else :meth:`_values`'. The 2019 demand of a record reads a few
+        hundred cached ordinates per check (rockcli.codecheck.demand.range_maximum), for
+        which checking the period again as an array cost more than the rest of the check."""
+        cached = self._cache.get((float(T), float(xi)))
+        if cached is not None:
+            return cached
+        Sa, Sd = self._values(np.array([T]), xi)
+        return float(Sa[0]), float(Sd[0])
 
     def curve(self, periods: ArrayLike, xi: float = 5.0) -> tuple[np.ndarray, np.ndarray]:
         """Sa [g] and Sd [m] at an array of periods [s], damping ξ [%] (one vectorised pass)."""

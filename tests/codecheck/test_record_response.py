@@ -173,6 +173,28 @@ def test_record_spectrum_caches_by_period_and_damping(monkeypatch: pytest.Monkey
     assert calls == [2, 1]
 
 
+def test_record_spectrum_reads_a_cached_ordinate_as_it_is(monkeypatch: pytest.MonkeyPatch) -> None:
+    # The 2019 demand of a record reads a few hundred cached ordinates per check
+    # (codecheck.demand.range_maximum): a hit is the pair cached, its period not checked again
+    # as an array (issue 34, F15); a period never computed goes through the checks as before.
+    t = np.linspace(0, 2, 201)
+    demand = RecordSpectrum(t, 0.2 * np.sin(9 * t))
+    Sa, Sd = demand.curve([0.5])
+    calls: list[Any] = []
+    original = RecordSpectrum._values
+
+    def counting(self: RecordSpectrum, *args: Any) -> Any:
+        calls.append(args)
+        return original(self, *args)
+
+    monkeypatch.setattr(RecordSpectrum, "_values", counting)
+    assert (demand.Se(0.5), demand.SDe(0.5)) == (Sa[0], Sd[0])
+    assert calls == []
+    for bad in (-0.5, math.nan):
+        with pytest.raises(InputError, match="periods"):
+            demand.SDe(bad)
+
+
 def test_both_demands_answer_the_same_questions(elc180: Record) -> None:
     for demand in (ElasticSpectrum(0.26, 2.36, 0.35), RecordSpectrum(elc180.time, elc180.accel)):
         assert demand.Se(1.0, 5.0) > 0

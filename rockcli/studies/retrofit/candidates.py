@@ -31,6 +31,9 @@ MM_PER_M = 1000.0
 PLACED_NAME = "retrofit tie-rod"
 TIE_ROD = "tie-rod"
 DIAMETERS_ALLOWED = "diameters in mm separated by commas, each > 0, e.g. 16,20,24"
+#: The most diameters one `rock retrofit` tries (each is a code check and two time histories,
+#: about 10 ms on a 40 s record: a thousand is ten seconds; a list of ten thousand is a slip).
+MAX_DIAMETERS = 1000
 AT_ALLOWED = "HEIGHT,FROM_PIVOT in m, e.g. 5.0,0.3"
 
 
@@ -68,13 +71,20 @@ class RetrofitPlan:
 
 def parse_diameters(text: str | None) -> tuple[float, ...]:
     """``--diameters 16,20,24`` → (16.0, 20.0, 24.0) [mm], ascending and each once; None: the
-    default list. InputError for an empty list, a word, or a size ≤ 0."""
+    default list. InputError for an empty list, more than :data:`MAX_DIAMETERS` items, a word,
+    or a size ≤ 0."""
     if text is None:
         return tuple(float(d) for d in DEFAULT_DIAMETERS_MM)
     parts = [p.strip() for p in text.split(",")]
     if not any(parts):
         raise InputError(
             "no diameter given", where="--diameters", value=text, allowed=DIAMETERS_ALLOWED
+        )
+    if len(parts) > MAX_DIAMETERS:
+        raise InputError(
+            f"too many diameters: {len(parts)}",  # the list itself would fill the screen
+            where="--diameters",
+            allowed=f"at most {MAX_DIAMETERS} diameters",
         )
     values = [_positive_number(p, text) for p in parts]
     return tuple(sorted(set(values)))

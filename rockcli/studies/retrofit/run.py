@@ -5,11 +5,20 @@ Each candidate is one case of a chunk sent to the sweep executor's lanes
 worker processes with more. The chunk carries the model table, not a model: the worker
 validates it again (pickling a pydantic model is not cheaper, and the table is what the plan
 validated). A candidate's row is plain data (SI units), keyed by its case id.
+
+Every candidate of a process reads one response spectrum of the record
+(:func:`shared_spectrum`), as a study's cases do (rockcli.studies.sweep.worker.spectrum_of):
+the 2019 demand of a record is the maximum of its spectrum over [T0, T_SLV], sought on an
+absolute period grid (rockcli.codecheck.demand.RANGE_STEP) whose ordinates the spectrum keeps,
+so a candidate computes only the few its neighbours have not.
 """
 
 from __future__ import annotations
 
+import hashlib
 import math
+import threading
+from collections import OrderedDict
 from collections.abc import Callable, MutableSequence
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
@@ -19,6 +28,7 @@ from rockcli.notes import Note
 from rockcli.studies.retrofit.candidates import RetrofitPlan, build_candidate
 
 if TYPE_CHECKING:
+    from rockcli.codecheck.response import RecordSpectrum
     from rockcli.codecheck.result import KinematicResult
     from rockcli.dynamics.result import Assessment
     from rockcli.records.record import Record
@@ -62,6 +72,35 @@ def run_retrofit_chunk(chunk: RetrofitChunk) -> list[dict[str, Any]]:
     ]
 
 
+#: Record spectra a process keeps for its candidates (one per `rock retrofit`; a report sizes a
+#: rod per record), the least recently used dropped first.
+SPECTRA_KEPT = 4
+_spectra: OrderedDict[tuple[bytes, float], RecordSpectrum] = OrderedDict()
+_lock = threading.Lock()
+
+
+def shared_spectrum(record: Record, g: float) -> RecordSpectrum:
+    """The record's response spectrum at gravity g [m/s²], one per process for every
+    candidate, whose ordinates are cached inside (each candidate making its own computed the
+    ~600 ordinates of the 2019 demand's period grid again: 15 times slower). Keyed by the
+    record's samples, since a worker process receives a new copy of the record with each
+    chunk."""
+    from rockcli.codecheck.response import RecordSpectrum
+
+    digest = hashlib.blake2b(record.time.tobytes())
+    digest.update(record.accel.tobytes())
+    key = (digest.digest(), float(g))
+    with _lock:
+        spectrum = _spectra.get(key)
+        if spectrum is None:
+            spectrum = RecordSpectrum.from_record(record, g=g)
+            _spectra[key] = spectrum
+            while len(_spectra) > SPECTRA_KEPT:
+                _spectra.popitem(last=False)
+        _spectra.move_to_end(key)
+    return spectrum
+
+
 def run_candidate(
     plan: RetrofitPlan, diameter_mm: float, record: Record, analyses: Analyses
 ) -> dict[str, Any]:
@@ -76,7 +115,8 @@ def run_candidate(
     from rockcli.studies.kinematic import kinematic_model
 
     model = build_candidate(plan, diameter_mm)
-    kin = kinematic_model(model, edition=analyses.edition, record=record)
+    spectrum = shared_spectrum(record, model.analysis.g)
+    kin = kinematic_model(model, edition=analyses.edition, record=record, spectrum=spectrum)
     mechanism = kin.governing if is_wall(model) else None
     out = assess_model_output(
         model,
