@@ -16,7 +16,7 @@ from rockcli.cli.options import (
     resume_option,
     scheduler_option,
 )
-from rockcli.cli.plot_option import plot_option
+from rockcli.cli.plot_option import check_study_plot, plot_option
 
 if TYPE_CHECKING:
     from rockcli.fragility.study import FragilityPlan
@@ -179,6 +179,7 @@ def run(
     count = len(plan.study.records) * max(1, _points(plan))
     jobs = worker_count(jobs, count)
     out = out or default_out(study_path)
+    check_study_plot(plot_path, overwrite, out)
     where = dask_executor(scheduler) if scheduler else local_executor(jobs)
     facts = {"jobs": None if scheduler else jobs, "scheduler": scheduler}
     with interrupt_exits("record", FragilityInterrupted):

@@ -362,7 +362,8 @@ overwrite_option = click.option(
     "--overwrite",
     "overwrite",
     is_flag=True,
-    help="Start over in an output folder that holds another or an unfinished study.",
+    help="Start over in an output folder that holds another or an unfinished study, and "
+    "replace an existing --plot file.",
 )
 
 ground_option = click.option(

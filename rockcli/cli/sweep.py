@@ -21,7 +21,7 @@ from rockcli.cli.options import (
     records_dir_option,
     scheduler_option,
 )
-from rockcli.cli.plot_option import plot_option
+from rockcli.cli.plot_option import check_study_plot, plot_option
 
 #: Name prefix of the thread that runs chunks in this process (studies.sweep.executor).
 CHUNK_THREAD = "rock-sweep"
@@ -215,6 +215,7 @@ def sweep(
         plan = replace(plan, check_tolerance=True)
     jobs = worker_count(jobs, len(expand(plan)))
     out = out or default_out(study_path)
+    check_study_plot(plot_path, overwrite, out)
     where = dask_executor(scheduler) if scheduler else local_executor(jobs)
     facts = {"jobs": None if scheduler else jobs, "scheduler": scheduler}
     with interrupt_exits("case", SweepInterrupted):
@@ -239,6 +240,7 @@ def sweep(
         from rockcli.studies.sweep.run import plot_rows
 
         plot_sweep(plot_rows(plan, result.out), plot_path, by=result.split)
+        announce_written(plot_path)
     show(result.summary, output, sweep_report)
 
 
