@@ -66,6 +66,10 @@ class Restrainer:
         slack_side: the side on which a tension-only member would push and goes slack in the
             kinematic check (−1: a tie-rod acting both ways, which can only pull the wall
             back from outward; 0: none). The time history keeps its spring on both sides.
+        path: the elongation of a point that does not turn rigidly about the pivot (on the
+            upper block of a two-block chain), tabulated along the rotation of each side
+            (PA_* layout below; :func:`path_terms`); r and φ are then its position at rest,
+            for reports. Empty: the polar point (r, φ) of a rigid block, exact.
     """
 
     name: str
@@ -91,12 +95,29 @@ class Restrainer:
     overstrength: float = 0.0
     ductility_rule: str = ""
     slack_side: int = 0
+    path: tuple[float, ...] = ()
 
     def side(self, s: int) -> tuple[float, float, float]:
         """(K [N/m], r [m], φ [rad]) for pivot side s = ±1."""
         if s > 0:
             return self.k_pos, self.r_pos, self.phi_pos
         return self.k_neg, self.r_neg, self.phi_neg
+
+    def arm_at_rest(self, s: int) -> float:
+        """du/da at rest on side s [m/rad]: the virtual displacement of its point per unit
+        rotation, the arm of its force (r·cos φ for a polar point)."""
+        if self.path:
+            return path_terms(self.path, 0, s, 0.0)[1]
+        _, r, phi = self.side(s)
+        return r * math.cos(phi)
+
+    def elongation(self, s: int, a: float, linearized: bool = False) -> float:
+        """Its elongation at rotation a about pivot s [m] (the engine's: :func:`path_terms`, or
+        :func:`spring_elongation` of its polar point)."""
+        if self.path:
+            return path_terms(self.path, 0, s, a)[0]
+        _, r, phi = self.side(s)
+        return spring_elongation(r, phi, a, linearized)
 
     @property
     def can_fail(self) -> bool:
@@ -249,6 +270,88 @@ class Chain:
             centroid=self.centroid,
             exact=None if exact is None else swapped,
         )
+
+
+# The elongation path of a member whose point does not turn rigidly about the pivot
+# (Restrainer.path), stored in a flat table from an offset: a header (n nodes per side, the grid
+# step of side +1 and of side −1 [rad]), then side +1's n rows and side −1's n rows, each the
+# point's elongation u [m], its slope u′ = du/da [m/rad] (the point's virtual displacement per
+# unit rotation: the arm of the member's force in the equation of motion) and u″ [m/rad²], at
+# a = k·step. The packed restrainer table of the engines holds it from a column of its own.
+PA_N, PA_STEP_POS, PA_STEP_NEG = 0, 1, 2
+PA_HEAD = 3
+PA_COLS = 3
+#: Most halvings of the bisection of :func:`path_rotation` (it stops at the last bit first).
+PATH_BISECTIONS = 2000
+
+
+def path_terms(table, offset, s, a):
+    """(u, u′) of the elongation path stored in ``table`` from ``offset`` (PA_* layout) on
+    side s at rotation a: cubic Hermite between the two nodes around a, u from the values and
+    slopes, u′ from the slopes and curvatures (as :func:`chain_terms`; exact at a node, the
+    end interval's cubic past the table's end)."""
+    n = int(table[offset + PA_N])
+    step = table[offset + PA_STEP_POS] if s > 0 else table[offset + PA_STEP_NEG]
+    base = offset + PA_HEAD + (0 if s > 0 else n * PA_COLS)
+    x = a / step
+    k = int(math.floor(x))
+    k = min(max(k, 0), n - 2)
+    u = x - k
+    u2 = u * u
+    u3 = u2 * u
+    h00 = 2.0 * u3 - 3.0 * u2 + 1.0
+    h10 = (u3 - 2.0 * u2 + u) * step
+    h01 = 3.0 * u2 - 2.0 * u3
+    h11 = (u3 - u2) * step
+    r0 = base + k * PA_COLS
+    r1 = r0 + PA_COLS
+    value = h00 * table[r0] + h10 * table[r0 + 1] + h01 * table[r1] + h11 * table[r1 + 1]
+    slope = h00 * table[r0 + 1] + h10 * table[r0 + 2] + h01 * table[r1 + 1] + h11 * table[r1 + 2]
+    return value, slope
+
+
+def path_rotation(table, offset, s, u):
+    """The least rotation a ≥ 0 at which the path's elongation on side s reaches u [rad]: 0
+    for u ≤ 0, inf when the table's end falls short. The path grows with a (checked where it
+    is tabulated, rockcli.mechanisms.table.member_path): the interval of nodes by bisection on
+    the stored values, then the cubic's by bisection to the last bit, so that an elongation
+    however small has its own rotation (as :func:`spring_failure_rotation`)."""
+    if u <= 0.0:
+        return 0.0
+    n = int(table[offset + PA_N])
+    step = table[offset + PA_STEP_POS] if s > 0 else table[offset + PA_STEP_NEG]
+    base = offset + PA_HEAD + (0 if s > 0 else n * PA_COLS)
+    if table[base + (n - 1) * PA_COLS] < u:
+        return math.inf
+    lo_k = 0
+    hi_k = n - 1
+    while hi_k - lo_k > 1:
+        mid_k = (lo_k + hi_k) // 2
+        if table[base + mid_k * PA_COLS] < u:
+            lo_k = mid_k
+        else:
+            hi_k = mid_k
+    lo = lo_k * step
+    hi = hi_k * step
+    for _ in range(PATH_BISECTIONS):
+        mid = 0.5 * (lo + hi)
+        if mid <= lo or mid >= hi:
+            break
+        if path_terms(table, offset, s, mid)[0] < u:
+            lo = mid
+        else:
+            hi = mid
+    return hi
+
+
+def mirrored_path(path: tuple[float, ...]) -> tuple[float, ...]:
+    """The path with its two sides swapped."""
+    if not path:
+        return path
+    n = int(path[PA_N])
+    rows = path[PA_HEAD:]
+    half = n * PA_COLS
+    return (path[PA_N], path[PA_STEP_NEG], path[PA_STEP_POS]) + rows[half:] + rows[:half]
 
 
 def chain_terms(table, s, a):
@@ -629,7 +732,11 @@ def restoring_moment(
         if alive is not None and not alive[i]:
             continue
         k, r, phi = spring.side(s)
-        total += spring_moment(k, r, phi, a, block.linearized)
+        if spring.path:  # K·u·u′: the force times the point's virtual displacement
+            u, du = path_terms(spring.path, 0, s, a)
+            total += k * u * du
+        else:
+            total += spring_moment(k, r, phi, a, block.linearized)
     return total
 
 
@@ -666,7 +773,8 @@ def linear_global_stiffness(
 
     Source: paper Eq. (16)–(18) for the top spring (positive iff 4KR/(mg) > 1/cos α); for any
     attachment point the same derivative of :func:`restoring_moment`:
-    −m g R cos α + Σ K r² cos²φ (the spring's u is r cos φ·θ, its arm r cos φ, at θ = 0).
+    −m g R cos α + Σ K r² cos²φ (the spring's u is r cos φ·θ, its arm r cos φ, at θ = 0; a
+    member with a path: K·u′(0)², Restrainer.arm_at_rest).
     With loads and thrusts the weights' part is :func:`loaded_stiffness`.
     """
     if block.chain is not None:
@@ -678,8 +786,7 @@ def linear_global_stiffness(
     for i, spring in enumerate(block.restrainers):
         if alive is not None and not alive[i]:
             continue
-        k, r, phi = spring.side(s)
-        total += k * (r * math.cos(phi)) ** 2
+        total += spring.side(s)[0] * spring.arm_at_rest(s) ** 2
     return total
 
 
@@ -717,6 +824,7 @@ def mirrored(block: Block) -> Block:
                 phi_neg=r.phi_pos,
                 yield_pos=r.yield_neg,
                 yield_neg=r.yield_pos,
+                path=mirrored_path(r.path),
             )
             for r in block.restrainers
         ),

@@ -51,12 +51,16 @@ for _fn in (
     mechanics.spring_failure_rotation,
     mechanics.point_moments,  # loaded blocks only; numba's IR inlining of its loop misfires
     mechanics.chain_terms,  # chains only
+    mechanics.path_terms,  # members on a chain's upper block only
+    mechanics.path_rotation,
 ):
     register_jitable(_fn)
 for _array_fn in (
     rules.spring_on_side,
     rules.spring_trig_on_side,
     rules.ground_acceleration,
+    rules.has_path,
+    rules.path_on_side,
 ):
     register_jitable(inline="always")(_array_fn)
 register_jitable(rules.member_force)

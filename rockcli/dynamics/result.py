@@ -72,12 +72,14 @@ class RestrainerPeak:
 @dataclass(frozen=True, eq=False)
 class History:
     """θ(t), θ̇(t) and each restrainer's force at the sample times (tail included) up to the
-    end of the run (forces: shape (restrainers, samples) [N])."""
+    end of the run (forces: shape (restrainers, samples) [N]), and its elongation there
+    (elongations, the same shape [m]; None: not computed)."""
 
     time: np.ndarray
     theta: np.ndarray
     omega: np.ndarray
     forces: np.ndarray = field(default_factory=lambda: np.zeros((0, 0)))
+    elongations: np.ndarray | None = None
 
 
 @dataclass(frozen=True)

@@ -22,6 +22,13 @@ and the initial c. A row with COL_MEMORY = 0 is the elastic spring of unlimited 
 mode stays elastic and c = 0, so its force K·(u − 0) is K·u to the last bit.
 
 Columns come in pairs (side +1, side −1): ``COL_X + side_index(s)``.
+
+A member on the upper block of a two-block chain (mechanics.Restrainer.path) does not turn
+about the pivot: its elongation u(a) and its slope u′(a) (the virtual displacement of its point,
+the arm of its force) come from its tabulated path, stored from column COL_PATH in a table made
+wide enough for it (mechanics.path_terms; a row without one, or a table without those columns,
+is a polar member). Its r, φ columns hold u′(0) and 0, so that what reads the arm at rest
+(rest_moment) reads the path's.
 """
 
 from __future__ import annotations
@@ -29,10 +36,13 @@ from __future__ import annotations
 import math
 
 from rockcli.mechanics import (
+    PA_N,
     chain_terms,
     cos_minus,
     gravity_moment_ratio_trig,
     ground_moment_ratio_trig,
+    path_rotation,
+    path_terms,
     point_moments,
     spring_elongation,
     spring_elongation_trig,
@@ -46,6 +56,8 @@ COL_SIN_POS, COL_COS_POS, COL_SIN_NEG, COL_COS_NEG = 9, 10, 11, 12
 COL_YIELD, COL_RUPTURE, COL_C, COL_MODE = 13, 15, 16, 18
 COL_UP, COL_UP_KIND, COL_DOWN, COL_MEMORY, COL_C0 = 20, 22, 24, 26, 27
 N_SPRING_COLS = 29
+#: First column of a member's elongation path (module docstring), in a wider table.
+COL_PATH = N_SPRING_COLS
 
 #: Modes of a member side (COL_MODE): F = K·(u − c); F = F_y (on the yield plateau); F = 0.
 MODE_ELASTIC, MODE_PLASTIC, MODE_SLACK = 0.0, 1.0, 2.0
@@ -93,6 +105,16 @@ def spring_trig_on_side(springs, j, s):
         springs[j, COL_SIN_NEG],
         springs[j, COL_COS_NEG],
     )
+
+
+def has_path(springs, j):
+    """True when row j's member has an elongation path (module docstring)."""
+    return springs.shape[1] > COL_PATH and springs[j, COL_PATH + PA_N] > 0.0
+
+
+def path_on_side(springs, j, s, a):
+    """(u [m], u′ [m/rad]) of row j's path on pivot side s at rotation a."""
+    return path_terms(springs[j], COL_PATH, s, a)
 
 
 def side_index(s):
@@ -160,6 +182,8 @@ def rotation_at_elongation(springs, j, s, u, linearized):
     """Rotation a ≥ 0 about pivot s at which row j's elongation is u [rad] (inf: never)."""
     if u <= 0.0:
         return 0.0
+    if has_path(springs, j):
+        return path_rotation(springs[j], COL_PATH, s, u)
     _, r, phi, _ = spring_on_side(springs, j, s)
     return spring_failure_rotation(r, phi, u, linearized)
 
@@ -268,8 +292,9 @@ def unload(springs, alive, s, a, linearized, energy, energy_col):
 def plateau_slack_point(springs, j, s, a, linearized):
     """u(a) − F_y/K: the slack point of row j's member of side s on its yield plateau at
     rotation a [m] (where it unloads elastically from F_y to zero)."""
-    k, r, phi, _ = spring_on_side(springs, j, s)
-    return spring_elongation(r, phi, a, linearized) - springs[j, COL_YIELD + side_index(s)] / k
+    k, _, _, _ = spring_on_side(springs, j, s)
+    u = elongation_on_side(springs, j, s, a, linearized)
+    return u - springs[j, COL_YIELD + side_index(s)] / k
 
 
 def plateau_work(springs, j, s, a, linearized):
@@ -284,10 +309,10 @@ def plateau_work(springs, j, s, a, linearized):
 def released_energy(springs, j, s, a, linearized):
     """Energy lost when row j's member on side s is lost at rotation a [J]: the plastic work of
     a plateau in progress and the elastic energy stored in it, ½·F²/K."""
-    k, r, phi, _ = spring_on_side(springs, j, s)
+    k, _, _, _ = spring_on_side(springs, j, s)
     if k == 0.0:
         return 0.0
-    force = member_force(springs, j, s, k, spring_elongation(r, phi, a, linearized))
+    force = member_force(springs, j, s, k, elongation_on_side(springs, j, s, a, linearized))
     return plateau_work(springs, j, s, a, linearized) + 0.5 * force * force / k
 
 
@@ -443,8 +468,9 @@ def chain_balance(g, h, t, m, mp, a, s, om, ag, springs, alive):
 
         M(a)·ä + ½ M′(a)·ȧ² = −G(a) + T(a) + s·üg·H(a) − Σ_k M_k(a),   θ̈ = s·ä
 
-    with M_k the moments of the restrainers, all on the lower block, which turns rigidly about
-    the pivot (their polar arm is exact: :func:`member_moment`).
+    with M_k the generalised forces of the restrainers, F·du/da by virtual work: on the lower
+    block, which turns rigidly about the pivot, F·r·cos(φ − a) (their polar arm is exact:
+    :func:`member_moment`); on the upper block, F·u′(a) with u and u′ from the member's path.
     """
     moment = -g + t + s * ag * h - 0.5 * mp * om * om
     if springs.shape[0] > 0:
@@ -454,9 +480,13 @@ def chain_balance(g, h, t, m, mp, a, s, om, ag, springs, alive):
             if alive[k] != 0:
                 kk, r, sin_phi, cos_phi = spring_trig_on_side(springs, k, s)
                 if kk != 0.0:
-                    moment -= member_moment(
-                        springs, k, s, kk, r, sin_phi, cos_phi, a, sin_a, cos_a, False
-                    )
+                    if has_path(springs, k):
+                        u, du = path_on_side(springs, k, s, a)
+                        moment -= member_force(springs, k, s, kk, u) * du
+                    else:
+                        moment -= member_moment(
+                            springs, k, s, kk, r, sin_phi, cos_phi, a, sin_a, cos_a, False
+                        )
     return s * moment / m
 
 
@@ -521,6 +551,9 @@ def velocity_after_impact(omega, s, e, one_sided, rebound):
 
 
 def elongation_on_side(springs, j, s, a, linearized):
-    """Spring elongation u of restrainer row j on pivot side s at rotation a [m]."""
+    """Spring elongation u of restrainer row j on pivot side s at rotation a [m] (its path's,
+    when it has one)."""
+    if has_path(springs, j):
+        return path_on_side(springs, j, s, a)[0]
     _, r, phi, _ = spring_on_side(springs, j, s)
     return spring_elongation(r, phi, a, linearized)

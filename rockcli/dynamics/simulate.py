@@ -13,6 +13,7 @@ the results, so a record timed from any origin (e.g. the Unix epoch) runs as if 
 from __future__ import annotations
 
 import math
+from dataclasses import replace
 
 import numpy as np
 
@@ -29,6 +30,11 @@ from rockcli.dynamics.result import (
 from rockcli.dynamics.settings import Engine, SolverSettings
 from rockcli.mechanics import (
     NEGATIVE,
+    PA_COLS,
+    PA_HEAD,
+    PA_N,
+    PA_STEP_NEG,
+    PA_STEP_POS,
     Block,
     Restrainer,
     chain_terms,
@@ -186,31 +192,45 @@ def pack_points(block: Block) -> np.ndarray:
 
 
 def pack_springs(block: Block) -> np.ndarray:
-    """The packed restrainer table (columns in rules.py), failure rotations precomputed."""
-    table = np.zeros((len(block.restrainers), rules.N_SPRING_COLS))
+    """The packed restrainer table (columns in rules.py), failure rotations precomputed; as
+    wide as the longest elongation path (from rules.COL_PATH) when a member has one."""
+    width = rules.N_SPRING_COLS + max((len(sp.path) for sp in block.restrainers), default=0)
+    table = np.zeros((len(block.restrainers), width))
     for j, sp in enumerate(block.restrainers):
         if block.mass is None and (sp.k_pos or sp.k_neg):
             raise ValueError("a block with restrainers needs a mass")
         table[j, rules.COL_K_POS] = sp.k_pos
         table[j, rules.COL_K_NEG] = sp.k_neg
-        table[j, rules.COL_R_POS] = sp.r_pos
-        table[j, rules.COL_PHI_POS] = sp.phi_pos
-        table[j, rules.COL_R_NEG] = sp.r_neg
-        table[j, rules.COL_PHI_NEG] = sp.phi_neg
-        table[j, rules.COL_A_FAIL_POS] = spring_failure_rotation(
-            sp.r_pos, sp.phi_pos, sp.lost_at, block.linearized
-        )
-        table[j, rules.COL_A_FAIL_NEG] = spring_failure_rotation(
-            sp.r_neg, sp.phi_neg, sp.lost_at, block.linearized
-        )
+        pack_point(table, j, sp, block.linearized)
         table[j, rules.COL_FAILS_AT] = sp.lost_at
-        table[j, rules.COL_SIN_POS] = math.sin(sp.phi_pos)
-        table[j, rules.COL_COS_POS] = math.cos(sp.phi_pos)
-        table[j, rules.COL_SIN_NEG] = math.sin(sp.phi_neg)
-        table[j, rules.COL_COS_NEG] = math.cos(sp.phi_neg)
         pack_law(table[j], sp)
     rules.reset_laws(table, block.linearized)
     return table
+
+
+def pack_point(table: np.ndarray, j: int, sp: Restrainer, linearized: bool) -> None:
+    """Row j's point: r, φ, their sines and cosines and the rotation at which it is lost, on
+    each side; a member with an elongation path has it from rules.COL_PATH, with r = u′(0) and
+    φ = 0 (the arm at rest: rules.py)."""
+    if sp.path:
+        table[j, rules.COL_PATH : rules.COL_PATH + len(sp.path)] = sp.path
+        points = ((sp.arm_at_rest(1), 0.0), (sp.arm_at_rest(-1), 0.0))
+    else:
+        points = ((sp.r_pos, sp.phi_pos), (sp.r_neg, sp.phi_neg))
+    columns = (
+        (1, rules.COL_R_POS, rules.COL_PHI_POS, rules.COL_A_FAIL_POS, rules.COL_SIN_POS),
+        (-1, rules.COL_R_NEG, rules.COL_PHI_NEG, rules.COL_A_FAIL_NEG, rules.COL_SIN_NEG),
+    )
+    for (r, phi), (s, col_r, col_phi, col_fail, col_sin) in zip(points, columns, strict=True):
+        table[j, col_r] = r
+        table[j, col_phi] = phi
+        table[j, col_sin] = math.sin(phi)
+        table[j, col_sin + 1] = math.cos(phi)  # COL_COS_* follows COL_SIN_*
+        table[j, col_fail] = (
+            rules.rotation_at_elongation(table, j, s, sp.lost_at, linearized)
+            if sp.path
+            else spring_failure_rotation(r, phi, sp.lost_at, linearized)
+        )
 
 
 def pack_law(row: np.ndarray, sp: Restrainer) -> None:
@@ -302,7 +322,10 @@ def simulate(
         from rockcli.dynamics.kernel import integrate
 
         interrupts.call(integrate, *arrays, *outputs)
-    hist = _history(times, hist_th, hist_om, hist_f, out_f[L.O_T_END], origin) if history else None
+    hist = None
+    if history:
+        hist = _history(times, hist_th, hist_om, hist_f, out_f[L.O_T_END], origin)
+        hist = replace(hist, elongations=elongations(block, hist.theta))
     if origin:
         out_f[[L.O_T_END, L.O_T_OVERTURN, L.O_T_UPLIFT]] += origin
         spring_out[:, [L.S_T_FAIL, L.S_T_YIELD]] += origin
@@ -329,6 +352,43 @@ def _history(
     return History(
         time=times[keep] + origin, theta=th[keep], omega=om[keep], forces=forces[keep].T.copy()
     )
+
+
+def elongations(block: Block, theta: np.ndarray) -> np.ndarray:
+    """Each restrainer's elongation at the rotations θ [m], shape (restrainers, samples): the
+    member of pivot O for θ > 0, of O′ for θ < 0, 0 at rest (for plots: the engine's geometry,
+    Restrainer.elongation, evaluated on arrays)."""
+    out = np.zeros((len(block.restrainers), theta.size))
+    for j, sp in enumerate(block.restrainers):
+        for s in (1, -1):
+            on = s * theta > 0.0
+            a = np.abs(theta[on])
+            out[j, on] = (
+                _path_elongation(sp.path, s, a)
+                if sp.path
+                else _polar_elongation(*sp.side(s)[1:], a, block.linearized)
+            )
+    return out
+
+
+def _polar_elongation(r: float, phi: float, a: np.ndarray, linearized: bool) -> np.ndarray:
+    """mechanics.spring_elongation on an array of rotations [m]."""
+    if linearized:
+        return r * math.cos(phi) * a
+    return r * (math.cos(phi) * np.sin(a) + math.sin(phi) * 2.0 * np.sin(0.5 * a) ** 2)
+
+
+def _path_elongation(path: tuple[float, ...], s: int, a: np.ndarray) -> np.ndarray:
+    """mechanics.path_terms' u on an array of rotations [m]."""
+    n = int(path[PA_N])
+    step = path[PA_STEP_POS] if s > 0 else path[PA_STEP_NEG]
+    rows = np.asarray(path[PA_HEAD:]).reshape(2, n, PA_COLS)[0 if s > 0 else 1]
+    x = a / step
+    k = np.clip(np.floor(x).astype(np.int64), 0, n - 2)
+    u = x - k
+    h00, h10 = 2 * u**3 - 3 * u**2 + 1, (u**3 - 2 * u**2 + u) * step
+    h01, h11 = 3 * u**2 - 2 * u**3, (u**3 - u**2) * step
+    return h00 * rows[k, 0] + h10 * rows[k, 1] + h01 * rows[k + 1, 0] + h11 * rows[k + 1, 1]
 
 
 def _optional(x: float) -> float | None:

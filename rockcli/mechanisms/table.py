@@ -20,7 +20,7 @@ from __future__ import annotations
 import math
 from functools import lru_cache
 
-from rockcli.mechanics import CH_HEAD, Chain
+from rockcli.mechanics import CH_HEAD, PA_COLS, PA_HEAD, Chain
 from rockcli.mechanisms.motion import (
     MASS_STEP,
     generalised_mass,
@@ -70,6 +70,50 @@ def rows(side: ChainSide, end: float) -> tuple[float, ...]:
         values = terms(side, a)
         out += [*values, *slopes(side, a, values[4])]
     return tuple(out)
+
+
+def path_rows(side: ChainSide, index: int, end: float) -> list[float]:
+    """(u, u′, u″) of restrainer ``index``'s point on ``side`` at the NODES nodes of [0, end]:
+    its displacement away from the wall, its virtual displacement δx per unit rotation (both
+    from the configuration function, to a few ulps) and δx's central difference."""
+    point = side.placement(index)
+    out: list[float] = []
+    for k in range(NODES):
+        a = end * k / (NODES - 1)
+        slope = point.moment(1.0, a)  # F·δx for F = 1: δx
+        ahead, behind = point.moment(1.0, a + SLOPE_STEP), point.moment(1.0, a - SLOPE_STEP)
+        out += [point.elongation(a), slope, (ahead - behind) / (2.0 * SLOPE_STEP)]
+    return out
+
+
+@lru_cache(maxsize=256)
+def shrinks_at(plus: ChainSide, minus: ChainSide, index: int) -> tuple[int, float] | None:
+    """(side, rotation [rad]) of the first node of the chain's grid at which restrainer
+    ``index``'s elongation stops growing (δx ≤ 0: its point turns back towards its anchor);
+    None when it grows over the whole table on both sides."""
+    end = end_of(plus, minus)
+    for s, side in ((1, plus), (-1, minus)):
+        point = side.placement(index)
+        for k in range(NODES):
+            a = end * k / (NODES - 1)
+            if point.moment(1.0, a) <= 0.0:
+                return s, a
+    return None
+
+
+@lru_cache(maxsize=64)
+def member_path(plus: ChainSide, minus: ChainSide, index: int) -> tuple[float, ...]:
+    """The elongation path of restrainer ``index`` (mechanics.Restrainer.path: PA_* layout) on
+    the grid of :func:`tabulate`: for a member whose point does not turn rigidly about the
+    pivot (on the upper block of a two-block chain), whose force F enters the equation of
+    motion by virtual work as F·u′(a). Its elongation must grow with the rotation of each side
+    (:func:`shrinks_at` None): the member laws' levels are rotations."""
+    end = end_of(plus, minus)
+    step = end / (NODES - 1)
+    rows = [*path_rows(plus, index, end), *path_rows(minus, index, end)]
+    path = (float(NODES), step, step, *rows)
+    assert len(path) == PA_HEAD + 2 * NODES * PA_COLS
+    return path
 
 
 def instability(side: ChainSide, end: float) -> float:

@@ -1,7 +1,9 @@
 """Force–elongation loops of the restrainers whose law acted (they yielded or were lost).
 
-The elongation at each sample is u = r·[sin φ − sin(φ − |θ|)] of the member of the pivot the
-block rotates about (the engine's geometry, rockcli.mechanics.spring_elongation); the force is
+The elongation at each sample is the one the run computed (History.elongations: the engine's
+geometry, u = r·[sin φ − sin(φ − |θ|)] of the member of the pivot the block rotates about, or a
+member's path on a chain's upper block), else r·[sin φ − sin(φ − |θ|)] from the model's r and
+φ (rockcli.mechanics.spring_elongation); the force is
 the engine's own, recorded at the sample (its law and state). One curve per polarity, the
 yield force and the design strength as lines; a member that was lost ends at a cross.
 """
@@ -51,7 +53,10 @@ def draw_loops(ax: Axes, model: Mapping[str, Any], runs: Sequence[RockingRun], r
         hist = run.history
         if hist is None:
             continue
-        u = elongation(hist.theta, spring, model.get("linearized", False))
+        if hist.elongations is not None:
+            u = hist.elongations[row]
+        else:
+            u = elongation(hist.theta, spring, model.get("linearized", False))
         force = hist.forces[row]
         t_lost = run.restrainers[row].t_fail
         if t_lost is not None:  # the member is gone: its loop ends where it was lost

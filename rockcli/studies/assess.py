@@ -99,12 +99,22 @@ def assess_model_output(
         restitution_rule(describe(model).e_rule, block, rocked),
         result,
         overturn_angle(settings, block),
-        warnings=(*model_warnings(model), *record.warnings),
+        warnings=(*model_warnings(model), *record.warnings, *mechanism_warnings(model, rocked)),
         floor=floor,
         ground=ground,
         shaking=shaking if floor is not None else None,
         mechanism=rocked,
     )
+
+
+def mechanism_warnings(model: Model, rocked: tuple[str, str] | None) -> tuple[Note, ...]:
+    """What a wall's mechanism as rocked needs said (rockcli.studies.rocked.mechanism_notes):
+    a restrainer of a vertical flexure taken as at its held top."""
+    if rocked is None or rocked[1] != "vertical-flexure":
+        return ()
+    from rockcli.studies.rocked import mechanism_notes
+
+    return mechanism_notes(model, rocked[0])
 
 
 def overturn_angle(settings: SolverSettings, block: Block) -> float:

@@ -8,17 +8,17 @@ mechanism rocks on the floor motion at its hinge, Z + the hinge's height, throug
 first mode as the code check's floor spectrum (rockcli.studies.catalogue.spec_position); a
 vertical flexure on the motion of its storey's base (the floor above, which holds its top,
 moves otherwise: docs/interpretations.md). The two-block vertical flexure rocks as its chain
-(rockcli.mechanisms.flexure).
+(rockcli.mechanisms.flexure), with its restrainers on either block.
 """
 
 from __future__ import annotations
 
 from dataclasses import dataclass
 
-from rockcli.errors import InputError
 from rockcli.mechanics import Block
 from rockcli.mechanisms.wall import MechanismSpec, Wall
 from rockcli.model.schema import Model
+from rockcli.notes import Note
 from rockcli.records.record import Record
 from rockcli.studies.floor import Floor
 
@@ -58,36 +58,65 @@ def mechanism_block(model: Model, wall: Wall, spec: MechanismSpec) -> Block:
     rigid body as a Block of its own shape (rockcli.mechanisms.rigid), a vertical flexure as
     a Block carrying its two-block chain (rockcli.mechanisms.flexure; its hinge resolved as
     the code check resolves it)."""
-    from rockcli.mechanisms.catalogue import sides_of
-    from rockcli.mechanisms.flexure import UpperMemberError, flexure_block
+    from rockcli.mechanisms.flexure import flexure_block
     from rockcli.mechanisms.rigid import rigid_block
     from rockcli.mechanisms.wall import MechanismType
+    from rockcli.model.derive import block_of
+
+    block = block_of(model)
+    if spec.type is not MechanismType.VERTICAL_FLEXURE:
+        return system_restitution(rigid_block(wall, spec, block), model)
+    spec = flexure_spec(model, wall, spec)
+    return system_restitution(flexure_block(wall, spec, block), model)
+
+
+def flexure_spec(model: Model, wall: Wall, spec: MechanismSpec) -> MechanismSpec:
+    """The vertical flexure ``spec`` with the hinge the code check finds: given, or the
+    optimum over the sides the wall can open to."""
+    from rockcli.mechanisms.catalogue import sides_of
     from rockcli.model.derive import block_of
     from rockcli.studies.catalogue import resolved
     from rockcli.studies.kinematic import check_settings
 
     block = block_of(model)
-    if spec.type is not MechanismType.VERTICAL_FLEXURE:
-        return system_restitution(rigid_block(wall, spec, block), model)
-    # The hinge the code check finds: the optimum over the sides the wall can open to.
     sides = sides_of(spec, block.free_side if block.one_sided else None)
-    spec, _ = resolved(wall, spec, sides, check_settings(model))
-    try:
-        return system_restitution(flexure_block(wall, spec, block), model)
-    except UpperMemberError as exc:
-        from rockcli.notes import Note
+    return resolved(wall, spec, sides, check_settings(model))[0]
 
-        problem = Note(
-            "cannot_rock_upper", "the time history cannot rock '{name}' with restrainer "
-            "'{member}' on its upper block ({z:g} m above the storey's base, between the "
-            "intermediate hinge at {hinge:.3f} m and the held top at {top:g} m)",
-            name=spec.name, member=exc.member, z=float(exc.z), hinge=float(exc.hinge),
-            top=float(exc.top),
+
+#: The note on a member of a flexure's upper block taken as at its held top.
+HELD_AT_TOP = (
+    "'{name}': restrainer '{member}' on its upper block ({z:g} m above the storey's base) is "
+    "taken as at the held top in the time history, as the floor holds it (not a spring of the "
+    "motion): all but at the top, its point turns back towards its anchor at {rotation:.3g} rad "
+    "on side {side}, before the chain's end ({end:.3g} rad); the code check takes it as given"
+)
+
+
+def mechanism_notes(model: Model, name: str) -> tuple[Note, ...]:
+    """What the reader needs to know of the wall's mechanism ``name`` as the time history
+    rocks it: a member on a vertical flexure's upper block taken as at its held top
+    (rockcli.mechanisms.flexure.held_at_top)."""
+    from rockcli.mechanisms.flexure import held_at_top
+    from rockcli.mechanisms.wall import MechanismType
+    from rockcli.model.derive_wall import to_wall
+
+    wall = to_wall(model)
+    spec = named_spec(wall, name)
+    if spec.type is not MechanismType.VERTICAL_FLEXURE or not wall.restrainers:
+        return ()
+    return tuple(
+        Note(
+            "held_at_top",
+            HELD_AT_TOP,
+            name=name,
+            member=h.name,
+            z=float(h.z),
+            rotation=float(h.rotation),
+            side=f"{h.side:+d}",
+            end=float(h.end),
         )  # fmt: skip
-        allowed = Note("upper_allowed", "restrainers of a vertical flexure at or below its "
-                       "intermediate hinge, or at its storey's top; rock kinematic checks it as "
-                       "given")  # fmt: skip
-        raise InputError(problem, where="restrainers", value=exc.member, allowed=allowed) from None
+        for h in held_at_top(wall, flexure_spec(model, wall, spec))
+    )
 
 
 def system_restitution(block: Block, model: Model) -> Block:

@@ -59,6 +59,8 @@ def effectiveness(block: Block) -> list[dict[str, Any]]:
         stiff = linear_global_stiffness(block, side)
         for sp in block.restrainers:
             k, r, _ = sp.side(side)
+            if sp.path:  # on a chain's upper block: the radius of a point with its arm at rest
+                r = sp.arm_at_rest(side)
             c_k = restrainer_coefficient(k, r, block.inertia)
             rows.append(
                 {
