@@ -72,24 +72,24 @@ def fit(data, method, ddof, output):
     """Fit P(DS | IM) = Φ(ln(IM/θ)/β) to DATA.csv: the median θ and dispersion β, and a 95 %
     band (MSA: profile likelihood; IDA: exact noncentral-t, or a parametric bootstrap with
     censored records). MSA by maximum likelihood on the binomial counts (Baker 2015); IDA
-    as the lognormal of the collapse intensities."""
+    as the lognormal of the collapse intensities. At most 10 000 data rows, intensities in
+    (0, 1e4]; the band at the data's intensities (at most 100 of them)."""
     import numpy as np
 
     from rockcli.errors import InputError
     from rockcli.fragility.data import read_data
-    from rockcli.fragility.fit import ida_curve, msa_curve
+    from rockcli.fragility.fit import band_points, ida_curve, msa_curve
     from rockcli.terminal.fragility import fit_document, fit_report
     from rockcli.terminal.table import show
 
     found = read_data(data, method)
+    at = band_points(found.im, msa=method == "msa")
     try:
         if method == "ida":
             flags = found.censored if found.censored is not None else np.zeros(found.im.size, bool)
-            at = np.sort(found.im)
             result, band = ida_curve(found.im[~flags], found.im[flags], at, int(ddof))
         else:
             assert found.runs is not None and found.exceedances is not None
-            at = found.im
             result, band = msa_curve(found.im, found.runs, found.exceedances, at)
     except ValueError as exc:
         raise InputError(

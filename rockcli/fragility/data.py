@@ -10,6 +10,12 @@ A CSV file with a header row:
 
 Other columns are ignored; blank lines and lines starting with ``#`` are skipped. Every bad
 cell is an InputError naming the file, the line, the value and what is allowed.
+
+Limits (docs/fragility.md, "Fitting a data set"): at most :data:`ROW_LIMIT` data rows; an
+intensity finite, > 0 and at most :data:`IM_MAX` in the file's unit; runs and exceedances
+whole numbers, 1 ≤ runs ≤ :data:`RUNS_MAX` and 0 ≤ exceedances ≤ runs. A row is one line (a
+quoted cell does not run on to the next), and a line that is not a CSV row (e.g. a cell
+longer than the csv module's 131 072 characters) is refused in one line too.
 """
 
 from __future__ import annotations
@@ -28,8 +34,18 @@ from rockcli.textfile import TOML_LIMIT, read_text
 COLUMNS = {"msa": ("im", "runs", "exceedances"), "ida": ("im",)}
 #: The words of the censored column.
 FLAGS = {"0": 0.0, "1": 1.0, "false": 0.0, "true": 1.0}
+#: The most data rows a file may have: a hundred times an IDA's records (tens; FEMA P-695's
+#: far-field set has 44) or an MSA's runs (5 to 20 stripes of tens of runs, one row a run
+#: or a stripe). The fit and band of the largest file end within seconds and take less than
+#: 100 MB (10 000 censored IDA records, the slowest: a bootstrap of 1 000 resamples of them).
+ROW_LIMIT = 10_000
+#: The largest intensity, in the file's unit: above any PGA or Sa in g (a study's PGA is at
+#: most 10 g) or in m/s², any PGV in cm/s, and 10 g in cm/s² (9 810).
+IM_MAX = 1e4
+#: The most runs at one MSA level (each a time history: a million is more than any study).
+RUNS_MAX = 1_000_000
 #: What an intensity may be.
-IM_ALLOWED = "a finite number > 0 (the intensity measure, in its unit)"
+IM_ALLOWED = f"a finite number > 0 and ≤ {IM_MAX:g} (the intensity measure, in its unit)"
 
 
 @dataclass(frozen=True)
@@ -48,20 +64,18 @@ class FragilityData:
 def read_data(path: str, method: str) -> FragilityData:
     """The data set of a CSV file for ``method`` ("msa" or "ida"); InputError otherwise."""
     text = read_text(path, "fragility data file", TOML_LIMIT)
-    lines = [(k + 1, line) for k, line in enumerate(text.splitlines())
-             if line.strip() and not line.lstrip().startswith("#")]  # fmt: skip
+    lines = _lines(text, path)
     if not lines:
         raise InputError("no header row", file=path, allowed=_header_allowed(method))
-    rows = list(csv.reader(io.StringIO("\n".join(line for _, line in lines))))
-    header = [cell.strip() for cell in rows[0]]
+    header = [cell.strip() for cell in lines[0][1]]
     missing = [c for c in COLUMNS[method] if c not in header]
     if missing:
         raise InputError(f"no column {missing[0]!r}", file=path, where=f"line {lines[0][0]}",
-                         value=",".join(header), allowed=_header_allowed(method))  # fmt: skip
+                         value=",".join(header)[:80], allowed=_header_allowed(method))  # fmt: skip
     wanted = [*COLUMNS[method], *(["censored"] if method == "ida" and "censored" in header else [])]
     where = {c: header.index(c) for c in wanted}
     values: dict[str, list[float]] = {c: [] for c in wanted}
-    for (number, _), row in zip(lines[1:], rows[1:], strict=True):
+    for number, row in lines[1:]:
         for column, index in where.items():
             cell = row[index].strip() if index < len(row) else ""
             values[column].append(_number(cell, column, path, number))
@@ -73,12 +87,32 @@ def read_data(path: str, method: str) -> FragilityData:
         censored = np.array(values["censored"], dtype=bool) if "censored" in values else None
         return FragilityData(path, method, im, censored=censored)
     runs, exceed = np.array(values["runs"]), np.array(values["exceedances"])
-    for k, (n, z) in enumerate(zip(runs, exceed, strict=True)):
+    for (number, _), n, z in zip(lines[1:], runs, exceed, strict=True):
         if z > n:
-            raise InputError("more exceedances than runs", file=path,
-                             where=f"line {lines[k + 1][0]}", value=f"{z:g} of {n:g}",
+            raise InputError("more exceedances than runs", file=path, where=f"line {number}",
+                             value=f"{z:g} of {n:g}",
                              allowed="0 to the runs of the level")  # fmt: skip
     return FragilityData(path, method, im, runs, exceed)
+
+
+def _lines(text: str, path: str) -> list[tuple[int, list[str]]]:
+    """The header and data rows of ``text``, each with its line number, one row a line
+    (blank and ``#`` lines skipped); InputError for a line that is not a CSV row or for more
+    than ROW_LIMIT data rows (read no further)."""
+    rows: list[tuple[int, list[str]]] = []
+    for k, line in enumerate(io.StringIO(text, newline=None), start=1):
+        if not line.strip() or line.lstrip().startswith("#"):
+            continue
+        if len(rows) > ROW_LIMIT:
+            raise InputError(f"more than {ROW_LIMIT} data rows", file=path, where=f"line {k}",
+                             allowed=f"at most {ROW_LIMIT} rows under the header")  # fmt: skip
+        try:
+            rows.append((k, next(csv.reader([line.rstrip("\n")]))))
+        except csv.Error as exc:
+            raise InputError(f"not a CSV row ({exc})", file=path, where=f"line {k}",
+                             allowed="cells separated by commas, each up to 131 072 "
+                             "characters") from None  # fmt: skip
+    return rows
 
 
 def _number(cell: str, column: str, path: str, line: int) -> float:
@@ -93,15 +127,17 @@ def _number(cell: str, column: str, path: str, line: int) -> float:
     whole = column in ("runs", "exceedances")
     allowed = (
         IM_ALLOWED if column == "im" else
-        "a whole number ≥ 1" if column == "runs" else "a whole number ≥ 0"
+        f"a whole number from 1 to {RUNS_MAX:,}" if column == "runs" else
+        f"a whole number from 0 to {RUNS_MAX:,}"
     )  # fmt: skip
     try:
         value = float(cell)
     except ValueError:
         value = math.nan
-    ok = math.isfinite(value) and (value > 0.0 if column == "im" else value >= 0.0)
+    ok = math.isfinite(value) and (0.0 < value <= IM_MAX if column == "im" else value >= 0.0)
     if whole:
         ok = ok and value == round(value) and (value >= 1.0 or column == "exceedances")
+        ok = ok and value <= RUNS_MAX
     if not ok:
         raise InputError(f"column {column}: not a usable value", file=path,
                          where=f"line {line}", value=cell[:40], allowed=allowed)  # fmt: skip

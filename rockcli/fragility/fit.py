@@ -25,7 +25,14 @@ profile likelihood (:func:`msa_band`); IDA, the exact noncentral-t band (:func:`
 or with censored records a parametric bootstrap read through the lognormal's pivots
 (:func:`ida_censored_band`). :func:`band_method` names each in words.
 
-Pure and silent: numpy and scipy; a data set that defines no fit is a ValueError that says why.
+Every likelihood is maximised in log space by Newton's method with bounded work
+(rockcli/fragility/likelihood.py), so a fit and its band end in seconds whatever the data:
+intensities of 1e-300 and 1e4 alike, counts of a million runs. A level repeated in MSA data is
+one stripe (the binomial likelihood is the same: its runs and exceedances add up).
+
+Pure and silent: numpy and scipy; a data set that defines no fit is a ValueError that says why
+(all runs or none exceed; the counts do not rise with the intensity; they jump from none to
+all, whose likelihood is greatest for a step, β → 0; a fitted median beyond floating point).
 """
 
 from __future__ import annotations
@@ -34,15 +41,35 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
-from scipy import optimize, special
+from scipy import special
+
+from rockcli.fragility.likelihood import (
+    NEWTON_TOLERANCE,
+    CensoredSets,
+    censored_fit,
+    has_maximum,
+    probit_fit,
+    probit_terms,
+    standardize,
+)
 
 #: The divisor of β² in an IDA fit: n (maximum likelihood), not n − 1.
 BETA_DDOF = 0
 #: Resamples of the censored IDA band's parametric bootstrap, and every band's two-sided level.
 BOOTSTRAP_SAMPLES = 1000
 CONFIDENCE = 0.95
-#: Tolerance of a bootstrap refit in ln θ and ln β (1e-6: far below the band's own spread).
-BAND_TOLERANCE = 1e-6
+#: |ln θ| and |ln β| beyond which a fitted value is not a double (e^708 ≈ 3e307).
+LOG_LIMIT = 708.0
+#: The most intensities :func:`band_points` gives a band at; for MSA, also at most BAND_WORK
+#: divided by the stripes (the profile likelihood's every step costs band intensities ×
+#: stripes: 10 000 distinct levels get 10 intensities and take about a second), but never
+#: fewer than MIN_BAND_POINTS.
+BAND_POINTS = 100
+BAND_WORK = 100_000
+MIN_BAND_POINTS = 10
+#: Elements (intensities × stripes, or resamples × records) a band computes at once: its
+#: arrays stay near 2 MB each whatever the data's size.
+CHUNK_ELEMENTS = 1 << 18
 
 
 @dataclass(frozen=True)
@@ -59,8 +86,26 @@ class Fit:
     def probability(self, im: np.ndarray | float) -> np.ndarray:
         """P(damage state reached | IM = im) = Φ(ln(im/θ)/β)."""
         x = np.asarray(im, dtype=float)
-        with np.errstate(divide="ignore"):
-            return np.asarray(special.ndtr(np.log(x / self.median) / self.beta))
+        with np.errstate(divide="ignore", invalid="ignore"):
+            return np.asarray(special.ndtr((np.log(x) - math.log(self.median)) / self.beta))
+
+
+def _lognormal(ln_theta: float, beta: float, ddof: int | None, n: int) -> Fit:
+    """The Fit of ln θ and β, or a ValueError where either is beyond floating point."""
+    if not (abs(ln_theta) <= LOG_LIMIT and 0.0 < beta and abs(math.log(beta)) <= LOG_LIMIT):
+        raise ValueError(
+            "the fitted median or dispersion lies beyond floating point (the data hardly "
+            "rise with the intensity)"
+        )
+    return Fit(math.exp(ln_theta), beta, ddof, n)
+
+
+def _positive(values: np.ndarray, what: str) -> np.ndarray:
+    """``values`` as floats, each finite and > 0 (a ValueError naming ``what`` otherwise)."""
+    x = np.asarray(values, dtype=float)
+    if not (np.all(np.isfinite(x)) and np.all(x > 0.0)):
+        raise ValueError(f"{what} must be finite and > 0")
+    return x
 
 
 def ida_fit(im: np.ndarray, ddof: int = BETA_DDOF) -> Fit:
@@ -73,111 +118,123 @@ def ida_fit(im: np.ndarray, ddof: int = BETA_DDOF) -> Fit:
     beta = float(np.std(logs, ddof=ddof))
     if not beta > 0.0:
         raise ValueError("the collapse intensities are all equal: no dispersion to fit")
-    return Fit(float(np.exp(np.mean(logs))), beta, ddof, int(x.size))
+    return _lognormal(float(np.mean(logs)), beta, ddof, int(x.size))
 
 
-def ida_censored_fit(im: np.ndarray, censored: np.ndarray, tolerance: float = 1e-10) -> Fit:
+def ida_censored_fit(
+    im: np.ndarray, censored: np.ndarray, tolerance: float = NEWTON_TOLERANCE
+) -> Fit:
     """The maximum-likelihood lognormal of collapse intensities ``im`` and of records
     right-censored at ``censored`` (each the intensity below which such a record was seen
-    not to reach the state; module docstring), searched (Nelder–Mead) over ln θ and ln β to
-    ``tolerance`` from the uncensored intensities' own fit. Without censored records: ida_fit
-    with ddof 0, in closed form."""
-    x = np.asarray(im, dtype=float)
+    not to reach the state; module docstring), by Newton's method to ``tolerance``
+    (rockcli.fragility.likelihood.censored_fit). Without censored records: ida_fit with ddof
+    0, in closed form."""
     c = np.asarray(censored, dtype=float)
     if c.size == 0:
-        return ida_fit(x, 0)
-    if np.any(c <= 0.0) or not np.all(np.isfinite(c)):
-        raise ValueError("censoring intensities must be finite and > 0")
-    first = ida_fit(x, 0)  # the checks of the collapse intensities, and the start
-    start = np.array([math.log(first.median), math.log(first.beta)])
-    found = optimize.minimize(
-        _censored_negative_log_likelihood, start, args=(np.log(x), np.log(c)),
-        method="Nelder-Mead",
-        options={"xatol": tolerance, "fatol": tolerance * 1e-2, "maxiter": 20_000,
-                 "maxfev": 40_000},
-    )  # fmt: skip
-    ln_theta, ln_beta = found.x
-    return Fit(float(math.exp(ln_theta)), float(math.exp(ln_beta)), 0, int(x.size + c.size))
+        return ida_fit(im, 0)
+    x = _positive(im, "collapse intensities")
+    m, s, a, b = _censored_search(np.log(x), np.log(_positive(c, "censoring intensities")),
+                                  tolerance)  # fmt: skip
+    return _lognormal(m + s * a / b, s / b, 0, int(x.size + c.size))
 
 
-def _censored_negative_log_likelihood(
-    params: np.ndarray, logs: np.ndarray, censored_logs: np.ndarray
-) -> float:
-    """−(Σ ln φ(u_i) − n ln β + Σ ln(1 − Φ(u_k))), u = (ln x − ln θ)/β (the Σ ln x_i of the
-    density does not depend on θ, β and is left out)."""
-    ln_theta, ln_beta = params
-    beta = math.exp(ln_beta)
-    u = (logs - ln_theta) / beta
-    v = (censored_logs - ln_theta) / beta
-    density = -0.5 * u * u - ln_beta
-    return float(-(density.sum() + special.log_ndtr(-v).sum()))
+def _censored_search(
+    logs: np.ndarray, censored_logs: np.ndarray, tolerance: float = NEWTON_TOLERANCE
+) -> tuple[float, float, float, float]:
+    """(m, s, a, b) of the censored maximum likelihood: the standardization of the records'
+    logs and the probit's intercept and slope on it (rockcli.fragility.likelihood)."""
+    every = np.concatenate([logs, censored_logs])
+    m, s = standardize(every)
+    y = ((every - m) / s)[None, :]
+    reached = (np.arange(every.size) < logs.size)[None, :]
+    if not has_maximum(y, reached)[0]:
+        raise ValueError(
+            "the records define no fit: it needs two or more distinct collapse intensities, "
+            "or one below a censored record's intensity"
+        )
+    found = y[reached]
+    mean, spread = float(found.mean()), float(found.std())
+    b0 = 1.0 / spread if spread > 0.0 else 1.0
+    a, b, done = censored_fit(CensoredSets.of(y, reached), np.array([mean * b0]),
+                              np.array([b0]), tolerance)  # fmt: skip
+    if not done[0]:
+        raise ValueError("the censored likelihood's search did not settle")
+    return m, s, float(a[0]), float(b[0])
+
+
+def msa_stripes(
+    im: np.ndarray, runs: np.ndarray, exceedances: np.ndarray
+) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The MSA data checked, one stripe a level (a level repeated: its runs and exceedances
+    added up), levels increasing: (ln x, n, z)."""
+    x, n, z = (np.asarray(a, dtype=float) for a in (im, runs, exceedances))
+    if not (x.shape == n.shape == z.shape) or x.size < 2:
+        raise ValueError("an MSA fit needs two or more intensity levels, each with its runs "
+                         "and exceedances")  # fmt: skip
+    _positive(x, "intensity levels")
+    if not (np.all(np.isfinite(n)) and np.all(n >= 1) and np.all(z >= 0)):
+        raise ValueError("runs must be ≥ 1 and exceedances ≥ 0")
+    if np.any(z > n) or np.any(z != np.round(z)) or np.any(n != np.round(n)):
+        raise ValueError("exceedances must be whole numbers, at most the runs of their level")
+    levels, which = np.unique(x, return_inverse=True)
+    if levels.size < 2:
+        raise ValueError("every stripe is at one intensity level: an MSA fit needs two or more")
+    return np.log(levels), np.bincount(which, weights=n), np.bincount(which, weights=z)
+
+
+def _msa_search(
+    logs: np.ndarray, n: np.ndarray, z: np.ndarray, tolerance: float = NEWTON_TOLERANCE
+) -> tuple[float, float, float, float]:
+    """(m, s, a, b) of the binomial maximum likelihood of stripes (ln x increasing, n, z):
+    the standardization of the levels' logs and the probit's intercept and slope on it."""
+    if not (z.sum() > 0 and (n - z).sum() > 0):
+        raise ValueError("every run exceeds, or none does: the data set defines no median")
+    _refuse_a_step(logs, n, z)
+    m, s = standardize(logs)
+    a, b, done = probit_fit((logs - m) / s, n, z, tolerance)
+    if not b > 0.0:
+        raise ValueError("the exceedances do not rise with the intensity: no finite median "
+                         "and dispersion fit them")  # fmt: skip
+    if not done:
+        raise ValueError("the binomial likelihood's search did not settle")
+    return m, s, a, b
+
+
+def _refuse_a_step(logs: np.ndarray, n: np.ndarray, z: np.ndarray) -> None:
+    """A ValueError where no level has exceedances below some level and every level above it
+    has nothing but: the likelihood then grows without bound towards a step (β → 0)."""
+    first = int(np.argmax(z > 0))  # the lowest level with an exceedance
+    last = int(n.size - 1 - np.argmax((n - z > 0)[::-1]))  # the highest with a run that does not
+    if last > first:
+        return
+    low, high = (f"{math.exp(v):.4g}" for v in (logs[last], logs[first]))
+    where = f"at {high}" if last == first else f"between {low} and {high}"
+    raise ValueError(
+        f"the exceedances go from none to all runs {where}: the likelihood is greatest for a "
+        "step there (β → 0), no lognormal fits; runs at more levels around it would"
+    )
 
 
 def msa_fit(
     im: np.ndarray,
     runs: np.ndarray,
     exceedances: np.ndarray,
-    start: tuple[float, float] | None = None,
-    tolerance: float = 1e-10,
+    tolerance: float = NEWTON_TOLERANCE,
 ) -> Fit:
     """The maximum-likelihood lognormal fit of exceedance counts at intensity levels (MSA):
-    θ, β maximising the binomial log-likelihood (module docstring), searched (Nelder–Mead)
-    over ln θ and ln β to ``tolerance``, from ``start`` (θ, β) or else from the moments of the
-    levels weighted by their exceedances."""
-    x, n, z = (np.asarray(a, dtype=float) for a in (im, runs, exceedances))
-    if not (x.shape == n.shape == z.shape) or x.size < 2:
-        raise ValueError("an MSA fit needs two or more intensity levels, each with its runs "
-                         "and exceedances")  # fmt: skip
-    if np.any(x <= 0.0) or not np.all(np.isfinite(x)) or np.any(n < 1) or np.any(z < 0):
-        raise ValueError("intensity levels must be finite and > 0, runs ≥ 1, exceedances ≥ 0")
-    if np.any(z > n) or np.any(z != np.round(z)) or np.any(n != np.round(n)):
-        raise ValueError("exceedances must be whole numbers, at most the runs of their level")
-    if not (z.sum() > 0 and (n - z).sum() > 0):
-        raise ValueError("every run exceeds, or none does: the data set defines no median")
-    logs = np.log(x)
-    first = _start(logs, n, z) if start is None else np.log(np.array(start, dtype=float))
-    found = optimize.minimize(
-        _negative_log_likelihood, first, args=(logs, n, z), method="Nelder-Mead",
-        options={"xatol": tolerance, "fatol": tolerance * 1e-2, "maxiter": 20_000,
-                 "maxfev": 40_000},
-    )  # fmt: skip
-    ln_theta, ln_beta = found.x
-    if not (abs(ln_theta) < LOG_LIMIT and abs(ln_beta) < LOG_LIMIT):
-        raise ValueError("the exceedances do not rise with the intensity: no finite median "
-                         "and dispersion fit them")  # fmt: skip
-    return Fit(float(math.exp(ln_theta)), float(math.exp(ln_beta)), None, int(n.sum()))
+    θ, β maximising the binomial log-likelihood (module docstring), by Newton's method on
+    the probit's intercept and slope over the standardized log levels (a concave problem:
+    rockcli.fragility.likelihood) to ``tolerance``."""
+    logs, n, z = msa_stripes(im, runs, exceedances)
+    m, s, a, b = _msa_search(logs, n, z, tolerance)
+    return _lognormal(m - s * a / b, s / b, None, int(n.sum()))
 
 
-#: |ln θ|, |ln β| beyond which an MSA search has run off (counts that do not rise with the
-#: intensity have their likelihood's supremum at β → ∞) rather than found a fit: e^700 ≈ 1e304.
-LOG_LIMIT = 700.0
-
-
-def _start(logs: np.ndarray, n: np.ndarray, z: np.ndarray) -> np.ndarray:
-    """(ln θ, ln β) to start the search from: the levels' mean and spread, weighted by the
-    exceedances' increments (a rough median and dispersion)."""
-    fraction = z / n
-    weights = np.clip(np.diff(np.concatenate([[0.0], np.maximum.accumulate(fraction)])), 0, None)
-    if weights.sum() <= 0.0:
-        weights = np.ones_like(logs)
-    mean = float(np.average(logs, weights=weights))
-    spread = float(np.sqrt(np.average((logs - mean) ** 2, weights=weights)))
-    return np.array([mean, math.log(max(spread, 0.1))])
-
-
-def _negative_log_likelihood(
-    params: np.ndarray, logs: np.ndarray, n: np.ndarray, z: np.ndarray
-) -> float:
-    """−Σ [z ln p + (n − z) ln(1 − p)], p = Φ((ln x − ln θ)/β), by log-CDFs (no 0·log 0)."""
-    ln_theta, ln_beta = params
-    u = (logs - ln_theta) / math.exp(ln_beta)
-    return float(-(z * special.log_ndtr(u) + (n - z) * special.log_ndtr(-u)).sum())
-
-
-#: The profile-likelihood band's search: the slope b = 1/β kept in [0, PROFILE_SLOPE_MAX]
-#: (b = 0 a flat curve, the limit of counts that do not rise; 1e4, β = 1e-4, a step for any
-#: data), η = Φ⁻¹(P) searched out to PROFILE_EDGE from the fit and from 0 (Φ(±40) is 0 and 1 in
-#: double precision), each search at most PROFILE_ITERATIONS steps to PROFILE_TOLERANCE.
+#: The profile-likelihood band's search: the slope b of the standardized log levels kept in
+#: [0, max(PROFILE_SLOPE_MAX, 10 b̂)] (b = 0 a flat curve, the limit of counts that do not
+#: rise; b = 1e4 a step for any data), η = Φ⁻¹(P) searched out to PROFILE_EDGE from the fit
+#: and from 0 (Φ(±40) is 0 and 1 in double precision), each search at most PROFILE_ITERATIONS
+#: steps to PROFILE_TOLERANCE.
 PROFILE_SLOPE_MAX = 1e4
 PROFILE_EDGE = 40.0
 PROFILE_ITERATIONS = 100
@@ -190,80 +247,107 @@ def msa_band(
     """The profile-likelihood confidence band of an MSA fragility at the intensities ``at``,
     shape (len(at), 2) (Venzon & Moolgavkar 1988, "A method for computing profile-likelihood-
     based confidence intervals", Applied Statistics 37(1):87–94; Cox & Hinkley 1974,
-    Theoretical Statistics, §9.3). With p = Φ(a + b·ln x) (b = 1/β, a = −ln θ/β), at each x0
+    Theoretical Statistics, §9.3). With p = Φ(a + b·t) (t the standardized ln x), at each t0
     of ``at`` the band is the P(x0) = Φ(η0) whose profile deviance, 2·[ℓ(fit) − max over b ≥ 0
-    of ℓ with a = η0 − b·ln x0], is at most the χ²₁ quantile of CONFIDENCE (3.84). At the
+    of ℓ with a = η0 − b·t0], is at most the χ²₁ quantile of CONFIDENCE (3.84). At the
     true median (η0 = 0) it is the likelihood-ratio interval of θ. The binomial log-likelihood
     is concave in (a, b), so the deviance is convex in η0 and each end is its one root on that
     side (:func:`_profile_end`). A stripe of 0/n or n/n exceedances weighs in as it is; where
-    the data do not bound P on a side, the band reaches 0 or 1 there."""
-    whole = msa_fit(im, runs, exceedances)
-    logs = np.log(np.asarray(im, dtype=float))
-    n, z = np.asarray(runs, dtype=float), np.asarray(exceedances, dtype=float)
-    x0 = np.log(np.asarray(at, dtype=float))
-    with np.errstate(divide="ignore"):
-        a, b = -float(np.log(whole.median)) / whole.beta, 1.0 / whole.beta
-    if not (math.isfinite(a) and math.isfinite(b)):
-        return np.full((x0.size, 2), np.nan)  # θ or β out of floating point: no band
-    level = _negative_log_likelihood(np.log([whole.median, whole.beta]), logs, n, z)
-    level += 0.5 * float(special.chdtri(1, 1.0 - CONFIDENCE))
-    eta, start = a + b * x0, np.full(x0.size, min(b, PROFILE_SLOPE_MAX))
-    low = _profile_end(logs, n, z, x0, eta, start, level, -1.0)
-    high = _profile_end(logs, n, z, x0, eta, start, level, 1.0)
-    return np.stack([special.ndtr(low), special.ndtr(high)], axis=1)
+    the data do not bound P on a side, the band reaches 0 or 1 there. Computed CHUNK_ELEMENTS
+    at a time."""
+    logs, n, z = msa_stripes(im, runs, exceedances)
+    m, s, a, b = _msa_search(logs, n, z)
+    _lognormal(m - s * a / b, s / b, None, int(n.sum()))  # the fit's own checks
+    t = (logs - m) / s
+    x0 = (np.log(_positive(at, "band intensities")) - m) / s
+    value, _, weight = probit_terms(a + b * t, n, z)
+    level = float(value.sum()) + 0.5 * float(special.chdtri(1, 1.0 - CONFIDENCE))
+    cap = max(PROFILE_SLOPE_MAX, 10.0 * b)
+    band = np.empty((x0.size, 2))
+    step = max(1, CHUNK_ELEMENTS // t.size)
+    for i in range(0, x0.size, step):
+        part = x0[i : i + step]
+        eta, spread = a + b * part, _wald_spread(weight, t, part)
+        ends = [_profile_end(t, n, z, part, eta, np.full(part.size, b), level, side, cap,
+                             spread) for side in (-1, 1)]  # fmt: skip
+        band[i : i + step] = special.ndtr(np.stack(ends, axis=1))
+    return band
+
+
+def _wald_spread(weight: np.ndarray, t: np.ndarray, x0: np.ndarray) -> np.ndarray:
+    """The standard error of the fit's η at each x0 from the binomial Hessian in (a, b), the
+    stripes' ``weight`` (:func:`probit_terms`): √([1, x0]·H⁻¹·[1, x0]ᵀ); PROFILE_EDGE where
+    H is singular. Only a start for the profile's search."""
+    haa, hab, hbb = weight.sum(), (weight * t).sum(), (weight * t * t).sum()
+    det = haa * hbb - hab * hab
+    with np.errstate(all="ignore"):
+        spread = np.sqrt((hbb - 2.0 * x0 * hab + x0 * x0 * haa) / det)
+    return np.where(np.isfinite(spread) & (det > 0.0), spread, PROFILE_EDGE)
+
+
+#: Steps of the inner search at the bracket's far end: enough to find −ℓ below the level
+#: there when it is (the minimum is at most any value found), else the search from inside
+#: still ends there.
+PROFILE_CHECK = 20
+#: The profile's search starts this many Wald standard errors from the fit (1.96 of them
+#: for a quadratic deviance), so that Newton's method is near the end from its first step.
+WALD_START = 2.0
 
 
 def _profile_end(
-    logs: np.ndarray, n: np.ndarray, z: np.ndarray, x0: np.ndarray, eta: np.ndarray,
-    slope: np.ndarray, level: float, side: float,
+    t: np.ndarray, n: np.ndarray, z: np.ndarray, x0: np.ndarray, eta: np.ndarray,
+    slope: np.ndarray, level: float, side: float, cap: float, spread: np.ndarray,
 ) -> np.ndarray:  # fmt: skip
     """Where the profile's −ℓ (:func:`_profile`) reaches ``level`` beyond the fit's η at each
-    x0, on ``side`` (+1 up, −1 down): Newton's method from the far end of the bracket from η
-    to PROFILE_EDGE beyond both η and 0, which for a convex function converges from outside
-    the root without passing it (a step that would leave the bracket is a bisection, as a
-    safeguard). Where the far end is still below ``level``, the end is the far end."""
-    inside = eta.copy()
-    point = side * np.maximum(side * eta, 0.0) + side * PROFILE_EDGE
-    outside = point.copy()
-    for _ in range(PROFILE_ITERATIONS):
-        value, rate, slope = _profile(logs, n, z, x0, point, slope)
-        excess = value - level
-        above = excess >= 0.0
-        inside, outside = np.where(above, inside, point), np.where(above, point, outside)
-        with np.errstate(all="ignore"):
+    x0, on ``side`` (+1 up, −1 down), inside the bracket from η to PROFILE_EDGE beyond both η
+    and 0: where −ℓ is still below ``level`` at the bracket's far end, the end is the far end;
+    elsewhere Newton's method from WALD_START standard errors (``spread``) out, keeping the
+    bracket [inside, outside] of the root (−ℓ is convex in η, so a step from outside the
+    root does not pass it, and one from inside lands outside; a step that would leave the
+    bracket is a bisection, as a safeguard)."""
+    far = side * np.maximum(side * eta, 0.0) + side * PROFILE_EDGE
+    open_end = _profile(t, n, z, x0, far, slope, cap, PROFILE_CHECK)[0] < level
+    point = np.where(open_end, far, eta + side * np.minimum(WALD_START * spread, np.abs(far - eta)))
+    inside, outside = np.where(open_end, far, eta), far.copy()
+    with np.errstate(all="ignore"):
+        for _ in range(PROFILE_ITERATIONS):
+            value, rate, slope = _profile(t, n, z, x0, point, slope, cap)
+            excess = value - level
+            above = excess >= 0.0
+            inside, outside = np.where(above, inside, point), np.where(above, point, outside)
             step = point - excess / rate
-        kept = (np.minimum(inside, outside) <= step) & (step <= np.maximum(inside, outside))
-        step = np.where(kept, step, 0.5 * (inside + outside))
-        done = np.abs(step - point) <= PROFILE_TOLERANCE * (1.0 + np.abs(point))
-        point = step
-        if done.all():
-            break
+            kept = (np.minimum(inside, outside) <= step) & (step <= np.maximum(inside, outside))
+            step = np.where(kept, step, 0.5 * (inside + outside))
+            done = np.abs(step - point) <= PROFILE_TOLERANCE * (1.0 + np.abs(point))
+            point = step
+            if done.all():
+                break
     return point
 
 
 def _profile(
-    logs: np.ndarray, n: np.ndarray, z: np.ndarray, x0: np.ndarray, eta: np.ndarray,
-    slope: np.ndarray,
+    t: np.ndarray, n: np.ndarray, z: np.ndarray, x0: np.ndarray, eta: np.ndarray,
+    slope: np.ndarray, cap: float, iterations: int = PROFILE_ITERATIONS,
 ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:  # fmt: skip
-    """The binomial −ℓ minimised over the slope b ∈ [0, PROFILE_SLOPE_MAX] with the probit at
-    x0 held at ``eta`` (η_j = eta + b·(ln x_j − x0)), for each element; returns that minimum,
-    its derivative in eta (the score at the minimiser: the envelope theorem) and the
-    minimiser. −ℓ is convex in b, so its minimiser is the root of the derivative in b, found
-    by Newton's method from ``slope`` inside a bracket that every step narrows (a step out of
-    it is a bisection), or an end of [0, PROFILE_SLOPE_MAX] where the derivative does not
-    change sign."""
-    d = logs[None, :] - x0[:, None]
-    low, high = np.zeros(eta.size), np.full(eta.size, PROFILE_SLOPE_MAX)
+    """The binomial −ℓ minimised over the slope b ∈ [0, cap] with the probit at x0 held at
+    ``eta`` (η_j = eta + b·(t_j − x0)), for each element; returns that minimum, its
+    derivative in eta (the score at the minimiser: the envelope theorem) and the minimiser.
+    −ℓ is convex in b, so its minimiser is the root of the derivative in b, found by Newton's
+    method from ``slope`` inside a bracket that every step narrows (a step out of it is a
+    bisection), or an end of [0, cap] where the derivative does not change sign; at most
+    ``iterations`` steps."""
+    d = t[None, :] - x0[:, None]
+    low, high = np.zeros(eta.size), np.full(eta.size, cap)
     for end in (low, high):
-        _, score, _ = _probit_terms(eta[:, None] + end[:, None] * d, n, z)
+        _, score, _ = probit_terms(eta[:, None] + end[:, None] * d, n, z)
         rising = (d * score).sum(axis=1) >= 0.0
         low, high = (np.where(rising, low, end), np.where(rising, end, high))
     b = np.clip(slope, low, high)
-    for _ in range(PROFILE_ITERATIONS):
-        _, score, weight = _probit_terms(eta[:, None] + b[:, None] * d, n, z)
+    for _ in range(iterations):
+        _, score, weight = probit_terms(eta[:, None] + b[:, None] * d, n, z)
         gradient, curvature = (d * score).sum(axis=1), (d * d * weight).sum(axis=1)
         low, high = np.where(gradient < 0.0, b, low), np.where(gradient < 0.0, high, b)
-        with np.errstate(all="ignore"):
+        with np.errstate(all="ignore"):  # 0/0 where the weights underflow: a bisection
             step = b - gradient / curvature
         kept = np.isfinite(step) & (step >= low) & (step <= high)
         step = np.where(kept, step, 0.5 * (low + high))
@@ -271,23 +355,8 @@ def _profile(
         b = step
         if done.all():
             break
-    value, score, _ = _probit_terms(eta[:, None] + b[:, None] * d, n, z)
+    value, score, _ = probit_terms(eta[:, None] + b[:, None] * d, n, z)
     return value.sum(axis=1), score.sum(axis=1), b
-
-
-def _probit_terms(
-    eta: np.ndarray, n: np.ndarray, z: np.ndarray
-) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """Each stripe's −[z ln Φ(η) + (n − z) ln Φ(−η)], its first and second derivatives in η,
-    through log-CDFs and the Mills ratios λ(±η) = φ(η)/Φ(±η) (no 0·log 0, no overflow):
-    −z·λ(η) + (n − z)·λ(−η), and z·λ(η)(η + λ(η)) + (n − z)·λ(−η)(λ(−η) − η) ≥ 0."""
-    up, down = special.log_ndtr(eta), special.log_ndtr(-eta)
-    log_pdf = -0.5 * eta * eta - 0.5 * math.log(2.0 * math.pi)
-    rise, fall = np.exp(log_pdf - up), np.exp(log_pdf - down)
-    value = -(z * up + (n - z) * down)
-    score = -z * rise + (n - z) * fall
-    weight = z * rise * (eta + rise) + (n - z) * fall * (fall - eta)
-    return value, score, np.maximum(weight, 0.0)
 
 
 #: |t| beyond which the noncentral t is not inverted: scipy's search slows without bound as
@@ -309,8 +378,8 @@ def ida_band(im: np.ndarray, at: np.ndarray) -> np.ndarray:
     x = np.asarray(im, dtype=float)
     fit = ida_fit(x, 1)  # the checks, and m, s
     root_n = math.sqrt(x.size)
-    t = root_n * (math.log(fit.median) - np.log(np.asarray(at, dtype=float))) / fit.beta
-    t = np.clip(t, -T_LIMIT, T_LIMIT)
+    logs = np.log(_positive(at, "band intensities"))
+    t = np.clip(root_n * (math.log(fit.median) - logs) / fit.beta, -T_LIMIT, T_LIMIT)
     tail = (1.0 - CONFIDENCE) / 2.0
     above = special.nctdtrinc(x.size - 1, tail, t) / root_n  # the largest δ
     below = special.nctdtrinc(x.size - 1, 1.0 - tail, t) / root_n
@@ -331,42 +400,32 @@ def ida_censored_band(
     (1 ± CONFIDENCE)/2 quantiles of ((ln x − μ̂)/σ̂ + Q1*)·Q2*, and P = Φ(u) (the generalized
     pivotal quantity, Weerahandi 1993, JASA 88:899–905; without censoring it is
     :func:`ida_band`'s exact band). A plain percentile bootstrap is short for a handful of
-    records (its β̂* are biased low as β̂ is). The resamples are refitted all at once
-    (:func:`censored_refits`), one that Newton's method does not settle by Nelder–Mead as
-    ida_censored_fit. A resample whose likelihood has no maximum (no record reaches the state,
-    and its θ runs off upwards; or, in a data file, one record does, above every censored
-    one) counts as P = 1 at every intensity: its records were drawn high, and dropping it
-    would leave the band short on that side."""
-    x = np.asarray(im, dtype=float)
-    c = np.asarray(censored, dtype=float)
-    whole = ida_censored_fit(x, c)
-    mu, sigma = math.log(whole.median), whole.beta
-    limits = np.log(censoring_points(x, c))
+    records (its β̂* are biased low as β̂ is). The resamples are refitted by Newton's method
+    all at once, CHUNK_ELEMENTS at a time, in the standardized logs of the data
+    (rockcli.fragility.likelihood.censored_fit). A resample whose likelihood has no maximum
+    (no record reaches the state, and its θ runs off upwards; or the records that do are all
+    at one intensity, above every censored one) counts as P = 1 at every intensity: its
+    records were drawn high, and dropping it would leave the band short on that side."""
+    x = _positive(im, "collapse intensities")
+    c = _positive(censored, "censoring intensities")
+    m, s, a, b = _censored_search(np.log(x), np.log(c))
+    limits = (np.log(censoring_points(x, c)) - m) / s
+    u = b * (np.log(_positive(at, "band intensities")) - m) / s - a  # (ln x − μ̂)/σ̂
     rng = np.random.default_rng(seed)
-    drawn = mu + sigma * rng.standard_normal((samples, limits.size))
-    reached = drawn <= limits
-    logs = np.where(reached, drawn, limits)
-    theta, beta, done = censored_refits(logs, reached, whole)
-    fits = _has_maximum(logs, reached)
-    for k in np.flatnonzero(fits & ~done):
-        refit = _refit_censored(np.exp(logs[k][reached[k]]), np.exp(logs[k][~reached[k]]), whole)
-        theta[k], beta[k] = refit.median, refit.beta
-    q1, q2 = (np.log(theta[fits]) - mu) / beta[fits], beta[fits] / sigma
-    u = (np.log(np.asarray(at, dtype=float)) - mu) / sigma
     curves = np.ones((samples, u.size))
-    curves[fits] = special.ndtr((u[None, :] + q1[:, None]) * q2[:, None])
+    block = max(1, CHUNK_ELEMENTS // limits.size)
+    for i in range(0, samples, block):
+        drawn = (a + rng.standard_normal((min(block, samples - i), limits.size))) / b
+        reached = drawn <= limits
+        y = np.where(reached, drawn, limits)
+        fits = has_maximum(y, reached)
+        k = int(fits.sum())
+        ak, bk, _ = censored_fit(CensoredSets.of(y[fits], reached[fits]), np.full(k, a),
+                                 np.full(k, b))  # fmt: skip
+        q1, q2 = ak - a * bk / b, b / bk
+        part = curves[i : i + drawn.shape[0]]
+        part[fits] = special.ndtr((u[None, :] + q1[:, None]) * q2[:, None])
     return _quantiles(curves, u.size)
-
-
-def _has_maximum(logs: np.ndarray, reached: np.ndarray) -> np.ndarray:
-    """Whether each resample's censored likelihood has a finite maximum: two or more distinct
-    collapse intensities, or one below some censored record's intensity (with none, or one
-    above every censored record, it grows without bound)."""
-    count = reached.sum(axis=1)
-    top = np.max(logs, axis=1, where=reached, initial=-math.inf)
-    bottom = np.min(logs, axis=1, where=reached, initial=math.inf)
-    censored_top = np.max(logs, axis=1, where=~reached, initial=-math.inf)
-    return ((count >= 2) & (top > bottom)) | ((count == 1) & (censored_top > top))
 
 
 def censoring_points(im: np.ndarray, censored: np.ndarray) -> np.ndarray:
@@ -378,78 +437,26 @@ def censoring_points(im: np.ndarray, censored: np.ndarray) -> np.ndarray:
     return np.concatenate([np.maximum(np.asarray(im, dtype=float), top), censored])
 
 
-def _refit_censored(x: np.ndarray, c: np.ndarray, whole: Fit) -> Fit:
-    """A bootstrap refit by Nelder–Mead, from the whole data's fit, to BAND_TOLERANCE, at most
-    20 000 iterations (a resample with a finite maximum: :func:`_has_maximum`)."""
-    if c.size == 0:
-        return ida_fit(x, 0)
-    found = optimize.minimize(
-        _censored_negative_log_likelihood, np.log([whole.median, whole.beta]),
-        args=(np.log(x), np.log(c)), method="Nelder-Mead",
-        options={"xatol": BAND_TOLERANCE, "fatol": BAND_TOLERANCE * 1e-2, "maxiter": 20_000},
-    )  # fmt: skip
-    return Fit(float(math.exp(found.x[0])), float(math.exp(found.x[1])), 0, x.size + c.size)
-
-
-#: Newton iterations of the censored refits, and their convergence in (ln θ, ln β).
-NEWTON_ITERATIONS = 100
-NEWTON_TOLERANCE = 1e-12
-#: Halvings of a Newton step that would lower the likelihood (a damped Newton's method).
-HALVINGS = 30
-
-
 def censored_refits(
     logs: np.ndarray, reached: np.ndarray, start: Fit
 ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """The censored maximum likelihood of every resample at once: θ, β and whether each
     converged. Row k of ``logs`` (K × records) holds resample k's ln IM, a collapse intensity
-    where ``reached`` and else a censoring one. Newton's method on μ = ln θ and τ = ln β with
-    the exact gradient and Hessian of the log-likelihood of the module docstring (for a
-    censored record, with h = φ(v)/Φ(−v), v = (ln c − μ)/β: ∂ℓ/∂μ = h/β, ∂ℓ/∂τ = h·v, and
-    h' = h(h − v)), from ``start``, each step halved while it would lower the likelihood (and
-    a gradient step where the Hessian is not negative definite). A resample without a finite
-    maximum (:func:`_has_maximum`) does not converge."""
-    mx, mc = reached.astype(float), (~reached).astype(float)
-    k = logs.shape[0]
-    mu = np.full(k, math.log(start.median))
-    tau = np.full(k, math.log(start.beta))
-    converged = np.zeros(k, dtype=bool)
-
-    def likelihood(mu: np.ndarray, tau: np.ndarray) -> np.ndarray:
-        u = (logs - mu[:, None]) / np.exp(tau)[:, None]
-        return (mx * (-0.5 * u * u - tau[:, None])).sum(1) + (mc * special.log_ndtr(-u)).sum(1)
-
-    with np.errstate(all="ignore"):
-        for _ in range(NEWTON_ITERATIONS):
-            sigma = np.exp(tau)[:, None]
-            u = (logs - mu[:, None]) / sigma  # v of the censored records
-            h = np.exp(-0.5 * u * u - 0.5 * math.log(2.0 * math.pi) - special.log_ndtr(-u))
-            dh = h * (h - u)
-            g_mu = (mx * u / sigma).sum(1) + (mc * h / sigma).sum(1)
-            g_tau = (mx * (u * u - 1.0)).sum(1) + (mc * h * u).sum(1)
-            h_mumu = -(mx / sigma**2).sum(1) - (mc * dh / sigma**2).sum(1)
-            h_mutau = -(mx * 2.0 * u / sigma).sum(1) - (mc * (dh * u + h) / sigma).sum(1)
-            h_tautau = -(mx * 2.0 * u * u).sum(1) - (mc * (dh * u * u + h * u)).sum(1)
-            det = h_mumu * h_tautau - h_mutau * h_mutau
-            d_mu = -(h_tautau * g_mu - h_mutau * g_tau) / det
-            d_tau = -(h_mumu * g_tau - h_mutau * g_mu) / det
-            uphill = (h_mumu < 0.0) & (det > 0.0)  # the Hessian negative definite
-            d_mu = np.where(uphill, d_mu, g_mu * 1e-2)  # else a short gradient step
-            d_tau = np.where(uphill, d_tau, g_tau * 1e-2)
-            before = likelihood(mu, tau)
-            for _ in range(HALVINGS):  # halve the step until the likelihood does not drop
-                worse = ~(likelihood(mu + d_mu, tau + d_tau) >= before - 1e-12 * np.abs(before))
-                if not worse.any():
-                    break
-                d_mu, d_tau = np.where(worse, d_mu / 2, d_mu), np.where(worse, d_tau / 2, d_tau)
-            mu, tau = mu + d_mu, tau + d_tau
-            step = np.maximum(np.abs(d_mu), np.abs(d_tau))
-            converged = np.isfinite(step) & (step < NEWTON_TOLERANCE * (1.0 + np.abs(mu)))
-            if converged.all():
-                break
-    ok = converged & np.isfinite(mu) & np.isfinite(tau)
-    with np.errstate(over="ignore"):  # a resample that ran off, not ok
-        return np.where(ok, np.exp(mu), np.nan), np.where(ok, np.exp(tau), np.nan), ok
+    where ``reached`` and else a censoring one; each is searched from ``start``
+    (rockcli.fragility.likelihood.censored_fit, on the logs standardized by start's ln θ and
+    β). A resample without a finite maximum (rockcli.fragility.likelihood.has_maximum) does
+    not converge: NaN."""
+    m, s = math.log(start.median), start.beta
+    y = (np.asarray(logs, dtype=float) - m) / s
+    fits = has_maximum(y, reached)
+    k = int(fits.sum())
+    a, b, done = censored_fit(CensoredSets.of(y[fits], reached[fits]), np.zeros(k), np.ones(k))
+    theta, beta = np.full(y.shape[0], np.nan), np.full(y.shape[0], np.nan)
+    with np.errstate(over="ignore"):
+        theta[fits], beta[fits] = np.exp(m + s * a / b), s / b
+    ok = np.zeros(y.shape[0], dtype=bool)
+    ok[fits] = done & np.isfinite(theta[fits])
+    return theta, beta, ok
 
 
 def ida_curve(
@@ -467,6 +474,19 @@ def msa_curve(
 ) -> tuple[Fit, np.ndarray]:
     """An MSA fragility and its band at ``at``."""
     return msa_fit(im, runs, exceedances), msa_band(im, runs, exceedances, at)
+
+
+def band_points(im: np.ndarray, msa: bool = False) -> np.ndarray:
+    """The intensities to give a band at: the data's own, each once and increasing, or as
+    many of them as BAND_POINTS allows (``msa``: BAND_WORK too, ``im`` being the levels),
+    evenly spread in rank (the first and the last among them), when there are more."""
+    distinct = np.unique(np.asarray(im, dtype=float))
+    limit = BAND_POINTS
+    if msa:
+        limit = max(MIN_BAND_POINTS, min(limit, BAND_WORK // max(distinct.size, 1)))
+    if distinct.size <= limit:
+        return distinct
+    return distinct[np.unique(np.round(np.linspace(0, distinct.size - 1, limit)).astype(int))]
 
 
 def band_method(method: str, censored: bool = False) -> str:

@@ -146,18 +146,34 @@ def test_dimensionless_pga_is_pga_over_tan_alpha(folder: Path, tmp_path: Path) -
 
 
 def test_msa_counts_follow_the_thresholds(folder: Path, tmp_path: Path) -> None:
-    """Levels below both thresholds, between them, above both: 0, 1, 2 overturn."""
+    """Levels below both thresholds, between them (twice), above both: 0, 1, 1, 2 overturn,
+    and the binomial maximum likelihood fits them."""
     lo, hi = sorted(threshold(t1) for t1 in DURATIONS)
-    levels = [0.9 * lo, 0.5 * (lo + hi), 1.1 * hi]
+    levels = [0.9 * lo, lo + (hi - lo) / 3, lo + 2 * (hi - lo) / 3, 1.1 * hi]
     text = study_text("msa") + f"\n[msa]\nlevels = {levels}\n"
     code, out, err = run(folder, text, "--out", str(tmp_path / "m"))
     assert code == 0, err
     doc = json.loads(out)
     over = doc["damage_states"][1]
-    assert [s["exceedances"] for s in over["stripes"]] == [0, 1, 2]
-    assert [s["runs"] for s in over["stripes"]] == [2, 2, 2]
+    assert [s["exceedances"] for s in over["stripes"]] == [0, 1, 1, 2]
+    assert [s["runs"] for s in over["stripes"]] == [2, 2, 2, 2]
     assert over["beta_ddof"] is None and doc["levels"] == levels
     assert over["band_method"].startswith("profile likelihood of the binomial counts")
+    assert lo < over["median"] < hi and over["beta"] > 0
+
+
+def test_msa_counts_that_jump_from_none_to_all_are_no_fit(folder: Path, tmp_path: Path) -> None:
+    """0, 1, 2 of 2 overturn at three levels: the binomial likelihood grows without bound
+    towards a step at the middle level (β → 0), so no lognormal fits: the state says so and
+    has no median (the search once stopped wherever it ran out, at some β of 0.05)."""
+    lo, hi = sorted(threshold(t1) for t1 in DURATIONS)
+    levels = [0.9 * lo, 0.5 * (lo + hi), 1.1 * hi]
+    text = study_text("msa") + f"\n[msa]\nlevels = {levels}\n"
+    code, out, err = run(folder, text, "--out", str(tmp_path / "m"))
+    assert code == 0, err
+    over = json.loads(out)["damage_states"][1]
+    assert [s["exceedances"] for s in over["stripes"]] == [0, 1, 2]
+    assert over["median"] is None and over["ci"] == [] and "step" in over["note"]
 
 
 def test_resume_computes_only_what_is_missing(folder: Path, tmp_path: Path) -> None:
