@@ -541,7 +541,7 @@ last = 3.0
     ("scan", "key"),
     [
         ("first = 0.2\nstep = 1e-9\nlast = 1.0\ntolerance = 0.001", "ida.step"),
-        ("first = 0.2\nstep = 0.05\nlast = 1e300\ntolerance = 0.001", "ida.step"),
+        ("first = 0.2\nstep = 0.05\nlast = 1e300\ntolerance = 0.001", "ida.last"),  # F16
         ("first = 0.2\nstep = 0.05\nlast = 1.0\ntolerance = 1e-300", "ida.tolerance"),
     ],
 )
