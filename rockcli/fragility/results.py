@@ -9,7 +9,8 @@
 - MSA: at each level, the records run and those whose max θ/α reaches the state's level, and
   the binomial maximum likelihood over the levels (rockcli.fragility.fit.msa_fit).
 
-Each fit has its 95 % band at intensities inside the analysed range, and ``band_method``
+Each fit has its 95 % band at intensities inside the analysed range (MSA: at the levels, at
+most as many as rockcli.fragility.fit.band_points gives), and ``band_method``
 says what the band is (rockcli.fragility.fit.band_method: the profile likelihood for MSA; for
 IDA the exact noncentral-t band, or with censored records a parametric bootstrap). The
 document is the `rock fragility --format json` contract.
@@ -24,7 +25,7 @@ from typing import Any
 import numpy as np
 
 from rockcli import __version__
-from rockcli.fragility.fit import Fit, band_method, ida_curve, msa_curve
+from rockcli.fragility.fit import Fit, band_method, band_points, ida_curve, msa_curve
 from rockcli.fragility.run import Task, TaskResult, exceedances, stripe_counts
 from rockcli.fragility.search import scan_points
 from rockcli.fragility.study import FragilityPlan, State
@@ -124,8 +125,9 @@ def _state_entry(
                 {"im": x, "runs": n, "exceedances": k}
                 for x, n, k in zip(plan.levels, runs, hits, strict=True)
             ]
-            at = np.array(plan.levels, dtype=float)
-            fit, band = msa_curve(at, np.array(runs), np.array(hits), at)
+            levels = np.array(plan.levels, dtype=float)
+            at = band_points(levels, msa=True)  # every level, unless hundreds of them
+            fit, band = msa_curve(levels, np.array(runs), np.array(hits), at)
     except ValueError as exc:
         entry.update(
             median=None,

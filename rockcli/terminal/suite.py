@@ -29,10 +29,19 @@ COUNT_TEXT = {
 
 
 def band_text(tolerance: list[float | None]) -> str:
-    """The band as the user reads it: −10 %/+30 %, or −10 %/no upper bound."""
+    """The band as the user reads it: −10 %/+30 %, or −10 %/no upper bound; each bound to
+    the digits it has (a file's −0.999 and 0.001 are −99.9 % and +0.1 %, not −100 % and
+    +0 %, which would be no lower bound and no room above the target)."""
     lo, hi = tolerance
-    upper = "no upper bound" if hi is None else f"{hi:+.0%}"
-    return f"{lo:+.0%} / {upper}"
+    lower = "no lower bound" if lo is None else percent(lo)
+    upper = "no upper bound" if hi is None else percent(hi)
+    return f"{lower} / {upper}"
+
+
+def percent(fraction: float) -> str:
+    """A fraction as a signed percentage to six significant digits, none of them trailing
+    zeros: 0.3 is +30%, 0.001 is +0.1%."""
+    return f"{fraction * 100.0:+g}%"
 
 
 def verdict_line(numbers: dict[str, Any], doc: dict[str, Any]) -> str:
