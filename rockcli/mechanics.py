@@ -285,14 +285,11 @@ PA_COLS = 3
 PATH_BISECTIONS = 2000
 
 
-def path_terms(table, offset, s, a):
-    """(u, u′) of the elongation path stored in ``table`` from ``offset`` (PA_* layout) on
-    side s at rotation a: cubic Hermite between the two nodes around a, u from the values and
-    slopes, u′ from the slopes and curvatures (as :func:`chain_terms`; exact at a node, the
-    end interval's cubic past the table's end)."""
-    n = int(table[offset + PA_N])
-    step = table[offset + PA_STEP_POS] if s > 0 else table[offset + PA_STEP_NEG]
-    base = offset + PA_HEAD + (0 if s > 0 else n * PA_COLS)
+def hermite_weights(a, step, n):
+    """The interval k of a grid of n nodes spaced ``step`` from 0 that holds a (the end
+    intervals past the grid's ends), and the cubic Hermite weights (h00, h10, h01, h11) of
+    the values and slopes at its two nodes (h10 and h11 scaled by the step): the value at a
+    is h00·f(k) + h10·f′(k) + h01·f(k+1) + h11·f′(k+1) (de Boor 2001, ch. IV)."""
     x = a / step
     k = int(math.floor(x))
     k = min(max(k, 0), n - 2)
@@ -303,6 +300,18 @@ def path_terms(table, offset, s, a):
     h10 = (u3 - 2.0 * u2 + u) * step
     h01 = 3.0 * u2 - 2.0 * u3
     h11 = (u3 - u2) * step
+    return k, h00, h10, h01, h11
+
+
+def path_terms(table, offset, s, a):
+    """(u, u′) of the elongation path stored in ``table`` from ``offset`` (PA_* layout) on
+    side s at rotation a: cubic Hermite between the two nodes around a, u from the values and
+    slopes, u′ from the slopes and curvatures (as :func:`chain_terms`; exact at a node, the
+    end interval's cubic past the table's end)."""
+    n = int(table[offset + PA_N])
+    step = table[offset + PA_STEP_POS] if s > 0 else table[offset + PA_STEP_NEG]
+    base = offset + PA_HEAD + (0 if s > 0 else n * PA_COLS)
+    k, h00, h10, h01, h11 = hermite_weights(a, step, n)
     r0 = base + k * PA_COLS
     r1 = r0 + PA_COLS
     value = h00 * table[r0] + h10 * table[r0 + 1] + h01 * table[r1] + h11 * table[r1 + 1]
@@ -367,16 +376,7 @@ def chain_terms(table, s, a):
     n = -int(table[CH_N])
     step = table[CH_STEP_POS] if s > 0 else table[CH_STEP_NEG]
     base = CH_HEAD if s > 0 else CH_HEAD + n * CH_COLS
-    x = a / step
-    k = int(math.floor(x))
-    k = min(max(k, 0), n - 2)
-    u = x - k
-    u2 = u * u
-    u3 = u2 * u
-    h00 = 2.0 * u3 - 3.0 * u2 + 1.0
-    h10 = (u3 - 2.0 * u2 + u) * step
-    h01 = 3.0 * u2 - 2.0 * u3
-    h11 = (u3 - u2) * step
+    k, h00, h10, h01, h11 = hermite_weights(a, step, n)
     r0 = base + k * CH_COLS
     r1 = r0 + CH_COLS
     e0 = r0 + CH_TERMS

@@ -50,6 +50,7 @@ for _fn in (
     mechanics.spring_elongation,
     mechanics.spring_failure_rotation,
     mechanics.point_moments,  # loaded blocks only; numba's IR inlining of its loop misfires
+    mechanics.hermite_weights,  # inside chain_terms and path_terms
     mechanics.chain_terms,  # chains only
     mechanics.path_terms,  # members on a chain's upper block only
     mechanics.path_rotation,

@@ -18,14 +18,13 @@ import csv
 import io
 import math
 from collections.abc import Sequence
-from dataclasses import asdict, dataclass
-from pathlib import Path
+from dataclasses import dataclass
 from typing import Any
 
 from rockcli import __version__
 from rockcli.fragility.run import Task, TaskResult, task_labels
 from rockcli.fragility.study import FragilityPlan
-from rockcli.studies.folder.folder import StudyFolder, digest_of, source_digest
+from rockcli.studies.folder.folder import StudyFolder, digest_of, record_identities
 
 STATE_FILE = "state.json"
 RESULT_FILE = "fragility.json"
@@ -42,10 +41,7 @@ def fingerprint(plan: FragilityPlan) -> str:
     """A hash of what decides the study's runs: rock's version, the model's content, the axes,
     each record by its bytes (not its path: a folder moved or copied resumes), the options."""
     study = plan.study
-    records = [
-        {**asdict(r), "path": Path(r.path).name, "sha256": source_digest(r.path, suite=r.suite)}
-        for r in study.records
-    ]
+    records = record_identities(study.records)
     facts = {
         "rock": __version__,
         "base": study.base,

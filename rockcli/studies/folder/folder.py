@@ -75,6 +75,18 @@ def source_digest(path: str, *, suite: bool) -> str:
     return hashlib.sha256(" ".join(parts).encode()).hexdigest()
 
 
+def record_identities(records: Iterable[Any]) -> list[dict[str, Any]]:
+    """Each record source of a study (a dataclass with ``path`` and ``suite``) as its fields
+    with its file's name for its path and the sha256 of its bytes: what a fingerprint holds
+    of it (a folder moved resumes; a record edited does not)."""
+    from dataclasses import asdict
+
+    return [
+        {**asdict(r), "path": Path(r.path).name, "sha256": source_digest(r.path, suite=r.suite)}
+        for r in records
+    ]
+
+
 def digest_of(facts: Any) -> str:
     """The sha256 of facts made of JSON values (anything else by its str)."""
     text = json.dumps(facts, sort_keys=True, default=str)

@@ -19,7 +19,6 @@ import io
 import json
 import math
 from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
-from dataclasses import asdict
 from pathlib import Path
 from typing import Any, NoReturn
 
@@ -31,7 +30,7 @@ from rockcli.studies.folder.folder import (
     StudyFolder,
     digest_of,
     file_digest,
-    source_digest,
+    record_identities,
 )
 from rockcli.studies.folder.lock import LOCK_FILE
 from rockcli.studies.sweep.study import StudyPlan
@@ -201,10 +200,7 @@ def column_lines(
 def fingerprint(plan: StudyPlan) -> str:
     """A hash of what decides the results: rock's version, the study, base model, records
     (each by its bytes, not its name or size)."""
-    records = [
-        {**asdict(r), "path": Path(r.path).name, "sha256": source_digest(r.path, suite=r.suite)}
-        for r in plan.records
-    ]
+    records = record_identities(plan.records)
     data = {
         "rock": __version__,
         "analyses": plan.analyses,
