@@ -269,6 +269,42 @@ def test_data_that_define_no_fit_are_one_line(method: str, text: str, why: str) 
     assert seconds < SMALL
 
 
+def test_one_collapse_below_censored_records_is_a_fit() -> None:
+    """The censored likelihood has a maximum with one collapse intensity below a censored
+    one (as σ → 0 the censored records' survival goes to 0 faster than the density grows):
+    the fit is scipy's censored fit (stats.lognorm.fit on CensoredData, to its optimiser's
+    1e-4), and its likelihood at least scipy's."""
+    code, out, err, _ = run("im,censored\n0.2,0\n0.5,1\n0.6,1\n", "--method", "ida", "--format",
+                            "json")  # fmt: skip
+    assert code == 0, err
+    fit = state(out)
+    data = stats.CensoredData(uncensored=[0.2], right=[0.5, 0.6])
+    shape, _, scale = stats.lognorm.fit(data, floc=0)
+    assert fit["median"] == pytest.approx(scale, rel=1e-4)
+    assert fit["beta"] == pytest.approx(shape, rel=1e-4)
+
+    def log_likelihood(theta: float, beta: float) -> float:
+        survival = stats.lognorm.logsf([0.5, 0.6], beta, scale=theta).sum()
+        return float(stats.lognorm.logpdf(0.2, beta, scale=theta) + survival)
+
+    assert log_likelihood(fit["median"], fit["beta"]) >= log_likelihood(scale, shape) - 1e-12
+
+
+def test_the_band_points_are_the_datas_own_and_bounded() -> None:
+    """Every distinct intensity up to BAND_POINTS (increasing, each once); beyond, that many
+    spread in rank with both ends; for MSA, at most BAND_WORK / levels, at least
+    MIN_BAND_POINTS."""
+    from rockcli.fragility.fit import BAND_POINTS, BAND_WORK, MIN_BAND_POINTS, band_points
+
+    few = np.array([0.4, 0.2, 0.4, 0.1])
+    assert band_points(few).tolist() == [0.1, 0.2, 0.4]
+    many = np.geomspace(0.01, 3.0, 10_000)
+    for msa, size in ((False, BAND_POINTS), (True, max(MIN_BAND_POINTS, BAND_WORK // 10_000))):
+        at = band_points(many, msa=msa)
+        assert at.size == size and at[0] == many[0] and at[-1] == many[-1]
+        assert np.all(np.diff(at) > 0) and np.all(np.isin(at, many))
+
+
 # --- F10 -----------------------------------------------------------------------------------
 
 
