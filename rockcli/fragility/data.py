@@ -36,8 +36,9 @@ COLUMNS = {"msa": ("im", "runs", "exceedances"), "ida": ("im",)}
 FLAGS = {"0": 0.0, "1": 1.0, "false": 0.0, "true": 1.0}
 #: The most data rows a file may have: a hundred times an IDA's records (tens; FEMA P-695's
 #: far-field set has 44) or an MSA's runs (5 to 20 stripes of tens of runs, one row a run
-#: or a stripe). The fit and band of the largest file end within seconds and take less than
-#: 100 MB (10 000 censored IDA records, the slowest: a bootstrap of 1 000 resamples of them).
+#: or a stripe). The fit and band of the largest file end within seconds and take about
+#: 100 MB: 1–2 s, and up to 6 s for 10 000 IDA records nearly all censored, each at its own
+#: intensity (the slowest: the band's bootstrap refits 1 000 resamples of them).
 ROW_LIMIT = 10_000
 #: The largest intensity, in the file's unit: above any PGA or Sa in g (a study's PGA is at
 #: most 10 g) or in m/s², any PGV in cm/s, and 10 g in cm/s² (9 810).
