@@ -12,7 +12,7 @@ from __future__ import annotations
 import math
 from typing import Any
 
-from hypothesis import HealthCheck, given, settings
+from hypothesis import HealthCheck, example, given, settings
 from hypothesis import strategies as st
 
 from rockcli.errors import InputError
@@ -84,14 +84,32 @@ def mechanism(draw: st.DrawFn, kind: str, n: int) -> dict[str, Any]:
     return {"type": "vertical-flexure", "storey": draw(st.integers(1, n + 1))}
 
 
+#: Two wedges out of range: two problems, one line each (found by this test on a fresh clone).
+TWO_PROBLEMS = {
+    "name": "fuzzed wall",
+    "kind": "wall",
+    "geometry": {"width": 1.0, "storeys": [{"height": 2.0, "thickness": 0.5}]},
+    "mass": {"unit_weight": 14.0},
+    "ntc": {"edition": "2019", "demand": {
+        "SLD": {"ag": 0.06, "F0": 2.5, "Tc_star": 0.27},
+        "SLV": {"ag": 0.15, "F0": 2.5, "Tc_star": 0.29},
+        "SLC": {"ag": 0.19, "F0": 2.5, "Tc_star": 0.3}}},
+    "mechanisms": [{"type": "wedge", "angle": 61.0, "sides": 1}] * 2,
+}  # fmt: skip
+
+
 @settings(max_examples=40, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(walls())
+@example(TWO_PROBLEMS)
 def test_a_random_wall_gives_its_catalogue_or_one_input_error(data: dict[str, Any]) -> None:
     try:
         result = kinematic_model(validate_model(data, file="w.toml"))
     except InputError as exc:
-        assert exc.where or exc.file, exc  # names the key or the file
-        assert "\n" not in str(exc)
+        # One line per problem (rockcli.model.load.InputErrors: several problems of one file,
+        # e.g. two wedges at 61°, each its own line), each naming the key or the file.
+        for problem in getattr(exc, "errors", (exc,)):
+            assert problem.where or problem.file, problem
+            assert "\n" not in str(problem)
         return
     catalogue = result.catalogue
     assert catalogue and result.governing == catalogue[0].name
