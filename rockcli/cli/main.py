@@ -21,6 +21,7 @@ import click
 from rockcli import __version__
 from rockcli.cli.console import make_output_encodable
 from rockcli.cli.exits import EXIT_INPUT, EXIT_INTERNAL, EXIT_INTERRUPTED, REPORT_TO
+from rockcli.cli.invocation import set_command_line
 from rockcli.errors import RockError, printable
 from rockcli.process import interrupted
 
@@ -54,10 +55,6 @@ def quiet_broken_pipe() -> None:
         pass  # not a real file (a test runner's buffer): nothing to flush at exit
     finally:
         os.close(devnull)
-
-
-#: The command line of this run, as the user typed it (a report records it to be re-run).
-INVOKED: tuple[str, ...] = ("rock",)
 
 
 class UsageLine(click.UsageError):
@@ -98,8 +95,7 @@ class RockGroup(click.Group):
     def main(self, args=None, *rest, **kwargs):
         from rockcli.process import quick_exit
 
-        global INVOKED
-        INVOKED = ("rock", *(sys.argv[1:] if args is None else args))
+        set_command_line(tuple(sys.argv[1:] if args is None else args))
         quick_exit()
         make_output_encodable()
         announce_compiling()

@@ -148,7 +148,7 @@ def report(
     building's walls, under --record) make one report with one summary over all."""
     from rockcli.cli.assess import one_record_or_suite
     from rockcli.cli.compare import demand_for
-    from rockcli.cli.main import INVOKED
+    from rockcli.cli.invocation import command_line
     from rockcli.document.run import write_report, write_suite_report
 
     model_paths = model  # MODEL... in the usage, MODEL in a message
@@ -164,8 +164,8 @@ def report(
         from rockcli.document.project import load_project
 
         front["project"] = load_project(project_path, allow_outside=allow_outside)
-    common = {"html_path": html_path, "pdf_path": pdf_path, "lang": lang,
-              "command": shlex.join(INVOKED), "front": front, "docx_path": docx_path}  # fmt: skip
+    common = {"html_path": html_path, "pdf_path": pdf_path, "lang": lang, "front": front,
+              "command": shlex.join(command_line()), "docx_path": docx_path}  # fmt: skip
     if with_suite:
         check_record_options(None, record_format, dt, units, scale, pga)
         from rockcli.errors import InputError

@@ -4,12 +4,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 from enum import StrEnum
-from typing import TYPE_CHECKING
 
 import numpy as np
-
-if TYPE_CHECKING:
-    from rockcli.dynamics.tolerance import ToleranceCheck
 
 #: Runs whose peak amplitude ratio stays below this while impacts happen are flagged as
 #: chattering-dominated (engine.md, "Sensitivity": small-amplitude rocking is ill-conditioned).
@@ -25,6 +21,31 @@ class RunStatus(StrEnum):
     EVENT_LIMIT = "event-limit"
     STEP_LIMIT = "step-limit"
     NONFINITE = "non-finite"
+
+
+@dataclass(frozen=True)
+class ToleranceCheck:
+    """A run integrated again at tighter tolerances.
+
+    Attributes:
+        rtol, atol: the tight run's tolerances [-], [rad and rad/s].
+        max_ratio: its max|θ|/α [-] (overturn angle/α when it overturned).
+        impacts: its impacts.
+        overturned: True when it overturned.
+        status: how it ended.
+        sensitive: True when the run's max θ/α differs from this one's by more than
+            SENSITIVE_CHANGE (rockcli.dynamics.tolerance) relative, or one overturned and the
+            other not; None when either ended at a guard (step or event limit, a non-finite
+            value): not known.
+    """
+
+    rtol: float
+    atol: float
+    max_ratio: float
+    impacts: int
+    overturned: bool
+    status: RunStatus
+    sensitive: bool | None
 
 
 class Verdict(StrEnum):

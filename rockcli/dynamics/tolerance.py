@@ -15,11 +15,11 @@ Pure and silent: results in, results out.
 from __future__ import annotations
 
 from collections.abc import Iterable, Sequence
-from dataclasses import dataclass, replace
+from dataclasses import replace
 
 import numpy as np
 
-from rockcli.dynamics.result import Assessment, RockingRun, RunStatus
+from rockcli.dynamics.result import Assessment, RockingRun, RunStatus, ToleranceCheck
 from rockcli.dynamics.settings import SolverSettings
 from rockcli.mechanics import Block
 
@@ -39,30 +39,6 @@ SENSITIVE_CHANGE = 0.01
 #: Statuses whose max θ/α and verdict mean something (a run stopped at a guard decides
 #: nothing: its tolerance sensitivity is not known).
 DECIDED = (RunStatus.COMPLETED, RunStatus.OVERTURNED)
-
-
-@dataclass(frozen=True)
-class ToleranceCheck:
-    """A run integrated again at tighter tolerances.
-
-    Attributes:
-        rtol, atol: the tight run's tolerances [-], [rad and rad/s].
-        max_ratio: its max|θ|/α [-] (overturn angle/α when it overturned).
-        impacts: its impacts.
-        overturned: True when it overturned.
-        status: how it ended.
-        sensitive: True when the run's max θ/α differs from this one's by more than
-            SENSITIVE_CHANGE relative, or one overturned and the other not; None when either
-            ended at a guard (step or event limit, a non-finite value): not known.
-    """
-
-    rtol: float
-    atol: float
-    max_ratio: float
-    impacts: int
-    overturned: bool
-    status: RunStatus
-    sensitive: bool | None
 
 
 def tight_settings(settings: SolverSettings) -> SolverSettings:

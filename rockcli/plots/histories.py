@@ -7,6 +7,7 @@ from collections.abc import Mapping, Sequence
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
+from rockcli.plots.colors import POLARITY_COLORS
 from rockcli.plots.files import new_figure, save
 from rockcli.plots.phrases import Say, english
 
@@ -23,7 +24,6 @@ OVERTURN_ANGLE = math.pi / 2
 #: Vertical room above the largest |θ|/α, and the smallest half-range so that ±1 shows [-].
 HEADROOM = 1.1
 MIN_RATIO_RANGE = 1.2
-POLARITY_COLORS = {1: "tab:blue", -1: "tab:orange"}
 
 
 def _history(run: RockingRun) -> History:
@@ -159,7 +159,7 @@ def plot_assessment(
         record: the record the runs were computed with (acceleration [g]).
         overturn_angle: |θ| at which a run counts as overturned [rad].
     """
-    from rockcli.plots.loops import acted, draw_loops
+    from rockcli.plots.loops import acted, draw_loops  # numpy: loaded only to draw
 
     loops = acted(runs)
     if not loops:

@@ -16,7 +16,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from rockcli.mechanics import spring_elongation
-from rockcli.plots.histories import POLARITY_COLORS
+from rockcli.plots.colors import POLARITY_COLORS
 
 if TYPE_CHECKING:
     from matplotlib.axes import Axes

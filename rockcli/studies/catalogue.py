@@ -2,7 +2,7 @@
 
 Composition only: the geometry of each mechanism comes from rockcli.mechanisms.catalogue, its
 capacity from rockcli.codecheck.kinematic, its checks from the edition's rules through
-:func:`rockcli.studies.kinematic.analyse_capacity` — the very path of today's block. A storey
+:func:`rockcli.studies.capacity_check.analyse_capacity` — the very path of today's block. A storey
 mechanism stands in the building at the height of its hinge (Z + hinge height: ψ and the floor
 spectra there). The governing mechanism is the one with the lowest ULS ζ_E (capacity over
 demand of the deciding checks), then the lowest DLS ζ_E, then the lowest α0
@@ -38,6 +38,7 @@ from rockcli.mechanisms.catalogue import (
 from rockcli.mechanisms.wall import OPTIMAL, MechanismSpec, MechanismType, Wall
 from rockcli.model.derive_ntc import NtcSettings
 from rockcli.notes import Note
+from rockcli.studies.capacity_check import analyse_capacity
 
 
 def named(items, name: str, where: str = "--mechanism", problem: str = "no such mechanism"):
@@ -52,6 +53,21 @@ def named(items, name: str, where: str = "--mechanism", problem: str = "no such 
         value=name,
         allowed="one of: " + "; ".join(f"'{item.name}'" for item in items),
     )
+
+
+def main_mechanism(kin: KinematicResult, name: str | None = None) -> MechanismResult | None:
+    """The mechanism a wall's comparison shows in full: the one named, else the governing one;
+    None for a model of one block (or a wall with one mechanism, and no name)."""
+    if name is not None:
+        return named_result(kin, name)
+    if len(kin.catalogue) < 2:
+        return None
+    return kin.catalogue[0]
+
+
+def named_result(kin: KinematicResult, name: str) -> MechanismResult:
+    """The catalogue's entry of that name (InputError naming the catalogue's names)."""
+    return named(kin.catalogue, name)
 
 
 @dataclass(frozen=True)
@@ -290,7 +306,6 @@ def analyse_mechanism(
 ) -> MechanismResult:
     """One mechanism: each side it opens to, the governing side (the smaller d0*, as for the
     block), its checks at its position."""
-    from rockcli.studies.kinematic import analyse_capacity
 
     sides = sides_of(spec, free_side)
     spec, notes = resolved(wall, spec, sides, settings)

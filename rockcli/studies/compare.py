@@ -18,6 +18,7 @@ from rockcli.dynamics.result import Assessment, RockingRun, RunStatus, Verdict
 from rockcli.model.schema import Model
 from rockcli.records.record import Record
 from rockcli.studies.assess import AssessmentOutput, assess_model_output
+from rockcli.studies.catalogue import main_mechanism, named_result
 
 
 class Classification(StrEnum):
@@ -301,23 +302,6 @@ def rerun(model: Model, record: Record, engine: str, ground: bool, file: str | N
     if engine != "fast":
         return None
     return reference_rerun(model, record, ground, file, mechanism)
-
-
-def main_mechanism(kin: KinematicResult, name: str | None = None) -> Any:
-    """The mechanism a wall's comparison shows in full: the one named, else the governing one;
-    None for a model of one block (or a wall with one mechanism, and no name)."""
-    if name is not None:
-        return named_result(kin, name)
-    if len(kin.catalogue) < 2:
-        return None
-    return kin.catalogue[0]
-
-
-def named_result(kin: KinematicResult, name: str) -> Any:
-    """The catalogue's entry of that name (InputError naming the catalogue's names)."""
-    from rockcli.studies.catalogue import named
-
-    return named(kin.catalogue, name)
 
 
 def shown_result(kin: KinematicResult, main: Any) -> KinematicResult:

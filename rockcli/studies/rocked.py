@@ -44,7 +44,7 @@ def governing_spec(model: Model, wall: Wall, record: Record) -> MechanismSpec:
     """The governing mechanism of the code check: under the model's own demand when it sets
     one (so that every record of a suite rocks the same mechanism), else under the record's
     spectrum (`rock compare` names the mechanism it rocks itself)."""
-    from rockcli.studies.compare import main_mechanism
+    from rockcli.studies.catalogue import main_mechanism
     from rockcli.studies.kinematic import kinematic_model
 
     own = model.ntc is not None and model.ntc.demand is not None  # a site needs the grid

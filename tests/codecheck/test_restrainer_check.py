@@ -1,5 +1,5 @@
 """Each restrainer's action in the kinematic check and its verification against its strength
-(rockcli.codecheck.restrainer_check; studies.kinematic.governing_demand).
+(rockcli.codecheck.restrainer_check; studies.capacity_check.governing_demand).
 
 Sources: NTC 2018 §4.2.4.1.2 (the member's design strength is the limit); the spring's force
 P0 + K·u with u = r[sin φ − sin(φ − θ)] (mechanics.spring_elongation) at the rotation of the
@@ -30,7 +30,7 @@ from rockcli.codecheck.restrainer_check import (
 from rockcli.codecheck.result import Check, Location, Method
 from rockcli.codecheck.spectra import ElasticSpectrum, Soil, Topography
 from rockcli.mechanics import Block, Restrainer, point_polar, spring_elongation
-from rockcli.studies.kinematic import governing_demand
+from rockcli.studies.capacity_check import governing_demand
 
 G = 9.81
 B, H, W = 0.3, 4.0, 300e3

@@ -21,8 +21,7 @@ from pathlib import Path
 
 import pytest
 
-from rockcli.dynamics.result import Assessment, RockingRun, RunStatus
-from rockcli.dynamics.tolerance import ToleranceCheck
+from rockcli.dynamics.result import Assessment, RockingRun, RunStatus, ToleranceCheck
 from rockcli.model.load import load_model
 from rockcli.records.pulses import ricker
 from rockcli.studies import compare

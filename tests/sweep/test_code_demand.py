@@ -9,8 +9,9 @@ import pytest
 from rockcli.records.files import read_record
 from rockcli.studies.kinematic import kinematic_model
 from rockcli.studies.sweep.cases import Case, build_model
+from rockcli.studies.sweep.columns import uls_ratio
 from rockcli.studies.sweep.study import load_study
-from rockcli.studies.sweep.worker import run_case, uls_ratio
+from rockcli.studies.sweep.worker import run_case
 from tests.sweep.conftest import BASE, STUDY, WriteStudy
 
 #: A code spectrum far weaker than the shipped pulses (0.31 g and 0.5 g): ag = 0.05 g, so the

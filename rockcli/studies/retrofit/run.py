@@ -156,8 +156,8 @@ def rod_columns(model: Any, index: int) -> dict[str, Any]:
 
 def code_columns(kin: KinematicResult) -> dict[str, Any]:
     """The code's ULS: pass (None: not evaluated) and the governing ζ = capacity/demand
-    (the rule of the sweep's column, rockcli.studies.sweep.worker.uls_ratio)."""
-    from rockcli.studies.sweep.worker import uls_ratio
+    (the rule of the sweep's column, rockcli.studies.sweep.columns.uls_ratio)."""
+    from rockcli.studies.sweep.columns import uls_ratio
 
     return {"code_uls_passed": kin.verdict()["ULS"], "code_zeta": uls_ratio(kin.checks)}
 

@@ -16,6 +16,8 @@ from collections.abc import Callable
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
+from rockcli.studies.sweep.columns import kinematic_columns
+
 if TYPE_CHECKING:
     from rockcli.model.schema import Model
     from rockcli.studies.suite.run import SuiteRecord
@@ -159,8 +161,6 @@ def run_suite_case(plan: StudyPlan, model: Model, suite: SuiteInput) -> dict[str
         row.update(suite_rocking_columns(plan, model, suite))
         rocking_fails = row["rocking"] == "fails"
     if "kinematic" in plan.analyses:
-        from rockcli.studies.sweep.worker import kinematic_columns
-
         kin, key = suite_code_check(plan, model, suite)
         row.update(kinematic_columns(kin))
         passed = kin.verdict()[key]

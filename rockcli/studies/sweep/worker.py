@@ -19,11 +19,12 @@ from typing import TYPE_CHECKING, Any
 
 from rockcli.errors import InputError
 from rockcli.studies.sweep.cases import Case, Cases, build_model, case_error, case_labels
+from rockcli.studies.sweep.columns import kinematic_columns, plain_number
 from rockcli.studies.sweep.study import RecordSource, StudyPlan
 
 if TYPE_CHECKING:
     from rockcli.codecheck.response import RecordSpectrum
-    from rockcli.codecheck.result import Check, KinematicResult
+    from rockcli.codecheck.result import KinematicResult
     from rockcli.dynamics.result import Assessment
     from rockcli.mechanics import Block
     from rockcli.model.schema import Model
@@ -227,7 +228,8 @@ def run_case(
 def case_mechanism(kin: KinematicResult | None) -> tuple[str | None, KinematicResult | None]:
     """(the mechanism a wall's case rocks and checks, its code check): as `rock compare`, the
     governing one (None, kin unchanged: a model of one block, or no code check)."""
-    from rockcli.studies.compare import main_mechanism, shown_result
+    from rockcli.studies.catalogue import main_mechanism
+    from rockcli.studies.compare import shown_result
 
     if kin is None:
         return None, None
@@ -243,7 +245,7 @@ def max_utilisation(block: Block, result: Assessment) -> float | None:
 
     known = [c["utilisation"] for c in restrainer_checks(block, result)]
     known = [u for u in known if u is not None]  # a member checked by its elongation alone
-    return _number(max(known)) if known else None
+    return plain_number(max(known)) if known else None
 
 
 def rocking_columns(result: Assessment) -> dict[str, Any]:
@@ -251,43 +253,10 @@ def rocking_columns(result: Assessment) -> dict[str, Any]:
     runs = {r.polarity: r for r in result.runs}
     overturns = [r.t_overturn for r in result.runs if r.t_overturn is not None]
     return {
-        "max_ratio": _number(result.max_ratio),
-        "max_ratio_pos": _number(runs[1].max_ratio) if 1 in runs else None,
-        "max_ratio_neg": _number(runs[-1].max_ratio) if -1 in runs else None,
+        "max_ratio": plain_number(result.max_ratio),
+        "max_ratio_pos": plain_number(runs[1].max_ratio) if 1 in runs else None,
+        "max_ratio_neg": plain_number(runs[-1].max_ratio) if -1 in runs else None,
         "overturned": any(r.overturned for r in result.runs),
-        "t_overturn": _number(min(overturns)) if overturns else None,
+        "t_overturn": plain_number(min(overturns)) if overturns else None,
         "rocking": str(result.verdict),
     }
-
-
-def kinematic_columns(result: KinematicResult) -> dict[str, Any]:
-    """The code's verdicts (pass/fail), the governing ULS ratio and the mechanism's numbers."""
-    verdict = result.verdict()
-    quantities = result.quantities
-    return {
-        "code_dls": _pass_fail(verdict["DLS"]),
-        "code_uls": _pass_fail(verdict["ULS"]),
-        "uls_ratio": uls_ratio(result.checks),
-        "a0_star": _number(result.a0_star),
-        "Ts": _number(quantities.get("Ts", quantities.get("T_SLV"))),
-    }
-
-
-def uls_ratio(checks: Sequence[Check]) -> float | None:
-    """The governing ζ = capacity/demand of the ULS: the smallest over the checks that decide
-    the verdict (the non-linear ones when the analysis has them, else the linear ones; the
-    rule of :func:`rockcli.codecheck.result.deciding`); None when one is not evaluated."""
-    from rockcli.codecheck.result import deciding
-
-    ratios = [c.ratio for c in deciding(tuple(checks), ("ULS", "SLV", "SLC"))]
-    known = [r for r in ratios if r is not None]
-    return min(known) if known and len(known) == len(ratios) else None
-
-
-def _number(value: float | None) -> float | None:
-    """A plain float (numpy scalars print as np.float64(…) in a CSV cell)."""
-    return None if value is None else float(value)
-
-
-def _pass_fail(value: bool | None) -> str | None:
-    return None if value is None else ("pass" if value else "fail")
