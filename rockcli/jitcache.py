@@ -47,7 +47,7 @@ KERNEL_SOURCES = (
 
 def sources_digest() -> str:
     """A short digest of the kernels' sources."""
-    from rockcli import __version__
+    from rockcli.version import __version__
 
     digest = hashlib.sha256(__version__.encode())
     for name in KERNEL_SOURCES:

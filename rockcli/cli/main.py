@@ -18,12 +18,12 @@ import warnings
 
 import click
 
-from rockcli import __version__
 from rockcli.cli.console import make_output_encodable
 from rockcli.cli.exits import EXIT_INPUT, EXIT_INTERNAL, EXIT_INTERRUPTED, REPORT_TO
 from rockcli.cli.invocation import set_command_line
 from rockcli.errors import RockError, printable
 from rockcli.process import interrupted
+from rockcli.version import __version__
 
 #: Set to 1 to see the traceback of an internal error.
 DEBUG_VARIABLE = "ROCK_DEBUG"

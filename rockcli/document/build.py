@@ -147,8 +147,8 @@ def wall_sections(part: Part, w: Words) -> list[Section]:
 
 def front_matter(inputs: Inputs, name: str, w: Words) -> dict[str, Any]:
     """The Document's running header and footer, labels, cover, signature and annexes."""
-    from rockcli import __version__
     from rockcli.document.front import cover_rows, signature_lines
+    from rockcli.version import __version__
 
     labels = ("contents", "figure", "table", "page", "annex")
     return {
@@ -177,8 +177,8 @@ def source_digest() -> str:
 
 
 def identification(inputs: Inputs, w: Words) -> Section:
-    from rockcli import __version__
     from rockcli.studies.folder.folder import file_digest
+    from rockcli.version import __version__
 
     software = Grid(
         caption=w("ident.software_caption"),

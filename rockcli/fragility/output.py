@@ -21,10 +21,10 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import Any
 
-from rockcli import __version__
 from rockcli.fragility.run import Task, TaskResult, task_labels
 from rockcli.fragility.study import FragilityPlan
 from rockcli.studies.folder.folder import StudyFolder, digest_of, record_identities
+from rockcli.version import __version__
 
 STATE_FILE = "state.json"
 RESULT_FILE = "fragility.json"

@@ -24,11 +24,11 @@ from typing import Any
 
 import numpy as np
 
-from rockcli import __version__
 from rockcli.fragility.fit import Fit, band_method, band_points, ida_curve, msa_curve
 from rockcli.fragility.run import Task, TaskResult, exceedances, stripe_counts
 from rockcli.fragility.search import scan_points
 from rockcli.fragility.study import FragilityPlan, State
+from rockcli.version import __version__
 
 SCHEMA = 1
 #: Intensities at which an IDA curve's band is given, across the scan.

@@ -10,7 +10,6 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from rockcli import __version__
 from rockcli.dynamics.result import Assessment, RockingRun
 from rockcli.dynamics.tolerance import sensitive
 from rockcli.mechanics import (
@@ -33,6 +32,7 @@ from rockcli.terminal.tolerance import (
     tolerance_warnings,
     verdict_caveat,
 )
+from rockcli.version import __version__
 
 if TYPE_CHECKING:
     from rockcli.studies.assess import AssessmentOutput

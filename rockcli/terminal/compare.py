@@ -4,7 +4,6 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING, Any
 
-from rockcli import __version__
 from rockcli.notes import Note
 from rockcli.records.record import Record
 from rockcli.terminal.assess import strength_caveat
@@ -12,6 +11,7 @@ from rockcli.terminal.kinematic import EDITION_TEXT, ULTIMATE_FIX, actions_table
 from rockcli.terminal.table import Column, Report, Table, format_value
 from rockcli.terminal.tolerance import compare_rows as tolerance_rows
 from rockcli.terminal.tolerance import verdict_caveat
+from rockcli.version import __version__
 
 if TYPE_CHECKING:
     from rockcli.studies.compare import ComparisonOutput

@@ -14,10 +14,10 @@ from typing import Any
 
 import numpy as np
 
-from rockcli import __version__
 from rockcli.fragility.data import FragilityData
 from rockcli.fragility.fit import CONFIDENCE, Fit, band_method
 from rockcli.terminal.table import Column, Report, Table, key_value
+from rockcli.version import __version__
 
 SCHEMA = 1
 

@@ -4,9 +4,9 @@ from __future__ import annotations
 
 from typing import Any
 
-from rockcli import __version__
 from rockcli.codecheck.result import Check, KinematicResult, RestrainerAction
 from rockcli.terminal.table import Column, Report, Table, key_value
+from rockcli.version import __version__
 
 SCHEMA = 1
 

@@ -20,9 +20,9 @@ import io
 from collections.abc import Sequence
 from typing import Any
 
-from rockcli import __version__
 from rockcli.fragility.spectrum import Scan
 from rockcli.terminal.table import Column, Report, Table, key_value
+from rockcli.version import __version__
 
 SCHEMA = 1
 #: What the document says of the block rocked (the same at every point, but R in a size

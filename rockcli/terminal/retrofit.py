@@ -5,12 +5,12 @@ from __future__ import annotations
 from collections.abc import Sequence
 from typing import Any
 
-from rockcli import __version__
 from rockcli.model.schema import Model
 from rockcli.records.record import Record
 from rockcli.studies.retrofit.candidates import RetrofitPlan
 from rockcli.studies.retrofit.choose import failures
 from rockcli.terminal.table import Column, Report, Table
+from rockcli.version import __version__
 
 SCHEMA = 1
 #: What shook the block in the time history (record.input).

@@ -233,7 +233,7 @@ RULE_TEXT = {"mean": "the mean over 7 or more records", "worst": "the worst of 3
 
 def suite_assessment_document(sa: SuiteAssessment) -> dict[str, Any]:
     """The whole `rock assess MODEL --suite SUITE --format json` document."""
-    from rockcli import __version__
+    from rockcli.version import __version__
 
     doc: dict[str, Any] = {
         "schema": 1,

@@ -12,9 +12,9 @@ from __future__ import annotations
 import math
 from typing import Any
 
-from rockcli import __version__
 from rockcli.casebook.run import CasebookResult, CaseResult, Status
 from rockcli.terminal.table import Column, Report, Table
+from rockcli.version import __version__
 
 SCHEMA = 1
 

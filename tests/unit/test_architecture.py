@@ -11,7 +11,7 @@ from tests.unit.test_import_cycles import ROOT, module_graph, package_of
 #: Bottom to top, as docs/architecture.md's table: each row a layer, in the order its
 #: packages may import one another.
 LAYERS = (
-    ("rockcli", "interrupts", "process", "numbers", "notes", "errors", "jitcache", "inside",
+    ("version", "interrupts", "process", "numbers", "notes", "errors", "jitcache", "inside",
      "outfile", "textfile", "units"),
     ("mechanics", "mechanisms"),
     ("dynamics", "codecheck", "records", "kernels"),
@@ -20,7 +20,7 @@ LAYERS = (
     ("studies",),
     ("fragility", "casebook"),
     ("terminal", "plots", "document"),
-    ("cli", "__main__"),
+    ("api", "rockcli", "cli", "__main__"),
 )  # fmt: skip
 ORDER = {f"rockcli.{p}" if p != "rockcli" else p: k for k, p in enumerate(sum(LAYERS, ()))}
 

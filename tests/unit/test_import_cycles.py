@@ -33,7 +33,12 @@ def imports_of(name: str, path: Path, modules: Mapping[str, Path]) -> set[str]:
             if node.level:
                 parent = package.rsplit(".", node.level - 1)[0] if node.level > 1 else package
                 base = f"{parent}.{base}" if base else parent
-            names = [base, *(f"{base}.{alias.name}" for alias in node.names)]
+            # ``from rockcli import jitcache`` imports the module rockcli.jitcache, not the
+            # package's __init__ (which Python runs, but which the importer does not use).
+            names = [
+                f"{base}.{alias.name}" if f"{base}.{alias.name}" in modules else base
+                for alias in node.names
+            ]
         else:
             continue
         for candidate in names:

@@ -94,9 +94,9 @@ def start_fork_server(context: multiprocessing.context.BaseContext) -> None:
 
 def package_root() -> str:
     """The folder holding the ``rockcli`` package this process imported."""
-    import rockcli
+    import rockcli.version
 
-    return os.path.dirname(os.path.dirname(os.path.abspath(rockcli.__file__)))
+    return os.path.dirname(os.path.dirname(os.path.abspath(rockcli.version.__file__)))
 
 
 def server_environment() -> dict[str, str]:

@@ -22,7 +22,6 @@ from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
 from pathlib import Path
 from typing import Any, NoReturn
 
-from rockcli import __version__
 from rockcli.errors import InputError, install_hint
 from rockcli.outfile import replacing
 from rockcli.studies.folder.folder import (
@@ -34,6 +33,7 @@ from rockcli.studies.folder.folder import (
 )
 from rockcli.studies.folder.lock import LOCK_FILE
 from rockcli.studies.sweep.study import StudyPlan
+from rockcli.version import __version__
 
 PARQUET_FILE = "cases.parquet"
 #: What --output parquet needs, and how to get it.

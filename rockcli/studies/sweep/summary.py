@@ -14,9 +14,9 @@ import math
 from collections.abc import Callable, Hashable, Iterable, Mapping, Sequence
 from typing import Any
 
-from rockcli import __version__
 from rockcli.studies.sweep.cases import Case
 from rockcli.studies.sweep.study import StudyPlan
+from rockcli.version import __version__
 
 SCHEMA = 1
 #: Digits α is rounded to when grouping cases by slenderness (α from thickness and height is

@@ -1,0 +1,3 @@
+"""rock's version (the package's, pyproject.toml's)."""
+
+__version__ = "0.1.0"
