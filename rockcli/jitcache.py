@@ -2,7 +2,7 @@
 
 numba invalidates a cached function when *its* source file changes, not when a function it
 compiles in from another file does: the kernel inlines the formulas of mechanics.py and
-dynamics/rules.py, so an edit there would leave a stale kernel in the cache and give silently
+dynamics/motion.py, so an edit there would leave a stale kernel in the cache and give silently
 wrong numbers (seen: doubling a spring moment in mechanics.py changed nothing). The cache
 folder is therefore named after a digest of every source the kernels compile, so any edit
 starts a fresh cache.
@@ -38,7 +38,7 @@ _configured = False
 #: Every file whose code the compiled kernels contain.
 KERNEL_SOURCES = (
     "mechanics.py",
-    "dynamics/rules.py",
+    "dynamics/motion.py",
     "dynamics/layout.py",
     "dynamics/kernel.py",
     "codecheck/response_kernel.py",

@@ -2,8 +2,8 @@
 
 A *plain* block is the rectangular block of paper Eq. (1)–(2) on the ground, without loads,
 thrusts, a body of another shape or a chain; its restrainers are any of rock's members
-(rules.py: elastic, yielding, pretensioned, lost past an elongation, anchored, tie-rods),
-packed as ``pack_springs`` packs them and set at rest by the same ``rules.reset_laws``. A study
+(motion.py: elastic, yielding, pretensioned, lost past an elongation, anchored, tie-rods),
+packed as ``pack_springs`` packs them and set at rest by the same ``motion.reset_laws``. A study
 that varies such a block's sizes, weight, restitution and spring stiffnesses gives each
 case's kernel inputs here as arrays (:class:`Blocks`): the parameter vector and restrainer
 table of :func:`rockcli.dynamics.simulate.pack_parameters` and ``pack_springs``, one row per
@@ -29,7 +29,7 @@ import numpy as np
 
 from rockcli import interrupts
 from rockcli.dynamics import layout as L
-from rockcli.dynamics import rules
+from rockcli.dynamics import motion
 from rockcli.dynamics.settings import SolverSettings
 from rockcli.dynamics.simulate import (
     STEP_BUDGET_BASE,
@@ -166,14 +166,14 @@ def pack_spring_tables(blocks: Blocks) -> np.ndarray:
     lin = b.base.linearized
     for j, sp in enumerate(b.base.restrainers):
         for col, k, r, phi, a_fail, sin, cos in (
-            (0, b.k_pos, b.r_pos, b.phi_pos, rules.COL_A_FAIL_POS, rules.COL_SIN_POS,
-             rules.COL_COS_POS),
-            (1, b.k_neg, b.r_neg, b.phi_neg, rules.COL_A_FAIL_NEG, rules.COL_SIN_NEG,
-             rules.COL_COS_NEG),
+            (0, b.k_pos, b.r_pos, b.phi_pos, motion.COL_A_FAIL_POS, motion.COL_SIN_POS,
+             motion.COL_COS_POS),
+            (1, b.k_neg, b.r_neg, b.phi_neg, motion.COL_A_FAIL_NEG, motion.COL_SIN_NEG,
+             motion.COL_COS_NEG),
         ):  # fmt: skip
-            table[:, j, rules.COL_K_POS + col] = k[:, j]
-            table[:, j, rules.COL_R_POS if col == 0 else rules.COL_R_NEG] = r[:, j]
-            table[:, j, rules.COL_PHI_POS if col == 0 else rules.COL_PHI_NEG] = phi[:, j]
+            table[:, j, motion.COL_K_POS + col] = k[:, j]
+            table[:, j, motion.COL_R_POS if col == 0 else motion.COL_R_NEG] = r[:, j]
+            table[:, j, motion.COL_PHI_POS if col == 0 else motion.COL_PHI_NEG] = phi[:, j]
             table[:, j, sin] = exactly(math.sin, phi[:, j])
             table[:, j, cos] = exactly(math.cos, phi[:, j])
             lost = sp.lost_at
@@ -184,10 +184,10 @@ def pack_spring_tables(blocks: Blocks) -> np.ndarray:
             )
             with np.errstate(divide="ignore", invalid="ignore"):
                 c0 = np.where(k[:, j] > 0.0, -sp.pretension / k[:, j], 0.0)
-            table[:, j, rules.COL_C0 + col] = c0
-            table[:, j, rules.COL_C + col] = c0
+            table[:, j, motion.COL_C0 + col] = c0
+            table[:, j, motion.COL_C + col] = c0
     if any(sp.has_memory for sp in b.base.restrainers):  # each member's state at rest
-        rules.reset_laws(table.reshape(-1, table.shape[2]), lin)
+        motion.reset_laws(table.reshape(-1, table.shape[2]), lin)
     return table
 
 

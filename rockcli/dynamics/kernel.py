@@ -31,7 +31,7 @@ from numba.extending import register_jitable
 
 from rockcli import jitcache, mechanics
 from rockcli.dynamics import layout as L
-from rockcli.dynamics import rules
+from rockcli.dynamics import motion
 
 #: numba's on-disk cache, when a writable folder exists (jitcache.py; keyed on the sources).
 CACHE = jitcache.configure()
@@ -57,50 +57,50 @@ for _fn in (
 ):
     register_jitable(_fn)
 for _array_fn in (
-    rules.spring_on_side,
-    rules.spring_trig_on_side,
-    rules.ground_acceleration,
-    rules.has_path,
-    rules.path_on_side,
+    motion.spring_on_side,
+    motion.spring_trig_on_side,
+    motion.ground_acceleration,
+    motion.has_path,
+    motion.path_on_side,
 ):
     register_jitable(inline="always")(_array_fn)
-register_jitable(rules.member_force)
-register_jitable(rules.member_moment)
-register_jitable(rules.side_index)
-register_jitable(rules.spring_arm)
-register_jitable(rules.chain_balance)
+register_jitable(motion.member_force)
+register_jitable(motion.member_moment)
+register_jitable(motion.side_index)
+register_jitable(motion.spring_arm)
+register_jitable(motion.chain_balance)
 # The member laws' state changes: called at events only.
 for _law_fn in (
-    rules.rotation_at_elongation,
-    rules.set_levels,
-    rules.plateau_slack_point,
-    rules.plateau_work,
-    rules.released_energy,
-    rules.idle_energy,
-    rules.cross_up,  # inside engage
-    rules.cross_down,  # inside unload
+    motion.rotation_at_elongation,
+    motion.set_levels,
+    motion.plateau_slack_point,
+    motion.plateau_work,
+    motion.released_energy,
+    motion.idle_energy,
+    motion.cross_up,  # inside engage
+    motion.cross_down,  # inside unload
 ):
     register_jitable(_law_fn)
-_cross_up = njit(cache=CACHE)(rules.cross_up)
-_cross_down = njit(cache=CACHE)(rules.cross_down)
-_engage = njit(cache=CACHE)(rules.engage)
-_unload = njit(cache=CACHE)(rules.unload)
-_lose = njit(cache=CACHE)(rules.lose)
-_any_plastic = njit(cache=CACHE)(rules.any_plastic)
-_rest_moment = njit(cache=CACHE)(rules.rest_moment)
-_member_force = njit(cache=CACHE, inline="always")(rules.member_force)
-register_jitable(rules.elongation_on_side)
-_restrainer_force = njit(cache=CACHE)(rules.restrainer_force)
-_rhs = njit(cache=CACHE, inline="always")(rules.angular_acceleration)
+_cross_up = njit(cache=CACHE)(motion.cross_up)
+_cross_down = njit(cache=CACHE)(motion.cross_down)
+_engage = njit(cache=CACHE)(motion.engage)
+_unload = njit(cache=CACHE)(motion.unload)
+_lose = njit(cache=CACHE)(motion.lose)
+_any_plastic = njit(cache=CACHE)(motion.any_plastic)
+_rest_moment = njit(cache=CACHE)(motion.rest_moment)
+_member_force = njit(cache=CACHE, inline="always")(motion.member_force)
+register_jitable(motion.elongation_on_side)
+_restrainer_force = njit(cache=CACHE)(motion.restrainer_force)
+_rhs = njit(cache=CACHE, inline="always")(motion.angular_acceleration)
 _loaded_rhs = njit(cache=CACHE)(
-    rules.loaded_angular_acceleration
+    motion.loaded_angular_acceleration
 )  # not inlined: keeps the free path lean
-_chain_rhs = njit(cache=CACHE)(rules.chain_angular_acceleration)
-_ground = njit(cache=CACHE, inline="always")(rules.ground_acceleration)
-_uplift_in_interval = njit(cache=CACHE, inline="always")(rules.uplift_in_interval)
-_after_impact = njit(cache=CACHE, inline="always")(rules.velocity_after_impact)
-_spring_on_side = njit(cache=CACHE, inline="always")(rules.spring_on_side)
-_elongation_on_side = njit(cache=CACHE, inline="always")(rules.elongation_on_side)
+_chain_rhs = njit(cache=CACHE)(motion.chain_angular_acceleration)
+_ground = njit(cache=CACHE, inline="always")(motion.ground_acceleration)
+_uplift_in_interval = njit(cache=CACHE, inline="always")(motion.uplift_in_interval)
+_after_impact = njit(cache=CACHE, inline="always")(motion.velocity_after_impact)
+_spring_on_side = njit(cache=CACHE, inline="always")(motion.spring_on_side)
+_elongation_on_side = njit(cache=CACHE, inline="always")(motion.elongation_on_side)
 
 
 #: Numba IR inlining of the small helpers that take arrays: a call boundary costs atomic
@@ -171,8 +171,8 @@ DENSE_P = np.array(
 def _accel(a, s, om, ag, alpha, sin_alpha, cos_alpha, p2, lin, springs, alive, inv_i0, i0, points):
     """θ̈ at rotation a = s·θ, velocity θ̇ = om, ground ag [g]: the free block's equation (paper
     Eq. 2, unchanged bit for bit) or, with loads or thrusts (a non-empty point table), the
-    general one (rules.loaded_angular_acceleration), or a chain's (a table whose first entry
-    is negative: rules.chain_angular_acceleration)."""
+    general one (motion.loaded_angular_acceleration), or a chain's (a table whose first entry
+    is negative: motion.chain_angular_acceleration)."""
     if points.size > 0:
         if points[0] < 0.0:
             return _chain_rhs(a, s, om, ag, points, springs, alive)
@@ -192,7 +192,7 @@ def _free_accel(
 def _loaded_accel(
     a, s, om, ag, alpha, sin_alpha, cos_alpha, p2, lin, springs, alive, inv_i0, i0, points
 ):
-    """θ̈ with loads or thrusts (rules.loaded_angular_acceleration), same signature."""
+    """θ̈ with loads or thrusts (motion.loaded_angular_acceleration), same signature."""
     return _loaded_rhs(a, s, om, ag, points, i0, springs, alive)
 
 
@@ -200,7 +200,7 @@ def _loaded_accel(
 def _chain_accel(
     a, s, om, ag, alpha, sin_alpha, cos_alpha, p2, lin, springs, alive, inv_i0, i0, points
 ):
-    """θ̈ of a chain (rules.chain_angular_acceleration), same signature."""
+    """θ̈ of a chain (motion.chain_angular_acceleration), same signature."""
     return _chain_rhs(a, s, om, ag, points, springs, alive)
 
 
@@ -474,7 +474,7 @@ def _event_levels(s, par, springs, alive, levels, kinds):
     kinds[n] = -1
     n += 1
     n_down = 0
-    col = rules.side_index(s)
+    col = motion.side_index(s)
     for j in range(n_rows):
         if alive[j] != 0:
             k, _, _, a_fail = _spring_on_side(springs, j, s)
@@ -482,13 +482,13 @@ def _event_levels(s, par, springs, alive, levels, kinds):
                 levels[n] = a_fail
                 kinds[n] = j
                 n += 1
-            if k != 0.0 and springs[j, rules.COL_MEMORY] != 0.0:
-                up = springs[j, rules.COL_UP + col]
+            if k != 0.0 and springs[j, motion.COL_MEMORY] != 0.0:
+                up = springs[j, motion.COL_UP + col]
                 if up < 1e300:
                     levels[n] = up
                     kinds[n] = n_rows + j
                     n += 1
-                down = springs[j, rules.COL_DOWN + col]
+                down = springs[j, motion.COL_DOWN + col]
                 if down >= 0.0:
                     levels[base + n_down] = down
                     kinds[base + n_down] = j
@@ -526,16 +526,16 @@ def _level_bounds(s, par, springs, alive):
     """
     lowest = par[L.P_OVERTURN]
     highest = 0.0
-    col = rules.side_index(s)
+    col = motion.side_index(s)
     for j in range(springs.shape[0]):
         if alive[j] != 0:
             k, _, _, a_fail = _spring_on_side(springs, j, s)
             if k != 0.0 and a_fail < lowest:
                 lowest = a_fail
-            if k != 0.0 and springs[j, rules.COL_MEMORY] != 0.0:
-                lowest = min(lowest, springs[j, rules.COL_UP + col])
-                highest = max(highest, springs[j, rules.COL_DOWN + col])
-                if springs[j, rules.COL_MODE + col] == rules.MODE_PLASTIC:
+            if k != 0.0 and springs[j, motion.COL_MEMORY] != 0.0:
+                lowest = min(lowest, springs[j, motion.COL_UP + col])
+                highest = max(highest, springs[j, motion.COL_DOWN + col])
+                if springs[j, motion.COL_MODE + col] == motion.MODE_PLASTIC:
                     highest = math.inf
     return lowest, highest
 
@@ -695,14 +695,14 @@ def _apply_law_event(kind, row, s, a, t, springs, alive, spring_out, lin):
     if kind == L.EV_SLACK:
         _cross_down(springs, row, s, lin)
         return False
-    up = springs[row, rules.COL_UP_KIND + rules.side_index(s)]
-    if up == rules.UP_ENGAGE:
+    up = springs[row, motion.COL_UP_KIND + motion.side_index(s)]
+    if up == motion.UP_ENGAGE:
         up = _engage(springs, row, s, a, lin)  # its yield or rupture too, if already reached
-    if up == rules.UP_BREAK:
+    if up == motion.UP_BREAK:
         _lose(springs, alive, row, s, a, lin, spring_out, L.S_ENERGY)
         spring_out[row, L.S_T_FAIL] = t
         return True
-    if up == rules.UP_YIELD:
+    if up == motion.UP_YIELD:
         _cross_up(springs, row, s, lin)
         if math.isnan(spring_out[row, L.S_T_YIELD]):
             spring_out[row, L.S_T_YIELD] = t
@@ -813,7 +813,7 @@ def integrate(
     Args:
         times, accel: sample times [s] and ground acceleration [g] (tail included).
         pol: polarity, +1 or −1 (multiplies the acceleration).
-        par: parameter vector (P_* layout). springs: packed restrainer table (rules.py).
+        par: parameter vector (P_* layout). springs: packed restrainer table (motion.py).
         points: flat point table of the block, its loads and thrusts (mechanics.point_table);
             empty for a block without loads and thrusts (the free block's equation).
         alive: int array, 1 per intact restrainer (updated on failure).
@@ -864,7 +864,7 @@ def integrate_sloped(
     kinds = np.empty(3 * n_rows + 1, dtype=np.int64)
     memory = False
     for r in range(n_rows):
-        if springs[r, rules.COL_MEMORY] != 0.0:
+        if springs[r, motion.COL_MEMORY] != 0.0:
             memory = True
     out_f[L.O_MAX_A] = 0.0
     out_f[L.O_THETA_MAX] = 0.0

@@ -2,7 +2,7 @@
 
 Used by the tests to check the fast engine and selectable with ``--engine reference``
 (spec/engine.md, "Sensitivity": cross-implementation check). Independent of the compiled
-kernel in everything but the rules of motion (:mod:`rockcli.dynamics.rules`, the spec's
+kernel in everything but the rules of motion (:mod:`rockcli.dynamics.motion`, the spec's
 physics): another integrator (DOP853, Hairer & Wanner), scipy's event location, its own loop.
 
 Each call of :func:`scipy.integrate.solve_ivp` spans at most one sample interval, so the
@@ -22,7 +22,7 @@ import numpy as np
 from scipy.integrate import solve_ivp
 
 from rockcli.dynamics import layout as L
-from rockcli.dynamics import rules
+from rockcli.dynamics import motion
 
 #: First step after a restart at θ = 0 [s] (keeps the impact event off the start point).
 REFERENCE_FIRST_STEP = 1e-7
@@ -55,7 +55,7 @@ class _Phase:
         self.t = 0.0
         self.evals = 0
         self.max_evals = int(par[L.P_MAX_STEPS]) * EVALS_PER_STEP
-        self.memory = bool(np.any(springs[:, rules.COL_MEMORY] != 0.0)) if springs.size else False
+        self.memory = bool(np.any(springs[:, motion.COL_MEMORY] != 0.0)) if springs.size else False
         #: A chain's terms from its configuration function (mechanics.Chain.exact), or None.
         self.exact: Callable[[int, float], tuple[float, float, float, float, float]] | None = None
 
@@ -79,11 +79,11 @@ def _acceleration(phase: _Phase, ag: float, th: float, om: float) -> float:
             a = phase.s * th
             g, h, t, m, mp = phase.exact(phase.s, a)
             return float(
-                rules.chain_balance(g, h, t, m, mp, a, phase.s, om, ag, phase.springs, phase.alive)
+                motion.chain_balance(g, h, t, m, mp, a, phase.s, om, ag, phase.springs, phase.alive)
             )
         if phase.points.size:
             return float(
-                rules.loaded_angular_acceleration(
+                motion.loaded_angular_acceleration(
                     phase.s * th,
                     phase.s,
                     om,
@@ -95,7 +95,7 @@ def _acceleration(phase: _Phase, ag: float, th: float, om: float) -> float:
                 )
             )
         return float(
-            rules.angular_acceleration(
+            motion.angular_acceleration(
                 phase.s * th,
                 phase.s,
                 ag,
@@ -120,9 +120,9 @@ def _nonfinite_quantity(phase: _Phase, ag: float, th: float, om: float) -> int:
     if not math.isfinite(om):
         return L.NF_OMEGA
     for j in range(phase.springs.shape[0]):
-        k, _, _, _ = rules.spring_on_side(phase.springs, j, phase.s)
+        k, _, _, _ = motion.spring_on_side(phase.springs, j, phase.s)
         if phase.alive[j] and k != 0.0:
-            u = rules.elongation_on_side(phase.springs, j, phase.s, phase.s * th, phase.lin)
+            u = motion.elongation_on_side(phase.springs, j, phase.s, phase.s * th, phase.lin)
             if not math.isfinite(k * u):
                 return L.NF_FORCE + j
     if not math.isfinite(ag):
@@ -156,22 +156,22 @@ def _events(phase: _Phase):
     def peak(t: float, y: np.ndarray) -> float:
         return s * y[1]
 
-    unloads = phase.memory and rules.any_plastic(phase.springs, phase.alive, s)
+    unloads = phase.memory and motion.any_plastic(phase.springs, phase.alive, s)
     peak.terminal = unloads  # type: ignore[attr-defined]
     peak.direction = -1  # type: ignore[attr-defined]
     events = [impact, overturn, peak]
     rows = [(K_IMPACT, -1), (K_OVERTURN, -1), (K_PEAK if unloads else -1, -1)]
-    col = rules.side_index(s)
+    col = motion.side_index(s)
     for j in range(phase.springs.shape[0]):
-        k, _, _, a_fail = rules.spring_on_side(phase.springs, j, s)
+        k, _, _, a_fail = motion.spring_on_side(phase.springs, j, s)
         if not phase.alive[j] or k == 0.0:
             continue
         if math.isfinite(a_fail):
             events.append(_level_event(s, a_fail, 1))
             rows.append((K_FAIL, j))
-        if phase.springs[j, rules.COL_MEMORY] != 0.0:
-            up = phase.springs[j, rules.COL_UP + col]
-            down = phase.springs[j, rules.COL_DOWN + col]
+        if phase.springs[j, motion.COL_MEMORY] != 0.0:
+            up = phase.springs[j, motion.COL_UP + col]
+            down = phase.springs[j, motion.COL_DOWN + col]
             if math.isfinite(up):
                 events.append(_level_event(s, up, 1))
                 rows.append((K_LAW_UP, j))
@@ -200,11 +200,11 @@ def _peak(phase: _Phase, a: float, out_f: np.ndarray, spring_out: np.ndarray) ->
     else:
         out_f[L.O_THETA_MIN] = min(out_f[L.O_THETA_MIN], -a)
     for j in range(phase.springs.shape[0]):
-        k, _, _, _ = rules.spring_on_side(phase.springs, j, s)
+        k, _, _, _ = motion.spring_on_side(phase.springs, j, s)
         if phase.alive[j] and k != 0.0:
-            u = rules.elongation_on_side(phase.springs, j, s, a, phase.lin)
+            u = motion.elongation_on_side(phase.springs, j, s, a, phase.lin)
             spring_out[j, L.S_MAX_U] = max(spring_out[j, L.S_MAX_U], u)
-            force = rules.member_force(phase.springs, j, s, k, u)
+            force = motion.member_force(phase.springs, j, s, k, u)
             spring_out[j, L.S_MAX_FORCE] = max(spring_out[j, L.S_MAX_FORCE], force)
 
 
@@ -248,7 +248,7 @@ def _interval(phase, i, times, accel, pol, out_f, out_i, spring_out):
         phase.t = t
         if phase.s == 0:
             thr_pos, thr_neg = _uplift_thresholds(phase)
-            tau, side = rules.uplift_in_interval(
+            tau, side = motion.uplift_in_interval(
                 t,
                 i,
                 times,
@@ -267,7 +267,7 @@ def _interval(phase, i, times, accel, pol, out_f, out_i, spring_out):
                 out_f[L.O_T_UPLIFT] = tau
             t = tau
             continue
-        g0 = rules.ground_acceleration(t, i, times, accel, pol)
+        g0 = motion.ground_acceleration(t, i, times, accel, pol)
         status = _check_start(phase, t, g0, gs, out_f, out_i)
         if status is not None:
             return status
@@ -298,8 +298,8 @@ def _uplift_thresholds(phase: _Phase) -> tuple[float, float]:
         (par[L.P_UPLIFT_POS], par[L.P_UPLIFT_NEG]) if phase.points.size else (thr, thr)
     )
     if phase.memory:
-        thr_pos += rules.rest_moment(phase.springs, phase.alive, 1) * par[L.P_PRE_SCALE_POS]
-        thr_neg += rules.rest_moment(phase.springs, phase.alive, -1) * par[L.P_PRE_SCALE_NEG]
+        thr_pos += motion.rest_moment(phase.springs, phase.alive, 1) * par[L.P_PRE_SCALE_POS]
+        thr_neg += motion.rest_moment(phase.springs, phase.alive, -1) * par[L.P_PRE_SCALE_NEG]
     return thr_pos, thr_neg
 
 
@@ -357,7 +357,7 @@ def _apply_event(phase, t, y, kind, row, out_f, out_i, spring_out):
     out_i[L.I_IMPACTS] += 1
     e = par[L.P_E] if phase.s > 0 else par[L.P_E_NEG]
     before = 0.5 * _inertia(par, phase.s) * float(y[1]) ** 2
-    om, s = rules.velocity_after_impact(
+    om, s = motion.velocity_after_impact(
         float(y[1]), phase.s, e, int(par[L.P_ONE_SIDED]), par[L.P_REBOUND]
     )
     phase.th, phase.om, phase.s, phase.restart = 0.0, om, s, True
@@ -372,23 +372,23 @@ def _apply_event(phase, t, y, kind, row, out_f, out_i, spring_out):
 
 def _apply_restrainer_event(phase, t, y, kind, row, out_f, spring_out):
     """A failure at fails_at, a member law's level (yield, re-engage, anchor rupture), a slack
-    point, or the turning point of a yield plateau (kernel.py's rules, rules.py's law)."""
+    point, or the turning point of a yield plateau (kernel.py's rules, motion.py's law)."""
     s, lin, springs = phase.s, phase.lin, phase.springs
     a = max(s * float(y[0]), 0.0)
     _peak(phase, a, out_f, spring_out)
     if kind == K_PEAK:
-        rules.unload(springs, phase.alive, s, a, lin, spring_out, L.S_ENERGY)
+        motion.unload(springs, phase.alive, s, a, lin, spring_out, L.S_ENERGY)
     elif kind == K_SLACK:
-        rules.cross_down(springs, row, s, lin)
+        motion.cross_down(springs, row, s, lin)
     else:
-        up = springs[row, rules.COL_UP_KIND + rules.side_index(s)]
-        if kind == K_LAW_UP and up == rules.UP_ENGAGE:
-            up = rules.engage(springs, row, s, a, lin)  # its next level too, if already reached
-        if kind == K_FAIL or up == rules.UP_BREAK:
-            rules.lose(springs, phase.alive, row, s, a, lin, spring_out, L.S_ENERGY)
+        up = springs[row, motion.COL_UP_KIND + motion.side_index(s)]
+        if kind == K_LAW_UP and up == motion.UP_ENGAGE:
+            up = motion.engage(springs, row, s, a, lin)  # its next level too, if already reached
+        if kind == K_FAIL or up == motion.UP_BREAK:
+            motion.lose(springs, phase.alive, row, s, a, lin, spring_out, L.S_ENERGY)
             spring_out[row, L.S_T_FAIL] = t
-        elif up == rules.UP_YIELD:
-            rules.cross_up(springs, row, s, lin)
+        elif up == motion.UP_YIELD:
+            motion.cross_up(springs, row, s, lin)
             if math.isnan(spring_out[row, L.S_T_YIELD]):
                 spring_out[row, L.S_T_YIELD] = t
 
@@ -490,7 +490,7 @@ def _close_plateaus(phase: _Phase, status: int, spring_out: np.ndarray) -> None:
     """A run that ends on a yield plateau: the member unloads where the run ended."""
     if phase.memory and phase.s != 0 and status != L.STATUS_NONFINITE:
         a = phase.par[L.P_OVERTURN] if status == L.STATUS_OVERTURNED else phase.s * phase.th
-        rules.unload(phase.springs, phase.alive, phase.s, a, phase.lin, spring_out, L.S_ENERGY)
+        motion.unload(phase.springs, phase.alive, phase.s, a, phase.lin, spring_out, L.S_ENERGY)
 
 
 def _store(
@@ -501,6 +501,6 @@ def _store(
         hist_om[i] = phase.om
         for j in range(hist_f.shape[1]):
             a = phase.s * phase.th if phase.s else 0.0
-            hist_f[i, j] = rules.restrainer_force(
+            hist_f[i, j] = motion.restrainer_force(
                 phase.springs, phase.alive, j, phase.s, a, phase.lin
             )

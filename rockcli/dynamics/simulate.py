@@ -19,7 +19,7 @@ import numpy as np
 
 from rockcli import interrupts
 from rockcli.dynamics import layout as L
-from rockcli.dynamics import rules
+from rockcli.dynamics import motion
 from rockcli.dynamics.result import (
     Assessment,
     History,
@@ -192,34 +192,34 @@ def pack_points(block: Block) -> np.ndarray:
 
 
 def pack_springs(block: Block) -> np.ndarray:
-    """The packed restrainer table (columns in rules.py), failure rotations precomputed; as
-    wide as the longest elongation path (from rules.COL_PATH) when a member has one."""
-    width = rules.N_SPRING_COLS + max((len(sp.path) for sp in block.restrainers), default=0)
+    """The packed restrainer table (columns in motion.py), failure rotations precomputed; as
+    wide as the longest elongation path (from motion.COL_PATH) when a member has one."""
+    width = motion.N_SPRING_COLS + max((len(sp.path) for sp in block.restrainers), default=0)
     table = np.zeros((len(block.restrainers), width))
     for j, sp in enumerate(block.restrainers):
         if block.mass is None and (sp.k_pos or sp.k_neg):
             raise ValueError("a block with restrainers needs a mass")
-        table[j, rules.COL_K_POS] = sp.k_pos
-        table[j, rules.COL_K_NEG] = sp.k_neg
+        table[j, motion.COL_K_POS] = sp.k_pos
+        table[j, motion.COL_K_NEG] = sp.k_neg
         pack_point(table, j, sp, block.linearized)
-        table[j, rules.COL_FAILS_AT] = sp.lost_at
+        table[j, motion.COL_FAILS_AT] = sp.lost_at
         pack_law(table[j], sp)
-    rules.reset_laws(table, block.linearized)
+    motion.reset_laws(table, block.linearized)
     return table
 
 
 def pack_point(table: np.ndarray, j: int, sp: Restrainer, linearized: bool) -> None:
     """Row j's point: r, φ, their sines and cosines and the rotation at which it is lost, on
-    each side; a member with an elongation path has it from rules.COL_PATH, with r = u′(0) and
-    φ = 0 (the arm at rest: rules.py)."""
+    each side; a member with an elongation path has it from motion.COL_PATH, with r = u′(0) and
+    φ = 0 (the arm at rest: motion.py)."""
     if sp.path:
-        table[j, rules.COL_PATH : rules.COL_PATH + len(sp.path)] = sp.path
+        table[j, motion.COL_PATH : motion.COL_PATH + len(sp.path)] = sp.path
         points = ((sp.arm_at_rest(1), 0.0), (sp.arm_at_rest(-1), 0.0))
     else:
         points = ((sp.r_pos, sp.phi_pos), (sp.r_neg, sp.phi_neg))
     columns = (
-        (1, rules.COL_R_POS, rules.COL_PHI_POS, rules.COL_A_FAIL_POS, rules.COL_SIN_POS),
-        (-1, rules.COL_R_NEG, rules.COL_PHI_NEG, rules.COL_A_FAIL_NEG, rules.COL_SIN_NEG),
+        (1, motion.COL_R_POS, motion.COL_PHI_POS, motion.COL_A_FAIL_POS, motion.COL_SIN_POS),
+        (-1, motion.COL_R_NEG, motion.COL_PHI_NEG, motion.COL_A_FAIL_NEG, motion.COL_SIN_NEG),
     )
     for (r, phi), (s, col_r, col_phi, col_fail, col_sin) in zip(points, columns, strict=True):
         table[j, col_r] = r
@@ -227,30 +227,30 @@ def pack_point(table: np.ndarray, j: int, sp: Restrainer, linearized: bool) -> N
         table[j, col_sin] = math.sin(phi)
         table[j, col_sin + 1] = math.cos(phi)  # COL_COS_* follows COL_SIN_*
         table[j, col_fail] = (
-            rules.rotation_at_elongation(table, j, s, sp.lost_at, linearized)
+            motion.rotation_at_elongation(table, j, s, sp.lost_at, linearized)
             if sp.path
             else spring_failure_rotation(r, phi, sp.lost_at, linearized)
         )
 
 
 def pack_law(row: np.ndarray, sp: Restrainer) -> None:
-    """The member law's columns of one packed row (rules.py): yields, rupture force, c0.
+    """The member law's columns of one packed row (motion.py): yields, rupture force, c0.
 
-    The state columns (c, mode, levels) are then set to rest by rules.reset_laws (pack_springs):
+    The state columns (c, mode, levels) are then set to rest by motion.reset_laws (pack_springs):
     a packed table holds the state of one run's members, which the engines update. A member
     without memory (elastic, no pretension, no anchor) keeps COL_MEMORY = 0 and runs the elastic
     spring's arithmetic.
     """
-    row[rules.COL_YIELD] = sp.yield_pos
-    row[rules.COL_YIELD + 1] = sp.yield_neg
-    row[rules.COL_RUPTURE] = sp.rupture_force
-    row[rules.COL_MEMORY] = 1.0 if sp.has_memory else 0.0
+    row[motion.COL_YIELD] = sp.yield_pos
+    row[motion.COL_YIELD + 1] = sp.yield_neg
+    row[motion.COL_RUPTURE] = sp.rupture_force
+    row[motion.COL_MEMORY] = 1.0 if sp.has_memory else 0.0
     for col, k in ((0, sp.k_pos), (1, sp.k_neg)):
         c0 = -sp.pretension / k if k > 0.0 else 0.0
-        row[rules.COL_C0 + col] = c0
-        row[rules.COL_C + col] = c0
-        row[rules.COL_UP + col] = math.inf
-        row[rules.COL_DOWN + col] = rules.NO_LEVEL_DOWN
+        row[motion.COL_C0 + col] = c0
+        row[motion.COL_C + col] = c0
+        row[motion.COL_UP + col] = math.inf
+        row[motion.COL_DOWN + col] = motion.NO_LEVEL_DOWN
 
 
 def simulate(
@@ -399,7 +399,10 @@ def plastic_elongation(springs: np.ndarray, j: int) -> float:
     """Row j's plastic elongation after a run [m]: the larger over its two members of c − c0."""
     return max(
         0.0,
-        *(float(springs[j, rules.COL_C + col] - springs[j, rules.COL_C0 + col]) for col in (0, 1)),
+        *(
+            float(springs[j, motion.COL_C + col] - springs[j, motion.COL_C0 + col])
+            for col in (0, 1)
+        ),
     )
 
 

@@ -3,7 +3,7 @@
 Overturning about a storey's base, the wedge and the gable each turn as one rigid body about
 the edge of their hinge section (rockcli.mechanisms.catalogue). The rocking engine's loaded
 equation of motion is already Lagrange's equation of one rigid body of any shape about a pivot
-on each side (rockcli.dynamics.rules.loaded_angular_acceleration: [I + J(a)]·ä + ½J′ȧ² =
+on each side (rockcli.dynamics.motion.loaded_angular_acceleration: [I + J(a)]·ä + ½J′ȧ² =
 −G + s·T + s·üg·H − ΣM_k). So the mechanism enters the engine as a
 :class:`rockcli.mechanics.Block` whose ``body`` is the composite of its bodies: its weight at
 their centroid (a rigid point mass in the point table) plus its own moment of inertia about

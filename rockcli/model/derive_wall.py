@@ -27,7 +27,7 @@ from rockcli.mechanisms.wall import (
 from rockcli.model.derive import NEWTONS_PER_KILONEWTON, to_restrainer
 from rockcli.model.physical import Direction
 from rockcli.model.schema import Model, Position
-from rockcli.model.wall import EACH_FLOOR, MechanismEntry, point_height, thickness_at
+from rockcli.model.wall_tables import EACH_FLOOR, MechanismEntry, point_height, thickness_at
 from rockcli.notes import Note
 
 

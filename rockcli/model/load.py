@@ -32,8 +32,8 @@ from pydantic_core import ErrorDetails
 from rockcli.errors import InputError
 from rockcli.model.derive import block_of
 from rockcli.model.derived_checks import FINITE_POSITIVE, check_block
-from rockcli.model.rules import RULE_ERROR
 from rockcli.model.schema import Model
+from rockcli.model.table_rules import RULE_ERROR
 from rockcli.textfile import TOML_LIMIT, read_limited, reason
 
 Loc = tuple[str | int, ...]

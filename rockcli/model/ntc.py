@@ -23,8 +23,8 @@ from rockcli.model.bounds import (
     MIN_TC_STAR,
     MIN_USE_COEFFICIENT,
 )
-from rockcli.model.rules import choose_group, number, rule_error
 from rockcli.model.schema_base import Table
+from rockcli.model.table_rules import choose_group, number, rule_error
 
 #: Confidence factor of each knowledge level (Circolare 617/2009 §C8A.1.A.4, Tab. C8A.1.1;
 #: Circolare 7/2019 §C8.5.4, Tab. C8.5.IV): LC1 1.35, LC2 1.20, LC3 1.00.

@@ -30,8 +30,8 @@ from rockcli.model.bounds import (
     MIN_PERIOD,
     MIN_WEIGHT,
 )
-from rockcli.model.rules import choose_group, number, rule_error
 from rockcli.model.schema_base import Table
+from rockcli.model.table_rules import choose_group, number, rule_error
 
 #: First-mode damping of the building, as a fraction of critical (NTC §3.2.3.2.1: the elastic
 #: spectra are given for 5 %).

@@ -44,9 +44,9 @@ from rockcli.model.bounds import (
 )
 from rockcli.model.ntc import Ntc
 from rockcli.model.physical import Building, Load, Position, Thrust, check_mass, check_points
-from rockcli.model.rules import choose_group, forbid, number, rule_error
 from rockcli.model.schema_base import Table
-from rockcli.model.wall import Masonry, MechanismEntry, ReturnWalls, Storey, check_mechanisms
+from rockcli.model.table_rules import choose_group, forbid, number, rule_error
+from rockcli.model.wall_tables import Masonry, MechanismEntry, ReturnWalls, Storey, check_mechanisms
 from rockcli.units import DEFAULT_GRAVITY
 
 #: Default steel modulus of a tie-rod [Pa] (paper Table 2: E = 210 GPa).

@@ -15,8 +15,8 @@ from pydantic import BeforeValidator, Field
 from rockcli.codecheck.categories import Edition, LimitState, Soil, Topography
 from rockcli.model.bounds import MAX_NOMINAL_LIFE, MAX_USE_COEFFICIENT, MIN_USE_COEFFICIENT
 from rockcli.model.ntc import edition_name
-from rockcli.model.rules import number
 from rockcli.model.schema_base import Table
+from rockcli.model.table_rules import number
 
 #: A finite number in an array (TOML int or float, never a bool or a string).
 FiniteNumber = Annotated[float, Field(strict=True, allow_inf_nan=False)]

@@ -18,7 +18,7 @@ from rockcli.casebook.load import load_case_file
 from rockcli.casebook.schema import KinematicInput
 from rockcli.cli.main import cli
 from rockcli.model.load import load_model
-from rockcli.model.wall import MechanismKind
+from rockcli.model.wall_tables import MechanismKind
 from rockcli.studies.kinematic import kinematic_model
 from tests.casebook.conftest import CASEBOOK, write_casebook
 

@@ -60,7 +60,7 @@ def placement(kind: str) -> dict[str, Any]:
     return {"height": 1.0, "from_pivot": 0.05}
 
 
-#: The member laws a batched spring can have (rockcli/dynamics/rules.py): elastic; yielding on
+#: The member laws a batched spring can have (rockcli/dynamics/motion.py): elastic; yielding on
 #: both sides, alike or not; yielding on the positive side only (a stiff negative side then
 #: breaks the schema's rule); pretensioned, with and without a yield; lost past an elongation;
 #: an anchor of finite capacity; and the tie-rod of a steel grade (it yields and breaks).

@@ -121,7 +121,7 @@ def check_placement(model: Model, height: float, from_pivot: float, file: str | 
     from rockcli.model.derive_wall import is_wall
 
     if is_wall(model):
-        from rockcli.model.wall import thickness_at
+        from rockcli.model.wall_tables import thickness_at
 
         storeys = model.geometry.storey_list
         top = sum(s.height for s in storeys)

@@ -20,8 +20,8 @@ from pydantic import Field, model_validator
 from rockcli.codecheck.free import MasonryType
 from rockcli.mechanisms.wall import MechanismType
 from rockcli.model.bounds import MAX_LENGTH, MAX_STOREYS, MIN_LENGTH
-from rockcli.model.rules import number, rule_error
 from rockcli.model.schema_base import Table
+from rockcli.model.table_rules import number, rule_error
 
 #: The wedge's crack angle from the vertical: above 0, at most 60° (a flatter crack would
 #: drag more of the return wall than a wedge is: the Circolare's compound overturning).
