@@ -374,10 +374,25 @@ def catalogue_comparisons(model, record, engine, kin, main, shown, ground):
     return tuple(out)
 
 
-def run_comparison_output(model_path: str, record: Record, **options: Any) -> ComparisonOutput:
-    """Load the model file and run :func:`compare_model_output`."""
+def run_comparison_output(
+    model_path: str,
+    record: Record,
+    *,
+    engine: str = "fast",
+    edition: str | None = None,
+    grid_file: str | None = None,
+    code_demand: str = CodeDemand.RECORD,
+    history: bool = False,
+    ground: bool = False,
+    mechanism: str | None = None,
+) -> ComparisonOutput:
+    """Load the model file and run :func:`compare_model_output` (its arguments)."""
     from rockcli.model.load import load_model
 
     model = load_model(model_path)
-    check_code_demand(model, options.get("code_demand", CodeDemand.RECORD), file=model_path)
-    return compare_model_output(model, record, file=model_path, **options)
+    check_code_demand(model, code_demand, file=model_path)
+    return compare_model_output(
+        model, record, engine=engine, edition=edition, grid_file=grid_file,
+        code_demand=code_demand, history=history, ground=ground, file=model_path,
+        mechanism=mechanism,
+    )  # fmt: skip

@@ -10,7 +10,6 @@ from __future__ import annotations
 
 from collections.abc import Callable
 from dataclasses import dataclass, replace
-from typing import Any
 
 from rockcli.codecheck.demand import LimitStateDemand, Spectrum, record_demand
 from rockcli.codecheck.kinematic import (
@@ -246,12 +245,19 @@ def check_settings(model: Model, edition: str | None = None) -> NtcSettings:
     )
 
 
-def run_kinematic(model_path: str, **options: Any) -> KinematicOutput:
-    """Load the model file and run :func:`kinematic_model`."""
+def run_kinematic(
+    model_path: str,
+    *,
+    edition: str | None = None,
+    record: Record | None = None,
+    site: tuple[float, float] | None = None,
+    grid_file: str | None = None,
+) -> KinematicOutput:
+    """Load the model file and run :func:`kinematic_model`, with the warnings on its inputs."""
     from rockcli.model.load import load_model
     from rockcli.model.plausible import model_warnings
 
     model = load_model(model_path)
-    record = options.get("record")
     warnings = (*model_warnings(model), *(record.warnings if record is not None else ()))
-    return KinematicOutput(model.name, kinematic_model(model, **options), warnings)
+    result = kinematic_model(model, edition=edition, record=record, site=site, grid_file=grid_file)
+    return KinematicOutput(model.name, result, warnings)
