@@ -11,16 +11,13 @@ machine.
 from __future__ import annotations
 
 import os
-import resource
-import signal
-import subprocess
-import sys
 from pathlib import Path
 
 import pytest
 import tomli_w
 
 from rockcli.textfile import RECORD_LIMIT, TOML_LIMIT
+from tests.limited import run_rock
 
 ROOT = Path(__file__).resolve().parents[2]
 PULSES = sorted((ROOT / "records").glob("*.txt"))
@@ -35,33 +32,10 @@ TARGET = {"ag": 0.25, "F0": 2.5, "Tc_star": 0.3}
 pytestmark = pytest.mark.skipif(not hasattr(os, "mkfifo"), reason="needs POSIX FIFOs")
 
 
-def limited() -> None:
-    """In the child: cap its address space, so that a read of /dev/zero fails fast."""
-    resource.setrlimit(resource.RLIMIT_AS, (MEMORY_LIMIT, MEMORY_LIMIT))
-
-
 def rock(*args: str) -> tuple[int, str]:
-    """Run ``rock ARGS`` in a child (memory limit, timeout, own process group): (code,
-    stderr). A child still running at the timeout is killed and the test fails."""
-    env = {**os.environ, "PYTHONPATH": str(ROOT), "COLUMNS": "200"}
-    proc = subprocess.Popen(
-        [sys.executable, "-m", "rockcli", *args],
-        stdout=subprocess.DEVNULL,
-        stderr=subprocess.PIPE,
-        text=True,
-        env=env,
-        preexec_fn=limited,
-        start_new_session=True,
-    )
-    try:
-        _, err = proc.communicate(timeout=TIMEOUT)
-    except subprocess.TimeoutExpired:
-        pytest.fail(f"rock {' '.join(args)} still running after {TIMEOUT:g} s (blocked?)")
-    finally:
-        if proc.poll() is None:
-            os.killpg(proc.pid, signal.SIGKILL)
-            proc.wait()
-    return proc.returncode, err
+    """Run ``rock ARGS`` in a child under limits (tests/limited.py): (code, stderr)."""
+    done = run_rock(*args, memory=MEMORY_LIMIT, timeout=TIMEOUT)
+    return done.code, done.err
 
 
 def fifo(folder: Path, name: str) -> Path:

@@ -15,9 +15,6 @@ it.
 from __future__ import annotations
 
 import os
-import resource
-import signal
-import subprocess
 import sys
 from pathlib import Path
 
@@ -26,6 +23,7 @@ from click.testing import CliRunner
 
 from rockcli.cli.main import cli
 from rockcli.document.project import load_project
+from tests.limited import run_rock
 
 ROOT = Path(__file__).resolve().parents[2]
 ALTAR = ROOT / "examples" / "altar.toml"
@@ -44,34 +42,12 @@ pytestmark = pytest.mark.skipif(
 )
 
 
-def limited() -> None:
-    """In the child: cap its address space."""
-    resource.setrlimit(resource.RLIMIT_AS, (MEMORY_LIMIT, MEMORY_LIMIT))
-
-
 def rock(*args: str, cwd: Path) -> tuple[int, str, str]:
-    """``rock ARGS`` in a child whose environment holds :data:`SECRET`: (code, stdout,
-    stderr); a child still running at the timeout is killed and the test fails."""
-    env = {**os.environ, "PYTHONPATH": str(ROOT), "COLUMNS": "400", "F2_TOKEN": SECRET}
-    proc = subprocess.Popen(
-        [sys.executable, "-m", "rockcli", *args],
-        stdout=subprocess.PIPE,
-        stderr=subprocess.PIPE,
-        text=True,
-        env=env,
-        cwd=cwd,
-        preexec_fn=limited,
-        start_new_session=True,
-    )
-    try:
-        out, err = proc.communicate(timeout=TIMEOUT)
-    except subprocess.TimeoutExpired:
-        pytest.fail(f"rock {' '.join(args)} still running after {TIMEOUT:g} s (blocked?)")
-    finally:
-        if proc.poll() is None:
-            os.killpg(proc.pid, signal.SIGKILL)
-            proc.wait()
-    return proc.returncode, out, err
+    """``rock ARGS`` in a child whose environment holds :data:`SECRET` (tests/limited.py):
+    (code, stdout, stderr)."""
+    done = run_rock(*args, memory=MEMORY_LIMIT, timeout=TIMEOUT, cwd=cwd,
+                    env={"F2_TOKEN": SECRET}, columns=400)  # fmt: skip
+    return done.code, done.out, done.err
 
 
 def project(folder: Path, section: str) -> Path:

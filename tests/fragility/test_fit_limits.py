@@ -28,11 +28,6 @@ from __future__ import annotations
 
 import json
 import math
-import os
-import resource
-import signal
-import subprocess
-import sys
 import tempfile
 import time
 from pathlib import Path
@@ -46,6 +41,7 @@ from scipy import optimize, stats
 
 from rockcli.cli.main import cli
 from rockcli.fragility.data import IM_MAX, ROW_LIMIT, RUNS_MAX
+from tests.limited import run_rock
 
 ROOT = Path(__file__).resolve().parents[2]
 #: Seconds a small data set's fit and band may take (each takes well under 0.5 s).
@@ -120,28 +116,11 @@ def test_three_stripes_of_seven_are_the_binomial_maximum_likelihood() -> None:
 # --- F6 ------------------------------------------------------------------------------------
 
 
-def limited() -> None:
-    resource.setrlimit(resource.RLIMIT_AS, (MEMORY_LIMIT, MEMORY_LIMIT))
-
-
 def rock(*args: str) -> tuple[int, str, float]:
-    """``rock ARGS`` in a child under MEMORY_LIMIT and TIMEOUT (its own process group, killed
-    in a ``finally``): exit code, stderr, seconds."""
-    env = {**os.environ, "PYTHONPATH": str(ROOT), "COLUMNS": "200"}
-    started = time.perf_counter()
-    proc = subprocess.Popen(
-        [sys.executable, "-m", "rockcli", *args], stdout=subprocess.DEVNULL,
-        stderr=subprocess.PIPE, text=True, env=env, preexec_fn=limited, start_new_session=True,
-    )  # fmt: skip
-    try:
-        _, err = proc.communicate(timeout=TIMEOUT)
-    except subprocess.TimeoutExpired:
-        pytest.fail(f"rock {' '.join(args)} still running after {TIMEOUT:g} s")
-    finally:
-        if proc.poll() is None:
-            os.killpg(proc.pid, signal.SIGKILL)
-            proc.wait()
-    return proc.returncode, err, time.perf_counter() - started
+    """``rock ARGS`` in a child under MEMORY_LIMIT and TIMEOUT (tests/limited.py): exit code,
+    stderr, seconds."""
+    done = run_rock(*args, memory=MEMORY_LIMIT, timeout=TIMEOUT)
+    return done.code, done.err, done.seconds
 
 
 def ida_rows(count: int, censored: float = 0.4, seed: int = 1) -> str:
