@@ -121,7 +121,7 @@ def nothing_succeeded(
     first = results[todo[0].id]
     name = plan.study.records[todo[0].record].name
     return InputError(
-        f"no record of the study gave a result (each one's error is in {folder.cases}); "
+        f"no record of the study gave a result (each one's error is in {folder.cases_path}); "
         f"record {name}: {first.error}",
         file=plan.file,
     )

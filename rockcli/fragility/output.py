@@ -84,7 +84,6 @@ class Folder(StudyFolder):
         )
         self.plan = plan
         self.labels = [_label_cells(self.header, t.id, task_labels(plan, t)) for t in todo]
-        self.cases = self.cases_path
         self._seen: set[tuple[str, str]] = set()
         self._kept: list[list[str]] = []
 

@@ -24,6 +24,7 @@ from __future__ import annotations
 
 import csv
 import hashlib
+import io
 import json
 import os
 from collections.abc import Callable, Iterable, Iterator, Sequence
@@ -126,8 +127,6 @@ def whole_lines(lines: Sequence[bytes], written: int) -> int:
 
 def csv_text(rows: Iterable[Sequence[str]]) -> str:
     """CSV text of rows of cells (\\n line ends)."""
-    import io
-
     buffer = io.StringIO()
     csv.writer(buffer, lineterminator="\n").writerows(rows)
     return buffer.getvalue()

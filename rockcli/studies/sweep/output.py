@@ -15,7 +15,6 @@ from __future__ import annotations
 
 import csv
 import functools
-import io
 import json
 import math
 from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
@@ -27,6 +26,7 @@ from rockcli.outfile import replacing
 from rockcli.studies.folder.folder import (
     CASES_FILE,
     StudyFolder,
+    csv_text,
     digest_of,
     file_digest,
     record_identities,
@@ -167,23 +167,16 @@ def parse_cell(text: str, kind: type) -> Any:
     return kind(text)
 
 
-def csv_lines(rows: Iterable[Sequence[str]]) -> str:
-    """CSV text of rows of cells (\\n line ends)."""
-    buffer = io.StringIO()
-    csv.writer(buffer, lineterminator="\n").writerows(rows)
-    return buffer.getvalue()
-
-
 def row_lines(header: Sequence[str], rows: Iterable[Mapping[str, Any]]) -> list[bytes]:
     """Each row's line of cases.csv (its cells in the header's order, :func:`cell`)."""
-    return [csv_lines([[cell(row.get(c)) for c in header]]).encode("utf-8") for row in rows]
+    return [csv_text([[cell(row.get(c)) for c in header]]).encode("utf-8") for row in rows]
 
 
 @functools.lru_cache(maxsize=4096)
 def csv_field(text: str) -> str:
     """A cell as csv.writer writes it inside a row (quoted when it holds a comma, a quote or
     a line break), so that fields joined by commas are the writer's line."""
-    return csv_lines([[text, ""]])[:-2]
+    return csv_text([[text, ""]])[:-2]
 
 
 def column_lines(
@@ -254,7 +247,7 @@ class Output(StudyFolder):
         """Mark the study unfinished and rewrite cases.csv with the rows kept."""
         self._write_state(complete=False)
         self._rewrite(kept)
-        header = len(csv_lines([self.header]).encode("utf-8"))
+        header = len(csv_text([self.header]).encode("utf-8"))
         size = self.cases_path.stat().st_size
         self._blocks = [(min(kept), max(kept), header, size - header)] if kept else []
 
@@ -321,7 +314,7 @@ class Output(StudyFolder):
         if all(a[2] < b[2] for a, b in zip(blocks, blocks[1:], strict=False)):
             return  # written in order already
         with open(self.cases_path, "rb") as src, replacing(self.cases_path) as dst:
-            dst.write(csv_lines([self.header]).encode("utf-8"))
+            dst.write(csv_text([self.header]).encode("utf-8"))
             for _, _, offset, length in blocks:
                 src.seek(offset)
                 dst.write(src.read(length))
