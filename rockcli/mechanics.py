@@ -193,9 +193,8 @@ class Thrust:
     z: float
 
 
-# The table of a chain (Chain.table): a header (−n for n nodes per side: negative, so that the
-# engine tells a chain's table from a point table, whose first entry is a weight; the grid
-# step of side +1 and of side −1 [rad]), then side +1's n rows and side −1's n rows, each row
+# The table of a chain (Chain.table): a header (n nodes per side; the grid step of side +1 and
+# of side −1 [rad]), then side +1's n rows and side −1's n rows, each row
 # the five terms of the equation of motion at a = k·step and their five derivatives in a:
 # G = V′ [N·m], H = g·Γ [N·m per g], T (the thrusts' opening work) [N·m], M [kg·m²],
 # M′ [kg·m²/rad].
@@ -246,7 +245,7 @@ class Chain:
 
     def mirrored(self) -> Chain:
         """The chain with its two sides swapped."""
-        n = -int(self.table[CH_N])
+        n = int(self.table[CH_N])
         rows = self.table[CH_HEAD:]
         half = n * CH_COLS
         head = (self.table[CH_N], self.table[CH_STEP_NEG], self.table[CH_STEP_POS])
@@ -373,7 +372,7 @@ def chain_terms(table, s, a):
     trial stage past the impact) is extrapolated by the end interval's cubic. ``table`` is any
     flat sequence indexable by integers (a tuple, or a numpy array in the compiled engine).
     """
-    n = -int(table[CH_N])
+    n = int(table[CH_N])
     step = table[CH_STEP_POS] if s > 0 else table[CH_STEP_NEG]
     base = CH_HEAD if s > 0 else CH_HEAD + n * CH_COLS
     k, h00, h10, h01, h11 = hermite_weights(a, step, n)

@@ -101,6 +101,7 @@ _uplift_in_interval = njit(cache=CACHE, inline="always")(motion.uplift_in_interv
 _after_impact = njit(cache=CACHE, inline="always")(motion.velocity_after_impact)
 _spring_on_side = njit(cache=CACHE, inline="always")(motion.spring_on_side)
 _elongation_on_side = njit(cache=CACHE, inline="always")(motion.elongation_on_side)
+_collapse_rotation = njit(cache=CACHE, inline="always")(L.collapse_rotation)
 
 
 #: Numba IR inlining of the small helpers that take arrays: a call boundary costs atomic
@@ -168,61 +169,50 @@ DENSE_P = np.array(
 
 
 @njit(cache=CACHE, inline=INLINE)
-def _accel(a, s, om, ag, alpha, sin_alpha, cos_alpha, p2, lin, springs, alive, inv_i0, i0, points):
-    """θ̈ at rotation a = s·θ, velocity θ̇ = om, ground ag [g]: the free block's equation (paper
-    Eq. 2, unchanged bit for bit) or, with loads or thrusts (a non-empty point table), the
-    general one (motion.loaded_angular_acceleration), or a chain's (a table whose first entry
-    is negative: motion.chain_angular_acceleration)."""
-    if points.size > 0:
-        if points[0] < 0.0:
-            return _chain_rhs(a, s, om, ag, points, springs, alive)
-        return _loaded_rhs(a, s, om, ag, points, i0, springs, alive)
-    return _rhs(a, s, ag, alpha, sin_alpha, cos_alpha, p2, lin, springs, alive, inv_i0)
-
-
-@njit(cache=CACHE, inline=INLINE)
-def _free_accel(
-    a, s, om, ag, alpha, sin_alpha, cos_alpha, p2, lin, springs, alive, inv_i0, i0, points
-):
-    """θ̈ of the free block (paper Eq. 2): the step specialised without the loaded branch."""
-    return _rhs(a, s, ag, alpha, sin_alpha, cos_alpha, p2, lin, springs, alive, inv_i0)
-
-
-@njit(cache=CACHE, inline=INLINE)
-def _loaded_accel(
-    a, s, om, ag, alpha, sin_alpha, cos_alpha, p2, lin, springs, alive, inv_i0, i0, points
-):
-    """θ̈ with loads or thrusts (motion.loaded_angular_acceleration), same signature."""
-    return _loaded_rhs(a, s, om, ag, points, i0, springs, alive)
-
-
-@njit(cache=CACHE, inline=INLINE)
-def _chain_accel(
-    a, s, om, ag, alpha, sin_alpha, cos_alpha, p2, lin, springs, alive, inv_i0, i0, points
-):
-    """θ̈ of a chain (motion.chain_angular_acceleration), same signature."""
-    return _chain_rhs(a, s, om, ag, points, springs, alive)
-
-
-@njit(cache=CACHE, inline=INLINE)
-def _stage(th, om, s, ag, par, springs, alive, points):
-    """θ̈ at rotation θ, velocity θ̇ on side s under ground acceleration ag [g]."""
-    return _accel(
-        s * th,
-        s,
-        om,
-        ag,
+def _constants(par):
+    """The constants of the equation of motion, read once a step: (α, sin α, cos α, p²,
+    linearized, 1/I0, the own inertia the point table adds to, P_I0)."""
+    return (
         par[L.P_ALPHA],
         par[L.P_SIN_ALPHA],
         par[L.P_COS_ALPHA],
         par[L.P_P2],
         par[L.P_LINEAR] != 0.0,
-        springs,
-        alive,
         par[L.P_INV_I0],
         par[L.P_I0],
-        points,
     )
+
+
+@njit(cache=CACHE, inline=INLINE)
+def _free_accel(a, s, om, ag, c, springs, alive, points):
+    """θ̈ of the rectangle (paper Eq. 2, closed form) at rotation a = s·θ, velocity θ̇ = om,
+    ground ag [g]; c: :func:`_constants`."""
+    return _rhs(a, s, ag, c[0], c[1], c[2], c[3], c[4], springs, alive, c[5])
+
+
+@njit(cache=CACHE, inline=INLINE)
+def _loaded_accel(a, s, om, ag, c, springs, alive, points):
+    """θ̈ of a rigid body given by its point table (motion.loaded_angular_acceleration)."""
+    return _loaded_rhs(a, s, om, ag, points, c[6], springs, alive)
+
+
+@njit(cache=CACHE, inline=INLINE)
+def _chain_accel(a, s, om, ag, c, springs, alive, points):
+    """θ̈ of a chain read from its table (motion.chain_angular_acceleration)."""
+    return _chain_rhs(a, s, om, ag, points, springs, alive)
+
+
+@njit(cache=CACHE, inline=INLINE)
+def _stage(th, om, s, ag, par, springs, alive, points):
+    """θ̈ at rotation θ, velocity θ̇ on side s under ground acceleration ag [g], by the
+    equation of the input's kind (P_KIND)."""
+    kind = par[L.P_KIND]
+    c = _constants(par)
+    if kind == L.K_CHAIN:
+        return _chain_accel(s * th, s, om, ag, c, springs, alive, points)
+    if kind == L.K_POINTS:
+        return _loaded_accel(s * th, s, om, ag, c, springs, alive, points)
+    return _free_accel(s * th, s, om, ag, c, springs, alive, points)
 
 
 @njit(cache=CACHE, inline=INLINE)
@@ -235,132 +225,37 @@ def _stage_at(t, th, om, s, i, times, accel, pol, par, springs, alive, points):
 def _dp5_step(th, om, f1, h, s, g0, gs, par, springs, alive, points, k_th, k_om, accel):
     """One Dormand–Prince step of size h; fills the stage slopes; returns (θ, θ̇, θ̈, error norm).
 
-    The state is (θ, θ̇); slopes of θ are θ̇ at the stages, slopes of θ̇ are θ̈. The ground
-    acceleration is g0 + gs·τ at time τ into the step (linear inside a sample interval).
+    The state is (θ, θ̇); slopes of θ are θ̇ at the stages, slopes of θ̇ are θ̈ (``accel``, the
+    equation of the input's kind). The ground acceleration is g0 + gs·τ at time τ into the
+    step (linear inside a sample interval).
     Error norm: RMS of err/(atol + rtol·max(|y0|, |y1|)) (Hairer et al. II.4 (4.11)).
     """
-    alpha = par[L.P_ALPHA]
-    sin_alpha = par[L.P_SIN_ALPHA]
-    cos_alpha = par[L.P_COS_ALPHA]
-    p2 = par[L.P_P2]
-    lin = par[L.P_LINEAR] != 0.0
-    inv_i0 = par[L.P_INV_I0]
-    i0 = par[L.P_I0]
+    c = _constants(par)
     k_th[0] = om
     k_om[0] = f1
     w2, v2 = th + h * A21 * k_th[0], om + h * A21 * k_om[0]
     k_th[1] = v2
-    k_om[1] = accel(
-        s * w2,
-        s,
-        v2,
-        g0 + gs * (C2 * h),
-        alpha,
-        sin_alpha,
-        cos_alpha,
-        p2,
-        lin,
-        springs,
-        alive,
-        inv_i0,
-        i0,
-        points,
-    )
+    k_om[1] = accel(s * w2, s, v2, g0 + gs * (C2 * h), c, springs, alive, points)
     w3 = th + h * (A31 * k_th[0] + A32 * k_th[1])
     v3 = om + h * (A31 * k_om[0] + A32 * k_om[1])
     k_th[2] = v3
-    k_om[2] = accel(
-        s * w3,
-        s,
-        v3,
-        g0 + gs * (C3 * h),
-        alpha,
-        sin_alpha,
-        cos_alpha,
-        p2,
-        lin,
-        springs,
-        alive,
-        inv_i0,
-        i0,
-        points,
-    )
+    k_om[2] = accel(s * w3, s, v3, g0 + gs * (C3 * h), c, springs, alive, points)
     w4 = th + h * (A41 * k_th[0] + A42 * k_th[1] + A43 * k_th[2])
     v4 = om + h * (A41 * k_om[0] + A42 * k_om[1] + A43 * k_om[2])
     k_th[3] = v4
-    k_om[3] = accel(
-        s * w4,
-        s,
-        v4,
-        g0 + gs * (C4 * h),
-        alpha,
-        sin_alpha,
-        cos_alpha,
-        p2,
-        lin,
-        springs,
-        alive,
-        inv_i0,
-        i0,
-        points,
-    )
+    k_om[3] = accel(s * w4, s, v4, g0 + gs * (C4 * h), c, springs, alive, points)
     w5 = th + h * (A51 * k_th[0] + A52 * k_th[1] + A53 * k_th[2] + A54 * k_th[3])
     v5 = om + h * (A51 * k_om[0] + A52 * k_om[1] + A53 * k_om[2] + A54 * k_om[3])
     k_th[4] = v5
-    k_om[4] = accel(
-        s * w5,
-        s,
-        v5,
-        g0 + gs * (C5 * h),
-        alpha,
-        sin_alpha,
-        cos_alpha,
-        p2,
-        lin,
-        springs,
-        alive,
-        inv_i0,
-        i0,
-        points,
-    )
+    k_om[4] = accel(s * w5, s, v5, g0 + gs * (C5 * h), c, springs, alive, points)
     w6 = th + h * (A61 * k_th[0] + A62 * k_th[1] + A63 * k_th[2] + A64 * k_th[3] + A65 * k_th[4])
     v6 = om + h * (A61 * k_om[0] + A62 * k_om[1] + A63 * k_om[2] + A64 * k_om[3] + A65 * k_om[4])
     k_th[5] = v6
-    k_om[5] = accel(
-        s * w6,
-        s,
-        v6,
-        g0 + gs * h,
-        alpha,
-        sin_alpha,
-        cos_alpha,
-        p2,
-        lin,
-        springs,
-        alive,
-        inv_i0,
-        i0,
-        points,
-    )
+    k_om[5] = accel(s * w6, s, v6, g0 + gs * h, c, springs, alive, points)
     th1 = th + h * (B1 * k_th[0] + B3 * k_th[2] + B4 * k_th[3] + B5 * k_th[4] + B6 * k_th[5])
     om1 = om + h * (B1 * k_om[0] + B3 * k_om[2] + B4 * k_om[3] + B5 * k_om[4] + B6 * k_om[5])
     k_th[6] = om1
-    f7 = accel(
-        s * th1,
-        s,
-        om1,
-        g0 + gs * h,
-        alpha,
-        sin_alpha,
-        cos_alpha,
-        p2,
-        lin,
-        springs,
-        alive,
-        inv_i0,
-        i0,
-        points,
-    )
+    f7 = accel(s * th1, s, om1, g0 + gs * h, c, springs, alive, points)
     k_om[6] = f7
     rtol = par[L.P_RTOL]
     atol = par[L.P_ATOL]
@@ -374,6 +269,21 @@ def _dp5_step(th, om, f1, h, s, g0, gs, par, springs, alive, points, k_th, k_om,
     sc_om = atol + rtol * max(abs(om), abs(om1))
     err = math.sqrt(0.5 * ((e_th / sc_th) ** 2 + (e_om / sc_om) ** 2))
     return th1, om1, f7, err
+
+
+@njit(cache=CACHE, inline=INLINE)
+def _step_of_kind(th, om, f, h, s, g0, gs, par, springs, alive, points, k_th, k_om):
+    """:func:`_dp5_step` specialised for the input's kind (P_KIND): one compiled step each, so
+    the rectangle's stays lean."""
+    kind = par[L.P_KIND]
+    if kind == L.K_CHAIN:
+        return _dp5_step(th, om, f, h, s, g0, gs, par, springs, alive, points, k_th, k_om,
+                         _chain_accel)  # fmt: skip
+    if kind == L.K_POINTS:
+        return _dp5_step(th, om, f, h, s, g0, gs, par, springs, alive, points, k_th, k_om,
+                         _loaded_accel)  # fmt: skip
+    return _dp5_step(th, om, f, h, s, g0, gs, par, springs, alive, points, k_th, k_om,
+                     _free_accel)  # fmt: skip
 
 
 @njit(cache=CACHE, inline=INLINE)
@@ -470,7 +380,7 @@ def _event_levels(s, par, springs, alive, levels, kinds):
     n_rows = springs.shape[0]
     base = 2 * n_rows + 1
     n = 0
-    levels[n] = par[L.P_OVERTURN]
+    levels[n] = _collapse_rotation(par, s)
     kinds[n] = -1
     n += 1
     n_down = 0
@@ -524,7 +434,7 @@ def _level_bounds(s, par, springs, alive):
     a live member's slack point, +inf while a member is on its yield plateau (its turning point
     is an event, so a step going down must be scanned).
     """
-    lowest = par[L.P_OVERTURN]
+    lowest = _collapse_rotation(par, s)
     highest = 0.0
     col = motion.side_index(s)
     for j in range(springs.shape[0]):
@@ -793,6 +703,18 @@ def _pass_samples(
 
 
 @njit(cache=CACHE)
+def _tail_samples(i, t0, t1, th, om, h, k_th, k_om, q_th, q_om, unscanned, times, s, hist_th,
+                  hist_om, hist_f, springs, alive, lin):  # fmt: skip
+    """:func:`_pass_samples` after a step of the free tail with no event; ``unscanned``: the
+    step was not scanned, so its dense output is made first when the history is kept."""
+    if hist_th.size > 1 and unscanned:
+        _dense_coefficients(k_th, q_th)
+        _dense_coefficients(k_om, q_om)
+    return _pass_samples(i, t0, t1, th, om, h, q_th, q_om, times, s, hist_th, hist_om, hist_f,
+                         springs, alive, lin)  # fmt: skip
+
+
+@njit(cache=CACHE)
 def integrate(
     times,
     accel,
@@ -836,64 +758,30 @@ def ground_slopes(times, accel):
 
 
 @njit(cache=CACHE)
-def integrate_sloped(
-    times,
-    accel,
-    slopes,
-    pol,
-    par,
-    springs,
-    points,
-    alive,
-    hist_th,
-    hist_om,
-    hist_f,
-    out_f,
-    out_i,
-    spring_out,
-):
+def integrate_sloped(times, accel, slopes, pol, par, springs, points, alive, hist_th, hist_om,
+                     hist_f, out_f, out_i, spring_out):  # fmt: skip
     """:func:`integrate` with the ground's slopes given (ground_slopes of times and accel, or
-    of a longer grid of which times is a prefix)."""
+    of a longer grid of which times is a prefix). The driver: the next uplift from rest
+    (:func:`_rest_until_uplift`), steps (:func:`_step_of_kind`) scanned for events
+    (:func:`_scan_sampled`) and the events (:func:`_apply_event`)."""
     n = times.size
-    k_th = np.empty(7)
-    k_om = np.empty(7)
-    q_th = np.empty(4)
-    q_om = np.empty(4)
-    n_rows = springs.shape[0]
-    levels = np.empty(3 * n_rows + 1)
-    kinds = np.empty(3 * n_rows + 1, dtype=np.int64)
-    memory = False
-    for r in range(n_rows):
-        if springs[r, motion.COL_MEMORY] != 0.0:
-            memory = True
-    out_f[L.O_MAX_A] = 0.0
-    out_f[L.O_THETA_MAX] = 0.0
-    out_f[L.O_THETA_MIN] = 0.0
-    out_f[L.O_MAX_OMEGA] = 0.0
-    out_f[L.O_T_OVERTURN] = np.nan
-    out_f[L.O_T_UPLIFT] = np.nan
-    out_f[L.O_IMPACT_LOSS] = 0.0
-    for r in range(L.N_INT_OUT):
-        out_i[r] = 0
+    k_th, k_om = np.empty(7), np.empty(7)  # the stages' slopes of θ and θ̇
+    q_th, q_om = np.empty(4), np.empty(4)  # their dense output
+    levels = np.empty(3 * springs.shape[0] + 1)
+    kinds = np.empty(3 * springs.shape[0] + 1, dtype=np.int64)
+    memory = _has_memory(springs)
+    _reset_outputs(out_f, out_i)
     lin = par[L.P_LINEAR] != 0.0
-    loaded = points.size > 0
-    chain = loaded and points[0] < 0.0
-    max_events = int(par[L.P_MAX_EVENTS])
     max_steps = int(par[L.P_MAX_STEPS])
-    t = times[0]
-    i = 0
-    th = par[L.P_THETA0]
-    om = par[L.P_OMEGA0]
+    t, i = times[0], 0
+    th, om = par[L.P_THETA0], par[L.P_OMEGA0]
     s = _initial_side(th, om)
     f = 0.0
     h = times[1] - times[0]
     _store(hist_th, hist_om, hist_f, 0, 0, 0.0, 0.0, 0, springs, alive, lin)
     if s != 0:
-        out_f[L.O_T_UPLIFT] = t
-        _update_peak(s * th, s, out_f, spring_out, springs, alive, par[L.P_LINEAR] != 0.0)
-        f = _stage_at(t, th, om, s, i, times, accel, pol, par, springs, alive, points)
-        if hist_th.size > 1:
-            _store(hist_th, hist_om, hist_f, 0, 0, th, om, s, springs, alive, lin)
+        f = _start_moving(t, th, om, s, times, accel, pol, par, springs, alive, points,
+                          hist_th, hist_om, hist_f, out_f, spring_out)  # fmt: skip
     status = L.STATUS_COMPLETED
     nan_rejects = 0
     lowest, highest = _level_bounds(s, par, springs, alive)
@@ -906,72 +794,43 @@ def integrate_sloped(
             t = times[n - 1]
             break
         if s == 0:
-            thr_pos, thr_neg = _uplift_thresholds(par, springs, alive, loaded, memory)
-            tau, side, j = _next_uplift(t, i, times, accel, pol, par, thr_pos, thr_neg)
-            _store(hist_th, hist_om, hist_f, i + 1, j, 0.0, 0.0, 0, springs, alive, lin)
-            i = j
-            if side == 0:
-                t = times[n - 1]
-                break
-            t = tau
-            s = side
+            t, i, s = _rest_until_uplift(t, i, times, accel, pol, par, springs, alive, memory,
+                                         hist_th, hist_om, hist_f, out_f, out_i)  # fmt: skip
             th = 0.0
             om = 0.0
-            out_i[L.I_UPLIFTS] += 1
-            if out_i[L.I_UPLIFTS] == 1:
-                out_f[L.O_T_UPLIFT] = tau
+            if s == 0:
+                break
             f = _stage_at(t, th, om, s, i, times, accel, pol, par, springs, alive, points)
             lowest, highest = _level_bounds(s, par, springs, alive)
             continue
-        if not math.isfinite(f):  # θ̈ is NaN when θ is; a bad θ̇ shows in the error estimate
-            status = L.STATUS_NONFINITE
-            out_i[L.I_NONFINITE] = _nonfinite_quantity(
-                t, th, om, f, s, i, times, accel, pol, par, springs, alive
-            )
-            break
-        if out_i[L.I_STEPS] + out_i[L.I_REJECTED] >= max_steps:
-            status = L.STATUS_STEP_LIMIT
+        if not math.isfinite(f) or out_i[L.I_STEPS] + out_i[L.I_REJECTED] >= max_steps:
+            status = _stop_status(t, th, om, f, s, i, times, accel, pol, par, springs, alive, out_i)
             break
         # In the free tail (ground at rest) the step runs to the end, not to the next sample.
         last = n - 1 if i >= free_from else i + 1
         t_next = times[last]
         gap = t_next - t
-        if gap <= GAP_FRACTION * (t_next - times[i]):
+        if gap <= GAP_FRACTION * (t_next - times[i]):  # a rounding remnant: to the sample
+            f = _at_sample(th, om, s, i, last, times, accel, pol, par, springs, alive, points,
+                           hist_th, hist_om, hist_f)  # fmt: skip
             t = t_next
-            if hist_th.size > 1:
-                _store(hist_th, hist_om, hist_f, i + 1, last, th, om, s, springs, alive, lin)
             i = last
-            f = _stage_at(t, th, om, s, i, times, accel, pol, par, springs, alive, points)
             continue
         h_try = min(h, gap)
-        clipped = h_try < h
         gs = pol * slopes[i]
         g0 = pol * accel[i] + gs * (t - times[i])
-        if chain:  # one specialisation of the step each: the free one stays lean
-            th1, om1, f1, err = _dp5_step(
-                th, om, f, h_try, s, g0, gs, par, springs, alive, points, k_th, k_om, _chain_accel
-            )
-        elif loaded:
-            th1, om1, f1, err = _dp5_step(
-                th, om, f, h_try, s, g0, gs, par, springs, alive, points, k_th, k_om, _loaded_accel
-            )
-        else:
-            th1, om1, f1, err = _dp5_step(
-                th, om, f, h_try, s, g0, gs, par, springs, alive, points, k_th, k_om, _free_accel
-            )
+        th1, om1, f1, err = _step_of_kind(
+            th, om, f, h_try, s, g0, gs, par, springs, alive, points, k_th, k_om
+        )
         if not err <= 1.0:  # too large, or NaN
             out_i[L.I_REJECTED] += 1
-            if err > 1.0:
-                h = h_try * max(MIN_FACTOR, SAFETY * err**ERROR_EXPONENT)
-                continue
-            nan_rejects += 1
+            h, nan_rejects = _after_rejection(err, h_try, nan_rejects)
             if nan_rejects > NONFINITE_RETRIES:
                 status = L.STATUS_NONFINITE
                 out_i[L.I_NONFINITE] = _nonfinite_in_step(
                     t, th, om, f, s, i, times, accel, pol, par, springs, alive, g0 + gs * h_try
                 )
                 break
-            h = h_try * MIN_FACTOR
             continue
         nan_rejects = 0
         trend = _stage_trend(k_th, s)
@@ -981,41 +840,21 @@ def integrate_sloped(
         else:
             _dense_coefficients(k_th, q_th)
             _dense_coefficients(k_om, q_om)
-            x_ev, kind, row = _scan_sampled(
-                th,
-                om,
-                th1,
-                h_try,
-                q_th,
-                q_om,
-                s,
-                par,
-                springs,
-                alive,
-                out_f,
-                spring_out,
-                levels,
-                kinds,
-            )
+            x_ev, kind, row = _scan_sampled(th, om, th1, h_try, q_th, q_om, s, par, springs,
+                                            alive, out_f, spring_out, levels, kinds)  # fmt: skip
         if kind == L.EV_UNRESOLVED and h_try > UNRESOLVED_MIN_STEP:
             out_i[L.I_REJECTED] += 1
             h = h_try * UNRESOLVED_FACTOR
             continue
         out_i[L.I_STEPS] += 1
-        if not (clipped and err <= KEEP_STEP_ERROR):
-            h = h_try * (
-                MAX_FACTOR if err == 0.0 else min(MAX_FACTOR, SAFETY * err**ERROR_EXPONENT)
-            )
+        if not (h_try < h and err <= KEEP_STEP_ERROR):  # a clipped step keeps its size
+            h = h_try * _growth(err)
         if kind == L.EV_NONE:
             t1 = t_next if h_try == gap else t + h_try
             if last > i + 1:  # the free tail: the samples the step passed
-                if hist_th.size > 1 and x_ev > 1.0:  # the scan was skipped: no dense output
-                    _dense_coefficients(k_th, q_th)
-                    _dense_coefficients(k_om, q_om)
-                i = _pass_samples(
-                    i, t, t1, th, om, h_try, q_th, q_om, times, s, hist_th, hist_om, hist_f,
-                    springs, alive, lin,
-                )  # fmt: skip
+                i = _tail_samples(i, t, t1, th, om, h_try, k_th, k_om, q_th, q_om, x_ev > 1.0,
+                                  times, s, hist_th, hist_om, hist_f, springs, alive,
+                                  lin)  # fmt: skip
             t = t1
             th, om, f = th1, om1, f1
             out_f[L.O_MAX_OMEGA] = max(out_f[L.O_MAX_OMEGA], abs(om))
@@ -1026,64 +865,172 @@ def integrate_sloped(
             continue
         t_ev = t + x_ev * h_try
         if last > i + 1:  # the free tail: the samples before the event
-            i = _pass_samples(
-                i, t, t_ev, th, om, h_try, q_th, q_om, times, s, hist_th, hist_om, hist_f,
-                springs, alive, lin,
-            )  # fmt: skip
+            i = _pass_samples(i, t, t_ev, th, om, h_try, q_th, q_om, times, s, hist_th, hist_om,
+                              hist_f, springs, alive, lin)  # fmt: skip
         om_ev = _dense(x_ev, om, h_try, q_om)
         th_ev = _dense(x_ev, th, h_try, q_th)
         out_f[L.O_MAX_OMEGA] = max(out_f[L.O_MAX_OMEGA], abs(om_ev))
-        t = t_ev
-        if kind == L.EV_OVERTURN:
-            _update_peak(par[L.P_OVERTURN], s, out_f, spring_out, springs, alive, lin)
-            out_f[L.O_T_OVERTURN] = t_ev
-            th = s * par[L.P_OVERTURN]
-            om = om_ev
-            status = L.STATUS_OVERTURNED
-            break
-        if kind == L.EV_FAIL:
-            _update_peak(s * th_ev, s, out_f, spring_out, springs, alive, lin)
-            _lose(springs, alive, row, s, s * th_ev, lin, spring_out, L.S_ENERGY)
-            lowest, highest = _level_bounds(s, par, springs, alive)
-            spring_out[row, L.S_T_FAIL] = t_ev
-            th = th_ev
-            om = om_ev
-            f = _stage_at(t, th, om, s, i, times, accel, pol, par, springs, alive, points)
-            continue
-        if kind >= L.EV_LAW_UP:
-            a_ev = s * th_ev
-            if kind == L.EV_UNLOAD:
-                a_ev = max(a_ev, 0.0)
-            _update_peak(a_ev, s, out_f, spring_out, springs, alive, lin)
-            _apply_law_event(kind, row, s, a_ev, t_ev, springs, alive, spring_out, lin)
-            lowest, highest = _level_bounds(s, par, springs, alive)
-            th = th_ev
-            om = om_ev
-            f = _stage_at(t, th, om, s, i, times, accel, pol, par, springs, alive, points)
-            continue
-        if kind == L.EV_UNRESOLVED:
-            # An excursion shorter than UNRESOLVED_MIN_STEP: rest, and look for the next uplift
-            # after it, so that the run always moves on.
-            out_f[L.O_IMPACT_LOSS] += 0.5 * _inertia(par, s) * om * om
-            th, om, s = 0.0, 0.0, 0
-            t = min(t + UNRESOLVED_MIN_STEP, t_next)
-            continue
-        # impact at θ = 0
-        out_i[L.I_IMPACTS] += 1
-        e = par[L.P_E] if s > 0 else par[L.P_E_NEG]
-        before = 0.5 * _inertia(par, s) * om_ev * om_ev
-        om, s = _after_impact(om_ev, s, e, int(par[L.P_ONE_SIDED]), par[L.P_REBOUND])
-        th = 0.0
-        if abs(om) < par[L.P_REST]:
-            s = 0
-            om = 0.0
-        out_f[L.O_IMPACT_LOSS] += before - 0.5 * _inertia(par, s) * om * om
-        if s != 0 and out_i[L.I_IMPACTS] >= max_events:
-            status = L.STATUS_EVENT_LIMIT
+        t, th, om, s, status = _apply_event(kind, row, t_ev, th_ev, om_ev, om, s, t_next, par,
+                                            springs, alive, out_f, out_i, spring_out)  # fmt: skip
+        if status != L.STATUS_COMPLETED:
             break
         if s != 0:
             f = _stage_at(t, th, om, s, i, times, accel, pol, par, springs, alive, points)
             lowest, highest = _level_bounds(s, par, springs, alive)
+    _finish(t, th, s, status, memory, par, springs, alive, out_f, out_i, spring_out)
+
+
+@njit(cache=CACHE)
+def _stop_status(t, th, om, f, s, i, times, accel, pol, par, springs, alive, out_i):
+    """The status of a run stopped before a step: STATUS_NONFINITE when θ̈ is not finite (its
+    cause in I_NONFINITE: θ̈ is NaN when θ is; a bad θ̇ shows in the error estimate), else
+    STATUS_STEP_LIMIT (the step budget is spent)."""
+    if not math.isfinite(f):
+        out_i[L.I_NONFINITE] = _nonfinite_quantity(
+            t, th, om, f, s, i, times, accel, pol, par, springs, alive
+        )
+        return L.STATUS_NONFINITE
+    return L.STATUS_STEP_LIMIT
+
+
+@njit(cache=CACHE)
+def _at_sample(th, om, s, i, last, times, accel, pol, par, springs, alive, points, hist_th,
+               hist_om, hist_f):  # fmt: skip
+    """The state (θ, θ̇) moved from interval i to sample ``last`` without a step (the gap is a
+    rounding remnant): the history kept up to it; returns θ̈ there."""
+    if hist_th.size > 1:
+        lin = par[L.P_LINEAR] != 0.0
+        _store(hist_th, hist_om, hist_f, i + 1, last, th, om, s, springs, alive, lin)
+    return _stage_at(times[last], th, om, s, last, times, accel, pol, par, springs, alive, points)
+
+
+@njit(cache=CACHE)
+def _has_memory(springs):
+    """True when a restrainer's force depends on its history (motion.COL_MEMORY)."""
+    for r in range(springs.shape[0]):
+        if springs[r, motion.COL_MEMORY] != 0.0:
+            return True
+    return False
+
+
+@njit(cache=CACHE)
+def _reset_outputs(out_f, out_i):
+    """The run's outputs before its start: no peak, no uplift, no overturning, no count."""
+    out_f[L.O_MAX_A] = 0.0
+    out_f[L.O_THETA_MAX] = 0.0
+    out_f[L.O_THETA_MIN] = 0.0
+    out_f[L.O_MAX_OMEGA] = 0.0
+    out_f[L.O_T_OVERTURN] = np.nan
+    out_f[L.O_T_UPLIFT] = np.nan
+    out_f[L.O_IMPACT_LOSS] = 0.0
+    for r in range(L.N_INT_OUT):
+        out_i[r] = 0
+
+
+@njit(cache=CACHE)
+def _start_moving(t, th, om, s, times, accel, pol, par, springs, alive, points, hist_th,
+                  hist_om, hist_f, out_f, spring_out):  # fmt: skip
+    """A run that starts in motion (θ0 or θ̇0 given): its uplift time and first peak, its
+    history's first sample; returns θ̈ there."""
+    lin = par[L.P_LINEAR] != 0.0
+    out_f[L.O_T_UPLIFT] = t
+    _update_peak(s * th, s, out_f, spring_out, springs, alive, lin)
+    f = _stage_at(t, th, om, s, 0, times, accel, pol, par, springs, alive, points)
+    if hist_th.size > 1:
+        _store(hist_th, hist_om, hist_f, 0, 0, th, om, s, springs, alive, lin)
+    return f
+
+
+@njit(cache=CACHE)
+def _rest_until_uplift(t, i, times, accel, pol, par, springs, alive, memory, hist_th, hist_om,
+                       hist_f, out_f, out_i):  # fmt: skip
+    """At rest from time t in interval i: the history at rest up to the next uplift, counted
+    (its time kept if the first); returns (τ, interval, side), side 0 when the record ends
+    first (τ then its last time)."""
+    lin = par[L.P_LINEAR] != 0.0
+    loaded = par[L.P_KIND] != L.K_RECTANGLE
+    thr_pos, thr_neg = _uplift_thresholds(par, springs, alive, loaded, memory)
+    tau, side, j = _next_uplift(t, i, times, accel, pol, par, thr_pos, thr_neg)
+    _store(hist_th, hist_om, hist_f, i + 1, j, 0.0, 0.0, 0, springs, alive, lin)
+    if side == 0:
+        return times[times.size - 1], j, 0
+    out_i[L.I_UPLIFTS] += 1
+    if out_i[L.I_UPLIFTS] == 1:
+        out_f[L.O_T_UPLIFT] = tau
+    return tau, j, side
+
+
+@njit(cache=CACHE, inline=INLINE)
+def _growth(err):
+    """The controller's factor on the next step after an accepted one of error norm ``err``
+    (Hairer et al. II.4): SAFETY·err^(−1/5), at most MAX_FACTOR."""
+    return MAX_FACTOR if err == 0.0 else min(MAX_FACTOR, SAFETY * err**ERROR_EXPONENT)
+
+
+@njit(cache=CACHE, inline=INLINE)
+def _after_rejection(err, h_try, nan_rejects):
+    """(next step, NaN rejections in a row) after a step whose error is too large or NaN."""
+    if err > 1.0:
+        return h_try * max(MIN_FACTOR, SAFETY * err**ERROR_EXPONENT), nan_rejects
+    return h_try * MIN_FACTOR, nan_rejects + 1
+
+
+@njit(cache=CACHE)
+def _apply_event(kind, row, t, th, om, om_start, s, t_next, par, springs, alive, out_f, out_i,
+                 spring_out):  # fmt: skip
+    """The event ``kind`` (EV_*; ``row`` its restrainer) at time t and state (θ, θ̇) on side s:
+    overturning, a restrainer lost, a member law's change, an unresolved excursion (rest, the
+    kinetic energy at the step's start θ̇ = om_start lost), or the impact. Returns (t, θ, θ̇,
+    side, status): status COMPLETED while the run goes on."""
+    lin = par[L.P_LINEAR] != 0.0
+    if kind == L.EV_OVERTURN:
+        collapse = _collapse_rotation(par, s)
+        _update_peak(collapse, s, out_f, spring_out, springs, alive, lin)
+        out_f[L.O_T_OVERTURN] = t
+        return t, s * collapse, om, s, L.STATUS_OVERTURNED
+    if kind == L.EV_FAIL:
+        _update_peak(s * th, s, out_f, spring_out, springs, alive, lin)
+        _lose(springs, alive, row, s, s * th, lin, spring_out, L.S_ENERGY)
+        spring_out[row, L.S_T_FAIL] = t
+        return t, th, om, s, L.STATUS_COMPLETED
+    if kind >= L.EV_LAW_UP:
+        a_ev = s * th
+        if kind == L.EV_UNLOAD:
+            a_ev = max(a_ev, 0.0)
+        _update_peak(a_ev, s, out_f, spring_out, springs, alive, lin)
+        _apply_law_event(kind, row, s, a_ev, t, springs, alive, spring_out, lin)
+        return t, th, om, s, L.STATUS_COMPLETED
+    if kind == L.EV_UNRESOLVED:
+        # An excursion shorter than UNRESOLVED_MIN_STEP: rest, and look for the next uplift
+        # after it, so that the run always moves on.
+        out_f[L.O_IMPACT_LOSS] += 0.5 * _inertia(par, s) * om_start * om_start
+        return min(t + UNRESOLVED_MIN_STEP, t_next), 0.0, 0.0, 0, L.STATUS_COMPLETED
+    return _impact(t, om, s, par, out_f, out_i)
+
+
+@njit(cache=CACHE)
+def _impact(t, om, s, par, out_f, out_i):
+    """The impact at θ = 0 with velocity θ̇ = om on side s: the velocity after it (or rest
+    under P_REST), its energy loss; (t, θ, θ̇, side, status), status EVENT_LIMIT at the most
+    impacts."""
+    out_i[L.I_IMPACTS] += 1
+    e = par[L.P_E] if s > 0 else par[L.P_E_NEG]
+    before = 0.5 * _inertia(par, s) * om * om
+    om, s = _after_impact(om, s, e, int(par[L.P_ONE_SIDED]), par[L.P_REBOUND])
+    if abs(om) < par[L.P_REST]:
+        s = 0
+        om = 0.0
+    out_f[L.O_IMPACT_LOSS] += before - 0.5 * _inertia(par, s) * om * om
+    if s != 0 and out_i[L.I_IMPACTS] >= int(par[L.P_MAX_EVENTS]):
+        return t, 0.0, om, s, L.STATUS_EVENT_LIMIT
+    return t, 0.0, om, s, L.STATUS_COMPLETED
+
+
+@njit(cache=CACHE)
+def _finish(t, th, s, status, memory, par, springs, alive, out_f, out_i, spring_out):
+    """The run's end at time t: the last peak, a yield plateau in progress unloaded, a
+    non-finite peak force made the run's status, the end time and the status."""
+    lin = par[L.P_LINEAR] != 0.0
     if s != 0 and status != L.STATUS_OVERTURNED:  # a NaN state updates no peak
         _update_peak(s * th, s, out_f, spring_out, springs, alive, lin)
     if memory and s != 0 and status != L.STATUS_NONFINITE:

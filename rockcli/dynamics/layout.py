@@ -2,6 +2,8 @@
 
 # Parameter vector layout (packed by simulate.pack_parameters).
 P_ALPHA, P_P2, P_E, P_ONE_SIDED, P_FREE_SIDE, P_REBOUND, P_LINEAR = 0, 1, 2, 3, 4, 5, 6
+# P_OVERTURN: the rotation a = s·θ at which a run on side +1 counts as overturned [rad] (side
+# −1: P_OVERTURN_NEG; the rectangle packs the same number twice).
 P_OVERTURN, P_RTOL, P_ATOL, P_REST, P_INV_I0, P_MAX_EVENTS, P_MAX_STEPS = 7, 8, 9, 10, 11, 12, 13
 P_THETA0, P_OMEGA0 = 14, 15  # initial state (free-rocking tests); 0, 0 = at rest
 P_SIN_ALPHA, P_COS_ALPHA = 16, 17
@@ -15,7 +17,21 @@ P_PRE_SCALE_POS, P_PRE_SCALE_NEG, P_INERTIA_POS, P_INERTIA_NEG = 22, 23, 24, 25
 # Index of the first sample of the free tail (the ground at rest from there on): steps past it
 # are chosen by the error controller alone, not clipped at the samples; 0: every step clipped.
 P_FREE_FROM = 26
-N_PARAMS = 27
+# What the engine integrates (K_* below), and the collapse rotation of side −1 [rad].
+P_KIND, P_OVERTURN_NEG = 27, 28
+N_PARAMS = 29
+
+# Kinds of the engine's input (P_KIND), each with its own equation of motion: the paper's
+# rectangle (Eq. 2, closed form; no point table), a rigid body with loads or thrusts (the
+# point table of mechanics.point_table), a chain of bodies (the table of mechanics.Chain).
+K_RECTANGLE, K_POINTS, K_CHAIN = 0, 1, 2
+
+
+def collapse_rotation(par, s):
+    """The rotation a = s·θ at which a run on side s counts as overturned [rad] (both engines;
+    the fast one compiles this very function)."""
+    return par[P_OVERTURN] if s > 0 else par[P_OVERTURN_NEG]
+
 
 # Float outputs.
 O_MAX_A, O_THETA_MAX, O_THETA_MIN, O_MAX_OMEGA, O_T_OVERTURN, O_T_UPLIFT, O_T_END = range(7)

@@ -81,7 +81,7 @@ def _acceleration(phase: _Phase, ag: float, th: float, om: float) -> float:
             return float(
                 motion.chain_balance(g, h, t, m, mp, a, phase.s, om, ag, phase.springs, phase.alive)
             )
-        if phase.points.size:
+        if par[L.P_KIND] == L.K_POINTS:
             return float(
                 motion.loaded_angular_acceleration(
                     phase.s * th,
@@ -148,7 +148,7 @@ def _events(phase: _Phase):
     impact.direction = -1  # type: ignore[attr-defined]
 
     def overturn(t: float, y: np.ndarray) -> float:
-        return s * y[0] - phase.par[L.P_OVERTURN]
+        return s * y[0] - L.collapse_rotation(phase.par, s)
 
     overturn.terminal = True  # type: ignore[attr-defined]
     overturn.direction = 1  # type: ignore[attr-defined]
@@ -295,7 +295,7 @@ def _uplift_thresholds(phase: _Phase) -> tuple[float, float]:
     par = phase.par
     thr = par[L.P_ALPHA] if phase.lin else math.tan(par[L.P_ALPHA])
     thr_pos, thr_neg = (
-        (par[L.P_UPLIFT_POS], par[L.P_UPLIFT_NEG]) if phase.points.size else (thr, thr)
+        (par[L.P_UPLIFT_POS], par[L.P_UPLIFT_NEG]) if par[L.P_KIND] != L.K_RECTANGLE else (thr, thr)
     )
     if phase.memory:
         thr_pos += motion.rest_moment(phase.springs, phase.alive, 1) * par[L.P_PRE_SCALE_POS]
@@ -346,7 +346,7 @@ def _apply_event(phase, t, y, kind, row, out_f, out_i, spring_out):
     par = phase.par
     kind, row = row
     if kind == K_OVERTURN:
-        _peak(phase, par[L.P_OVERTURN], out_f, spring_out)
+        _peak(phase, L.collapse_rotation(par, phase.s), out_f, spring_out)
         out_f[L.O_T_OVERTURN] = t
         out_f[L.O_T_END] = t
         return L.STATUS_OVERTURNED
@@ -489,7 +489,11 @@ def _integrate(
 def _close_plateaus(phase: _Phase, status: int, spring_out: np.ndarray) -> None:
     """A run that ends on a yield plateau: the member unloads where the run ended."""
     if phase.memory and phase.s != 0 and status != L.STATUS_NONFINITE:
-        a = phase.par[L.P_OVERTURN] if status == L.STATUS_OVERTURNED else phase.s * phase.th
+        a = (
+            L.collapse_rotation(phase.par, phase.s)
+            if status == L.STATUS_OVERTURNED
+            else phase.s * phase.th
+        )
         motion.unload(phase.springs, phase.alive, phase.s, a, phase.lin, spring_out, L.S_ENERGY)
 
 

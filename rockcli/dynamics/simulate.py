@@ -136,9 +136,10 @@ def pack_parameters(block: Block, settings: SolverSettings, rtol: float, atol: f
     par[L.P_FREE_SIDE] = float(block.free_side)
     par[L.P_REBOUND] = block.rebound
     par[L.P_LINEAR] = 1.0 if block.linearized else 0.0
-    par[L.P_OVERTURN] = settings.overturn_angle
+    par[L.P_KIND] = engine_kind(block)
+    par[L.P_OVERTURN] = par[L.P_OVERTURN_NEG] = settings.overturn_angle
     if block.chain is not None:  # a chain collapses where its table ends
-        par[L.P_OVERTURN] = min(settings.overturn_angle, block.chain.end)
+        par[L.P_OVERTURN] = par[L.P_OVERTURN_NEG] = min(settings.overturn_angle, block.chain.end)
     par[L.P_RTOL] = rtol
     par[L.P_ATOL] = atol
     par[L.P_REST] = settings.rest_velocity
@@ -154,6 +155,14 @@ def pack_parameters(block: Block, settings: SolverSettings, rtol: float, atol: f
     ):
         par[scale], par[inertia] = rest_terms(block, s)
     return par
+
+
+def engine_kind(block: Block) -> int:
+    """The equation the engine integrates (layout K_*): the rectangle's closed form, a rigid
+    body's point table, or a chain's table."""
+    if block.chain is not None:
+        return L.K_CHAIN
+    return L.K_POINTS if block.loaded else L.K_RECTANGLE
 
 
 def rest_terms(block: Block, s: int) -> tuple[float, float]:

@@ -162,7 +162,7 @@ def tabulate(plus: ChainSide, minus: ChainSide) -> Chain:
         dg, _, dt, _, _ = slopes(side, 0.0, mp)
         return dg - dt
 
-    table = (-float(NODES), step, step, *rows(plus, end), *rows(minus, end))
+    table = (float(NODES), step, step, *rows(plus, end), *rows(minus, end))
     assert len(table) == CH_HEAD + 2 * NODES * 10
     return Chain(
         table=table,
