@@ -193,7 +193,7 @@ class Thrust:
     z: float
 
 
-# The table of a chain (Chain.table): a header (n nodes per side; the grid step of side +1 and
+# The table of a chain (ChainTable.table): a header (n nodes per side; the grid step of side +1 and
 # of side −1 [rad]), then side +1's n rows and side −1's n rows, each row
 # the five terms of the equation of motion at a = k·step and their five derivatives in a:
 # G = V′ [N·m], H = g·Γ [N·m per g], T (the thrusts' opening work) [N·m], M [kg·m²],
@@ -205,11 +205,12 @@ CH_COLS = 2 * CH_TERMS
 
 
 @dataclass(frozen=True)
-class Chain:
-    """A mechanism of several bodies with one degree of freedom, as the rocking engine reads
-    it: the terms of its equation of motion about each side's pivot tabulated on a uniform grid
-    of the rotation a = s·θ ∈ [0, end] (cubic Hermite between nodes: :func:`chain_terms`), and
-    the constants of each side at rest (index 0: side +1, index 1: side −1).
+class ChainTable:
+    """The table of a mechanism of several bodies with one degree of freedom, as the rocking
+    engine reads it: the terms of its equation of motion about each side's pivot tabulated on
+    a uniform grid of the rotation a = s·θ ∈ [0, end] (cubic Hermite between nodes:
+    :func:`chain_terms`), and the constants of each side at rest (index 0: side +1, index 1:
+    side −1).
 
     Attributes:
         table: the flat table (CH_* layout above).
@@ -243,8 +244,8 @@ class Chain:
         """The index of side s in the per-side pairs."""
         return 0 if s > 0 else 1
 
-    def mirrored(self) -> Chain:
-        """The chain with its two sides swapped."""
+    def mirrored(self) -> ChainTable:
+        """The table with its two sides swapped."""
         n = int(self.table[CH_N])
         rows = self.table[CH_HEAD:]
         half = n * CH_COLS
@@ -258,7 +259,7 @@ class Chain:
         def pair(v: tuple[float, float]) -> tuple[float, float]:
             return v[1], v[0]
 
-        return Chain(
+        return ChainTable(
             table=head + rows[half:] + rows[:half],
             uplift=pair(self.uplift),
             restitution=pair(self.restitution),
@@ -363,7 +364,7 @@ def mirrored_path(path: tuple[float, ...]) -> tuple[float, ...]:
 
 
 def chain_terms(table, s, a):
-    """(G, H, T, M, M′) of a chain (:class:`Chain`) on side s at rotation a [rad].
+    """(G, H, T, M, M′) of a chain's table (:class:`ChainTable`) on side s at rotation a [rad].
 
     Cubic Hermite interpolation between the two nodes around a, from the values and the
     derivatives stored at each (de Boor, *A Practical Guide to Splines*, 2001, ch. IV; error
@@ -389,37 +390,31 @@ def chain_terms(table, s, a):
 
 
 @dataclass(frozen=True)
-class Block:
-    """A rigid rectangular block rocking on a rigid base, with its restrainers.
+class Rocker:
+    """What both engines rock and the code check reads at rest: a system of one degree of
+    freedom on a rigid base, turning about a pivot on each side, with its restrainers, loads
+    and thrusts. One of three kinds, each with its own equation of motion: the paper's
+    rectangle (:class:`Block`), one rigid body of another shape (:class:`RigidBody`), or a
+    chain of bodies tabulated along its rotation (:class:`Chain`).
 
     Attributes:
-        R: semi-diagonal [m].
-        alpha: slenderness atan(b/h) [rad], 0 < α < π/2.
-        mass: mass [kg] (``None`` allowed only without restrainers: the free block's motion
-            does not depend on it, paper §4.3).
+        R: the distance of the centroid from pivot O [m] (the rectangle's semi-diagonal).
+        alpha: the rotation at which the weights stop restoring on side +1 [rad], the
+            amplitude ratio's divisor (the rectangle's slenderness atan(b/h), 0 < α < π/2;
+            a body's centroid angle from the vertical at O; a chain's instability rotation).
+        mass: mass [kg] (``None`` allowed only for a rectangle without restrainers: the free
+            block's motion does not depend on it, paper §4.3).
         g: gravity [m/s²].
         e: coefficient of restitution at impact, ratio of angular velocities [-].
         one_sided: True when transverse walls stop the rotation towards one side.
-        free_side: with ``one_sided``, the side the block can rotate to (+1 or −1).
+        free_side: with ``one_sided``, the side the system can rotate to (+1 or −1).
         rebound: r_f, the rebound reduction factor of one-sided motion [-].
         e_neg: e after an impact from side −1, when it differs from ``e`` (loads off the
             mid-plane change the angular momentum balance of each side); ``None``: ``e``.
-        linearized: use sin x ≈ x, cos x ≈ 1 (slender-block approximation).
+        linearized: use sin x ≈ x, cos x ≈ 1 (the slender rectangle's approximation).
         restrainers: the horizontal springs.
-        loads: weights carried by or pushing on the block (mass required).
+        loads: weights carried by or pushing on the system (mass required).
         thrusts: horizontal forces independent of the earthquake (mass required).
-        body: a rigid body of any shape in place of the rectangle (a mechanism of the
-            catalogue: a storey above a floor, a wall with its wedge, a gable), as
-            (x_pos, x_neg, z, I_G): its centroid's distances from pivot O and O′ and height
-            [m], and its moment of inertia about the centroid [kg·m²]. R and α are then its
-            centroid's about O (the amplitude ratio's α) and the loaded equation of motion
-            runs with the body as a rigid point mass plus I_G (docs/physics.md). None: the
-            rectangle 2R sin α × 2R cos α.
-        chain: a mechanism of several bodies with one degree of freedom (the two-block
-            vertical flexure), tabulated (:class:`Chain`); R and α are then its bodies'
-            centroid's distance from O and its instability rotation on side +1 (where the
-            weights' restoring moment vanishes, as α for the rectangle), and ``body``, the
-            loads and the thrusts are inside the table.
     """
 
     R: float
@@ -435,57 +430,90 @@ class Block:
     restrainers: tuple[Restrainer, ...] = field(default_factory=tuple)
     loads: tuple[Load, ...] = field(default_factory=tuple)
     thrusts: tuple[Thrust, ...] = field(default_factory=tuple)
-    body: tuple[float, float, float, float] | None = None
-    chain: Chain | None = None
+
+    @property
+    def kind(self) -> str:
+        """The equation the engines integrate: "rectangle" (paper Eq. 2, closed form),
+        "points" (the point table of :func:`point_table`) or "chain" (the chain's table)."""
+        raise NotImplementedError
+
+    def uplifts(self) -> tuple[float, float]:
+        """(α0⁺, α0⁻) from the point table (:func:`uplift_accelerations`)."""
+        points = point_table(self)
+        out = []
+        for s in (POSITIVE, NEGATIVE):
+            g, h, t, _, _ = point_moments(points, s, 0.0, 1.0)
+            out.append((g - s * t) / h)
+        return out[0], out[1]
+
+    def collapses(self) -> tuple[float, float]:
+        """(θc⁺, θc⁻) from the point table (:func:`collapse_rotations`)."""
+        points = point_table(self)
+        out = []
+        for s in (POSITIVE, NEGATIVE):
+            g0, _, t0, _, _ = point_moments(points, s, 0.0, 1.0)  # A: G − s·T at a = 0
+            g1, _, t1, _, _ = point_moments(points, s, 1.0, 0.0)  # −B: G − s·T at a = π/2
+            out.append(min(math.atan2(g0 - s * t0, -(g1 - s * t1)), 0.5 * math.pi))
+        return out[0], out[1]
+
+    def weights_stiffness(self, s: int) -> float:
+        """d(G − s·T)/da at rest on side s [N·m/rad] (:func:`linear_global_stiffness`)."""
+        return loaded_stiffness(point_table(self), s)
+
+    def weights_moment(self, s: int, a: float) -> float:
+        """G − s·T at rotation a about pivot s [N·m] (:func:`restoring_moment`)."""
+        g, _, t, _, _ = point_moments(point_table(self), s, math.sin(a), math.cos(a))
+        return g - s * t
+
+    def own_momentum(self, s: int) -> tuple[float, float]:
+        """(N, D′) of its own mass in Housner's impact ending side s
+        (:func:`impact_restitution`)."""
+        raise NotImplementedError
+
+    def impact_restitution(self, s: int) -> float:
+        """Housner's θ̇⁺/θ̇⁻ of an impact ending side s, with its loads
+        (:func:`impact_restitution`)."""
+        num, den = self.own_momentum(s)
+        for ld in self.loads:
+            mass = ld.weight / self.g
+            x, x_new = (ld.x_pos, ld.x_neg) if s > 0 else (ld.x_neg, ld.x_pos)
+            if ld.moves:
+                num += mass * ld.z * ld.z
+                den += mass * ld.z * ld.z
+            if ld.bears:
+                num -= mass * x * x_new
+                den += mass * x_new * x_new
+        return num / den
 
     @property
     def b(self) -> float:
-        """Half-thickness R·sin α [m]."""
+        """Half-thickness R·sin α [m] (the rectangle's; the centroid's x from O otherwise)."""
         return self.R * math.sin(self.alpha)
 
     @property
     def h(self) -> float:
-        """Half-height R·cos α [m]."""
+        """Half-height R·cos α [m] (the rectangle's; the centroid's height otherwise)."""
         return self.R * math.cos(self.alpha)
 
     @property
     def p2(self) -> float:
-        """p² = m g R / I0 = 3g/(4R) [rad²/s²] (paper Eq. 2, rectangular block); a body of
-        another shape: m g R / I_O with its own I_O about O (Housner 1963's definition)."""
-        if self.chain is not None:
-            return self.chain.p2
-        if self.body is not None:
-            return self.weight * self.R / self.inertia
-        return frequency_parameter_sq(self.R, self.g)
+        """p² = m g R / I_O [rad²/s²] (Housner 1963's frequency parameter, squared)."""
+        raise NotImplementedError
 
     @property
     def p(self) -> float:
-        """Frequency parameter p = √(3g/(4R)) [rad/s] (paper Eq. 2)."""
+        """Frequency parameter p [rad/s] (paper Eq. 2: √(3g/(4R)) for the rectangle)."""
         return math.sqrt(self.p2)
 
     @property
     def inertia(self) -> float:
-        """I0 = 4/3·m·R² [kg·m²], polar moment about a base corner (rectangular block); a body
-        of another shape: I_G + m·R² about pivot O (parallel axes)."""
-        if self.mass is None:
-            raise ValueError("the block has no mass")
-        if self.chain is not None:
-            return self.chain.inertia[0]
-        if self.body is not None:
-            return self.body[3] + self.mass * self.R * self.R
-        return polar_inertia(self.mass, self.R)
+        """The polar moment of inertia about pivot O at rest [kg·m²]."""
+        raise NotImplementedError
 
     @property
     def own_inertia(self) -> float:
-        """The inertia the equation of motion adds to the point table's J [kg·m²]: the
-        rectangle's I0 (its row of the table carries no mass), or a body's I_G (its row
-        carries its mass, so that J holds m·r_G² about either pivot); 0 for a chain (its
-        table holds the whole generalised mass)."""
-        if self.chain is not None:
-            return 0.0
-        if self.body is not None:
-            return self.body[3]
-        return self.inertia
+        """The inertia the equation of motion adds to the point table's J [kg·m²]."""
+        raise NotImplementedError
 
     @property
     def weight(self) -> float:
@@ -497,7 +525,7 @@ class Block:
     @property
     def uplift_acceleration(self) -> float:
         """Ground acceleration that starts rocking from rest [g]: the lower of the two sides,
-        or the free side's when the block can rotate to one side only (the stopped side's
+        or the free side's when the system can rotate to one side only (the stopped side's
         threshold, possibly negative for a wedge leaning on its return walls, is no uplift)."""
         pos, neg = uplift_accelerations(self)
         if self.one_sided:
@@ -506,13 +534,242 @@ class Block:
 
     @property
     def loaded(self) -> bool:
-        """True when loads or thrusts act on the block, or it is a body of another shape (the
-        general equation of motion)."""
-        return bool(self.loads or self.thrusts) or self.body is not None or self.chain is not None
+        """True when the general equation of motion is needed (loads, thrusts, another shape)."""
+        return True
 
     def restitution(self, s: int) -> float:
         """Coefficient of restitution of an impact that ends a phase on side s [-]."""
         return self.e if s > 0 or self.e_neg is None else self.e_neg
+
+    @property
+    def centroid(self) -> tuple[float, float]:
+        """Its centroid from pivot O at rest, (x, z) [m] (for reports): (b, h)."""
+        return self.b, self.h
+
+    @property
+    def collapse_limit(self) -> float:
+        """The largest rotation its equation of motion holds to [rad] (a chain's table
+        ends; inf: none)."""
+        return math.inf
+
+    def centroid_row(self) -> tuple[float, ...]:
+        """The system's own row of the point table (:func:`point_table`)."""
+        raise NotImplementedError
+
+    def mirrored_shape(self) -> dict:
+        """The fields of its own shape seen in a mirror (:func:`mirrored`)."""
+        return {}
+
+    def shape_symmetric(self) -> bool:
+        """True when its own shape is its mirror image (:func:`mirror_symmetric`)."""
+        return True
+
+
+@dataclass(frozen=True)
+class Block(Rocker):
+    """The paper's rigid rectangular block rocking on a rigid base, with its restrainers:
+    half-thickness b = R sin α, half-height h = R cos α, I0 = 4/3·m·R² (paper Eqs. 1–3)."""
+
+    @property
+    def kind(self) -> str:
+        return "points" if self.loaded else "rectangle"
+
+    @property
+    def p2(self) -> float:
+        """p² = m g R / I0 = 3g/(4R) [rad²/s²] (paper Eq. 2)."""
+        return frequency_parameter_sq(self.R, self.g)
+
+    @property
+    def inertia(self) -> float:
+        """I0 = 4/3·m·R² [kg·m²], polar moment about a base corner."""
+        if self.mass is None:
+            raise ValueError("the block has no mass")
+        return polar_inertia(self.mass, self.R)
+
+    @property
+    def own_inertia(self) -> float:
+        """I0: its row of the point table carries no mass."""
+        return self.inertia
+
+    @property
+    def loaded(self) -> bool:
+        """True when loads or thrusts act on the block (the general equation of motion)."""
+        return bool(self.loads or self.thrusts)
+
+    def centroid_row(self) -> tuple[float, ...]:
+        """Its weight bears and moves at its centroid (b, h) from either pivot; its I0 is
+        added apart."""
+        w = self.weight
+        return (w, w, 0.0, self.b, self.b, self.h, 0.0, 0.0, 0.0)
+
+    def uplifts(self) -> tuple[float, float]:
+        """tan α on both sides (α linearized) without loads and thrusts."""
+        if self.loaded:
+            return super().uplifts()
+        a0 = uplift_threshold(self.alpha, self.linearized)
+        return a0, a0
+
+    def collapses(self) -> tuple[float, float]:
+        """α on both sides without loads and thrusts."""
+        if self.loaded:
+            return super().collapses()
+        return self.alpha, self.alpha
+
+    def weights_moment(self, s: int, a: float) -> float:
+        """m g R sin(α − a) without loads and thrusts (paper Eq. 1)."""
+        if self.loaded:
+            return super().weights_moment(s, a)
+        return self.weight * self.R * gravity_moment_ratio(self.alpha, a, self.linearized)
+
+    def weights_stiffness(self, s: int) -> float:
+        """−m g R cos α without loads and thrusts (paper Eq. 16 without springs)."""
+        if self.loaded:
+            return super().weights_stiffness(s)
+        return -self.weight * self.R * (1.0 if self.linearized else math.cos(self.alpha))
+
+    def own_momentum(self, s: int) -> tuple[float, float]:
+        """m(4h² − 2b²)/3 and I0: (I0 − 2 m b²)/I0 = 1 − 1.5 sin²α alone (paper Eq. 3)."""
+        m = self.mass
+        assert m is not None
+        b, h = self.b, self.h
+        return m * (4.0 * h * h - 2.0 * b * b) / 3.0, self.inertia
+
+
+@dataclass(frozen=True)
+class RigidBody(Rocker):
+    """One rigid body of any shape (a mechanism of the catalogue: a storey above a floor, a
+    wall with its wedge, a gable), run by the general equation of motion as a rigid point
+    mass at its centroid plus its own moment of inertia I_G (docs/physics.md). R and α are its
+    centroid's distance and angle from the vertical about pivot O.
+
+    Attributes:
+        shape: (x_pos, x_neg, z, I_G): its centroid's distances from pivot O and O′ and its
+            height [m], and its moment of inertia about the centroid [kg·m²].
+    """
+
+    shape: tuple[float, float, float, float] = field(kw_only=True)
+
+    @property
+    def kind(self) -> str:
+        return "points"
+
+    @property
+    def p2(self) -> float:
+        """m g R / I_O with its own I_O about O (Housner 1963's definition)."""
+        return self.weight * self.R / self.inertia
+
+    @property
+    def inertia(self) -> float:
+        """I_G + m·R² about pivot O (parallel axes)."""
+        if self.mass is None:
+            raise ValueError("the body has no mass")
+        return self.shape[3] + self.mass * self.R * self.R
+
+    @property
+    def own_inertia(self) -> float:
+        """I_G: its row of the point table carries its mass, so that J holds m·r_G²."""
+        return self.shape[3]
+
+    def centroid_row(self) -> tuple[float, ...]:
+        """A rigid point mass at its centroid, plus I_G apart."""
+        x_pos, x_neg, z, _ = self.shape
+        w = self.weight
+        return (w, w, 0.0, x_pos, x_neg, z, self.mass or 0.0, 0.0, 0.0)
+
+    def mirrored_shape(self) -> dict:
+        x_pos, x_neg, z, i_g = self.shape
+        return {"shape": (x_neg, x_pos, z, i_g)}
+
+    def own_momentum(self, s: int) -> tuple[float, float]:
+        """I_G + m(z² − x·x′) and I_G + m(x′² + z²), as a load below."""
+        m = self.mass
+        assert m is not None
+        x_pos, x_neg, z, i_g = self.shape
+        x, x_new = (x_pos, x_neg) if s > 0 else (x_neg, x_pos)
+        return i_g + m * (z * z - x * x_new), i_g + m * (x_new * x_new + z * z)
+
+    def shape_symmetric(self) -> bool:
+        return self.shape[0] == self.shape[1]
+
+
+@dataclass(frozen=True)
+class Chain(Rocker):
+    """A mechanism of several bodies with one degree of freedom (the two-block vertical
+    flexure), as the engines read it: its table (:class:`ChainTable`). R is its bodies'
+    centroid's distance from O and α its instability rotation (where the weights' restoring
+    moment vanishes, as α for the rectangle); its loads and thrusts are inside the table.
+
+    Attributes:
+        table: the terms of its equation of motion along the rotation, and its constants.
+    """
+
+    table: ChainTable = field(kw_only=True)
+
+    @property
+    def kind(self) -> str:
+        return "chain"
+
+    @property
+    def p2(self) -> float:
+        """The table's G(0)/M(0)·(1 + (H(0)/G(0))²)^½ [rad²/s²]."""
+        return self.table.p2
+
+    @property
+    def inertia(self) -> float:
+        """M(0) of side +1 [kg·m²]."""
+        if self.mass is None:
+            raise ValueError("the chain has no mass")
+        return self.table.inertia[0]
+
+    @property
+    def own_inertia(self) -> float:
+        """0: its table holds the whole generalised mass."""
+        return 0.0
+
+    @property
+    def centroid(self) -> tuple[float, float]:
+        """Its bodies' centroid at rest from pivot O (the table's)."""
+        return self.table.centroid
+
+    @property
+    def collapse_limit(self) -> float:
+        """Where its table ends: the run counts it collapsed there."""
+        return self.table.end
+
+    def mirrored_shape(self) -> dict:
+        return {"table": self.table.mirrored()}
+
+    def shape_symmetric(self) -> bool:
+        return False
+
+    def uplifts(self) -> tuple[float, float]:
+        """The table's: the code check's α0 = (G − T)/H at rest of each side."""
+        return self.table.uplift
+
+    def collapses(self) -> tuple[float, float]:
+        """The first zero of the tabulated G − T of each side."""
+        return _chain_collapse(self.table, POSITIVE), _chain_collapse(self.table, NEGATIVE)
+
+    def weights_moment(self, s: int, a: float) -> float:
+        """The table's G − T at a."""
+        g, _, t, _, _ = chain_terms(self.table.table, s, a)
+        return g - t
+
+    def weights_stiffness(self, s: int) -> float:
+        """The table's d(G − T)/da at rest."""
+        return self.table.stiffness[self.table.side(s)]
+
+    def impact_restitution(self, s: int) -> float:
+        """The table's (the projection of rockcli.mechanisms.motion.impact_ratio)."""
+        return self.table.restitution[self.table.side(s)]
+
+
+def rocker_fields(system: Rocker, **changes) -> dict:
+    """The fields every kind of :class:`Rocker` has, as a dict, with ``changes`` applied (to
+    build a system of another kind with the same settings)."""
+    from dataclasses import fields
+
+    return {f.name: getattr(system, f.name) for f in fields(Rocker)} | changes
 
 
 def frequency_parameter_sq(R: float, g: float) -> float:
@@ -714,7 +971,7 @@ def ground_moment_ratio(alpha: float, a: float, linearized: bool = False) -> flo
 
 
 def restoring_moment(
-    block: Block, s: int, a: float, alive: tuple[bool, ...] | None = None
+    block: Rocker, s: int, a: float, alive: tuple[bool, ...] | None = None
 ) -> float:
     """Total restoring moment about the active pivot, gravity plus restrainers [N·m].
 
@@ -722,11 +979,7 @@ def restoring_moment(
     generalised to any attachment point as in spec/rocking.md). ``alive`` masks failed springs.
     With loads and thrusts the weights' part is G − s·T of :func:`point_moments`.
     """
-    if block.loaded:
-        g, _, t, _, _ = point_moments(point_table(block), s, math.sin(a), math.cos(a))
-        total = g - s * t
-    else:
-        total = block.weight * block.R * gravity_moment_ratio(block.alpha, a, block.linearized)
+    total = block.weights_moment(s, a)
     for i, spring in enumerate(block.restrainers):
         if alive is not None and not alive[i]:
             continue
@@ -766,7 +1019,7 @@ def stiffness_coefficient(k: float, R: float, inertia: float) -> float:
 
 
 def linear_global_stiffness(
-    block: Block, s: int = POSITIVE, alive: tuple[bool, ...] | None = None
+    block: Rocker, s: int = POSITIVE, alive: tuple[bool, ...] | None = None
 ) -> float:
     """dM_r/dθ at θ = 0⁺ on side s [N·m/rad]: negative for the free block, positive if restrained.
 
@@ -776,12 +1029,7 @@ def linear_global_stiffness(
     member with a path: K·u′(0)², Restrainer.arm_at_rest).
     With loads and thrusts the weights' part is :func:`loaded_stiffness`.
     """
-    if block.chain is not None:
-        total = block.chain.stiffness[block.chain.side(s)]
-    elif block.loaded:
-        total = loaded_stiffness(point_table(block), s)
-    else:
-        total = -block.weight * block.R * (1.0 if block.linearized else math.cos(block.alpha))
+    total = block.weights_stiffness(s)
     for i, spring in enumerate(block.restrainers):
         if alive is not None and not alive[i]:
             continue
@@ -798,7 +1046,7 @@ def restrainer_coefficient(k: float, r: float, inertia: float) -> float:
     return k * r * r / inertia
 
 
-def mirrored(block: Block) -> Block:
+def mirrored(block: Rocker) -> Rocker:
     """The block seen in a mirror through its vertical mid-plane: pivot O becomes O′.
 
     Each restrainer's two sides are swapped (stiffness, arm, angle, yield), each load's and
@@ -828,18 +1076,15 @@ def mirrored(block: Block) -> Block:
             for r in block.restrainers
         ),
         loads=tuple(replace(ld, x_pos=ld.x_neg, x_neg=ld.x_pos) for ld in block.loads),
-        body=None
-        if block.body is None
-        else (block.body[1], block.body[0], block.body[2], block.body[3]),
         thrusts=tuple(
             replace(th, x_pos=th.x_neg, x_neg=th.x_pos, direction=-th.direction)
             for th in block.thrusts
         ),
-        chain=None if block.chain is None else block.chain.mirrored(),
+        **block.mirrored_shape(),
     )
 
 
-def mirror_symmetric(block: Block) -> bool:
+def mirror_symmetric(block: Rocker) -> bool:
     """True when the block is its own mirror image (:func:`mirrored`), so that its response
     to −üg is exactly its response to +üg with θ → −θ.
 
@@ -850,23 +1095,19 @@ def mirror_symmetric(block: Block) -> bool:
     restitution after impacts on either side, and no thrust (a thrust pushes one way). Exact
     equality: a difference in the last digit makes the block asymmetric.
     """
-    if block.one_sided or block.thrusts or block.chain is not None:
+    if block.one_sided or block.thrusts or not block.shape_symmetric():
         return False
     if block.e_neg is not None and block.e_neg != block.e:
         return False
     # mirrored(block) == block, field by field without building the mirror (once per case of
     # a study): each restrainer and load the same from either pivot.
-    return (
-        all(
-            r.k_pos == r.k_neg
-            and r.r_pos == r.r_neg
-            and r.phi_pos == r.phi_neg
-            and r.yield_pos == r.yield_neg
-            for r in block.restrainers
-        )
-        and all(ld.x_pos == ld.x_neg for ld in block.loads)
-        and (block.body is None or block.body[0] == block.body[1])
-    )
+    return all(
+        r.k_pos == r.k_neg
+        and r.r_pos == r.r_neg
+        and r.phi_pos == r.phi_neg
+        and r.yield_pos == r.yield_neg
+        for r in block.restrainers
+    ) and all(ld.x_pos == ld.x_neg for ld in block.loads)
 
 
 # Columns of a row of the point table (point_table): the block at its centroid, each load,
@@ -879,7 +1120,7 @@ PT_M_FULL, PT_M_HOR, PT_M_VER = 6, 7, 8
 N_POINT_COLS = 9
 
 
-def point_table(block: Block) -> tuple[float, ...]:
+def point_table(block: Rocker) -> tuple[float, ...]:
     """The block, its loads and its thrusts as a flat table of N_POINT_COLS columns per row.
 
     Row 0 is the block: its weight bears and moves, at its centroid (b, h) from either pivot
@@ -887,11 +1128,7 @@ def point_table(block: Block) -> tuple[float, ...]:
     point mass; one that only moves (Circolare's P_j) follows the block horizontally; one that
     only bears follows it vertically. A thrust has no mass. Needs the block's mass.
     """
-    w = block.weight
-    rows: list[float] = [w, w, 0.0, block.b, block.b, block.h, 0.0, 0.0, 0.0]
-    if block.body is not None:  # a rigid body of its own shape: a point mass at G, plus I_G
-        x_pos, x_neg, z, _ = block.body
-        rows = [w, w, 0.0, x_pos, x_neg, z, block.mass or 0.0, 0.0, 0.0]
+    rows: list[float] = list(block.centroid_row())
     for ld in block.loads:
         m = ld.weight / block.g
         rows += [
@@ -956,7 +1193,7 @@ def point_moments(points, s, sin_a, cos_a):
     return g, h, t, j, dj
 
 
-def uplift_accelerations(block: Block) -> tuple[float, float]:
+def uplift_accelerations(block: Rocker) -> tuple[float, float]:
     """(α0⁺, α0⁻): the ground acceleration [g] that starts rocking from rest towards each side.
 
     Free block: tan α on both sides (α linearized; spec/rocking.md, "Uplift from rest"). With
@@ -966,17 +1203,7 @@ def uplift_accelerations(block: Block) -> tuple[float, float]:
     with the thrust as an external force F_h, the same expression by construction.
     A restrainer with no initial force does not change it.
     """
-    if block.chain is not None:
-        return block.chain.uplift
-    if not block.loaded:
-        a0 = uplift_threshold(block.alpha, block.linearized)
-        return a0, a0
-    points = point_table(block)
-    out = []
-    for s in (POSITIVE, NEGATIVE):
-        g, h, t, _, _ = point_moments(points, s, 0.0, 1.0)
-        out.append((g - s * t) / h)
-    return out[0], out[1]
+    return block.uplifts()
 
 
 #: Points that bracket the zero of a chain's restoring moment before bisection, and the
@@ -984,7 +1211,7 @@ def uplift_accelerations(block: Block) -> tuple[float, float]:
 COLLAPSE_POINTS, COLLAPSE_STEPS = 200, 60
 
 
-def collapse_rotations(block: Block) -> tuple[float, float]:
+def collapse_rotations(block: Rocker) -> tuple[float, float]:
     """(θc⁺, θc⁻): the rotation of each side at which the restoring moment of the weights,
     loads and thrusts vanishes [rad] — where the mechanism, left alone, stops returning and
     falls (the rectangle: α on both sides; a chain: its instability rotation of each side).
@@ -998,20 +1225,10 @@ def collapse_rotations(block: Block) -> tuple[float, float]:
     where the run counts the block overturned). A chain: the zero of its tabulated G − T by
     bracketing and bisection on [0, end] (end when it never vanishes there).
     """
-    if block.chain is not None:
-        return _chain_collapse(block.chain, POSITIVE), _chain_collapse(block.chain, NEGATIVE)
-    if not block.loaded:
-        return block.alpha, block.alpha
-    points = point_table(block)
-    out = []
-    for s in (POSITIVE, NEGATIVE):
-        g0, _, t0, _, _ = point_moments(points, s, 0.0, 1.0)  # A: G − s·T at a = 0
-        g1, _, t1, _, _ = point_moments(points, s, 1.0, 0.0)  # −B: G − s·T at a = π/2
-        out.append(min(math.atan2(g0 - s * t0, -(g1 - s * t1)), 0.5 * math.pi))
-    return out[0], out[1]
+    return block.collapses()
 
 
-def _chain_collapse(chain: Chain, s: int) -> float:
+def _chain_collapse(chain: ChainTable, s: int) -> float:
     """The first zero of the chain's G − T on side s in [0, end] [rad] (end: none there)."""
 
     def restoring(a: float) -> float:
@@ -1033,7 +1250,7 @@ def _chain_collapse(chain: Chain, s: int) -> float:
     return chain.end
 
 
-def impact_restitution(block: Block, s: int) -> float:
+def impact_restitution(block: Rocker, s: int) -> float:
     """Housner's coefficient of restitution for an impact ending a phase on side s, with loads.
 
     Conservation of angular momentum about the new pivot O′ (Housner 1963; paper Eq. 3): a
@@ -1043,34 +1260,12 @@ def impact_restitution(block: Block, s: int) -> float:
     O′ with the inertia J′(0) = I0 + Σ m(x′² + z²) (its horizontal and vertical parts likewise).
     The block alone gives (I0 − 2 m b²)/I0 = 1 − 1.5 sin²α. Returns the ratio θ̇⁺/θ̇⁻
     (may be ≤ 0 for squat systems; the model clips it at 0). A chain: its own
-    (Chain.restitution, the projection of rockcli.mechanisms.motion.impact_ratio).
+    (ChainTable.restitution, the projection of rockcli.mechanisms.motion.impact_ratio).
     """
-    if block.chain is not None:
-        return block.chain.restitution[block.chain.side(s)]
-    i0 = block.inertia
-    b, h = block.b, block.h
-    m = block.mass
-    assert m is not None
-    num = m * (4.0 * h * h - 2.0 * b * b) / 3.0
-    den = i0
-    if block.body is not None:  # I_G + m(z² − x·x′) over I_G + m(x′² + z²), as a load below
-        x_pos, x_neg, z, i_g = block.body
-        x, x_new = (x_pos, x_neg) if s > 0 else (x_neg, x_pos)
-        num = i_g + m * (z * z - x * x_new)
-        den = i_g + m * (x_new * x_new + z * z)
-    for ld in block.loads:
-        mass = ld.weight / block.g
-        x, x_new = (ld.x_pos, ld.x_neg) if s > 0 else (ld.x_neg, ld.x_pos)
-        if ld.moves:
-            num += mass * ld.z * ld.z
-            den += mass * ld.z * ld.z
-        if ld.bears:
-            num -= mass * x * x_new
-            den += mass * x_new * x_new
-    return num / den
+    return block.impact_restitution(s)
 
 
-def rebound_restitution(block: Block) -> float:
+def rebound_restitution(block: Rocker) -> float:
     """θ̇⁺/θ̇⁻ of a one-sided system's impact before its rebound factor r_f: the ratio that keeps
     the kinetic energy Housner's impact at the other pivot keeps, the system turning back
     about the same pivot (docs/physics.md, "One-sided impacts").

@@ -28,7 +28,7 @@ from rockcli.dynamics.result import RestrainerPeak, RockingRun
 from rockcli.dynamics.settings import SolverSettings
 from rockcli.dynamics.simulate import simulate
 from rockcli.errors import InputError
-from rockcli.mechanics import Block
+from rockcli.mechanics import Rocker
 from rockcli.model.derive import solver_options, to_block
 from rockcli.model.schema import Model
 from rockcli.records.pulses import make_pulse
@@ -52,13 +52,13 @@ class NotObtained(Exception):
     before the half-cycle asked for (the case fails; this is not bad input)."""
 
 
-def model_settings(model: Model, block: Block, **changes: object) -> SolverSettings:
+def model_settings(model: Model, block: Rocker, **changes: object) -> SolverSettings:
     """The model's solver settings with a long free tail and the given changes."""
     settings = settings_from(solver_options(model))
     return replace(settings, tail=TAIL_OVER_P / block.p, **changes)  # type: ignore[arg-type]
 
 
-def case_block(model: Model, mechanism: str | None = None) -> Block:
+def case_block(model: Model, mechanism: str | None = None) -> Rocker:
     """The block a case rocks: the model's, or a wall's mechanism as the engine rocks it (the
     named one, else the first; rockcli.studies.rocked.mechanism_block)."""
     from rockcli.model.derive_wall import is_wall
@@ -74,7 +74,7 @@ def case_block(model: Model, mechanism: str | None = None) -> Block:
 
 
 def release(
-    model: Model, theta0: float, omega0: float, block: Block | None = None, **changes: object
+    model: Model, theta0: float, omega0: float, block: Rocker | None = None, **changes: object
 ) -> RockingRun:
     """Free rocking from θ0 [rad] with θ̇0 [rad/s], no ground motion (``block``: the case's,
     default the model's)."""

@@ -35,8 +35,9 @@ from rockcli.mechanics import (
     PA_N,
     PA_STEP_NEG,
     PA_STEP_POS,
-    Block,
+    Chain,
     Restrainer,
+    Rocker,
     chain_terms,
     collapse_rotations,
     mirror_symmetric,
@@ -124,7 +125,9 @@ def step_budget(n_samples: int, max_steps: int) -> int:
     return min(max_steps, STEPS_PER_SAMPLE * n_samples + STEP_BUDGET_BASE)
 
 
-def pack_parameters(block: Block, settings: SolverSettings, rtol: float, atol: float) -> np.ndarray:
+def pack_parameters(
+    block: Rocker, settings: SolverSettings, rtol: float, atol: float
+) -> np.ndarray:
     """The kernel's parameter vector (layout P_* in layout.py)."""
     par = np.zeros(L.N_PARAMS)
     par[L.P_ALPHA] = block.alpha
@@ -137,9 +140,8 @@ def pack_parameters(block: Block, settings: SolverSettings, rtol: float, atol: f
     par[L.P_REBOUND] = block.rebound
     par[L.P_LINEAR] = 1.0 if block.linearized else 0.0
     par[L.P_KIND] = engine_kind(block)
-    par[L.P_OVERTURN] = par[L.P_OVERTURN_NEG] = settings.overturn_angle
-    if block.chain is not None:  # a chain collapses where its table ends
-        par[L.P_OVERTURN] = par[L.P_OVERTURN_NEG] = min(settings.overturn_angle, block.chain.end)
+    # a chain collapses where its table ends
+    par[L.P_OVERTURN] = par[L.P_OVERTURN_NEG] = min(settings.overturn_angle, block.collapse_limit)
     par[L.P_RTOL] = rtol
     par[L.P_ATOL] = atol
     par[L.P_REST] = settings.rest_velocity
@@ -157,15 +159,17 @@ def pack_parameters(block: Block, settings: SolverSettings, rtol: float, atol: f
     return par
 
 
-def engine_kind(block: Block) -> int:
+#: The engine's code (layout K_*) of each kind of input (mechanics.Rocker.kind).
+KINDS = {"rectangle": L.K_RECTANGLE, "points": L.K_POINTS, "chain": L.K_CHAIN}
+
+
+def engine_kind(block: Rocker) -> int:
     """The equation the engine integrates (layout K_*): the rectangle's closed form, a rigid
     body's point table, or a chain's table."""
-    if block.chain is not None:
-        return L.K_CHAIN
-    return L.K_POINTS if block.loaded else L.K_RECTANGLE
+    return KINDS[block.kind]
 
 
-def rest_terms(block: Block, s: int) -> tuple[float, float]:
+def rest_terms(block: Rocker, s: int) -> tuple[float, float]:
     """(ground acceleration [g] per N·m of restoring moment, polar moment of inertia [kg·m²])
     about pivot s at rest; (0, 0) for a block without a mass.
 
@@ -175,32 +179,32 @@ def rest_terms(block: Block, s: int) -> tuple[float, float]:
     """
     if block.mass is None:
         return 0.0, 0.0
-    if block.chain is not None:  # the table's node 0: the terms at rest
-        g, h, _, m, _ = chain_terms(block.chain.table, s, 0.0)
+    if isinstance(block, Chain):  # the table's node 0: the terms at rest
+        g, h, _, m, _ = chain_terms(block.table.table, s, 0.0)
         return 1.0 / h, m
-    if block.loaded:
+    if block.kind == "points":
         _, h, _, j, _ = point_moments(point_table(block), s, 0.0, 1.0)
         return 1.0 / h, block.own_inertia + j
     h = block.mass * block.g * block.R * (1.0 if block.linearized else math.cos(block.alpha))
     return 1.0 / h, block.inertia
 
 
-def pack_points(block: Block) -> np.ndarray:
+def pack_points(block: Rocker) -> np.ndarray:
     """The flat point table of the block, its loads and thrusts (mechanics.point_table).
 
     Empty for a block without loads and thrusts: the kernel then integrates the free block's
     equation (paper Eq. 2) exactly as before loads existed.
     """
-    if not block.loaded:
+    if block.kind == "rectangle":
         return np.zeros(0)
-    if block.chain is not None:
-        return np.ascontiguousarray(block.chain.table, dtype=np.float64)
+    if isinstance(block, Chain):
+        return np.ascontiguousarray(block.table.table, dtype=np.float64)
     if block.linearized:
         raise ValueError("the linearized equation does not take loads or thrusts")
     return np.ascontiguousarray(point_table(block), dtype=np.float64)
 
 
-def pack_springs(block: Block) -> np.ndarray:
+def pack_springs(block: Rocker) -> np.ndarray:
     """The packed restrainer table (columns in motion.py), failure rotations precomputed; as
     wide as the longest elongation path (from motion.COL_PATH) when a member has one."""
     width = motion.N_SPRING_COLS + max((len(sp.path) for sp in block.restrainers), default=0)
@@ -263,7 +267,7 @@ def pack_law(row: np.ndarray, sp: Restrainer) -> None:
 
 
 def simulate(
-    block: Block,
+    block: Rocker,
     time: np.ndarray,
     accel: np.ndarray,
     dt: float,
@@ -322,10 +326,10 @@ def simulate(
         from rockcli.dynamics.reference import integrate_reference
 
         exact = None
-        if block.chain is not None:
-            if block.chain.exact is None:
+        if isinstance(block, Chain):
+            if block.table.exact is None:
                 raise ValueError("the reference engine needs the chain's configuration function")
-            exact = block.chain.exact
+            exact = block.table.exact
         integrate_reference(*arrays, *outputs, exact=exact)
     else:  # compiled: Ctrl-C deferred to the end of the run (rockcli.interrupts)
         from rockcli.dynamics.kernel import integrate
@@ -363,7 +367,7 @@ def _history(
     )
 
 
-def elongations(block: Block, theta: np.ndarray) -> np.ndarray:
+def elongations(block: Rocker, theta: np.ndarray) -> np.ndarray:
     """Each restrainer's elongation at the rotations θ [m], shape (restrainers, samples): the
     member of pivot O for θ > 0, of O′ for θ < 0, 0 at rest (for plots: the engine's geometry,
     Restrainer.elongation, evaluated on arrays)."""
@@ -415,7 +419,7 @@ def plastic_elongation(springs: np.ndarray, j: int) -> float:
     )
 
 
-def side_ratio(block: Block, theta_max: float, theta_min: float) -> float:
+def side_ratio(block: Rocker, theta_max: float, theta_min: float) -> float:
     """max |θ|/θc over the run, each side's extreme over its own collapse rotation
     (mechanics.collapse_rotations): the damage measure every mechanism shares [-]. The
     rectangle's θc is α on both sides: max|θ|/α."""
@@ -466,7 +470,7 @@ def _unpack(
 
 
 def _message(
-    status: RunStatus, out_f: np.ndarray, out_i: np.ndarray, par: np.ndarray, block: Block
+    status: RunStatus, out_f: np.ndarray, out_i: np.ndarray, par: np.ndarray, block: Rocker
 ) -> str:
     if status is RunStatus.OVERTURNED:
         return f"overturned at t = {out_f[L.O_T_OVERTURN]:.3f} s"
@@ -488,7 +492,7 @@ def _message(
     )
 
 
-def _nonfinite_name(out_i: np.ndarray, block: Block) -> str:
+def _nonfinite_name(out_i: np.ndarray, block: Rocker) -> str:
     code = int(out_i[L.I_NONFINITE])
     if code >= L.NF_FORCE:
         return f"the force of restrainer {block.restrainers[code - L.NF_FORCE].name!r}"
@@ -516,7 +520,7 @@ def _with_warnings(run: RockingRun) -> RockingRun:
 
 
 def assess(
-    block: Block,
+    block: Rocker,
     time: np.ndarray,
     accel: np.ndarray,
     dt: float,

@@ -21,7 +21,7 @@ import numpy as np
 
 from rockcli.dynamics.result import Assessment, RockingRun, RunStatus, ToleranceCheck
 from rockcli.dynamics.settings import SolverSettings
-from rockcli.mechanics import Block
+from rockcli.mechanics import Rocker
 
 #: The tight run's tolerances are the run's own divided by this (1e-8 → 1e-11 by default):
 #: three digits tighter, where the fast engine still costs about as much (spec/engine.md: cost
@@ -107,7 +107,7 @@ def any_sensitive(flags: Iterable[bool | None]) -> bool | None:
 
 
 def check_tolerance(
-    block: Block,
+    block: Rocker,
     time: np.ndarray,
     accel: np.ndarray,
     dt: float,

@@ -18,7 +18,7 @@ from rockcli.fragility.spectrum import Scan, Threshold
 from rockcli.records.kinds import PulseKind
 
 if TYPE_CHECKING:
-    from rockcli.mechanics import Block
+    from rockcli.mechanics import Rocker
     from rockcli.model.schema import Model
     from rockcli.records.record import Record
     from rockcli.studies.floor import Floor
@@ -147,14 +147,14 @@ def search(model: Model, target: Target, record: Record, scan: Scan, per_unit: f
     return lowest_overturn(response, scan)
 
 
-def pulse_period_of(ratio: float, block: Block) -> float:
+def pulse_period_of(ratio: float, block: Rocker) -> float:
     """Tp [s] of ωp/p = ratio for the block."""
     from rockcli.fragility.spectrum import pulse_period
 
     return pulse_period(ratio, block.p)
 
 
-def rocked_block(model: Model, target: Target) -> tuple[Block, Floor | None]:
+def rocked_block(model: Model, target: Target) -> tuple[Rocker, Floor | None]:
     """The block the runs rock and its floor (None: the ground motion itself), as
     rockcli.studies.assess.rocked_input derives them (the record does not matter when the
     mechanism is named or the model is a block: a short probe stands in for it)."""
@@ -201,7 +201,7 @@ def _threshold_columns(found: Threshold) -> dict[str, Any]:
     }
 
 
-def _block_columns(block: Block) -> dict[str, Any]:
+def _block_columns(block: Rocker) -> dict[str, Any]:
     return {
         "p": block.p,
         "R": block.R,

@@ -24,7 +24,7 @@ import numpy as np
 
 if TYPE_CHECKING:
     from rockcli.dynamics.settings import SolverSettings
-    from rockcli.mechanics import Block
+    from rockcli.mechanics import Rocker
     from rockcli.model.schema import Model
     from rockcli.records.record import Record
 
@@ -41,7 +41,7 @@ class Rocker:
         mechanism: the mechanism's name (None: a model of one block).
     """
 
-    block: Block
+    block: Rocker
     time: np.ndarray
     accel: np.ndarray
     dt: float

@@ -33,7 +33,7 @@ from rockcli.dynamics.result import RunStatus
 from rockcli.dynamics.settings import Engine, SolverSettings
 from rockcli.dynamics.simulate import assess
 from rockcli.fragility.search import first_exceedances
-from rockcli.mechanics import Block
+from rockcli.mechanics import Rocker
 from rockcli.records.pulses import make_pulse
 from rockcli.records.record import Record
 
@@ -121,7 +121,7 @@ def sharp_end(record: Record) -> Record:
 
 
 def overturn_response(
-    block: Block,
+    block: Rocker,
     time: np.ndarray,
     accel: np.ndarray,
     dt: float,

@@ -1,5 +1,5 @@
-"""The two-block vertical flexure as the rocking engine takes it: a Block carrying the chain's
-table (mechanics.Chain).
+"""The two-block vertical flexure as the rocking engine takes it: a mechanics.Chain carrying
+its table (mechanics.ChainTable).
 
 The flexure of a storey (rockcli.mechanisms.catalogue.flexure) is two blocks and one degree
 of freedom: the lower block about the edge of the storey's base, the upper one hanging from the
@@ -33,7 +33,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, replace
 
-from rockcli.mechanics import Block
+from rockcli.mechanics import Chain, Rocker, rocker_fields
 from rockcli.mechanisms.catalogue import build, same_height
 from rockcli.mechanisms.rigid import composite, placed
 from rockcli.mechanisms.side import ChainSide
@@ -97,8 +97,8 @@ def held_at_top(wall: Wall, spec: MechanismSpec) -> tuple[HeldMember, ...]:
     return tuple(out)
 
 
-def flexure_block(wall: Wall, spec: MechanismSpec, block: Block) -> Block:
-    """The vertical flexure ``spec`` (its hinge height resolved) as a Block carrying its chain;
+def flexure_block(wall: Wall, spec: MechanismSpec, block: Rocker) -> Chain:
+    """The vertical flexure ``spec`` (its hinge height resolved) as a Chain carrying its table;
     ``block`` gives the model's settings the mechanism keeps (motion, rebound, e's rule).
 
     Its α, which max θ/α divides by, is the instability rotation of the side it can open to
@@ -107,20 +107,21 @@ def flexure_block(wall: Wall, spec: MechanismSpec, block: Block) -> Block:
     plus, minus = build(wall, spec, 1), build(wall, spec, -1)
     body = composite([b for _, b in plus.bodies])  # in the side frame of side +1
     x, z = body.x, body.z
-    chain = replace(tabulate(plus, minus), centroid=(x, z))
+    table = replace(tabulate(plus, minus), centroid=(x, z))
     assert spec.storey is not None
     top = wall.storeys[spec.storey - 1].height  # in the side frame: above the storey's base
     sides = (plus, minus) if not block.one_sided else ((plus,) if block.free_side > 0 else (minus,))
-    return replace(
-        block,
-        R=math.hypot(x, z),
-        alpha=min(instability(side, chain.end) for side in sides),
-        mass=body.mass,
-        linearized=False,
-        restrainers=members(plus, minus, top),
-        loads=(),
-        thrusts=(),
-        body=None,
-        chain=chain,
-        e_neg=None,
+    return Chain(
+        **rocker_fields(
+            block,
+            R=math.hypot(x, z),
+            alpha=min(instability(side, table.end) for side in sides),
+            mass=body.mass,
+            linearized=False,
+            restrainers=members(plus, minus, top),
+            loads=(),
+            thrusts=(),
+            e_neg=None,
+        ),
+        table=table,
     )

@@ -1,11 +1,11 @@
-"""A mechanism that is one rigid body, as the rocking engine takes it: a Block of its shape.
+"""A mechanism that is one rigid body, as the rocking engine takes it: a RigidBody.
 
 Overturning about a storey's base, the wedge and the gable each turn as one rigid body about
 the edge of their hinge section (rockcli.mechanisms.catalogue). The rocking engine's loaded
 equation of motion is already Lagrange's equation of one rigid body of any shape about a pivot
 on each side (rockcli.dynamics.motion.loaded_angular_acceleration: [I + J(a)]·ä + ½J′ȧ² =
 −G + s·T + s·üg·H − ΣM_k). So the mechanism enters the engine as a
-:class:`rockcli.mechanics.Block` whose ``body`` is the composite of its bodies: its weight at
+:class:`rockcli.mechanics.RigidBody` whose ``shape`` is the composite of its bodies: its weight at
 their centroid (a rigid point mass in the point table) plus its own moment of inertia about
 that centroid, I_G = Σ [I_Gi + m_i·|r_i − r_G|²] (parallel axes). The loads, thrusts and
 restrainers above the hinge go in from each pivot (x from O, x′ from O′, z above the hinge).
@@ -22,7 +22,15 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, replace
 
-from rockcli.mechanics import Block, Load, Restrainer, Thrust, point_polar
+from rockcli.mechanics import (
+    Load,
+    Restrainer,
+    RigidBody,
+    Rocker,
+    Thrust,
+    point_polar,
+    rocker_fields,
+)
 from rockcli.mechanisms.bodies import Body
 from rockcli.mechanisms.catalogue import above, set_back
 from rockcli.mechanisms.catalogue import rigid_parts as parts
@@ -50,9 +58,9 @@ def composite(bodies: list[Body]) -> Composite:
     return Composite(weight, mass, x, z, inertia)
 
 
-def rigid_block(wall: Wall, spec: MechanismSpec, block: Block) -> Block:
-    """The rigid mechanism ``spec`` as a Block of its own shape; ``block`` gives the model's
-    settings the mechanism keeps (restitution rule through ``e``, motion, rebound)."""
+def rigid_block(wall: Wall, spec: MechanismSpec, block: Rocker) -> RigidBody:
+    """The rigid mechanism ``spec`` as a RigidBody of its own shape; ``block`` gives the
+    model's settings the mechanism keeps (restitution rule through ``e``, motion, rebound)."""
     bodies, hinge, thickness = parts(wall, spec)
     a = set_back(wall, bodies, hinge, thickness, spec.name)
     lo, hi = a, thickness - a  # the pivots O (outer edge) and O′ (inner edge) in x
@@ -77,19 +85,21 @@ def rigid_block(wall: Wall, spec: MechanismSpec, block: Block) -> Block:
         placed(rs.member, *xs(rs.x), rs.z - hinge) for rs in wall.restrainers if above(rs.z, hinge)
     )
     one_sided = block.one_sided or spec.type is MechanismType.WEDGE
-    return replace(
-        block,
-        R=math.hypot(x_pos, z),
-        alpha=math.atan2(x_pos, z),
-        mass=body.mass,
-        one_sided=one_sided,
-        free_side=1 if spec.type is MechanismType.WEDGE else block.free_side,
-        linearized=False,
-        restrainers=members,
-        loads=loads,
-        thrusts=thrusts,
-        body=(x_pos, x_neg, z, body.inertia),
-        e_neg=None,
+    return RigidBody(
+        **rocker_fields(
+            block,
+            R=math.hypot(x_pos, z),
+            alpha=math.atan2(x_pos, z),
+            mass=body.mass,
+            one_sided=one_sided,
+            free_side=1 if spec.type is MechanismType.WEDGE else block.free_side,
+            linearized=False,
+            restrainers=members,
+            loads=loads,
+            thrusts=thrusts,
+            e_neg=None,
+        ),
+        shape=(x_pos, x_neg, z, body.inertia),
     )
 
 

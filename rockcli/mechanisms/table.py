@@ -1,5 +1,5 @@
 """A mechanism of several bodies as the rocking engine reads it: a table of its equation of
-motion (mechanics.Chain).
+motion (mechanics.ChainTable).
 
 The two-block vertical flexure's terms M(θ), M′(θ), V′(θ) = G, g·Γ(θ) = H and the thrusts'
 T(θ) come from its configuration function (rockcli.mechanisms.motion), which walks the chain
@@ -9,7 +9,7 @@ interpolates them by cubic Hermite polynomials (mechanics.chain_terms). The grid
 :data:`NODES` nodes keeps the interpolation error h⁴·|f⁗|/384 far below the engine's tolerance
 (measured against the configuration function in tests/mechanisms/test_flexure_dynamics.py:
 G, H, T and M to about 1e-11 of their size, M′ to 1e-7 of M per radian near the table's end); the
-reference engine reads the configuration function itself (Chain.exact), so the agreement of
+reference engine reads the configuration function itself (ChainTable.exact), so the agreement of
 the two engines measures the table's error too.
 
 Pure and silent: only :mod:`math` and the package's own modules.
@@ -20,7 +20,7 @@ from __future__ import annotations
 import math
 from functools import lru_cache
 
-from rockcli.mechanics import CH_HEAD, PA_COLS, PA_HEAD, Chain
+from rockcli.mechanics import CH_HEAD, PA_COLS, PA_HEAD, ChainTable
 from rockcli.mechanisms.motion import (
     MASS_STEP,
     generalised_mass,
@@ -147,7 +147,7 @@ def end_of(plus: ChainSide, minus: ChainSide) -> float:
 
 
 @lru_cache(maxsize=64)
-def tabulate(plus: ChainSide, minus: ChainSide) -> Chain:
+def tabulate(plus: ChainSide, minus: ChainSide) -> ChainTable:
     """The chain whose side +1 is ``plus`` and side −1 ``minus`` (the same bodies and loads,
     seen from each pivot) as the engine reads it."""
     end = end_of(plus, minus)
@@ -164,7 +164,7 @@ def tabulate(plus: ChainSide, minus: ChainSide) -> Chain:
 
     table = (float(NODES), step, step, *rows(plus, end), *rows(minus, end))
     assert len(table) == CH_HEAD + 2 * NODES * 10
-    return Chain(
+    return ChainTable(
         table=table,
         uplift=(uplift(plus), uplift(minus)),
         restitution=(impact_ratio(plus, minus), impact_ratio(minus, plus)),

@@ -36,6 +36,7 @@ from rockcli.mechanics import (
     Block,
     Load,
     Restrainer,
+    Rocker,
     Thrust,
     frequency_parameter_sq,
     housner_restitution,
@@ -196,7 +197,7 @@ def derive_block(model: Model) -> Block:
     return with_system_restitution(block, model)
 
 
-def with_system_restitution(block: Block, model: Model) -> Block:
+def with_system_restitution(block: Rocker, model: Model) -> Rocker:
     """The block with Housner's e of the block and its loads (or of a wall's mechanism as a
     body of its own shape), per side; a one-sided block with the e of its own impact.
 
@@ -211,7 +212,7 @@ def with_system_restitution(block: Block, model: Model) -> Block:
     table = model.restitution
     if table.rule is RestitutionModel.EXPLICIT or block.mass is None:
         return block
-    if not block.loads and block.body is None and block.chain is None:
+    if isinstance(block, Block) and not block.loads:
         return block
     factor = 1.0 if table.factor is None else table.factor
     if block.one_sided:

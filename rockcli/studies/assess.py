@@ -8,7 +8,7 @@ from typing import TYPE_CHECKING, Any
 
 from rockcli.dynamics.result import Assessment
 from rockcli.dynamics.settings import Engine, SolverSettings
-from rockcli.mechanics import Block
+from rockcli.mechanics import Chain, Rocker
 from rockcli.mechanisms.wall import WHOLE_WALL
 from rockcli.model.schema import Model
 from rockcli.notes import Note
@@ -38,7 +38,7 @@ class AssessmentOutput:
 
     name: str
     kind: str
-    block: Block
+    block: Rocker
     e_rule: str
     result: Assessment
     overturn_angle: float
@@ -117,15 +117,13 @@ def mechanism_warnings(model: Model, rocked: tuple[str, str] | None) -> tuple[No
     return mechanism_notes(model, rocked[0])
 
 
-def overturn_angle(settings: SolverSettings, block: Block) -> float:
+def overturn_angle(settings: SolverSettings, block: Rocker) -> float:
     """The rotation at which a run counts as overturned [rad]: the model's setting, or a
     chain's collapse rotation when smaller (rockcli.dynamics.simulate.pack_parameters)."""
-    if block.chain is None:
-        return settings.overturn_angle
-    return min(settings.overturn_angle, block.chain.end)
+    return min(settings.overturn_angle, block.collapse_limit)
 
 
-def restitution_rule(rule: str, block: Block, rocked: tuple[str, str] | None) -> str:
+def restitution_rule(rule: str, block: Rocker, rocked: tuple[str, str] | None) -> str:
     """How e was obtained, said for what is rocked: the model's rule for its block; for a
     wall's mechanism, Housner's balance about the new pivot of its body (one rigid body) or
     the projection on the motion after the impact (a chain), or for a one-sided mechanism
@@ -136,7 +134,7 @@ def restitution_rule(rule: str, block: Block, rocked: tuple[str, str] | None) ->
     if block.one_sided:
         own = Note("one_sided_impact", "the energy Housner's impact at the other edge keeps, "
                    "the mechanism turning back about its own pivot: √(e₊·e₋)")  # fmt: skip
-    elif block.chain is not None:
+    elif isinstance(block, Chain):
         own = Note("projection", "projection of the chain's motion on the motion after the impact")
     else:
         own = Note("housner_pivot", "Housner of the mechanism's body about the new pivot")

@@ -1,7 +1,7 @@
 """Which mechanism of a wall the time history rocks, as a block, and on which floor motion.
 
 Composition only. A wall's rigid mechanisms (overturning about a storey's base, the wedge, the
-gable) rock as a Block of their own shape (rockcli.mechanisms.rigid); the mechanism is the one
+gable) rock as a RigidBody of their own shape (rockcli.mechanisms.rigid); the mechanism is the one
 named (``--mechanism``) or the governing one of the code check on the same record (like with
 like: the code side's spectrum is the record's, as `rock compare` takes it). A storey
 mechanism rocks on the floor motion at its hinge, Z + the hinge's height, through the same
@@ -15,7 +15,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from rockcli.mechanics import Block
+from rockcli.mechanics import Rocker
 from rockcli.mechanisms.wall import MechanismSpec, Wall
 from rockcli.model.schema import Model
 from rockcli.notes import Note
@@ -29,7 +29,7 @@ class Rocked:
 
     name: str
     type: str
-    block: Block
+    block: Rocker
     floor: Floor | None
 
 
@@ -53,10 +53,10 @@ def governing_spec(model: Model, wall: Wall, record: Record) -> MechanismSpec:
     return named_spec(wall, main.name if main is not None else kin.governing or "")
 
 
-def mechanism_block(model: Model, wall: Wall, spec: MechanismSpec) -> Block:
+def mechanism_block(model: Model, wall: Wall, spec: MechanismSpec) -> Rocker:
     """The mechanism as the engine rocks it, with the e of its bodies (system_restitution): one
-    rigid body as a Block of its own shape (rockcli.mechanisms.rigid), a vertical flexure as
-    a Block carrying its two-block chain (rockcli.mechanisms.flexure; its hinge resolved as
+    rigid body as a RigidBody of its own shape (rockcli.mechanisms.rigid), a vertical flexure as
+    a Chain carrying its two-block table (rockcli.mechanisms.flexure; its hinge resolved as
     the code check resolves it)."""
     from rockcli.mechanisms.flexure import flexure_block
     from rockcli.mechanisms.rigid import rigid_block
@@ -119,7 +119,7 @@ def mechanism_notes(model: Model, name: str) -> tuple[Note, ...]:
     )
 
 
-def system_restitution(block: Block, model: Model) -> Block:
+def system_restitution(block: Rocker, model: Model) -> Rocker:
     """The coefficient of restitution of the mechanism's bodies with their loads, per side,
     times the model's factor (an explicit e as given): two-sided, Housner's balance of angular
     momentum about the new pivot (mechanics.impact_restitution; a chain's projection on the

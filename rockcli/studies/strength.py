@@ -22,7 +22,7 @@ from rockcli.codecheck.restrainer_check import DISPLACEMENT_BASIS
 from rockcli.codecheck.steel import CLAUSE
 from rockcli.codecheck.tie import Verification, anchorage, ductility
 from rockcli.dynamics.result import Assessment
-from rockcli.mechanics import Block, Restrainer
+from rockcli.mechanics import Restrainer, Rocker
 
 #: A member on its yield plateau carries F_y exactly; on its elastic branch K·(u − c) can pass
 #: F_y by the rounding of c (measured 3e-14 relative in tests/dynamics/test_hysteresis.py):
@@ -30,7 +30,7 @@ from rockcli.mechanics import Block, Restrainer
 FORCE_RTOL = 1e-9
 
 
-def restrainer_checks(block: Block, result: Assessment) -> list[dict[str, Any]]:
+def restrainer_checks(block: Rocker, result: Assessment) -> list[dict[str, Any]]:
     """Each restrainer with a strength or a failure elongation: the largest force of the time
     history (over both polarities) against its strength, its ductility and its anchorage
     (module docstring), whether it yielded or was lost (first time over the polarities), and

@@ -13,7 +13,8 @@ import numpy as np
 from rockcli.dynamics.result import Assessment, RockingRun
 from rockcli.dynamics.tolerance import sensitive
 from rockcli.mechanics import (
-    Block,
+    Chain,
+    Rocker,
     collapse_rotations,
     linear_global_stiffness,
     restrainer_coefficient,
@@ -40,7 +41,7 @@ if TYPE_CHECKING:
 SCHEMA = 1
 
 
-def effectiveness(block: Block) -> list[dict[str, Any]]:
+def effectiveness(block: Rocker) -> list[dict[str, Any]]:
     """The paper's §4.3 quick check of every restrainer, per side.
 
     c_K = K r²/I0 against c_E = p² (c_K should exceed c_E by one or two orders of magnitude
@@ -232,15 +233,15 @@ def run_document(run: RockingRun) -> dict[str, Any]:
     }
 
 
-def model_document(name: str, kind: str, block: Block, e_rule: str) -> dict[str, Any]:
+def model_document(name: str, kind: str, block: Rocker, e_rule: str) -> dict[str, Any]:
     """The block as analysed (JSON)."""
     return {
         "name": name,
         "kind": kind,
         "R": block.R,
         "alpha": block.alpha,
-        "b": block.b if block.chain is None else block.chain.centroid[0],
-        "h": block.h if block.chain is None else block.chain.centroid[1],
+        "b": block.centroid[0],
+        "h": block.centroid[1],
         "p": block.p,
         "e": block.e,
         "e_rule": e_rule,
@@ -307,13 +308,13 @@ def model_document(name: str, kind: str, block: Block, e_rule: str) -> dict[str,
     }
 
 
-def chain_document(block: Block) -> dict[str, Any] | None:
+def chain_document(block: Rocker) -> dict[str, Any] | None:
     """A chain's constants (JSON; None for a single body): M(0), the impact ratio by
     projection before the model's factor, d(V′ − T)/dθ at rest, per side, and the rotation
     at which the run counts it collapsed."""
-    chain = block.chain
-    if chain is None:
+    if not isinstance(block, Chain):
         return None
+    chain = block.table
     return {
         "inertia_by_side": {"1": chain.inertia[0], "-1": chain.inertia[1]},
         "impact_ratio_by_side": {"1": chain.restitution[0], "-1": chain.restitution[1]},
@@ -327,7 +328,7 @@ def finite_or_none(x: float) -> float | None:
     return x if math.isfinite(x) else None
 
 
-def impact_rule(block: Block) -> str:
+def impact_rule(block: Rocker) -> str:
     """Which impact rule the run used (spec/rocking.md: say it in the output)."""
     e = f"e = {block.e:.4g}"
     if block.restitution(-1) != block.e:
@@ -340,7 +341,7 @@ def impact_rule(block: Block) -> str:
 def assessment_document(
     model: dict[str, Any],
     record: Record,
-    block: Block,
+    block: Rocker,
     result: Assessment,
     warnings: tuple[str, ...] = (),
 ) -> dict[str, Any]:

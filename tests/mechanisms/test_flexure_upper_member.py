@@ -28,7 +28,7 @@ from rockcli.cli.main import cli
 from rockcli.codecheck.kinematic import Mechanism, alpha0
 from rockcli.dynamics.settings import Engine, SolverSettings
 from rockcli.dynamics.simulate import simulate
-from rockcli.mechanics import chain_terms, path_terms
+from rockcli.mechanics import Chain, chain_terms, path_terms
 from rockcli.mechanisms import motion
 from rockcli.mechanisms.catalogue import build
 from rockcli.model.derive_wall import to_wall
@@ -70,14 +70,14 @@ def test_the_path_is_the_configuration_function(tmp_path: Path) -> None:
     model, wall, spec = flexure_with(tmp_path, spring(1e6))
     block = mechanism_block(model, wall, spec)
     member = block.restrainers[0]
-    assert member.path and block.chain is not None
+    assert member.path and isinstance(block, Chain)
     rng = random.Random(34)
     for s in (1, -1):
         point = build(wall, spec, s).placement(0)
         assert path_terms(member.path, 0, s, 0.0) == (0.0, point.moment(1.0, 0.0))
         assert member.arm_at_rest(s) == pytest.approx(1.0, rel=1e-12)  # δx = (4 − 3)/(4 − 2)·2
         for _ in range(40):
-            a = rng.uniform(0.0, block.chain.end)
+            a = rng.uniform(0.0, block.table.end)
             u, du = path_terms(member.path, 0, s, a)
             assert u == pytest.approx(point.elongation(a), rel=1e-10)
             assert du == pytest.approx(point.moment(1.0, a), rel=1e-10)
@@ -154,13 +154,13 @@ def test_a_stiff_member_holds_the_chain_at_its_static_rotation(tmp_path: Path) -
     k = 1e10
     model, wall, spec = flexure_with(tmp_path, spring(k))
     block = mechanism_block(model, wall, spec)
-    assert block.chain is not None
+    assert isinstance(block, Chain)
     peak = 2.0 * block.uplift_acceleration
     time = np.arange(0.0, 3.0, 0.002)
     accel = peak * np.sin(2 * np.pi * time / 0.5) * (time < 1.0)
     held = simulate(block, time, accel, 0.002)
     for s, extreme in ((1, held.theta_max), (-1, -held.theta_min)):
-        g, h, _, _, _ = chain_terms(block.chain.table, s, 0.0)
+        g, h, _, _, _ = chain_terms(block.table.table, s, 0.0)
         static = (peak * h - g) / (k * block.restrainers[0].arm_at_rest(s) ** 2)
         assert static <= extreme <= 2.0 * static
     bare = simulate(mechanism_block(*flexure_with(tmp_path, "")), time, accel, 0.002)

@@ -23,7 +23,7 @@ import pytest
 
 from rockcli.dynamics.settings import Engine, SolverSettings
 from rockcli.dynamics.simulate import simulate
-from rockcli.mechanics import Block, impact_restitution
+from rockcli.mechanics import Block, RigidBody, impact_restitution
 from rockcli.mechanisms.rigid import composite, parts, rigid_block
 from rockcli.mechanisms.wall import MechanismSpec, MechanismType, Storey, Wall
 
@@ -97,7 +97,7 @@ def test_housner_restitution_of_a_body_is_the_rectangles() -> None:
     # (Housner 1963; paper Eq. 3).
     b, h, m = 0.3, 1.5, 1000.0
     i_g = m * (4 * b * b + 4 * h * h) / 12.0
-    body = Block(R=math.hypot(b, h), alpha=math.atan2(b, h), mass=m, body=(b, b, h, i_g))
+    body = RigidBody(R=math.hypot(b, h), alpha=math.atan2(b, h), mass=m, shape=(b, b, h, i_g))
     expected = 1.0 - 1.5 * math.sin(math.atan2(b, h)) ** 2
     assert impact_restitution(body, 1) == pytest.approx(expected, rel=1e-13)
 

@@ -26,7 +26,7 @@ if TYPE_CHECKING:
     from rockcli.codecheck.response import RecordSpectrum
     from rockcli.codecheck.result import KinematicResult
     from rockcli.dynamics.result import Assessment
-    from rockcli.mechanics import Block
+    from rockcli.mechanics import Rocker
     from rockcli.model.schema import Model
     from rockcli.records.record import Record
     from rockcli.studies.sweep.suite import SuiteInput
@@ -239,7 +239,7 @@ def case_mechanism(kin: KinematicResult | None) -> tuple[str | None, KinematicRe
     return main.name, shown_result(kin, main)
 
 
-def max_utilisation(block: Block, result: Assessment) -> float | None:
+def max_utilisation(block: Rocker, result: Assessment) -> float | None:
     """The largest force/strength of the restrainers that have a strength (None: none has)."""
     from rockcli.studies.strength import restrainer_checks
 
