@@ -118,8 +118,7 @@ def mechanism_sections(part: Part, record: Any, w: Words) -> list[Section]:
         own = part.inputs.model.notes
         blocks: list[Block] = [Paragraph(w("summary.mechanism_intro", name=name))]
         blocks += [b for b in body.blocks[1:] if not (isinstance(b, Paragraph) and b.text == own)]
-        blocks += kinematic_section(part.inputs, doc["kinematic"], w, out.rocking.block,
-                                    catalogue=False).blocks  # fmt: skip
+        blocks += kinematic_section(part.inputs, doc["kinematic"], w, catalogue=False).blocks
         blocks += rocking_section(doc["rocking"], out, record, w).blocks
         blocks.append(Paragraph(w(f"class.{doc['classification']}"), "verdict"))
         section = Section(f"mechanism-{i}", w("section.mechanism", name=name), tuple(blocks))
@@ -137,7 +136,7 @@ def wall_sections(part: Part, w: Words) -> list[Section]:
     return [
         model_section(inputs, doc["rocking"]["model"], w, doc["rocking"].get("mechanism")),
         demand_section(inputs, doc, record, w, out),
-        kinematic_section(inputs, doc["kinematic"], w, out.rocking.block),
+        kinematic_section(inputs, doc["kinematic"], w),
         rocking_section(doc["rocking"], out, record, w),
         comparison_section(doc, w),
         *mechanism_sections(part, record, w),
@@ -346,22 +345,16 @@ def demand_section(
 
 
 def check_position(model: Model, edition: str, mechanism: str | None) -> Position:
-    """Where the code check put the mechanism shown, by the check's own functions: the
-    model's [building] for its block (codecheck.position.position, as studies.kinematic.analyse
-    calls it), Z + the base hinge for a wall's mechanism (studies.catalogue.spec_position)."""
-    from rockcli.codecheck.position import position
-    from rockcli.model.derive_wall import is_wall, to_wall
+    """Where the code check put the mechanism shown, by the check's own function
+    (studies.catalogue.mechanism_position of the catalogue's mechanism; a block file's block
+    when no mechanism is named)."""
+    from rockcli.model.catalogue import catalogue, named_mechanism
+    from rockcli.studies.catalogue import mechanism_position
     from rockcli.studies.kinematic import check_settings
 
     settings = check_settings(model, edition)
-    if is_wall(model) and mechanism is not None:
-        from rockcli.studies.catalogue import spec_position
-        from rockcli.studies.rocked import named_spec
-
-        wall = to_wall(model)
-        return spec_position(wall, named_spec(wall, mechanism), settings)
-    b = settings.building
-    return position(b.Z, b.H, b.N, b.T1, b.gamma, b.psi, b.damping)
+    mech = catalogue(model)[0] if mechanism is None else named_mechanism(model, mechanism)
+    return mechanism_position(mech, settings.building)
 
 
 def floor_figure(
@@ -447,7 +440,7 @@ def record_demand_grids(demand: Mapping[str, Any], w: Words) -> list[Block]:
 
 
 def kinematic_section(
-    inputs: Inputs, kin: Mapping[str, Any], w: Words, block: Any = None, catalogue: bool = True
+    inputs: Inputs, kin: Mapping[str, Any], w: Words, catalogue: bool = True
 ) -> Section:
     """The code's check of the mechanism shown (``catalogue``: with the table of every
     mechanism of a wall, which the governing mechanism's section has and the others' need
@@ -458,7 +451,7 @@ def kinematic_section(
     blocks: list[Block] = [Paragraph(w(f"kin.intro_{kin['edition']}"))]
     if catalogue and len(kin.get("mechanisms", ())) > 1:
         blocks.append(catalogue_grid(kin, w))
-    mechs = mechanisms(inputs.model, kin, block)
+    mechs = mechanisms(inputs.model, kin)
     blocks.append(activation_grid(mechs, w))
     quantities = [
         ("M*", participating_mass_of(mechs, kin), "kg", "kin.M_star"),
@@ -513,35 +506,21 @@ def catalogue_grid(kin: Mapping[str, Any], w: Words) -> Grid:
                 (False, *([True] * 8)))  # fmt: skip
 
 
-def mechanisms(model: Model, kin: Mapping[str, Any], block: Any = None) -> dict[int, Any]:
-    """The check's mechanism on each side it looks at, keyed by side: a wall's mechanism as
-    the catalogue checks it (studies.catalogue.mechanism_of, its hinge where the check put
-    it: a vertical flexure's two blocks, not the block it rocks as), else the block with its
-    loads and thrusts as the check took them (studies.kinematic.mechanism; ``block``: the
-    body the time history rocked, default the model's)."""
-    from rockcli.model.derive import to_block
-    from rockcli.model.derive_wall import is_wall
-    from rockcli.studies.kinematic import check_settings, mechanism
+def mechanisms(model: Model, kin: Mapping[str, Any]) -> dict[int, Any]:
+    """The check's mechanism on each side it looks at, keyed by side: the catalogue's
+    mechanism shown (rockcli.model.catalogue: a vertical flexure's two blocks about the hinge
+    the check found, not what the time history rocks; a block file's block with its loads
+    and thrusts), with the edition's sums (studies.catalogue.side_check)."""
+    from rockcli.model.catalogue import catalogue, named_mechanism
+    from rockcli.studies.catalogue import side_check
+    from rockcli.studies.kinematic import check_settings
 
     settings = check_settings(model, kin["edition"])
     sides = sorted({int(s) for s in kin.get("alpha0_by_side", {})} | {int(kin["side"])},
                    reverse=True)  # fmt: skip
-    if is_wall(model) and kin.get("mechanism") is not None:
-        from dataclasses import replace as replaced
-
-        from rockcli.mechanisms.wall import OPTIMAL
-        from rockcli.model.derive_wall import to_wall
-        from rockcli.studies.catalogue import mechanism_of
-        from rockcli.studies.rocked import named_spec
-
-        wall = to_wall(model)
-        spec = named_spec(wall, kin["mechanism"])
-        entry = next((m for m in kin.get("mechanisms", ()) if m["name"] == kin["mechanism"]), None)
-        if spec.hinge_height == OPTIMAL and entry is not None:
-            spec = replaced(spec, hinge_height=float(entry["hinge_height"]))
-        return {side: mechanism_of(wall, spec, side, settings) for side in sides}
-    block = to_block(model) if block is None else block
-    return {side: mechanism(block, settings, side) for side in sides}
+    name = kin.get("mechanism")
+    mech = catalogue(model)[0] if name is None else named_mechanism(model, name)
+    return {side: side_check(mech, side, settings) for side in sides}
 
 
 def participating_mass_of(mechs: Mapping[int, Any], kin: Mapping[str, Any]) -> float:

@@ -83,7 +83,7 @@ def suite_sections(part: SuitePart, w: Words) -> list[Section]:
     return [
         model_section(inputs, first["model"], w, first.get("mechanism")),
         suite_demand_section(inputs, doc, part.check, w, first),
-        kinematic_section(inputs, doc["kinematic"], w, records[0][0].block),
+        kinematic_section(inputs, doc["kinematic"], w),
         suite_rocking_section(doc, records, w),
         suite_comparison_section(doc, w, named(doc, records)),
         suite_conclusions_section(doc, w),

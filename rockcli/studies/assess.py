@@ -16,6 +16,7 @@ from rockcli.records.record import Record
 
 if TYPE_CHECKING:
     from rockcli.studies.floor import Floor
+    from rockcli.studies.rocked import Rocked
 
 
 @dataclass(frozen=True)
@@ -76,8 +77,10 @@ def assess_model_output(
     from rockcli.dynamics.simulate import assess
     from rockcli.model.derive import describe, solver_options
     from rockcli.model.plausible import model_warnings
+    from rockcli.studies.rocked import mechanism_notes
 
-    block, shaking, floor, rocked = rocked_input(model, record, ground, file, mechanism)
+    rocked_value, shaking, floor = rocked_motion(model, record, ground, file, mechanism)
+    block, rocked = rocked_value.block, rocked_value.named
     settings = settings_from(solver_options(model))
     result = assess(
         block,
@@ -99,22 +102,16 @@ def assess_model_output(
         restitution_rule(describe(model).e_rule, block, rocked),
         result,
         overturn_angle(settings, block),
-        warnings=(*model_warnings(model), *record.warnings, *mechanism_warnings(model, rocked)),
+        warnings=(
+            *model_warnings(model),
+            *record.warnings,
+            *mechanism_notes(rocked_value.mechanism),
+        ),
         floor=floor,
         ground=ground,
         shaking=shaking if floor is not None else None,
         mechanism=rocked,
     )
-
-
-def mechanism_warnings(model: Model, rocked: tuple[str, str] | None) -> tuple[Note, ...]:
-    """What a wall's mechanism as rocked needs said (rockcli.studies.rocked.mechanism_notes):
-    a restrainer of a vertical flexure taken as at its held top."""
-    if rocked is None or rocked[1] != "vertical-flexure":
-        return ()
-    from rockcli.studies.rocked import mechanism_notes
-
-    return mechanism_notes(model, rocked[0])
 
 
 def overturn_angle(settings: SolverSettings, block: Rocker) -> float:
@@ -151,25 +148,35 @@ BLOCK_MECHANISM = WHOLE_WALL
 
 def rocked_input(model: Model, record: Record, ground: bool, file: str | None,
                  mechanism: str | None):  # fmt: skip
-    """(block, the motion it sees, its floor, (name, type) of a wall's mechanism or None)."""
-    from rockcli.model.derive import to_block
-    from rockcli.model.derive_wall import is_wall
-    from rockcli.studies.floor import block_input, floor_record
+    """(what the engine rocks, the motion it sees, its floor, (name, type) of a wall's
+    mechanism or None for a block file's block) (:func:`rocked_motion`)."""
+    rocked, shaking, floor = rocked_motion(model, record, ground, file, mechanism)
+    return rocked.block, shaking, floor, rocked.named
 
-    if not is_wall(model):
-        if mechanism not in (None, BLOCK_MECHANISM):
-            from rockcli.errors import InputError
 
-            raise InputError("no such mechanism", where="--mechanism", value=mechanism,
-                             allowed=f"'{BLOCK_MECHANISM}' (the model's block)")  # fmt: skip
-        shaking, floor = block_input(model, record, ground=ground, file=file)
-        return to_block(model), shaking, floor, None
+def rocked_motion(model: Model, record: Record, ground: bool, file: str | None,
+                  mechanism: str | None) -> tuple[Rocked, Record, Floor | None]:  # fmt: skip
+    """(the mechanism rocked, the motion it sees, its floor): the catalogue's mechanism
+    named, the only one or the governing one (rockcli.studies.rocked), on its floor motion
+    unless ``ground`` (refused for a mechanism on the ground, where it would change nothing
+    the user asked)."""
+    from rockcli.errors import InputError
+    from rockcli.studies.floor import floor_record
     from rockcli.studies.rocked import rocked_mechanism
 
     rocked = rocked_mechanism(model, record, mechanism)
+    if ground and rocked.floor is None:
+        raise InputError(
+            "the block is on the ground already (building.Z = 0 or no [building], and the "
+            "mechanism's base at the wall's base)",
+            file=file,
+            where="--ground",
+            allowed="--ground only with a block at height ([building] Z > 0) or a mechanism "
+            "above the wall's base",
+        )
     floor = None if ground else rocked.floor
     shaking = record if floor is None else floor_record(record, floor)
-    return rocked.block, shaking, floor, (rocked.name, rocked.type)
+    return rocked, shaking, floor
 
 
 def assess_model(model: Model, record: Record, engine: str, *, ground: bool = False) -> Assessment:

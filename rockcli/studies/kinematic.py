@@ -13,30 +13,25 @@ from dataclasses import dataclass, replace
 
 from rockcli.codecheck.demand import LimitStateDemand, Spectrum, record_demand
 from rockcli.codecheck.kinematic import (
-    Capacity,
     Mechanism,
-    alpha0,
-    capacity,
 )
-from rockcli.codecheck.position import position
 from rockcli.codecheck.result import KinematicResult
 from rockcli.errors import InputError
 from rockcli.mechanics import Block
 from rockcli.model.bounds import MIN_AG
+from rockcli.model.catalogue import UNIT_MASS
+from rockcli.model.catalogue import Mechanism as CatalogueMechanism
 from rockcli.model.derive_ntc import NtcSettings
 from rockcli.model.schema import Model
 from rockcli.records.record import Record
-from rockcli.studies.capacity_check import analyse_capacity
 
 #: Limit states each edition checks.
 LIMIT_STATES = {"2009": ("SLD", "SLV"), "2019": ("SLD", "SLV", "SLC")}
-#: Unit mass given to a block without a [mass] table: the kinematic ratios (α0, e*, a0*, d0*)
-#: of a block alone do not depend on its mass [kg].
-UNIT_MASS = 1.0
 
 
 def mechanism(block: Block, settings: NtcSettings, side: int) -> Mechanism:
-    """The mechanism on one side: the block with its loads and thrusts (the model's own)."""
+    """The mechanism on one side: the block with its loads and thrusts (the model's own; a
+    unit mass when it has none, rockcli.model.catalogue.UNIT_MASS)."""
     if block.mass is None:
         block = replace(block, mass=UNIT_MASS)
     return Mechanism(
@@ -45,17 +40,6 @@ def mechanism(block: Block, settings: NtcSettings, side: int) -> Mechanism:
         distributed=settings.distributed,
         per_block=settings.edition == "2019",
     )
-
-
-def governing_capacity(block: Block, settings: NtcSettings) -> Capacity:
-    """The capacity of the side the block overturns to most easily.
-
-    One-sided motion: the free side. Two-sided: both sides, the one with the smaller d0*
-    (a side without d0*, positive stiffness, is the stronger; ties: θ > 0).
-    """
-    sides = (block.free_side,) if block.one_sided else (1, -1)
-    caps = [capacity(mechanism(block, settings, s), settings.FC) for s in sides]
-    return min(caps, key=lambda c: (c.d0_star is None, c.d0_star or 0.0, -c.mech.side))
 
 
 def code_demand(
@@ -148,17 +132,6 @@ def demands(
     )
 
 
-def analyse(
-    block: Block, settings: NtcSettings, dem: dict[str, LimitStateDemand]
-) -> KinematicResult:
-    """The kinematic analysis and the checks of the settings' edition."""
-    cap = governing_capacity(block, settings)
-    b = settings.building
-    pos = position(b.Z, b.H, b.N, b.T1, b.gamma, b.psi, b.damping)
-    by_side = {str(s): alpha0(mechanism(block, settings, s)) for s in (1, -1)}
-    return analyse_capacity(cap, settings, dem, pos, by_side)
-
-
 @dataclass(frozen=True)
 class KinematicOutput:
     """The kinematic analysis of a model: its name, the result and the warnings on its inputs
@@ -178,58 +151,28 @@ def kinematic_model(
     grid_file: str | None = None,
     spectrum: Spectrum | None = None,
     demand_of: Callable[[NtcSettings, float], dict[str, LimitStateDemand]] | None = None,
+    mechanisms: tuple[CatalogueMechanism, ...] | None = None,
 ) -> KinematicResult:
     """The kinematic analysis of a validated model.
 
     spectrum: the record's response spectrum when the caller already has it (a study reuses
     one per record); record: the record, to compute it otherwise. demand_of: every limit
     state's demand from the settings and g, in place of record, site and the model's own (a
-    record suite's target, rockcli.studies.suite.compare).
+    record suite's target, rockcli.studies.suite.compare). mechanisms: the model's catalogue
+    when the caller already has it (rockcli.model.catalogue.catalogue).
     """
-    from rockcli.model.derive import to_block
-    from rockcli.model.derive_wall import is_wall
+    from rockcli.model.catalogue import catalogue
+    from rockcli.studies.catalogue import analyse_catalogue
 
     settings = check_settings(model, edition)
-    if is_wall(model):
-        return wall_model(model, settings, record, site, grid_file, spectrum, demand_of)
-    block = to_block(model)
+    if mechanisms is None:
+        mechanisms = catalogue(model)
+    g = model.analysis.g
     if demand_of is not None:
-        dem = demand_of(settings, block.g)
+        dem = demand_of(settings, g)
     else:
-        dem = demands(settings, block.g, record, site, grid_file, spectrum)
-    result = analyse(block, settings, dem)
-    return with_block_entry(result, block, settings)
-
-
-def with_block_entry(result: KinematicResult, block: Block, settings: NtcSettings):
-    """Today's block as the catalogue's one mechanism: overturning of the whole wall."""
-    from rockcli.codecheck.kinematic import participating_mass
-    from rockcli.studies.catalogue import MechanismResult
-
-    m_star = participating_mass(mechanism(block, settings, result.side))
-    from rockcli.mechanisms.wall import WHOLE_WALL
-
-    name = WHOLE_WALL
-    result = replace(result, mechanism=name)
-    entry = MechanismResult(name, "overturning", 0.0, None, m_star, result)
-    return replace(result, catalogue=(entry,), governing=name)
-
-
-def wall_model(model, settings, record, site, grid_file, spectrum, demand_of) -> KinematicResult:
-    """The catalogue of a wall: every mechanism, the governing one's result with the rest."""
-    from rockcli.model.derive import free_side
-    from rockcli.model.derive_wall import to_wall
-    from rockcli.model.schema import Sides
-    from rockcli.studies.catalogue import analyse_wall
-
-    wall = to_wall(model)
-    if demand_of is not None:
-        dem = demand_of(settings, wall.g)
-    else:
-        dem = demands(settings, wall.g, record, site, grid_file, spectrum)
-    motion = model.motion
-    free = free_side(motion.stopped) if motion.sides is Sides.ONE else None
-    results = analyse_wall(wall, settings, dem, free)
+        dem = demands(settings, g, record, site, grid_file, spectrum)
+    results = analyse_catalogue(mechanisms, settings, dem)
     return replace(results[0].result, catalogue=results, governing=results[0].name)
 
 

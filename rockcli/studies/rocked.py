@@ -1,11 +1,13 @@
-"""Which mechanism of a wall the time history rocks, as a block, and on which floor motion.
+"""Which mechanism of the model's catalogue the time history rocks, and on which floor motion.
 
-Composition only. A wall's rigid mechanisms (overturning about a storey's base, the wedge, the
-gable) rock as a RigidBody of their own shape (rockcli.mechanisms.rigid); the mechanism is the one
-named (``--mechanism``) or the governing one of the code check on the same record (like with
-like: the code side's spectrum is the record's, as `rock compare` takes it). A storey
-mechanism rocks on the floor motion at its hinge, Z + the hinge's height, through the same
-first mode as the code check's floor spectrum (rockcli.studies.catalogue.spec_position); a
+Composition only. The catalogue (rockcli.model.catalogue) gives each mechanism once, with
+what the engine rocks: a block file's block; a wall's rigid mechanisms (overturning about a
+storey's base, the wedge, the gable) as a RigidBody of their own shape
+(rockcli.mechanisms.rigid). The mechanism is the one named (``--mechanism``), the only one, or
+the governing one of the code check on the same record (like with like: the code side's
+spectrum is the record's, as `rock compare` takes it). A storey mechanism rocks on the floor
+motion at its hinge, Z + the hinge's height, through the same first mode as the code check's
+floor spectrum (rockcli.studies.catalogue.mechanism_position); a
 vertical flexure on the motion of its storey's base (the floor above, which holds its top,
 moves otherwise: docs/interpretations.md). The two-block vertical flexure rocks as its chain
 (rockcli.mechanisms.flexure), with its restrainers on either block.
@@ -17,6 +19,8 @@ from dataclasses import dataclass
 
 from rockcli.mechanics import Rocker
 from rockcli.mechanisms.wall import MechanismSpec, Wall
+from rockcli.model.catalogue import Mechanism as CatalogueMechanism
+from rockcli.model.derive_ntc import BuildingSettings
 from rockcli.model.schema import Model
 from rockcli.notes import Note
 from rockcli.records.record import Record
@@ -25,12 +29,32 @@ from rockcli.studies.floor import Floor
 
 @dataclass(frozen=True)
 class Rocked:
-    """The mechanism the time history rocks: its name and type, its block, its floor."""
+    """The mechanism the time history rocks: the catalogue's value, what the engine rocks
+    (its ``rocker``), and the floor it stands on (None: on the ground)."""
 
-    name: str
-    type: str
-    block: Rocker
+    mechanism: CatalogueMechanism
     floor: Floor | None
+
+    @property
+    def name(self) -> str:
+        """Its name."""
+        return self.mechanism.name
+
+    @property
+    def type(self) -> str:
+        """Its type (a MechanismType value)."""
+        return self.mechanism.type.value
+
+    @property
+    def block(self) -> Rocker:
+        """What the engines rock."""
+        return self.mechanism.rocker
+
+    @property
+    def named(self) -> tuple[str, str] | None:
+        """(name, type) of a wall's mechanism, as the outputs name it; None for a block
+        file's block, which the outputs describe as the model itself."""
+        return None if self.mechanism.wall is None else (self.name, self.type)
 
 
 def named_spec(wall: Wall, name: str) -> MechanismSpec:
@@ -40,47 +64,28 @@ def named_spec(wall: Wall, name: str) -> MechanismSpec:
     return named(wall.mechanisms, name)
 
 
-def governing_spec(model: Model, wall: Wall, record: Record) -> MechanismSpec:
+def governing(model: Model, mechanisms: tuple[CatalogueMechanism, ...],
+              record: Record) -> CatalogueMechanism:  # fmt: skip
     """The governing mechanism of the code check: under the model's own demand when it sets
     one (so that every record of a suite rocks the same mechanism), else under the record's
     spectrum (`rock compare` names the mechanism it rocks itself)."""
-    from rockcli.studies.catalogue import main_mechanism
+    from rockcli.studies.catalogue import main_mechanism, named
     from rockcli.studies.kinematic import kinematic_model
 
     own = model.ntc is not None and model.ntc.demand is not None  # a site needs the grid
-    kin = kinematic_model(model) if own else kinematic_model(model, record=record)
+    given = {} if own else {"record": record}
+    kin = kinematic_model(model, mechanisms=mechanisms, **given)
     main = main_mechanism(kin)  # the governing one when it rocks, else the first that does
-    return named_spec(wall, main.name if main is not None else kin.governing or "")
+    return named(mechanisms, main.name if main is not None else kin.governing or "")
 
 
 def mechanism_block(model: Model, wall: Wall, spec: MechanismSpec) -> Rocker:
-    """The mechanism as the engine rocks it, with the e of its bodies (system_restitution): one
-    rigid body as a RigidBody of its own shape (rockcli.mechanisms.rigid), a vertical flexure as
-    a Chain carrying its two-block table (rockcli.mechanisms.flexure; its hinge resolved as
-    the code check resolves it)."""
-    from rockcli.mechanisms.flexure import flexure_block
-    from rockcli.mechanisms.rigid import rigid_block
-    from rockcli.mechanisms.wall import MechanismType
-    from rockcli.model.derive import block_of
+    """What the engine rocks of the wall's mechanism ``spec`` (its catalogue value's rocker:
+    rockcli.model.catalogue.Mechanism.rocker, a vertical flexure's hinge resolved as the code
+    check resolves it)."""
+    from rockcli.model.catalogue import free_side_of, wall_mechanism
 
-    block = block_of(model)
-    if spec.type is not MechanismType.VERTICAL_FLEXURE:
-        return system_restitution(rigid_block(wall, spec, block), model)
-    spec = flexure_spec(model, wall, spec)
-    return system_restitution(flexure_block(wall, spec, block), model)
-
-
-def flexure_spec(model: Model, wall: Wall, spec: MechanismSpec) -> MechanismSpec:
-    """The vertical flexure ``spec`` with the hinge the code check finds: given, or the
-    optimum over the sides the wall can open to."""
-    from rockcli.mechanisms.catalogue import sides_of
-    from rockcli.model.derive import block_of
-    from rockcli.studies.catalogue import resolved
-    from rockcli.studies.kinematic import check_settings
-
-    block = block_of(model)
-    sides = sides_of(spec, block.free_side if block.one_sided else None)
-    return resolved(wall, spec, sides, check_settings(model))[0]
+    return wall_mechanism(model, wall, spec, free_side_of(model)).rocker
 
 
 #: The note on a member of a flexure's upper block taken as at its held top.
@@ -92,30 +97,30 @@ HELD_AT_TOP = (
 )
 
 
-def mechanism_notes(model: Model, name: str) -> tuple[Note, ...]:
-    """What the reader needs to know of the wall's mechanism ``name`` as the time history
-    rocks it: a member on a vertical flexure's upper block taken as at its held top
+def mechanism_notes(mech: CatalogueMechanism) -> tuple[Note, ...]:
+    """What the reader needs to know of a mechanism as the time history rocks it: a member
+    on a vertical flexure's upper block taken as at its held top
     (rockcli.mechanisms.flexure.held_at_top)."""
     from rockcli.mechanisms.flexure import held_at_top
     from rockcli.mechanisms.wall import MechanismType
-    from rockcli.model.derive_wall import to_wall
 
-    wall = to_wall(model)
-    spec = named_spec(wall, name)
-    if spec.type is not MechanismType.VERTICAL_FLEXURE or not wall.restrainers:
+    wall, spec = mech.wall, mech.spec
+    if wall is None or spec is None or spec.type is not MechanismType.VERTICAL_FLEXURE:
+        return ()
+    if not wall.restrainers:
         return ()
     return tuple(
         Note(
             "held_at_top",
             HELD_AT_TOP,
-            name=name,
+            name=mech.name,
             member=h.name,
             z=float(h.z),
             rotation=float(h.rotation),
             side=f"{h.side:+d}",
             end=float(h.end),
         )  # fmt: skip
-        for h in held_at_top(wall, flexure_spec(model, wall, spec))
+        for h in held_at_top(wall, spec)
     )
 
 
@@ -132,35 +137,40 @@ def system_restitution(block: Rocker, model: Model) -> Rocker:
 
 
 def rocked_mechanism(model: Model, record: Record, name: str | None) -> Rocked:
-    """The mechanism of a wall model the time history rocks, its block and its floor."""
-    from rockcli.model.derive_wall import to_wall
+    """The mechanism of the model the time history rocks (the one named, the only one, or
+    the governing one of the code check) and its floor."""
+    from rockcli.model.catalogue import catalogue
+    from rockcli.model.derive_ntc import building_settings
+    from rockcli.studies.catalogue import named
 
-    wall = to_wall(model)
-    spec = named_spec(wall, name) if name is not None else governing_spec(model, wall, record)
-    block = mechanism_block(model, wall, spec)
-    return Rocked(spec.name, spec.type.value, block, mechanism_floor(model, wall, spec))
+    mechanisms = catalogue(model)
+    if name is not None:
+        mech = named(mechanisms, name)
+    elif len(mechanisms) == 1:
+        mech = mechanisms[0]
+    else:
+        mech = governing(model, mechanisms, record)
+    return Rocked(mech, mechanism_floor(mech, building_settings(model)))
 
 
-def mechanism_floor(model: Model, wall: Wall, spec: MechanismSpec) -> Floor | None:
-    """The floor at the mechanism's base hinge (None on the ground)."""
-    from rockcli.studies.catalogue import spec_position
-    from rockcli.studies.kinematic import check_settings
+def mechanism_floor(mech: CatalogueMechanism, building: BuildingSettings) -> Floor | None:
+    """The floor at the mechanism's base (None on the ground): Z + its base, through the
+    position the code check gives it (rockcli.studies.catalogue.mechanism_position)."""
+    from rockcli.studies.catalogue import mechanism_position
 
-    pos = spec_position(wall, spec, check_settings(model))
+    pos = mechanism_position(mech, building)
     if not pos.at_height:
         return None
     assert pos.T1 is not None
-    b = model.building
-    return Floor(Z=pos.Z, T1=pos.T1, psi=pos.psi, gamma=pos.gamma, xi=b.damping, notes=pos.notes)
+    return Floor(Z=pos.Z, T1=pos.T1, psi=pos.psi, gamma=pos.gamma, xi=building.damping,
+                 notes=pos.notes)  # fmt: skip
 
 
 def rockable_names(model_path: str) -> list[str | None]:
     """The mechanisms of the model file the time history rocks: every one, in the catalogue's
-    order ([None]: a model of one block, its own)."""
-    from rockcli.model.derive_wall import is_wall, to_wall
+    order ([None]: a block file, its block)."""
+    from rockcli.model.catalogue import catalogue
     from rockcli.model.load import load_model
 
-    model = load_model(model_path)
-    if not is_wall(model):
-        return [None]
-    return [spec.name for spec in to_wall(model).mechanisms]
+    mechanisms = catalogue(load_model(model_path))
+    return [None if m.wall is None else m.name for m in mechanisms]

@@ -82,10 +82,9 @@ def test_each_mechanism_s_sides_match_the_code_check_statics(name: str) -> None:
     spec = named_spec(wall, name)
     block = mechanism_block(model, wall, spec)
     if spec.hinge_height == "optimal":
-        from rockcli.studies.catalogue import resolved
-        from rockcli.studies.kinematic import check_settings
+        from rockcli.model.catalogue import resolved
 
-        spec, _ = resolved(wall, spec, (1, -1), check_settings(model))
+        spec, _ = resolved(wall, spec, (1, -1))
     got = collapse_rotations(block)
     for k, s in enumerate((1, -1)):
         expected = restoring_zero(Mechanism(side=s, geometry=build(wall, spec, s)))

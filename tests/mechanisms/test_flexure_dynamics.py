@@ -93,10 +93,9 @@ def test_the_table_interpolates_the_configuration_function() -> None:
     # table's CURVATURE_STEP) to 1e-7 of M per radian near the table's end; at a node the
     # stored values themselves.
     _, wall, spec = flexure(FACADE, "vertical flexure, storey 2")
-    from rockcli.studies.catalogue import resolved
-    from rockcli.studies.kinematic import check_settings
+    from rockcli.model.catalogue import resolved
 
-    spec, _ = resolved(wall, spec, (1, -1), check_settings(load_model(str(FACADE))))
+    spec, _ = resolved(wall, spec, (1, -1))
     plus, minus = build(wall, spec, 1), build(wall, spec, -1)
     chain = tabulate(plus, minus)
     rng = random.Random(22)
@@ -116,11 +115,10 @@ def test_the_table_interpolates_the_configuration_function() -> None:
 def test_the_uplift_of_each_side_is_the_codes_alpha0_bit_for_bit() -> None:
     model = load_model(str(FACADE))
     wall = to_wall(model)
-    from rockcli.studies.catalogue import resolved
-    from rockcli.studies.kinematic import check_settings
+    from rockcli.model.catalogue import resolved
 
     for name in ("vertical flexure, storey 1", "vertical flexure, storey 2"):
-        spec, _ = resolved(wall, named_spec(wall, name), (1, -1), check_settings(model))
+        spec, _ = resolved(wall, named_spec(wall, name), (1, -1))
         block = mechanism_block(model, wall, spec)
         code = tuple(alpha0(Mechanism(geometry=build(wall, spec, s))) for s in (1, -1))
         assert uplift_accelerations(block) == code
@@ -142,11 +140,9 @@ def test_each_sides_impact_ratio_on_an_asymmetric_chain() -> None:
     # (Cauchy–Schwarz); and the chain keeps each side's ratio in its own place.
     model = load_model(str(FACADE))
     wall = to_wall(model)
-    from rockcli.studies.catalogue import resolved
-    from rockcli.studies.kinematic import check_settings
+    from rockcli.model.catalogue import resolved
 
-    spec, _ = resolved(wall, named_spec(wall, "vertical flexure, storey 1"), (1, -1),
-                       check_settings(model))  # fmt: skip
+    spec, _ = resolved(wall, named_spec(wall, "vertical flexure, storey 1"), (1, -1))
     plus, minus = build(wall, spec, 1), build(wall, spec, -1)
     chain = tabulate(plus, minus)
     e_pos, e_neg = motion.impact_ratio(plus, minus), motion.impact_ratio(minus, plus)

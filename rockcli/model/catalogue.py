@@ -1,0 +1,338 @@
+"""Every model as a catalogue of mechanisms, each derived once (a block file: a catalogue of one).
+
+A :class:`Mechanism` is everything the code check and the time history read of one mechanism,
+derived from the model once: its name and type, its hinge, the sides it can open to with the
+code check's geometry of each (the block's closed forms, or the wall's placed bodies:
+rockcli.mechanisms), where it stands in the building, whether it is free to vibrate and as
+what member, the notes on how it was placed, and — built when first asked, as the chain's
+table takes time — what the engines rock (``rocker``: the block itself, a RigidBody or a
+Chain, with the e of its bodies). The catalogue is the one place that tells a block file from
+a wall file; the analyses downstream read the values alone.
+
+A vertical flexure's optimal hinge is searched here, once (the lowest α0 over the sides it can
+open to: rockcli.mechanisms.catalogue.optimal_hinge), and every reader takes it from the value.
+
+Pure: the model, the mechanisms and the code check's α0.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, replace
+from functools import cached_property
+
+from rockcli.codecheck.free import KAPPA_CANTILEVER, KAPPA_FLEXURE
+from rockcli.codecheck.kinematic import Mechanism as SideCheck
+from rockcli.codecheck.kinematic import alpha0
+from rockcli.errors import InputError
+from rockcli.mechanics import Block, Rocker
+from rockcli.mechanisms.block import BlockSide
+from rockcli.mechanisms.catalogue import (
+    CrushingError,
+    build,
+    flexure_range,
+    hinge_of,
+    optimal_hinge,
+    overburden_above,
+    sides_of,
+    storey_at,
+)
+from rockcli.mechanisms.side import ChainSide
+from rockcli.mechanisms.wall import OPTIMAL, WHOLE_WALL, MechanismSpec, MechanismType, Wall
+from rockcli.model.schema import Model
+from rockcli.notes import Note
+
+#: Unit mass given to a block without a [mass] table: the kinematic ratios (α0, e*, a0*, d0*)
+#: of a block alone do not depend on its mass [kg].
+UNIT_MASS = 1.0
+#: An optimal hinge this close to an end of its range (a share of the range) is at the end.
+RANGE_END = 1e-6
+
+
+@dataclass(frozen=True)
+class FreeMember:
+    """A mechanism free to vibrate, as the member whose period T0 Circolare 7/2019 Eq.
+    C8.7.1.7 gives: κ, its length L [m] and thickness t [m]; the masonry's unit weight
+    [N/m³] and E [Pa] (None: not given); gravity [m/s²]."""
+
+    kappa: float
+    length: float
+    thickness: float
+    unit_weight: float
+    E: float | None
+    g: float
+
+
+@dataclass(frozen=True)
+class Mechanism:
+    """One mechanism of a model, derived once (module docstring).
+
+    Attributes:
+        name, type: its label and which mechanism.
+        hinge_height: its base hinge's height above the wall's base [m] (a vertical flexure:
+            its intermediate hinge's, resolved).
+        storey: a vertical flexure's storey (1 = ground), else None.
+        sides: the sides it can open to (+1 outward, −1 inward).
+        views: the code check's geometry of each side of ``sides``: the block's closed forms
+            (mechanisms.block.BlockSide) or the wall's bodies placed about the hinge
+            (mechanisms.side.ChainSide).
+        reported: the sides whose α0 the result reports (a block's: both, whichever it can
+            open to).
+        base: the height above the wall's base at which it stands in the building [m] (Z +
+            base: ψ and the floor spectra there).
+        wall_height, storey_count: the wall's height [m] and storeys (for a building's H and
+            N not given).
+        free: the member of a mechanism declared free to vibrate (None: rigid until it
+            activates).
+        notes: how it was placed: its optimal hinge, what a flexure carries.
+        strength_notes: the hinges set back by the stress block (f_m given).
+        model: the model it comes from (the engine's settings and e rule).
+        wall, spec: the wall and its entry (None for a block file).
+    """
+
+    name: str
+    type: MechanismType
+    hinge_height: float
+    storey: int | None
+    sides: tuple[int, ...]
+    views: tuple[BlockSide | ChainSide, ...]
+    reported: tuple[int, ...]
+    base: float
+    wall_height: float
+    storey_count: int
+    free: FreeMember | None
+    notes: tuple[Note, ...]
+    strength_notes: tuple[Note, ...]
+    model: Model
+    wall: Wall | None = None
+    spec: MechanismSpec | None = None
+
+    def view(self, side: int) -> BlockSide | ChainSide:
+        """The code check's geometry of ``side``."""
+        if side in self.sides:
+            return self.views[self.sides.index(side)]
+        return block_view(self.model, side)
+
+    def check(self, side: int, distributed: bool, per_block: bool) -> SideCheck:
+        """The code check's view of ``side`` with the edition's sums (codecheck.kinematic)."""
+        view = self.view(side)
+        if isinstance(view, BlockSide):
+            return SideCheck(block=view.block, side=side, distributed=distributed,
+                             per_block=per_block)  # fmt: skip
+        return SideCheck(side=side, distributed=distributed, geometry=view, per_block=per_block)
+
+    @cached_property
+    def rocker(self) -> Rocker:
+        """What the engines rock, with the e of its bodies (rockcli.model.derive
+        .with_system_restitution): the block file's Block; a wall's rigid mechanism as a
+        RigidBody of its own shape; a vertical flexure as a Chain (its table built here)."""
+        from rockcli.mechanisms.flexure import flexure_block
+        from rockcli.mechanisms.rigid import rigid_block
+        from rockcli.model.derive import block_of, to_block, with_system_restitution
+
+        if self.wall is None or self.spec is None:
+            return to_block(self.model)
+        block = block_of(self.model)
+        if self.type is MechanismType.VERTICAL_FLEXURE:
+            return with_system_restitution(flexure_block(self.wall, self.spec, block), self.model)
+        return with_system_restitution(rigid_block(self.wall, self.spec, block), self.model)
+
+
+def named(items, name: str, where: str = "--mechanism", problem: str = "no such mechanism"):
+    """The item of ``items`` (mechanisms, specs, results: anything with a ``name``) called
+    ``name``; InputError naming ``where`` and every name there is otherwise."""
+    for item in items:
+        if item.name == name:
+            return item
+    raise InputError(
+        problem,
+        where=where,
+        value=name,
+        allowed="one of: " + "; ".join(f"'{item.name}'" for item in items),
+    )
+
+
+def catalogue(model: Model) -> tuple[Mechanism, ...]:
+    """Every mechanism of the model in the file's order: a wall's ``[[mechanisms]]`` (none:
+    its overturning about the base), or a block file's block (its overturning)."""
+    if model.geometry.storeys is None and not model.mechanisms:
+        return (block_mechanism(model),)
+    from rockcli.model.derive_wall import to_wall
+
+    wall = to_wall(model)
+    free = free_side_of(model)
+    return tuple(wall_mechanism(model, wall, spec, free) for spec in wall.mechanisms)
+
+
+def named_mechanism(model: Model, name: str) -> Mechanism:
+    """The catalogue's mechanism ``name`` alone, derived as :func:`catalogue` derives it
+    (InputError naming the catalogue's names)."""
+    if model.geometry.storeys is None and not model.mechanisms:
+        return named((block_mechanism(model),), name)
+    from rockcli.model.derive_wall import to_wall
+
+    wall = to_wall(model)
+    return wall_mechanism(model, wall, named(wall.mechanisms, name), free_side_of(model))
+
+
+def free_side_of(model: Model) -> int | None:
+    """The side a wall stopped on one side can open to (None: both)."""
+    from rockcli.model.derive import free_side
+    from rockcli.model.schema import Sides
+
+    motion = model.motion
+    return free_side(motion.stopped) if motion.sides is Sides.ONE else None
+
+
+def block_view(model: Model, side: int) -> BlockSide:
+    """The block's closed forms on ``side`` (a unit mass when the model gives none)."""
+    from rockcli.model.derive import to_block
+
+    block = to_block(model)
+    if block.mass is None:
+        block = replace(block, mass=UNIT_MASS)
+    return BlockSide(block, side)
+
+
+def block_mechanism(model: Model) -> Mechanism:
+    """The block file's one mechanism: the block's overturning about its base edge."""
+    from rockcli.model.derive import to_block
+
+    block: Block = to_block(model)
+    sides = (block.free_side,) if block.one_sided else (1, -1)
+    return Mechanism(
+        name=WHOLE_WALL,
+        type=MechanismType.OVERTURNING,
+        hinge_height=0.0,
+        storey=None,
+        sides=sides,
+        views=tuple(block_view(model, s) for s in sides),
+        reported=(1, -1),
+        base=0.0,
+        wall_height=2.0 * block.h,
+        storey_count=1,
+        free=None,
+        notes=(),
+        strength_notes=(),
+        model=model,
+    )
+
+
+def wall_mechanism(model: Model, wall: Wall, spec: MechanismSpec, free: int | None) -> Mechanism:
+    """One mechanism of a wall: its hinge resolved, each side placed, its notes."""
+    sides = sides_of(spec, free)
+    spec, hinge_notes = resolved(wall, spec, sides)
+    strength = ()
+    if wall.f_m is not None:
+        strength = (Note("set_back", "hinges set back by half the stress block "
+                         "a = N/(f_m·width), f_m = {f_m:g} MPa", f_m=wall.f_m / 1e6),)  # fmt: skip
+    hinge = spec.hinge_height if isinstance(spec.hinge_height, float) else hinge_of(spec, wall)
+    return Mechanism(
+        name=spec.name,
+        type=spec.type,
+        hinge_height=hinge,
+        storey=spec.storey,
+        sides=sides,
+        views=tuple(placed(wall, spec, s) for s in sides),
+        reported=sides,
+        base=spec_base(wall, spec),
+        wall_height=wall.height,
+        storey_count=len(wall.storeys),
+        free=free_member(wall, spec) if spec.free else None,
+        notes=(*hinge_notes, *flexure_notes(wall, spec)),
+        strength_notes=strength,
+        model=model,
+        wall=wall,
+        spec=spec,
+    )
+
+
+def placed(wall: Wall, spec: MechanismSpec, side: int) -> ChainSide:
+    """The mechanism's bodies about its hinge on ``side`` (InputError when the wall crushes
+    first: the stress block deeper than the section)."""
+    try:
+        return build(wall, spec, side)
+    except CrushingError as exc:
+        raise InputError(
+            f"the wall crushes before it rocks: at a hinge of '{exc.hinge}' the stress block "
+            f"is {exc.depth:.3g} m deep, the section {exc.thickness:.3g} m",
+            where="masonry.f_m",
+            value=wall.f_m,
+            allowed="a strength at which the weight above each hinge needs a stress block "
+            "thinner than the wall (a = N/(f_m·width))",
+        ) from None
+
+
+def resolved(wall: Wall, spec: MechanismSpec, sides: tuple[int, ...]):
+    """The spec with an optimal flexure hinge found: the height that minimises the smaller
+    α0 of its sides (rockcli.mechanisms.catalogue.optimal_hinge), and its note."""
+    if spec.type is not MechanismType.VERTICAL_FLEXURE or spec.hinge_height != OPTIMAL:
+        return spec, ()
+    assert spec.storey is not None
+    lo, hi = flexure_range(wall, spec.storey)
+
+    def smallest(z: float) -> float:
+        at = replace(spec, hinge_height=z)
+        return min(alpha0(SideCheck(side=s, geometry=placed(wall, at, s))) for s in sides)
+
+    z = optimal_hinge(lo, hi, smallest)
+    found = ("optimal hinge at {z:.3f} m (the lowest α0 between {lo:.3f} and {hi:.3f} m: the "
+             "storey less max(thickness, a tenth of its height) at each end)")  # fmt: skip
+    values = {"z": z, "lo": lo, "hi": hi}
+    if min(z - lo, hi - z) <= RANGE_END * (hi - lo):
+        note = Note("hinge_at_end", found + "; the optimum lies at the end of the range, which "
+                    "decides it (α0 keeps falling towards it): give hinge_height where a crack "
+                    "shows the hinge", **values)  # fmt: skip
+    else:
+        note = Note("hinge_optimal", found, **values)
+    return replace(spec, hinge_height=z), (note,)
+
+
+def spec_base(wall: Wall, spec: MechanismSpec) -> float:
+    """The height above the wall's base at which the mechanism stands in the building [m].
+
+    Circolare 617/2009 §C8A.4.2.2 defines Z as "l'altezza, rispetto alla fondazione
+    dell'edificio, del baricentro delle linee di vincolo tra i blocchi interessati dal
+    meccanismo ed il resto della struttura": a rigid mechanism's one line, its base hinge; a
+    vertical flexure's two, its storey's base and its held top, whose centroid is the middle
+    of the storey. Circolare 7/2019 names only "la quota z a cui si colloca il meccanismo"
+    (§C8.7.1.2.1.5) and is read the same way (docs/interpretations.md).
+    """
+    if spec.type is MechanismType.VERTICAL_FLEXURE:
+        assert spec.storey is not None
+        storey = wall.storeys[spec.storey - 1]
+        return wall.storey_bases()[spec.storey - 1] + 0.5 * storey.height
+    return hinge_of(spec, wall)
+
+
+def free_member(wall: Wall, spec: MechanismSpec) -> FreeMember:
+    """The member of a mechanism free to vibrate (Circolare 7/2019 Eq. C8.7.1.7): the gable,
+    a cantilever of its height on the last storey's thickness (κ = 6.2); an overturning, a
+    cantilever of the wall above its hinge, gable included, on the hinge section's thickness
+    (κ = 6.2); a vertical flexure, a beam of its storey's height and thickness simply
+    supported at its ends (κ = 2.2)."""
+    gable = wall.gable_height or 0.0
+    if spec.type is MechanismType.GABLE:
+        kappa, length, thickness = KAPPA_CANTILEVER, gable, wall.storeys[-1].thickness
+    elif spec.type is MechanismType.VERTICAL_FLEXURE:
+        assert spec.storey is not None
+        storey = wall.storeys[spec.storey - 1]
+        kappa, length, thickness = KAPPA_FLEXURE, storey.height, storey.thickness
+    else:
+        hinge = hinge_of(spec, wall)
+        k = storey_at(wall, hinge)
+        kappa, length = KAPPA_CANTILEVER, wall.height - hinge + gable
+        thickness = wall.storeys[k].thickness
+    return FreeMember(kappa, length, thickness, wall.unit_weight, wall.E, wall.g)
+
+
+def flexure_notes(wall: Wall, spec: MechanismSpec) -> tuple[Note, ...]:
+    """What a vertical flexure carries from above, in a sentence (none for other types)."""
+    if spec.type is not MechanismType.VERTICAL_FLEXURE or spec.storey is None:
+        return ()
+    weight, x = overburden_above(wall, spec.storey)
+    if weight <= 0.0:
+        return (Note("flexure_nothing_above", "vertical flexure: nothing above the storey's top "
+                     "but the loads at it"),)  # fmt: skip
+    return (Note("flexure_above", "vertical flexure: the wall above (storeys, gable, bearing "
+                 "loads) bears on the held top, {weight:.4g} kN at {x:.3f} m from the outer "
+                 "face, without horizontal inertia", weight=weight / 1e3, x=x),)  # fmt: skip
