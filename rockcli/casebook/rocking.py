@@ -59,18 +59,13 @@ def model_settings(model: Model, block: Rocker, **changes: object) -> SolverSett
 
 
 def case_block(model: Model, mechanism: str | None = None) -> Rocker:
-    """The block a case rocks: the model's, or a wall's mechanism as the engine rocks it (the
-    named one, else the first; rockcli.studies.rocked.mechanism_block)."""
-    from rockcli.model.derive_wall import is_wall
+    """What a case rocks: the catalogue's mechanism named, else its first (a block file's
+    block; rockcli.model.catalogue.Mechanism.rocker)."""
+    from rockcli.model.catalogue import first_mechanism, named_mechanism
 
-    if not is_wall(model):
-        return to_block(model)
-    from rockcli.model.derive_wall import to_wall
-    from rockcli.studies.rocked import mechanism_block, named_spec
-
-    wall = to_wall(model)
-    spec = wall.mechanisms[0] if mechanism is None else named_spec(wall, mechanism)
-    return mechanism_block(model, wall, spec)
+    if mechanism is None:
+        return first_mechanism(model).rocker
+    return named_mechanism(model, mechanism).rocker
 
 
 def release(

@@ -154,7 +154,7 @@ def named(items, name: str, where: str = "--mechanism", problem: str = "no such 
 def catalogue(model: Model) -> tuple[Mechanism, ...]:
     """Every mechanism of the model in the file's order: a wall's ``[[mechanisms]]`` (none:
     its overturning about the base), or a block file's block (its overturning)."""
-    if model.geometry.storeys is None and not model.mechanisms:
+    if block_file(model):
         return (block_mechanism(model),)
     from rockcli.model.derive_wall import to_wall
 
@@ -163,10 +163,33 @@ def catalogue(model: Model) -> tuple[Mechanism, ...]:
     return tuple(wall_mechanism(model, wall, spec, free) for spec in wall.mechanisms)
 
 
+def block_file(model: Model) -> bool:
+    """True for a model file of one block (no storeys, no ``[[mechanisms]]``): its catalogue
+    is the block's overturning. The one place that tells the file's two forms apart."""
+    return model.geometry.storeys is None and not model.mechanisms
+
+
+def rocks_its_block(model: Model) -> bool:
+    """True when the model's catalogue is one mechanism that rocks as the paper's rectangle
+    (a block file): its sizes are the block's R and α, which a spectrum over sizes varies."""
+    mechanisms = catalogue(model)
+    return len(mechanisms) == 1 and mechanisms[0].wall is None
+
+
+def first_mechanism(model: Model) -> Mechanism:
+    """The catalogue's first mechanism alone, derived as :func:`catalogue` derives it."""
+    if block_file(model):
+        return block_mechanism(model)
+    from rockcli.model.derive_wall import to_wall
+
+    wall = to_wall(model)
+    return wall_mechanism(model, wall, wall.mechanisms[0], free_side_of(model))
+
+
 def named_mechanism(model: Model, name: str) -> Mechanism:
     """The catalogue's mechanism ``name`` alone, derived as :func:`catalogue` derives it
     (InputError naming the catalogue's names)."""
-    if model.geometry.storeys is None and not model.mechanisms:
+    if block_file(model):
         return named((block_mechanism(model),), name)
     from rockcli.model.derive_wall import to_wall
 

@@ -110,12 +110,10 @@ def ntc_settings(model: Model, edition: str | None = None) -> NtcSettings:
 
 
 def uses_strength(model: Model) -> bool:
-    """True when α0 takes the masonry's compressive strength into account: a wall of storeys
-    or mechanisms with ``[masonry] f_m`` (its hinges set back by the stress block); a block's
-    α0 never does."""
-    from rockcli.model.derive_wall import is_wall
-
-    return is_wall(model) and model.masonry is not None and model.masonry.f_m is not None
+    """True when α0 takes the masonry's compressive strength into account: ``[masonry] f_m``
+    given (the hinges of every mechanism set back by the stress block; a block file with it
+    is refused, rockcli.model.derive.refuse_unrockable)."""
+    return model.masonry is not None and model.masonry.f_m is not None
 
 
 def confidence_factor(ntc: Ntc, edition: str, strength: bool) -> tuple[float, str]:

@@ -2,8 +2,8 @@
 
 The frame of rockcli.mechanisms.wall: x inward from the outer face at the base (a load's or
 restrainer's ``from_pivot``), z up from the wall's base (its ``height``). A model with
-``[[geometry.storeys]]`` or ``[[mechanisms]]`` is a wall; a model of one block without either
-keeps today's path (rockcli.model.derive.to_block).
+``[[geometry.storeys]]`` or ``[[mechanisms]]`` is a wall (rockcli.model.catalogue.block_file
+tells the two forms apart); a model of one block is its block (rockcli.model.derive.to_block).
 
 Pure: only :mod:`math`, the model and the mechanisms' data.
 """
@@ -29,11 +29,6 @@ from rockcli.model.physical import Direction
 from rockcli.model.schema import Model, Position
 from rockcli.model.wall_tables import EACH_FLOOR, MechanismEntry, point_height, thickness_at
 from rockcli.notes import Note
-
-
-def is_wall(model: Model) -> bool:
-    """True when the model describes a wall of storeys or lists mechanisms."""
-    return model.geometry.storeys is not None or bool(model.mechanisms)
 
 
 def to_wall(model: Model) -> Wall:

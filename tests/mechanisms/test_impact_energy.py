@@ -35,8 +35,9 @@ from rockcli.dynamics.settings import SolverSettings
 from rockcli.dynamics.simulate import simulate
 from rockcli.errors import InputError
 from rockcli.mechanics import Block, Chain, RigidBody, collapse_rotations
+from rockcli.model.catalogue import block_file
 from rockcli.model.derive import to_block
-from rockcli.model.derive_wall import is_wall, to_wall
+from rockcli.model.derive_wall import to_wall
 from rockcli.model.load import load_model
 from rockcli.model.schema import RestitutionModel
 from rockcli.studies.rocked import mechanism_block
@@ -59,7 +60,7 @@ def blocks(path: Path) -> list[tuple[str, Block, object]]:
     """(name, block as the engine rocks it, model) of each mechanism the time history rocks
     (a model of one block: its block)."""
     model = load_model(str(path))
-    if not is_wall(model):  # a casebook block: the rectangle with its loads
+    if block_file(model):  # a casebook block: the rectangle with its loads
         return [("block", to_block(model), model)]
     wall = to_wall(model)
     out = []

@@ -21,14 +21,11 @@ def test_the_three_examples_are_there() -> None:
 
 @pytest.mark.parametrize("path", sorted(EXAMPLES.glob("*.toml")), ids=lambda p: p.name)
 def test_every_example_loads(path: Path) -> None:
-    # A wall of storeys derives its wall (the catalogue); any other model its block.
-    from rockcli.model.derive_wall import is_wall, to_wall
+    # Every model derives its catalogue: a wall's mechanisms, a block file's block.
+    from rockcli.model.catalogue import catalogue
 
     model = load_model(path)
-    if is_wall(model):
-        assert to_wall(model).mechanisms
-    else:
-        to_block(model)
+    assert catalogue(model)
 
 
 def test_altar_example_is_the_papers_altar() -> None:

@@ -237,15 +237,14 @@ def pulse_doc(pulse, cases, rows, scan, subject, target):
 
 
 def _plain_block(target) -> bool:
-    """A model of one rectangular block without loads (its a0 is g·tan α, or g·α)."""
-    from rockcli.model.derive import to_block
-    from rockcli.model.derive_wall import is_wall
+    """The model's mechanism rocked is the paper's rectangle without loads, restrainers or a
+    stopped side (its a0 is g·tan α, or g·α)."""
+    from rockcli.fragility.overturning import rocked_block
+    from rockcli.mechanics import Block
 
-    model = validated(target)
-    if is_wall(model) and target.mechanism is not None:
-        return False
-    block = to_block(model)
-    return not block.loaded and not block.restrainers and not block.one_sided
+    block, _ = rocked_block(validated(target), target)
+    plain = not block.loaded and not block.restrainers and not block.one_sided
+    return isinstance(block, Block) and plain
 
 
 def record_doc(records, sizes, rows, scan, subject):

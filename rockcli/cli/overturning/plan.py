@@ -204,16 +204,18 @@ def validate_block_table(alpha, e, linearized, R: float = 1.0, size_option: str 
 
 
 def wall_mechanism(model, model_path: str, mechanism: str | None) -> str | None:
-    """The mechanism a wall rocks: the one named, else the governing one under the model's
-    own demand; a wall without a demand of its own needs --mechanism (InputError)."""
-    from rockcli.model.derive_wall import is_wall
+    """The mechanism the model rocks: the one named, the only one of its catalogue (None),
+    else the governing one under the model's own demand; a catalogue of several mechanisms
+    without a demand of its own needs --mechanism (InputError)."""
+    from rockcli.model.catalogue import catalogue
 
-    if not is_wall(model) or mechanism is not None:
+    if mechanism is not None:
         return mechanism
+    mechanisms = catalogue(model)
+    if len(mechanisms) == 1:
+        return None
     if model.ntc is None or model.ntc.demand is None:
-        from rockcli.studies.rocked import rockable_names
-
-        names = ", ".join(str(n) for n in rockable_names(model_path) if n is not None)
+        names = ", ".join(m.name for m in mechanisms)
         raise InputError(
             "a wall needs the mechanism to rock (no demand of its own chooses one)",
             file=model_path,
@@ -317,7 +319,7 @@ def model_sizes(records, model_path, mechanism, ground, p_values, R_values, peri
     each size (--p or --R, α kept: a model of one block), or in a building of each period
     (--floor-periods: a model at height, on its floor motion)."""
     from rockcli.fragility.overturning import Target, sized_table, with_period
-    from rockcli.model.derive_wall import is_wall
+    from rockcli.model.catalogue import rocks_its_block
     from rockcli.model.load import read_toml, validate_model
 
     table = read_toml(model_path)
@@ -334,7 +336,7 @@ def model_sizes(records, model_path, mechanism, ground, p_values, R_values, peri
         option, values, key = "--floor-periods", parse_values(periods, "--floor-periods"), "T1"
         tables = [with_period(table, T1) for T1 in values]
     else:
-        if is_wall(model):
+        if not rocks_its_block(model):
             raise InputError(
                 "a wall's size is its storeys'",
                 file=model_path,

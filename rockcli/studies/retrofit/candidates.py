@@ -116,19 +116,15 @@ def parse_at(text: str) -> tuple[float, float]:
 
 
 def check_placement(model: Model, height: float, from_pivot: float, file: str | None) -> None:
-    """The point of a new rod on the block: 0 < height ≤ 2h, 0 ≤ from_pivot ≤ 2b (InputError);
-    on a wall, within its storeys: 0 < height ≤ their height, inside the storey's section."""
-    from rockcli.model.derive_wall import is_wall
+    """The point of a new rod within the model's storeys (a block file's block: one storey of
+    2b × 2h): 0 < height ≤ their height, 0 ≤ from_pivot ≤ the thickness of the storey at that
+    height (InputError)."""
+    from rockcli.model.wall_tables import thickness_at
 
-    if is_wall(model):
-        from rockcli.model.wall_tables import thickness_at
-
-        storeys = model.geometry.storey_list
-        top = sum(s.height for s in storeys)
-        b = 0.5 * thickness_at(storeys, min(max(height, 0.0), top))
-        h = 0.5 * top
-    else:
-        b, h = model.geometry.half_sizes
+    storeys = model.geometry.storey_list
+    top = sum(s.height for s in storeys)
+    b = 0.5 * thickness_at(storeys, min(max(height, 0.0), top))
+    h = 0.5 * top
     value = f"{height:g},{from_pivot:g}"
     if not 0.0 < height <= 2.0 * h:
         raise InputError(

@@ -110,14 +110,12 @@ def run_candidate(
     rod: a stronger rod can hand the governing role to another mechanism), rocked as
     ``rock compare`` rocks it; ``mechanism`` names it, ``on_mechanism`` says whether the rod
     is one of its members (a rod below its hinge, or at a flexure's held top, is not)."""
-    from rockcli.model.derive_wall import is_wall
     from rockcli.studies.assess import assess_model_output
     from rockcli.studies.kinematic import kinematic_model
 
     model = build_candidate(plan, diameter_mm)
     spectrum = shared_spectrum(record, model.analysis.g)
     kin = kinematic_model(model, edition=analyses.edition, record=record, spectrum=spectrum)
-    mechanism = kin.governing if is_wall(model) else None
     out = assess_model_output(
         model,
         record,
@@ -125,12 +123,12 @@ def run_candidate(
         ground=analyses.ground,
         file=plan.file,
         tolerance_check=False,  # assess, compare and report check it; the sizing does not
-        mechanism=mechanism,
+        mechanism=kin.governing,
     )
     member = member_index(out, plan.name)
     return {
         "diameter_mm": diameter_mm,
-        "mechanism": mechanism,
+        "mechanism": None if out.mechanism is None else out.mechanism[0],
         "on_mechanism": member is not None,
         "input": "ground" if out.floor is None else "floor",
         **rod_columns(model, plan.index),

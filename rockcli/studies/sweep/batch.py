@@ -137,21 +137,25 @@ def _given(model: Model, key: Key) -> bool:
 
 
 def plain_block(model: Model, ground: bool) -> Block | None:
-    """The model's block when rockcli.dynamics.batch can run it (a plain block on the ground
-    or run at the ground with --ground), else None."""
-    from rockcli.model.derive import to_block
-    from rockcli.model.derive_wall import is_wall
+    """The model's block when rockcli.dynamics.batch can run it (a catalogue of one mechanism
+    that rocks as the paper's rectangle without loads, on the ground or run at the ground
+    with --ground), else None."""
+    from rockcli.mechanics import Block
+    from rockcli.model.catalogue import catalogue
     from rockcli.studies.floor import model_floor
 
-    if is_wall(model) or model.loads or model.thrusts or model.geometry.gable_height is not None:
+    if model.loads or model.thrusts or model.geometry.gable_height is not None:
         return None
     if not ground and model_floor(model) is not None:
         return None
     try:
-        block = to_block(model)
+        mechanisms = catalogue(model)
     except InputError:
         return None
-    if block.loaded or block.e_neg is not None:
+    if len(mechanisms) != 1:
+        return None
+    block = mechanisms[0].rocker
+    if not isinstance(block, Block) or block.loaded or block.e_neg is not None:
         return None
     return block
 

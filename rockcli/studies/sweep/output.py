@@ -85,8 +85,9 @@ TOLERANCE_COLUMNS: dict[str, type] = {"sensitive": bool}
 MECHANISM_COLUMNS: dict[str, type] = {"mechanism": str}
 
 
-def is_wall_study(plan: StudyPlan) -> bool:
-    """True when the study's base model is a wall of storeys or lists mechanisms."""
+def has_mechanism_column(plan: StudyPlan) -> bool:
+    """True when the study's base model is a wall of storeys or lists mechanisms (its cases
+    name the mechanism they rock and check; a block file's study keeps its header)."""
     geometry = plan.base.get("geometry")
     storeys = isinstance(geometry, dict) and "storeys" in geometry
     return storeys or bool(plan.base.get("mechanisms"))
@@ -96,7 +97,7 @@ def columns(plan: StudyPlan) -> list[str]:
     """The header of cases.csv."""
     extra = {
         **(TOLERANCE_COLUMNS if plan.check_tolerance else {}),
-        **(MECHANISM_COLUMNS if is_wall_study(plan) else {}),
+        **(MECHANISM_COLUMNS if has_mechanism_column(plan) else {}),
     }
     return ["case", "record", *(a.name for a in plan.axes), *RESULT_COLUMNS, *extra]
 
