@@ -7,7 +7,7 @@ mechanism the one named or the governing one). The floor motion is a linear filt
 ground motion (rockcli.studies.floor), so the ground scaled by s gives the floor motion scaled
 by s, and each run scales the prepared motion.
 
-The response of a run (:meth:`Rocker.response`) is the damage measure of the search
+The response of a run (:meth:`ScaledRun.response`) is the damage measure of the search
 (rockcli.fragility.search): max|θ|/α over both polarities, +inf when either polarity
 overturns (spec/rocking.md: the verdict is the worse polarity's).
 
@@ -30,7 +30,7 @@ if TYPE_CHECKING:
 
 
 @dataclass(frozen=True)
-class Rocker:
+class ScaledRun:
     """What a scaled run needs: the block, the motion it sees at scale 1, the settings.
 
     Attributes:
@@ -86,13 +86,13 @@ def prepare(
     ground: bool = False,
     engine: str = "fast",
     file: str | None = None,
-) -> Rocker:
+) -> ScaledRun:
     """The model's rocked block and the motion it sees under the record at scale 1."""
     from rockcli.model.derive import solver_options
     from rockcli.studies.assess import rocked_input, settings_from
 
     block, shaking, _, rocked = rocked_input(model, record, ground, file, mechanism)
-    return Rocker(
+    return ScaledRun(
         block=block,
         time=shaking.time,
         accel=np.asarray(shaking.accel, dtype=float),

@@ -30,7 +30,7 @@ from rockcli.fragility.search import Exceedance, first_exceedances
 from rockcli.fragility.study import FragilityPlan, Measure
 
 if TYPE_CHECKING:
-    from rockcli.fragility.response import Rocker
+    from rockcli.fragility.response import ScaledRun
     from rockcli.records.record import Record
 
 
@@ -129,7 +129,7 @@ def _new(task: Task, runs: Mapping[float, float]) -> tuple[float, ...]:
     return tuple(im for im in runs if im not in task.known)
 
 
-def prepared(task: Task) -> tuple[Rocker, Record]:
+def prepared(task: Task) -> tuple[ScaledRun, Record]:
     """The task's model, its rocked block and the record (InputError naming the case)."""
     from rockcli.fragility.response import prepare
     from rockcli.studies.sweep.cases import Case, build_model, case_error
@@ -153,7 +153,7 @@ def prepared(task: Task) -> tuple[Rocker, Record]:
     return rocker, record
 
 
-def unit_intensity(plan: FragilityPlan, rocker: Rocker, record: Record) -> float:
+def unit_intensity(plan: FragilityPlan, rocker: ScaledRun, record: Record) -> float:
     """The record's intensity at scale 1 (of the ground motion: module docstring).
 
     Raises:

@@ -244,7 +244,7 @@ def wall_mechanism(model: Model, wall: Wall, spec: MechanismSpec, free: int | No
     """One mechanism of a wall: its hinge resolved, each side placed, its notes."""
     sides = sides_of(spec, free)
     spec, hinge_notes = resolved(wall, spec, sides)
-    strength = ()
+    strength: tuple[Note, ...] = ()
     if wall.f_m is not None:
         strength = (Note("set_back", "hinges set back by half the stress block "
                          "a = N/(f_m·width), f_m = {f_m:g} MPa", f_m=wall.f_m / 1e6),)  # fmt: skip

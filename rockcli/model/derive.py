@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, replace
-from typing import Any
+from typing import Any, TypeVar
 
 from rockcli.codecheck.steel import (
     CLAUSE,
@@ -66,6 +66,9 @@ from rockcli.notes import Note
 
 #: kN → N.
 NEWTONS_PER_KILONEWTON = 1e3
+
+#: Any kind of what the engines rock (a function that keeps the kind it is given).
+AnyRocker = TypeVar("AnyRocker", bound=Rocker)
 
 
 @dataclass(frozen=True)
@@ -197,7 +200,7 @@ def derive_block(model: Model) -> Block:
     return with_system_restitution(block, model)
 
 
-def with_system_restitution(block: Rocker, model: Model) -> Rocker:
+def with_system_restitution(block: AnyRocker, model: Model) -> AnyRocker:
     """The block with Housner's e of the block and its loads (or of a wall's mechanism as a
     body of its own shape), per side; a one-sided block with the e of its own impact.
 

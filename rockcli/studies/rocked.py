@@ -73,8 +73,7 @@ def governing(model: Model, mechanisms: tuple[CatalogueMechanism, ...],
     from rockcli.studies.kinematic import kinematic_model
 
     own = model.ntc is not None and model.ntc.demand is not None  # a site needs the grid
-    given = {} if own else {"record": record}
-    kin = kinematic_model(model, mechanisms=mechanisms, **given)
+    kin = kinematic_model(model, record=None if own else record, mechanisms=mechanisms)
     main = main_mechanism(kin)  # the governing one when it rocks, else the first that does
     return named(mechanisms, main.name if main is not None else kin.governing or "")
 
