@@ -138,17 +138,14 @@ def system_restitution(block: Rocker, model: Model) -> Rocker:
 def rocked_mechanism(model: Model, record: Record, name: str | None) -> Rocked:
     """The mechanism of the model the time history rocks (the one named, the only one, or
     the governing one of the code check) and its floor."""
-    from rockcli.model.catalogue import catalogue
+    from rockcli.model.catalogue import catalogue, named_mechanism
     from rockcli.model.derive_ntc import building_settings
-    from rockcli.studies.catalogue import named
 
-    mechanisms = catalogue(model)
     if name is not None:
-        mech = named(mechanisms, name)
-    elif len(mechanisms) == 1:
-        mech = mechanisms[0]
+        mech = named_mechanism(model, name)  # that one alone derived
     else:
-        mech = governing(model, mechanisms, record)
+        mechanisms = catalogue(model)
+        mech = mechanisms[0] if len(mechanisms) == 1 else governing(model, mechanisms, record)
     return Rocked(mech, mechanism_floor(mech, building_settings(model)))
 
 
