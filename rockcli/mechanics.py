@@ -17,6 +17,7 @@ from __future__ import annotations
 import math
 from collections.abc import Callable
 from dataclasses import dataclass, field
+from typing import Any
 
 #: Side of rotation / pivot: +1 for θ > 0 (pivot O), −1 for θ < 0 (pivot O′).
 POSITIVE = 1
@@ -772,16 +773,17 @@ def rocker_fields(system: Rocker, **changes) -> dict:
     return {f.name: getattr(system, f.name) for f in fields(Rocker)} | changes
 
 
-def frequency_parameter_sq(R: float, g: float) -> float:
-    """p² = 3g/(4R) [rad²/s²].
+def frequency_parameter_sq(R: Any, g: float) -> Any:
+    """p² = 3g/(4R) [rad²/s²] (R a float, or an array of them: the batched path's).
 
     Source: paper Eq. (2); Housner (1963). Rectangular block, I0 = 4/3·m·R².
     """
     return 3.0 * g / (4.0 * R)
 
 
-def polar_inertia(mass: float, R: float) -> float:
-    """I0 = 4/3·m·R² [kg·m²], rectangular block about a base corner.
+def polar_inertia(mass: Any, R: Any) -> Any:
+    """I0 = 4/3·m·R² [kg·m²], rectangular block about a base corner (floats, or arrays of
+    them: the batched path's).
 
     Source: paper §4.3 (I0 = 4/3·m(h² + b²)).
     """

@@ -21,7 +21,6 @@ Pure and silent: numpy, the kernel, the layouts.
 
 from __future__ import annotations
 
-import math
 from collections.abc import Callable
 from dataclasses import dataclass
 
@@ -39,8 +38,11 @@ from rockcli.dynamics.simulate import (
     free_from,
     pack_parameters,
     pack_springs,
+    polar_columns,
+    rectangle_columns,
+    rest_offset,
 )
-from rockcli.mechanics import Block, housner_restitution, spring_failure_rotation
+from rockcli.mechanics import Block, frequency_parameter_sq, housner_restitution, polar_inertia
 
 
 def exactly(fn: Callable[..., float], *args: np.ndarray) -> np.ndarray:
@@ -98,13 +100,13 @@ class Blocks:
     @property
     def p2(self) -> np.ndarray:
         """p² = 3g/(4R) (mechanics.frequency_parameter_sq; paper Eq. 2)."""
-        return 3.0 * self.base.g / (4.0 * self.R)
+        return frequency_parameter_sq(self.R, self.base.g)
 
     @property
     def inertia(self) -> np.ndarray:
         """I0 = 4/3·m·R² (mechanics.polar_inertia; paper §4.3)."""
         assert self.mass is not None
-        return 4.0 / 3.0 * self.mass * self.R * self.R
+        return polar_inertia(self.mass, self.R)
 
     @property
     def mirror(self) -> np.ndarray:
@@ -132,58 +134,27 @@ def pack_parameter_rows(
     blocks: Blocks, settings: SolverSettings, rtol: float, atol: float
 ) -> np.ndarray:
     """The kernel's parameter vector of every block, shape (n, N_PARAMS): simulate.
-    pack_parameters with its rest_terms, written for plain blocks."""
+    pack_parameters of the base block, its rectangle's columns made again for every block by
+    the same function (simulate.rectangle_columns, value by value through :func:`exactly`)."""
     b = blocks
     par = np.tile(pack_parameters(b.base, settings, rtol, atol), (b.size, 1))
-    lin = b.base.linearized
-    par[:, L.P_ALPHA] = b.alpha
-    par[:, L.P_SIN_ALPHA] = exactly(math.sin, b.alpha)
-    cos_alpha = exactly(math.cos, b.alpha)
-    par[:, L.P_COS_ALPHA] = cos_alpha
-    par[:, L.P_P2] = b.p2
-    par[:, L.P_E] = b.e
-    par[:, L.P_E_NEG] = b.e
-    uplift = b.alpha if lin else exactly(math.tan, b.alpha)  # mechanics.uplift_threshold
-    par[:, L.P_UPLIFT_POS] = uplift
-    par[:, L.P_UPLIFT_NEG] = uplift
-    if b.mass is not None:
-        inertia = b.inertia
-        par[:, L.P_INV_I0] = 1.0 / inertia
-        par[:, L.P_I0] = inertia
-        h = b.mass * b.base.g * b.R * (1.0 if lin else cos_alpha)
-        for scale, moment in ((L.P_PRE_SCALE_POS, L.P_INERTIA_POS),
-                              (L.P_PRE_SCALE_NEG, L.P_INERTIA_NEG)):  # fmt: skip
-            par[:, scale] = 1.0 / h
-            par[:, moment] = inertia
-    return par
+    return rectangle_columns(par, b.R, b.alpha, b.mass, b.e, b.e, b.base.g, b.base.linearized,
+                             exactly)  # fmt: skip
 
 
 def pack_spring_tables(blocks: Blocks) -> np.ndarray:
     """Every block's restrainer table, shape (n, restrainers, N_SPRING_COLS): simulate.
-    pack_springs and pack_law for members without memory (their state columns at rest)."""
+    pack_springs of the base block, each member's stiffness, point and rest offset made again
+    for every block by the same functions (simulate.polar_columns, simulate.rest_offset)."""
     b = blocks
     table = np.tile(pack_springs(b.base), (b.size, 1, 1))
     lin = b.base.linearized
     for j, sp in enumerate(b.base.restrainers):
-        for col, k, r, phi, a_fail, sin, cos in (
-            (0, b.k_pos, b.r_pos, b.phi_pos, motion.COL_A_FAIL_POS, motion.COL_SIN_POS,
-             motion.COL_COS_POS),
-            (1, b.k_neg, b.r_neg, b.phi_neg, motion.COL_A_FAIL_NEG, motion.COL_SIN_NEG,
-             motion.COL_COS_NEG),
-        ):  # fmt: skip
+        for col, s, k, r, phi in ((0, 1, b.k_pos, b.r_pos, b.phi_pos),
+                                  (1, -1, b.k_neg, b.r_neg, b.phi_neg)):  # fmt: skip
             table[:, j, motion.COL_K_POS + col] = k[:, j]
-            table[:, j, motion.COL_R_POS if col == 0 else motion.COL_R_NEG] = r[:, j]
-            table[:, j, motion.COL_PHI_POS if col == 0 else motion.COL_PHI_NEG] = phi[:, j]
-            table[:, j, sin] = exactly(math.sin, phi[:, j])
-            table[:, j, cos] = exactly(math.cos, phi[:, j])
-            lost = sp.lost_at
-            table[:, j, a_fail] = exactly(
-                lambda r_, phi_, lost=lost: spring_failure_rotation(r_, phi_, lost, lin),
-                r[:, j],
-                phi[:, j],
-            )
-            with np.errstate(divide="ignore", invalid="ignore"):
-                c0 = np.where(k[:, j] > 0.0, -sp.pretension / k[:, j], 0.0)
+            polar_columns(table[:, j], s, r[:, j], phi[:, j], sp.lost_at, lin, exactly)
+            c0 = rest_offset(sp.pretension, k[:, j], exactly)
             table[:, j, motion.COL_C0 + col] = c0
             table[:, j, motion.COL_C + col] = c0
     if any(sp.has_memory for sp in b.base.restrainers):  # each member's state at rest

@@ -40,9 +40,11 @@ from rockcli.mechanics import (
     Rocker,
     chain_terms,
     collapse_rotations,
+    frequency_parameter_sq,
     mirror_symmetric,
     point_moments,
     point_table,
+    polar_inertia,
     spring_failure_rotation,
     uplift_accelerations,
 )
@@ -128,13 +130,36 @@ def step_budget(n_samples: int, max_steps: int) -> int:
 def pack_parameters(
     block: Rocker, settings: SolverSettings, rtol: float, atol: float
 ) -> np.ndarray:
-    """The kernel's parameter vector (layout P_* in layout.py)."""
+    """The kernel's parameter vector (layout P_* in layout.py): the settings and flags, then the
+    constants of the input's kind (the rectangle's by :func:`rectangle_columns`, the form
+    the batched path applies to many blocks at once)."""
     par = np.zeros(L.N_PARAMS)
+    if block.kind == "rectangle":
+        return rectangle_columns(
+            flag_columns(par, block, settings, rtol, atol), block.R, block.alpha, block.mass,
+            block.e, block.restitution(NEGATIVE), block.g, block.linearized, math_of,
+        )  # fmt: skip
+    par = flag_columns(par, block, settings, rtol, atol)
     par[L.P_ALPHA] = block.alpha
     par[L.P_SIN_ALPHA] = math.sin(block.alpha)
     par[L.P_COS_ALPHA] = math.cos(block.alpha)
     par[L.P_P2] = block.p2
     par[L.P_E] = block.e
+    par[L.P_INV_I0] = 1.0 / block.inertia if block.mass is not None else 0.0
+    par[L.P_I0] = block.own_inertia if block.mass is not None else 0.0
+    par[L.P_UPLIFT_POS], par[L.P_UPLIFT_NEG] = uplift_accelerations(block)
+    par[L.P_E_NEG] = block.restitution(NEGATIVE)
+    for s, scale, inertia in (
+        (1, L.P_PRE_SCALE_POS, L.P_INERTIA_POS),
+        (-1, L.P_PRE_SCALE_NEG, L.P_INERTIA_NEG),
+    ):
+        par[scale], par[inertia] = rest_terms(block, s)
+    return par
+
+
+def flag_columns(par: np.ndarray, block: Rocker, settings: SolverSettings, rtol: float,
+                 atol: float) -> np.ndarray:  # fmt: skip
+    """The columns every kind shares: its motion's flags, the run's settings, its kind."""
     par[L.P_ONE_SIDED] = 1.0 if block.one_sided else 0.0
     par[L.P_FREE_SIDE] = float(block.free_side)
     par[L.P_REBOUND] = block.rebound
@@ -145,17 +170,46 @@ def pack_parameters(
     par[L.P_RTOL] = rtol
     par[L.P_ATOL] = atol
     par[L.P_REST] = settings.rest_velocity
-    par[L.P_INV_I0] = 1.0 / block.inertia if block.mass is not None else 0.0
     par[L.P_MAX_EVENTS] = float(settings.max_events)
     par[L.P_MAX_STEPS] = float(settings.max_steps)
-    par[L.P_I0] = block.own_inertia if block.mass is not None else 0.0
-    par[L.P_UPLIFT_POS], par[L.P_UPLIFT_NEG] = uplift_accelerations(block)
-    par[L.P_E_NEG] = block.restitution(NEGATIVE)
-    for s, scale, inertia in (
-        (1, L.P_PRE_SCALE_POS, L.P_INERTIA_POS),
-        (-1, L.P_PRE_SCALE_NEG, L.P_INERTIA_NEG),
-    ):
-        par[scale], par[inertia] = rest_terms(block, s)
+    return par
+
+
+def math_of(fn, *x):
+    """fn(x…) for one block (floats): :mod:`math` itself."""
+    return fn(*x)
+
+
+def rectangle_columns(par, R, alpha, mass, e, e_neg, g, linearized, apply):
+    """The rectangle's constants in the parameter vector ``par`` (paper Eqs. 1–3, closed
+    forms), written once for one block (floats, ``apply`` = :func:`math_of`) and for many at
+    once (arrays of shape (n,) into ``par`` of shape (n, N_PARAMS), ``apply`` =
+    rockcli.dynamics.batch.exactly: :mod:`math` value by value), so that a batched run is
+    bit for bit the run of the same block: α with its sine and cosine, p² = 3g/(4R)
+    (mechanics.frequency_parameter_sq), e on each side, the uplift tan α (α linearized:
+    mechanics.uplift_threshold) on each side, and with a mass I0 = 4/3·m·R²
+    (mechanics.polar_inertia), its inverse, the ground acceleration per N·m at rest 1/H(0),
+    H(0) = m g R cos α (:func:`rest_terms`), and the inertia at rest on each side."""
+    par[..., L.P_ALPHA] = alpha
+    par[..., L.P_SIN_ALPHA] = apply(math.sin, alpha)
+    cos_alpha = apply(math.cos, alpha)
+    par[..., L.P_COS_ALPHA] = cos_alpha
+    par[..., L.P_P2] = frequency_parameter_sq(R, g)
+    par[..., L.P_E] = e
+    par[..., L.P_E_NEG] = e_neg
+    uplift = alpha if linearized else apply(math.tan, alpha)
+    par[..., L.P_UPLIFT_POS] = uplift
+    par[..., L.P_UPLIFT_NEG] = uplift
+    if mass is None:
+        return par
+    inertia = polar_inertia(mass, R)
+    h = mass * g * R * (1.0 if linearized else cos_alpha)
+    par[..., L.P_INV_I0] = 1.0 / inertia
+    par[..., L.P_I0] = inertia
+    for scale, moment in ((L.P_PRE_SCALE_POS, L.P_INERTIA_POS),
+                          (L.P_PRE_SCALE_NEG, L.P_INERTIA_NEG)):  # fmt: skip
+        par[..., scale] = 1.0 / h
+        par[..., moment] = inertia
     return par
 
 
@@ -225,25 +279,47 @@ def pack_point(table: np.ndarray, j: int, sp: Restrainer, linearized: bool) -> N
     """Row j's point: r, φ, their sines and cosines and the rotation at which it is lost, on
     each side; a member with an elongation path has it from motion.COL_PATH, with r = u′(0) and
     φ = 0 (the arm at rest: motion.py)."""
-    if sp.path:
-        table[j, motion.COL_PATH : motion.COL_PATH + len(sp.path)] = sp.path
-        points = ((sp.arm_at_rest(1), 0.0), (sp.arm_at_rest(-1), 0.0))
-    else:
-        points = ((sp.r_pos, sp.phi_pos), (sp.r_neg, sp.phi_neg))
-    columns = (
-        (1, motion.COL_R_POS, motion.COL_PHI_POS, motion.COL_A_FAIL_POS, motion.COL_SIN_POS),
-        (-1, motion.COL_R_NEG, motion.COL_PHI_NEG, motion.COL_A_FAIL_NEG, motion.COL_SIN_NEG),
+    if not sp.path:
+        for s, r, phi in ((1, sp.r_pos, sp.phi_pos), (-1, sp.r_neg, sp.phi_neg)):
+            polar_columns(table[j], s, r, phi, sp.lost_at, linearized, math_of)
+        return
+    table[j, motion.COL_PATH : motion.COL_PATH + len(sp.path)] = sp.path
+    for s in (1, -1):
+        col_r, col_phi, col_fail, col_sin = POINT_COLUMNS[s]
+        table[j, col_r] = sp.arm_at_rest(s)
+        table[j, col_phi] = 0.0
+        table[j, col_sin] = math.sin(0.0)
+        table[j, col_sin + 1] = math.cos(0.0)  # COL_COS_* follows COL_SIN_*
+        table[j, col_fail] = motion.rotation_at_elongation(table, j, s, sp.lost_at, linearized)
+
+
+#: The columns of a member's point on each side: r, φ, the rotation at which it is lost, sin φ
+#: (cos φ follows).
+POINT_COLUMNS = {
+    1: (motion.COL_R_POS, motion.COL_PHI_POS, motion.COL_A_FAIL_POS, motion.COL_SIN_POS),
+    -1: (motion.COL_R_NEG, motion.COL_PHI_NEG, motion.COL_A_FAIL_NEG, motion.COL_SIN_NEG),
+}
+
+
+def polar_columns(rows, s, r, phi, lost, linearized, apply):
+    """Side s's point of a member turning rigidly with the body, at (r, φ) from the pivot:
+    r, φ, sin φ, cos φ and the rotation at which its elongation reaches ``lost``
+    (mechanics.spring_failure_rotation), into one packed row (floats, ``apply`` =
+    :func:`math_of`) or a column of rows (arrays, ``apply`` = rockcli.dynamics.batch.exactly)."""
+    col_r, col_phi, col_fail, col_sin = POINT_COLUMNS[s]
+    rows[..., col_r] = r
+    rows[..., col_phi] = phi
+    rows[..., col_sin] = apply(math.sin, phi)
+    rows[..., col_sin + 1] = apply(math.cos, phi)  # COL_COS_* follows COL_SIN_*
+    rows[..., col_fail] = apply(
+        lambda r_, phi_: spring_failure_rotation(r_, phi_, lost, linearized), r, phi
     )
-    for (r, phi), (s, col_r, col_phi, col_fail, col_sin) in zip(points, columns, strict=True):
-        table[j, col_r] = r
-        table[j, col_phi] = phi
-        table[j, col_sin] = math.sin(phi)
-        table[j, col_sin + 1] = math.cos(phi)  # COL_COS_* follows COL_SIN_*
-        table[j, col_fail] = (
-            motion.rotation_at_elongation(table, j, s, sp.lost_at, linearized)
-            if sp.path
-            else spring_failure_rotation(r, phi, sp.lost_at, linearized)
-        )
+
+
+def rest_offset(pretension: float, k, apply):
+    """The elongation at which a pretensioned member's force is nil, −P0/K (0 where K = 0),
+    for one member (float) or many (array)."""
+    return apply(lambda k_: -pretension / k_ if k_ > 0.0 else 0.0, k)
 
 
 def pack_law(row: np.ndarray, sp: Restrainer) -> None:
@@ -259,7 +335,7 @@ def pack_law(row: np.ndarray, sp: Restrainer) -> None:
     row[motion.COL_RUPTURE] = sp.rupture_force
     row[motion.COL_MEMORY] = 1.0 if sp.has_memory else 0.0
     for col, k in ((0, sp.k_pos), (1, sp.k_neg)):
-        c0 = -sp.pretension / k if k > 0.0 else 0.0
+        c0 = rest_offset(sp.pretension, k, math_of)
         row[motion.COL_C0 + col] = c0
         row[motion.COL_C + col] = c0
         row[motion.COL_UP + col] = math.inf
