@@ -188,10 +188,11 @@ def overturning(wall: Wall, hinge: float, side: int, name: str) -> ChainSide:
     return rigid(wall, *rigid_parts(wall, spec), side, name)
 
 
-def wedge(wall: Wall, angle: float, sides: int, name: str) -> ChainSide:
-    """The whole wall and its return walls' wedge about the façade's outer base edge."""
+def wedge(wall: Wall, angle: float, sides: int, name: str, side: int = 1) -> ChainSide:
+    """The whole wall and its return walls' wedge about the façade's outer base edge (it
+    opens outward only: side −1, about the inner edge, places it for its impact there)."""
     spec = MechanismSpec(name, MechanismType.WEDGE, angle=angle, sides=sides)
-    return rigid(wall, *rigid_parts(wall, spec), 1, name)
+    return rigid(wall, *rigid_parts(wall, spec), side, name)
 
 
 def gable_mechanism(wall: Wall, side: int, name: str) -> ChainSide:
@@ -298,7 +299,7 @@ def build(wall: Wall, spec: MechanismSpec, side: int) -> ChainSide:
         return overturning(wall, hinge_of(spec, wall), side, spec.name)
     if spec.type is MechanismType.WEDGE:
         assert spec.angle is not None and spec.sides is not None
-        return wedge(wall, spec.angle, spec.sides, spec.name)
+        return wedge(wall, spec.angle, spec.sides, spec.name, side)
     if spec.type is MechanismType.GABLE:
         return gable_mechanism(wall, side, spec.name)
     assert spec.storey is not None and isinstance(spec.hinge_height, float)

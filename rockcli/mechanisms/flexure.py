@@ -97,19 +97,18 @@ def held_at_top(wall: Wall, spec: MechanismSpec) -> tuple[HeldMember, ...]:
     return tuple(out)
 
 
-def flexure_block(wall: Wall, spec: MechanismSpec, block: Rocker) -> Chain:
-    """The vertical flexure ``spec`` (its hinge height resolved) as a Chain carrying its table;
-    ``block`` gives the model's settings the mechanism keeps (motion, rebound, e's rule).
+def flexure_block(plus: ChainSide, minus: ChainSide, top: float, block: Rocker) -> Chain:
+    """The vertical flexure placed about each pivot (``plus``, ``minus``: the code check's
+    two-block chain of each side, its hinge resolved; ``top``: its storey's height, where the
+    floor holds it) as a Chain carrying its table; ``block`` gives the model's settings the
+    mechanism keeps (motion, rebound, e's rule).
 
     Its α, which max θ/α divides by, is the instability rotation of the side it can open to
     (one-sided), or the smaller of the two sides' (two-sided: a ratio of 1 on either side is
     then never past that side's instability)."""
-    plus, minus = build(wall, spec, 1), build(wall, spec, -1)
     body = composite([b for _, b in plus.bodies])  # in the side frame of side +1
     x, z = body.x, body.z
     table = replace(tabulate(plus, minus), centroid=(x, z))
-    assert spec.storey is not None
-    top = wall.storeys[spec.storey - 1].height  # in the side frame: above the storey's base
     sides = (plus, minus) if not block.one_sided else ((plus,) if block.free_side > 0 else (minus,))
     return Chain(
         **rocker_fields(

@@ -32,9 +32,7 @@ from rockcli.mechanics import (
     rocker_fields,
 )
 from rockcli.mechanisms.bodies import Body
-from rockcli.mechanisms.catalogue import above, set_back
-from rockcli.mechanisms.catalogue import rigid_parts as parts
-from rockcli.mechanisms.wall import MechanismSpec, MechanismType, Wall
+from rockcli.mechanisms.side import ChainSide
 
 
 @dataclass(frozen=True)
@@ -58,41 +56,37 @@ def composite(bodies: list[Body]) -> Composite:
     return Composite(weight, mass, x, z, inertia)
 
 
-def rigid_block(wall: Wall, spec: MechanismSpec, block: Rocker) -> RigidBody:
-    """The rigid mechanism ``spec`` as a RigidBody of its own shape; ``block`` gives the
-    model's settings the mechanism keeps (restitution rule through ``e``, motion, rebound)."""
-    bodies, hinge, thickness = parts(wall, spec)
-    a = set_back(wall, bodies, hinge, thickness, spec.name)
-    lo, hi = a, thickness - a  # the pivots O (outer edge) and O′ (inner edge) in x
-
-    def xs(x: float) -> tuple[float, float]:
-        return x - lo, hi - x
-
-    body = composite(bodies)
-    x_pos, x_neg = xs(body.x)
-    z = body.z - hinge
+def rigid_block(plus: ChainSide, minus: ChainSide, block: Rocker, wedge: bool) -> RigidBody:
+    """The rigid mechanism as a RigidBody of its own shape, from the code check's placement
+    of it about each pivot (``plus`` about O, ``minus`` about O′: the same bodies, loads,
+    thrusts and members, rockcli.mechanisms.catalogue.rigid), so that its uplift on each side
+    is the check's α0 of that side by construction; ``block`` gives the model's settings the
+    mechanism keeps (restitution rule through ``e``, motion, rebound); ``wedge``: it opens
+    outward only."""
+    body = composite([b for _, b in plus.bodies])
+    x_pos, z = body.x, body.z
+    x_neg = composite([b for _, b in minus.bodies]).x
     loads = tuple(
-        Load(ld.name, ld.weight, *xs(ld.x), ld.z - hinge, ld.bears, ld.moves)
-        for ld in wall.loads
-        if above(ld.z, hinge)
+        Load(ld.name, ld.weight, ld.at.x, other.at.x, ld.at.z, ld.bears, ld.moves)
+        for ld, other in zip(plus.loads, minus.loads, strict=True)
     )
     thrusts = tuple(
-        Thrust(th.name, th.force, th.direction, *xs(th.x), th.z - hinge)
-        for th in wall.thrusts
-        if above(th.z, hinge)
+        Thrust(th.name, th.force, th.opens, th.at.x, other.at.x, th.at.z)
+        for th, other in zip(plus.thrusts, minus.thrusts, strict=True)
     )
     members = tuple(
-        placed(rs.member, *xs(rs.x), rs.z - hinge) for rs in wall.restrainers if above(rs.z, hinge)
-    )
-    one_sided = block.one_sided or spec.type is MechanismType.WEDGE
+        placed(member, at_pos.x, at_neg.x, at_pos.z)
+        for member, at_pos, at_neg in zip(plus.restrainers, plus.anchors, minus.anchors,
+                                          strict=True)
+    )  # fmt: skip
     return RigidBody(
         **rocker_fields(
             block,
             R=math.hypot(x_pos, z),
             alpha=math.atan2(x_pos, z),
             mass=body.mass,
-            one_sided=one_sided,
-            free_side=1 if spec.type is MechanismType.WEDGE else block.free_side,
+            one_sided=block.one_sided or wedge,
+            free_side=1 if wedge else block.free_side,
             linearized=False,
             restrainers=members,
             loads=loads,

@@ -72,9 +72,11 @@ class Mechanism:
             its intermediate hinge's, resolved).
         storey: a vertical flexure's storey (1 = ground), else None.
         sides: the sides it can open to (+1 outward, −1 inward).
-        views: the code check's geometry of each side of ``sides``: the block's closed forms
+        views: its geometry about each pivot, side +1 then side −1, which the code check reads
+            and what the engines rock is built from: the block's closed forms
             (mechanisms.block.BlockSide) or the wall's bodies placed about the hinge
-            (mechanisms.side.ChainSide).
+            (mechanisms.side.ChainSide). A side it cannot open to is placed too (the impact
+            that ends a phase there).
         reported: the sides whose α0 the result reports (a block's: both, whichever it can
             open to).
         base: the height above the wall's base at which it stands in the building [m] (Z +
@@ -94,7 +96,7 @@ class Mechanism:
     hinge_height: float
     storey: int | None
     sides: tuple[int, ...]
-    views: tuple[BlockSide | ChainSide, ...]
+    views: tuple[BlockSide | ChainSide, BlockSide | ChainSide]
     reported: tuple[int, ...]
     base: float
     wall_height: float
@@ -107,10 +109,8 @@ class Mechanism:
     spec: MechanismSpec | None = None
 
     def view(self, side: int) -> BlockSide | ChainSide:
-        """The code check's geometry of ``side``."""
-        if side in self.sides:
-            return self.views[self.sides.index(side)]
-        return block_view(self.model, side)
+        """Its geometry about the pivot of ``side``."""
+        return self.views[0 if side > 0 else 1]
 
     def check(self, side: int, distributed: bool, per_block: bool) -> SideCheck:
         """The code check's view of ``side`` with the edition's sums (codecheck.kinematic)."""
@@ -129,12 +129,18 @@ class Mechanism:
         from rockcli.mechanisms.rigid import rigid_block
         from rockcli.model.derive import block_of, to_block, with_system_restitution
 
-        if self.wall is None or self.spec is None:
+        if self.wall is None:
             return to_block(self.model)
         block = block_of(self.model)
+        plus, minus = self.views
+        assert isinstance(plus, ChainSide) and isinstance(minus, ChainSide)
         if self.type is MechanismType.VERTICAL_FLEXURE:
-            return with_system_restitution(flexure_block(self.wall, self.spec, block), self.model)
-        return with_system_restitution(rigid_block(self.wall, self.spec, block), self.model)
+            assert self.storey is not None
+            top = self.wall.storeys[self.storey - 1].height  # above the storey's base
+            rocker: Rocker = flexure_block(plus, minus, top, block)
+        else:
+            rocker = rigid_block(plus, minus, block, wedge=self.type is MechanismType.WEDGE)
+        return with_system_restitution(rocker, self.model)
 
 
 def named(items, name: str, where: str = "--mechanism", problem: str = "no such mechanism"):
@@ -228,7 +234,7 @@ def block_mechanism(model: Model) -> Mechanism:
         hinge_height=0.0,
         storey=None,
         sides=sides,
-        views=tuple(block_view(model, s) for s in sides),
+        views=(block_view(model, 1), block_view(model, -1)),
         reported=(1, -1),
         base=0.0,
         wall_height=2.0 * block.h,
@@ -255,7 +261,7 @@ def wall_mechanism(model: Model, wall: Wall, spec: MechanismSpec, free: int | No
         hinge_height=hinge,
         storey=spec.storey,
         sides=sides,
-        views=tuple(placed(wall, spec, s) for s in sides),
+        views=(placed(wall, spec, 1), placed(wall, spec, -1)),
         reported=sides,
         base=spec_base(wall, spec),
         wall_height=wall.height,

@@ -24,7 +24,9 @@ import pytest
 from rockcli.dynamics.settings import Engine, SolverSettings
 from rockcli.dynamics.simulate import simulate
 from rockcli.mechanics import Block, RigidBody, impact_restitution
-from rockcli.mechanisms.rigid import composite, parts, rigid_block
+from rockcli.mechanisms.catalogue import build
+from rockcli.mechanisms.catalogue import rigid_parts as parts
+from rockcli.mechanisms.rigid import composite, rigid_block
 from rockcli.mechanisms.wall import MechanismSpec, MechanismType, Storey, Wall
 
 G = 9.81
@@ -43,6 +45,12 @@ STOREY_2 = MechanismSpec("overturning, storey 2", MechanismType.OVERTURNING, 4.0
 WEDGE = MechanismSpec("wedge", MechanismType.WEDGE, angle=math.radians(30.0), sides=2)
 
 
+def rigid_of(wall: Wall, spec: MechanismSpec, base: Block) -> RigidBody:
+    """The mechanism as the engine rocks it, from its placement about each pivot."""
+    wedge = spec.type is MechanismType.WEDGE
+    return rigid_block(build(wall, spec, 1), build(wall, spec, -1), base, wedge)
+
+
 def at_rest(seconds: float = 6.0, dt: float = 0.01) -> tuple[np.ndarray, np.ndarray]:
     """A record of no motion [s, g]."""
     time = np.arange(0.0, seconds + dt / 2, dt)
@@ -51,7 +59,7 @@ def at_rest(seconds: float = 6.0, dt: float = 0.01) -> tuple[np.ndarray, np.ndar
 
 @pytest.mark.parametrize("spec", [GABLE, STOREY_2], ids=lambda s: s.name)
 def test_free_rocking_conserves_the_energy_of_the_bodys_own_mass_properties(spec) -> None:
-    block = rigid_block(WALL, spec, BASE)
+    block = rigid_of(WALL, spec, BASE)
     bodies, hinge, thickness = parts(WALL, spec)
     body = composite(bodies)
     # Closed form from the mass properties (not from the block): pivot O at the hinge
@@ -81,7 +89,7 @@ def test_a_rectangle_as_a_body_of_its_own_shape_is_the_papers_block() -> None:
     mass = 18e3 * 0.5 * 4.0 / G
     e = 1.0 - 1.5 * math.sin(math.atan2(b, h)) ** 2
     paper = Block(R=math.hypot(b, h), alpha=math.atan2(b, h), mass=mass, g=G, e=e)
-    body = replace(rigid_block(wall, spec, paper), e=e, e_neg=None)
+    body = replace(rigid_of(wall, spec, paper), e=e, e_neg=None)
     time = np.arange(0.0, 3.0, 0.005)
     accel = np.where(time < 0.5, 0.3 * np.sin(2 * math.pi * time), 0.0)
     one = simulate(paper, time, accel, 0.005)
@@ -104,7 +112,7 @@ def test_housner_restitution_of_a_body_is_the_rectangles() -> None:
 
 @pytest.mark.parametrize("spec", [GABLE, WEDGE], ids=lambda s: s.name)
 def test_the_fast_engine_agrees_with_the_reference_on_a_body(spec) -> None:
-    block = rigid_block(WALL, spec, replace(BASE, e=0.9))
+    block = rigid_of(WALL, spec, replace(BASE, e=0.9))
     time = np.arange(0.0, 3.0, 0.005)
     accel = np.where(time < 1.0, 0.6 * np.sin(2 * math.pi * time), 0.0)
     fast = simulate(block, time, accel, 0.005, engine=Engine.FAST)
@@ -141,7 +149,7 @@ def test_momentum_and_projection_restitution_are_one_number_for_one_body() -> No
     # the angular momentum balance about the new pivot, term by term. Summed over a 400 × 400
     # grid of the gable's mass (midpoint rule, error O(1/n²) ≈ 1e-6 of the moments), against
     # mechanics.impact_restitution of the gable as a body (its centroid and I_G in closed form).
-    block = rigid_block(WALL, GABLE, BASE)
+    block = rigid_of(WALL, GABLE, BASE)
     t, hg = WALL.storeys[-1].thickness, WALL.gable_height or 0.0
     cells = gable_cells(t, hg, WALL.width, 400)
     for s, (x_old, x_new) in ((1, (0.0, t)), (-1, (t, 0.0))):
