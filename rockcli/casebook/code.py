@@ -144,7 +144,7 @@ def instability_displacement(
 
     The mechanism is rebuilt as the catalogue builds it (rockcli.studies.catalogue
     .mechanism_of); θ0 is rockcli.codecheck.kinematic.zero_rotation's, and the hinge's
-    displacement away from the wall is its rest x less its x at θ0 (rockcli.mechanisms.chain:
+    displacement away from the wall is its rest x less its x at θ0 (rockcli.mechanisms.links:
     the upper link's reference point is the hinge). None: the curve never reaches zero.
     """
     from rockcli.codecheck.kinematic import zero_rotation

@@ -244,7 +244,7 @@ def assess_with_suite(
     """Every record of the suite through the time history, the code's rule, the report.
 
     suite: (the suite file or folder, the --target of a folder, --allow-outside)."""
-    from rockcli.studies.suite.assess import assess_suite
+    from rockcli.studies.suite_run.assess import assess_suite
     from rockcli.terminal.suite import suite_assessment_document, suite_assessment_report
     from rockcli.terminal.sweep import progress_bar
     from rockcli.terminal.table import show

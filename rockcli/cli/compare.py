@@ -39,7 +39,7 @@ CLASSIFICATIONS = (
     "undetermined",
 )
 #: The values of --code-demand with --record (rockcli.studies.compare.CodeDemand) and with
-#: --suite (rockcli.studies.suite.compare.SuiteCodeDemand); the first of each is the default.
+#: --suite (rockcli.studies.suite_run.compare.SuiteCodeDemand); the first of each is the default.
 RECORD_DEMANDS = ("record", "model")
 SUITE_DEMANDS = ("target", "suite-mean")
 
@@ -211,7 +211,7 @@ def compare_with_suite(
     """The code check and every record of the suite, side by side; the document shown.
 
     suite: (the suite file or folder, the --target of a folder, --allow-outside)."""
-    from rockcli.studies.suite.compare import compare_suite
+    from rockcli.studies.suite_run.compare import compare_suite
     from rockcli.terminal.suite import suite_comparison_document, suite_comparison_report
     from rockcli.terminal.sweep import progress_bar
     from rockcli.terminal.table import show

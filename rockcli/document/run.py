@@ -183,7 +183,7 @@ def write_suite_report(
     and checked before any analysis runs."""
     from rockcli.document.build import Inputs
     from rockcli.document.suite import SuitePart, build_suite_document
-    from rockcli.studies.suite.assess import load_suite_and_model
+    from rockcli.studies.suite_run.assess import load_suite_and_model
     from rockcli.suites.run import suite_document
 
     loads = [load_suite_and_model(path, suite_path, grid_file, target, allow_outside)
@@ -210,7 +210,7 @@ def suite_comparison(
     """`rock compare --suite`'s document of a loaded model and suite, and each record's time
     history with its history kept (its `rock assess` document, the scaled record)."""
     from rockcli.studies.assess import assess_model_output
-    from rockcli.studies.suite.compare import compare_loaded
+    from rockcli.studies.suite_run.compare import compare_loaded
     from rockcli.terminal.assess import assessment_output_document
     from rockcli.terminal.suite import suite_comparison_document
 

@@ -31,7 +31,7 @@ from collections.abc import Callable
 from dataclasses import dataclass, replace
 
 from rockcli.mechanisms.bodies import Body, gable, prism, triangle
-from rockcli.mechanisms.chain import Rotation, TwoBlock
+from rockcli.mechanisms.links import Rotation, TwoBlock
 from rockcli.mechanisms.side import Attached, ChainSide, SideLoad, SideThrust
 from rockcli.mechanisms.wall import MechanismSpec, MechanismType, Wall
 

@@ -2,7 +2,7 @@
 
 A mechanism (:class:`rockcli.mechanisms.side.ChainSide`) has one degree of freedom θ; every
 point of it is at (X(θ), Z(θ)) in the side frame (origin at the pivot, x into the wall, z up;
-rockcli.mechanisms.chain). On a ground moving horizontally by u_g(t) along the side frame's
+rockcli.mechanisms.links). On a ground moving horizontally by u_g(t) along the side frame's
 +x, Lagrange's equation of the kinetic energy T = ½ M(θ) θ̇² (relative to the ground) and the
 potential V(θ) reads (Goldstein, *Classical Mechanics*, §1.4; the rocking block's Eq. 1 of
 Housner 1963 is the case of one rectangle):
@@ -36,7 +36,7 @@ from __future__ import annotations
 import math
 from collections.abc import Iterator
 
-from rockcli.mechanisms.chain import LinkState
+from rockcli.mechanisms.links import LinkState
 from rockcli.mechanisms.side import ChainSide
 
 #: Step of the central difference of M′ [rad]: the truncation error h²·|M‴|/6 and the
@@ -50,7 +50,7 @@ MASS_STEP = 1e-5
 def rise(state: LinkState, x: float, z: float) -> float:
     """Z(θ) − Z(0) of the link's point at rest at (x, z) [m].
 
-    At θ = 0 every point is at rest (c(0) = p0, φ(0) = 0; rockcli.mechanisms.chain), so
+    At θ = 0 every point is at rest (c(0) = p0, φ(0) = 0; rockcli.mechanisms.links), so
     Z(θ) − z = (c_z − p_z) + (x − p_x) sin φ − (z − p_z)(1 − cos φ), with 1 − cos φ written
     2 sin²(φ/2) so that a small rotation keeps its digits (no difference of large heights).
     """

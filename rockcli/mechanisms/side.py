@@ -1,5 +1,5 @@
 """A mechanism opening to one side, as both analyses read it: bodies, loads, thrusts and
-restrainers on the links of one motion, in the side frame (rockcli.mechanisms.chain).
+restrainers on the links of one motion, in the side frame (rockcli.mechanisms.links).
 
 From the one configuration function (the motion's link states) come, at any rotation θ:
 
@@ -27,7 +27,7 @@ from dataclasses import dataclass, field
 
 from rockcli.mechanics import Restrainer
 from rockcli.mechanisms.bodies import Body
-from rockcli.mechanisms.chain import LinkState, Motion
+from rockcli.mechanisms.links import LinkState, Motion
 
 #: Bisection steps of an inversion in θ (θ resolved to π/2·2⁻⁶⁰).
 INVERSION_STEPS = 60

@@ -158,7 +158,7 @@ def kinematic_model(
     spectrum: the record's response spectrum when the caller already has it (a study reuses
     one per record); record: the record, to compute it otherwise. demand_of: every limit
     state's demand from the settings and g, in place of record, site and the model's own (a
-    record suite's target, rockcli.studies.suite.compare). mechanisms: the model's catalogue
+    record suite's target, rockcli.studies.suite_run.compare). mechanisms: the model's catalogue
     when the caller already has it (rockcli.model.catalogue.catalogue).
     """
     from rockcli.model.catalogue import catalogue

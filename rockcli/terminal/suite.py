@@ -15,9 +15,9 @@ from __future__ import annotations
 from collections.abc import Mapping, Sequence
 from typing import Any
 
-from rockcli.studies.suite.assess import SuiteAssessment
-from rockcli.studies.suite.compare import SuiteComparison
-from rockcli.studies.suite.rule import SuiteMeasure
+from rockcli.studies.suite_run.assess import SuiteAssessment
+from rockcli.studies.suite_run.compare import SuiteComparison
+from rockcli.studies.suite_run.rule import SuiteMeasure
 from rockcli.terminal.table import Column, Report, Table, key_value
 
 #: What the code does with a suite of this size (NTC §3.2.3.6).

@@ -199,7 +199,7 @@ def check_note(doc: dict[str, Any]) -> str | None:
     )
 
 
-#: How a suite case's rocking verdict is reached (rockcli.studies.sweep.suite).
+#: How a suite case's rocking verdict is reached (rockcli.studies.sweep.over_suite).
 SUITE_RULE_TEXT = {
     "mean": "the mean of max θ/α over its records",
     "worst": "the largest max θ/α of its records",

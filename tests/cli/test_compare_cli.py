@@ -163,7 +163,7 @@ def test_the_old_record_demand_flag_is_refused() -> None:
 def test_the_code_demand_choices_are_the_studies() -> None:
     from rockcli.cli.compare import RECORD_DEMANDS, SUITE_DEMANDS
     from rockcli.studies.compare import CodeDemand
-    from rockcli.studies.suite.compare import SuiteCodeDemand
+    from rockcli.studies.suite_run.compare import SuiteCodeDemand
 
     assert RECORD_DEMANDS == tuple(c.value for c in CodeDemand)
     assert SUITE_DEMANDS == tuple(c.value for c in SuiteCodeDemand)

@@ -25,7 +25,7 @@ from rockcli.codecheck.kinematic import Mechanism, alpha0, zero_rotation
 from rockcli.mechanics import Restrainer
 from rockcli.mechanisms import catalogue
 from rockcli.mechanisms.catalogue import CrushingError
-from rockcli.mechanisms.chain import TwoBlock
+from rockcli.mechanisms.links import TwoBlock
 from rockcli.mechanisms.side import ChainSide
 from rockcli.mechanisms.wall import Storey, Wall, WallLoad, WallRestrainer, WallThrust
 

@@ -28,7 +28,7 @@ import pytest
 from rockcli.codecheck.kinematic import Mechanism, alpha0
 from rockcli.mechanics import Block, Load, point_moments, point_table, polar_inertia
 from rockcli.mechanisms import catalogue
-from rockcli.mechanisms.chain import TwoBlock
+from rockcli.mechanisms.links import TwoBlock
 from rockcli.mechanisms.motion import (
     MASS_STEP,
     generalised_mass,

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from rockcli.studies.suite.rule import RecordOutcome, suite_measure
+from rockcli.studies.suite_run.rule import RecordOutcome, suite_measure
 from rockcli.terminal.suite import history_document, history_records_table, history_verdict
 
 ROWS = [

@@ -6,7 +6,7 @@ import math
 
 import pytest
 
-from rockcli.studies.suite.rule import RecordOutcome, suite_measure, suite_rule
+from rockcli.studies.suite_run.rule import RecordOutcome, suite_measure, suite_rule
 
 #: An overturned run's max θ/α: the overturning angle π/2 over α = 0.2.
 OVERTURNED = (math.pi / 2) / 0.2

@@ -11,8 +11,8 @@ from rockcli.records.files import read_record
 from rockcli.records.transform import scale
 from rockcli.studies.assess import assess_model_output
 from rockcli.studies.parallel.executor import local_executor
-from rockcli.studies.suite.rule import suite_measure
-from rockcli.studies.suite.run import SuiteRecord, outcomes, run_suite
+from rockcli.studies.suite_run.rule import suite_measure
+from rockcli.studies.suite_run.run import SuiteRecord, outcomes, run_suite
 from tests.cli.conftest import ROOT
 
 WALL = ROOT / "examples" / "wall.toml"

@@ -385,7 +385,7 @@ def test_a_suite_study_batched_is_the_cases_one_by_one(write_study: Any, tmp_pat
     """A rocking-only study whose records are a suite (the three pulses of
     tests/sweep/test_suite_entries.py, one scaled): each case's row, the suite's rule over
     its records run as arrays, equals the row of run_suite_case, bit for bit."""
-    from rockcli.studies.sweep.suite import read_suite, run_suite_case
+    from rockcli.studies.sweep.over_suite import read_suite, run_suite_case
     from tests.sweep.test_suite_entries import SUITE
 
     study = 'analyses = ["rocking"]\n' + STUDY.replace(

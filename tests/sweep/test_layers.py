@@ -63,7 +63,7 @@ def test_a_study_module_imports_no_report_cli_click_or_rich(path: Path) -> None:
 #: not import the ones listed for it. parallel is where every study runs, and knows none of
 #: them; a suite in the time history is used by sweep, not the other way round.
 ONE_WAY = {
-    "parallel": ("rockcli.studies.sweep", "rockcli.studies.suite", "rockcli.studies.retrofit"),
+    "parallel": ("rockcli.studies.sweep", "rockcli.studies.suite_run", "rockcli.studies.retrofit"),
     "suite": ("rockcli.studies.sweep", "rockcli.studies.retrofit"),
 }
 

@@ -43,7 +43,7 @@ if TYPE_CHECKING:
     from rockcli.dynamics.batch import Blocks, Runs
     from rockcli.mechanics import Block
     from rockcli.model.schema import Model
-    from rockcli.studies.sweep.suite import SuiteInput
+    from rockcli.studies.sweep.over_suite import SuiteInput
 
 #: The model values a batched study may vary: (table, key); a restrainer's key for every
 #: element of [[restrainers]].
@@ -403,18 +403,18 @@ def run_arrays(
 
 
 def suite_rows(form: Form, cases: Sequence[Case], suite: SuiteInput) -> list[dict[str, Any]] | None:
-    """The rows of rockcli.studies.sweep.suite.run_suite_case (the time history alone) for a
+    """The rows of rockcli.studies.sweep.over_suite.run_suite_case (the time history alone) for a
     chunk's cases under a suite, every record run as arrays; None when a case is not valid.
 
     Each record's max θ/α (the envelope of its polarities) and overturning go, case by case,
-    through the suite's own rule (rockcli.studies.suite.rule.suite_measure, with outcomes
-    made as rockcli.studies.suite.run.outcomes makes them): the same numbers as case by case.
+    through the suite's own rule (rockcli.studies.suite_run.rule.suite_measure, with outcomes
+    made as rockcli.studies.suite_run.run.outcomes makes them): the same numbers as case by case.
     """
     from rockcli.dynamics.batch import run_blocks
     from rockcli.model.derive import solver_options
     from rockcli.studies.assess import settings_from
-    from rockcli.studies.suite.assess import limit_for
-    from rockcli.studies.suite.rule import RecordOutcome, suite_measure
+    from rockcli.studies.suite_run.assess import limit_for
+    from rockcli.studies.suite_run.rule import RecordOutcome, suite_measure
 
     indices = np.array([c.indices for c in cases], dtype=np.int64).reshape(len(cases), -1)
     blocks, valid = derive(form, indices)

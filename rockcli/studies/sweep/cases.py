@@ -130,7 +130,7 @@ def check_cases(plan: StudyPlan, check: Callable[[Model], None] | None = None) -
     a bad case stops the study before any work: every point up to CHECK_ALL_UP_TO, else a
     covering subset (:func:`covering_points`). The error names the case of the first record
     (its id is the point's index) by its axis values. check: what else each model must allow
-    (InputError otherwise; rockcli.studies.sweep.suite.suite_checks). Returns how many points
+    (InputError otherwise; rockcli.studies.sweep.over_suite.suite_checks). Returns how many points
     were checked."""
     sizes = [len(a.values) for a in plan.axes]
     total = math.prod(sizes)

@@ -28,8 +28,8 @@ from rockcli.studies.parallel.executor import Lane
 from rockcli.studies.sweep.batch import check_grid
 from rockcli.studies.sweep.cases import Case, Cases, case_labels, expand
 from rockcli.studies.sweep.output import Output, cell
+from rockcli.studies.sweep.over_suite import suite_checks
 from rockcli.studies.sweep.study import StudyPlan
-from rockcli.studies.sweep.suite import suite_checks
 from rockcli.studies.sweep.summary import split_axis
 from rockcli.studies.sweep.worker import Chunk, ChunkLines, read_source, run_chunk_lines
 
@@ -144,7 +144,7 @@ def measure(plan: StudyPlan, todo: Sequence[Case], npts: Sequence[int]) -> tuple
 def record_facts(plan: StudyPlan) -> tuple[list[int], dict[str, dict[str, Any]]]:
     """Each record read once here (a bad file fails before any work): samples and facts (a
     suite: its records' samples, and its compatibility with its target)."""
-    from rockcli.studies.sweep.suite import suite_facts
+    from rockcli.studies.sweep.over_suite import suite_facts
 
     npts, facts = [], {}
     for source in plan.records:

@@ -32,7 +32,7 @@ def code_collapse(row: Mapping[str, Any]) -> bool | None:
 
 
 #: The rocking verdicts that are a collapse: a record overturns the block, or a suite's
-#: measure reaches its limit (rockcli.studies.sweep.suite).
+#: measure reaches its limit (rockcli.studies.sweep.over_suite).
 COLLAPSES = ("overturns", "fails")
 
 

@@ -29,7 +29,7 @@ if TYPE_CHECKING:
     from rockcli.mechanics import Rocker
     from rockcli.model.schema import Model
     from rockcli.records.record import Record
-    from rockcli.studies.sweep.suite import SuiteInput
+    from rockcli.studies.sweep.over_suite import SuiteInput
 
 _records: dict[RecordSource, Record] = {}
 _spectra: dict[tuple[RecordSource, float], RecordSpectrum] = {}
@@ -141,7 +141,7 @@ def run_chunk(chunk: Chunk) -> list[dict[str, Any]]:
     its ``error`` and no results: the study goes on, the summary counts it, and ``--resume``
     does not run it again.
     """
-    from rockcli.studies.sweep.suite import read_suite, run_suite_case
+    from rockcli.studies.sweep.over_suite import read_suite, run_suite_case
 
     plan = chunk.plan
     source = plan.records[chunk.record] if chunk.record is not None else None

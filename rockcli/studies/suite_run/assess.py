@@ -8,8 +8,8 @@ from collections.abc import Callable
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
-from rockcli.studies.suite.rule import DEFAULT_LIMIT_RATIO, SuiteMeasure, suite_measure
-from rockcli.studies.suite.run import SuiteRecord, outcomes, run_suite
+from rockcli.studies.suite_run.rule import DEFAULT_LIMIT_RATIO, SuiteMeasure, suite_measure
+from rockcli.studies.suite_run.run import SuiteRecord, outcomes, run_suite
 
 if TYPE_CHECKING:
     from rockcli.suites.load import SuiteSettings

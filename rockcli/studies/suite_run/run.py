@@ -3,7 +3,7 @@ sweep executor's lanes (:func:`rockcli.studies.parallel.chunks.run_chunks`), eac
 
 The chunk carries the model's table, not a model: the worker validates it again (as
 ``rock retrofit`` does). A record's row is plain data, keyed by its place in the suite, and
-becomes a :class:`~rockcli.studies.suite.rule.RecordOutcome` for the code's rule.
+becomes a :class:`~rockcli.studies.suite_run.rule.RecordOutcome` for the code's rule.
 """
 
 from __future__ import annotations
@@ -12,7 +12,7 @@ from collections.abc import Callable, Mapping, MutableSequence, Sequence
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
-from rockcli.studies.suite.rule import RecordOutcome
+from rockcli.studies.suite_run.rule import RecordOutcome
 
 if TYPE_CHECKING:
     from rockcli.records.record import Record

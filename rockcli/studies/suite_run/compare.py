@@ -5,7 +5,7 @@ the code's rule, with the classification of the two verdicts.
 Like with like: the two sides are held to the same limit state, the suite target's. The code
 check's verdict is the one of that limit state (2009: SLD → DLS, SLV → ULS; 2019: SLD, SLV,
 SLC each), computed on the target's spectrum; the time history's is the suite measure against
-the model's limit for that state (rockcli.studies.suite.assess.limit_for). The code check
+the model's limit for that state (rockcli.studies.suite_run.assess.limit_for). The code check
 still runs every limit state its edition has: the other states take their spectra from the
 target's site (same soil, topography, VN, CU), or from the model's [ntc] when the target gives
 parameters of one state only (docs/interpretations.md, "Record suites").
@@ -24,7 +24,7 @@ from rockcli.codecheck.demand import LimitStateDemand
 from rockcli.errors import InputError
 from rockcli.notes import Items, Note
 from rockcli.studies.compare import Classification, classify
-from rockcli.studies.suite.assess import LoadedSuite, SuiteAssessment
+from rockcli.studies.suite_run.assess import LoadedSuite, SuiteAssessment
 
 if TYPE_CHECKING:
     from rockcli.codecheck.result import KinematicResult
@@ -226,7 +226,7 @@ def compare_suite(
     The code check runs first: its bad input (a state the edition lacks, a target that gives
     too little) stops the command before the time histories.
     """
-    from rockcli.studies.suite.assess import load_suite_and_model
+    from rockcli.studies.suite_run.assess import load_suite_and_model
 
     loaded = load_suite_and_model(model_path, suite_path, grid_file, target, allow_outside)
     return compare_loaded(
@@ -249,7 +249,7 @@ def compare_loaded(
     """:func:`compare_suite` on a model and suite already read (the calculation report keeps
     the suite's scaled records for its figures)."""
     from rockcli.studies.kinematic import check_settings, kinematic_model
-    from rockcli.studies.suite.assess import assess_loaded
+    from rockcli.studies.suite_run.assess import assess_loaded
 
     which = SuiteCodeDemand(code_demand)
     settings = check_settings(loaded.model, edition)

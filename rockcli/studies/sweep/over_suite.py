@@ -1,5 +1,5 @@
 """A case of a study whose [[records]] entry names a record suite: every record of the suite
-through the time history and the code's rule (rockcli.studies.suite.rule), the code check on
+through the time history and the code's rule (rockcli.studies.suite_run.rule), the code check on
 the suite's target spectrum at its limit state, and their classification — the verdicts of
 `rock compare MODEL --suite SUITE` for each model of the study.
 
@@ -20,7 +20,7 @@ from rockcli.studies.sweep.columns import kinematic_columns
 
 if TYPE_CHECKING:
     from rockcli.model.schema import Model
-    from rockcli.studies.suite.run import SuiteRecord
+    from rockcli.studies.suite_run.run import SuiteRecord
     from rockcli.studies.sweep.study import RecordSource, StudyPlan
     from rockcli.suites.load import SuiteSettings
 
@@ -48,7 +48,7 @@ def read_suite(source: RecordSource) -> SuiteInput:
         found = _suites.get(source)
     if found is not None:
         return found
-    from rockcli.studies.suite.run import SuiteRecord
+    from rockcli.studies.suite_run.run import SuiteRecord
     from rockcli.suites.load import load_suite, read_entries
 
     settings = load_suite(source.path, allow_outside=True)  # checked when the study loaded
@@ -123,7 +123,7 @@ def check_suite_demand(plan: StudyPlan, model: Model, source: RecordSource) -> N
     from rockcli.errors import InputError
     from rockcli.studies.compare import CodeDemand
     from rockcli.studies.kinematic import check_settings
-    from rockcli.studies.suite.compare import VERDICT_KEY, target_demands, verdict_key
+    from rockcli.studies.suite_run.compare import VERDICT_KEY, target_demands, verdict_key
     from rockcli.studies.sweep.study import shown_path
 
     settings = read_suite(source).settings
@@ -176,9 +176,9 @@ def suite_rocking_columns(plan: StudyPlan, model: Model, suite: SuiteInput) -> d
     limit for the target's limit state."""
     from rockcli.dynamics.tolerance import any_sensitive
     from rockcli.studies.floor import model_floor
-    from rockcli.studies.suite.assess import limit_for
-    from rockcli.studies.suite.rule import suite_measure
-    from rockcli.studies.suite.run import outcomes, record_row
+    from rockcli.studies.suite_run.assess import limit_for
+    from rockcli.studies.suite_run.rule import suite_measure
+    from rockcli.studies.suite_run.run import outcomes, record_row
 
     ground = plan.ground and model_floor(model) is not None
     check = plan.check_tolerance
@@ -205,7 +205,7 @@ def suite_code_check(plan: StudyPlan, model: Model, suite: SuiteInput) -> tuple[
     own spectrum (code_demand "model")."""
     from rockcli.studies.compare import CodeDemand
     from rockcli.studies.kinematic import check_settings, kinematic_model
-    from rockcli.studies.suite.compare import target_demands, verdict_key
+    from rockcli.studies.suite_run.compare import target_demands, verdict_key
 
     settings = suite.settings
     key = verdict_key(
