@@ -11,6 +11,10 @@ import numpy as np
 #: chattering-dominated (engine.md, "Sensitivity": small-amplitude rocking is ill-conditioned).
 CHATTER_RATIO = 0.05
 
+#: Two polarities' amplitude ratios within this share of each other are a tie (far below
+#: the engine's tolerance, rtol 1e-8): the history written is the record's as given.
+TIE_RATIO = 1e-9
+
 
 class RunStatus(StrEnum):
     """How a run ended. NONFINITE: a NaN or an infinity (θ, θ̇, θ̈, the ground acceleration,
@@ -176,8 +180,17 @@ class Assessment:
 
     @property
     def worst(self) -> RockingRun:
-        """The run that decides the verdict: an overturn first, else the largest ratio."""
-        return max(self.runs, key=lambda r: (r.overturned, r.max_ratio))
+        """The run that decides the verdict: an overturn first, else the largest ratio; two
+        ratios within TIE_RATIO of each other are a tie, kept by the record as given (the
+        first run), so that the last bits of a sum do not choose (a one-sided wedge rocks
+        alike under both polarities)."""
+        best = self.runs[0]
+        for run in self.runs[1:]:
+            if run.overturned != best.overturned:
+                best = run if run.overturned else best
+            elif run.max_ratio > best.max_ratio * (1.0 + TIE_RATIO):
+                best = run
+        return best
 
     @property
     def verdict(self) -> Verdict:
