@@ -11,8 +11,8 @@ that centroid, I_G = Σ [I_Gi + m_i·|r_i − r_G|²] (parallel axes). The loads
 restrainers above the hinge go in from each pivot (x from O, x′ from O′, z above the hinge).
 Each side's coefficient of restitution is Housner's, from the angular momentum about the new
 pivot (mechanics.impact_restitution); a one-sided mechanism's (the wedge's always) is that of
-its one-sided impact, √(e₊·e₋) (mechanics.rebound_restitution; rockcli.studies.rocked
-.system_restitution sets both).
+its one-sided impact, √(e₊·e₋) (mechanics.rebound_restitution; rockcli.model.derive
+.with_system_restitution sets both).
 
 Pure and silent: only :mod:`math`, :mod:`rockcli.mechanics` and the package's modules.
 """

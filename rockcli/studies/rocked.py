@@ -123,18 +123,6 @@ def mechanism_notes(mech: CatalogueMechanism) -> tuple[Note, ...]:
     )
 
 
-def system_restitution(block: Rocker, model: Model) -> Rocker:
-    """The coefficient of restitution of the mechanism's bodies with their loads, per side,
-    times the model's factor (an explicit e as given): two-sided, Housner's balance of angular
-    momentum about the new pivot (mechanics.impact_restitution; a chain's projection on the
-    motion after the impact); one-sided (the wedge, a wall stopped on one side), the energy
-    that impact keeps, the body turning back about its own pivot (mechanics.
-    rebound_restitution, below 1 for every body; docs/physics.md, "One-sided impacts")."""
-    from rockcli.model.derive import with_system_restitution
-
-    return with_system_restitution(block, model)
-
-
 def rocked_mechanism(model: Model, record: Record, name: str | None) -> Rocked:
     """The mechanism of the model the time history rocks (the one named, the only one, or
     the governing one of the code check) and its floor."""
