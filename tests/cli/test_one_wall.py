@@ -125,3 +125,14 @@ def test_history_holds_the_ground_and_the_floor(tmp_path: Path) -> None:
     assert code == 0, err
     header = out.read_text().splitlines()[0].split(",")
     assert header[:3] == ["t_s", "ground_acc_g", "floor_acc_g"]
+
+
+def test_ground_on_a_wall_mechanism_on_the_ground_is_bad_input() -> None:
+    # A wall's mechanism about the wall's base with [building] Z = 0 has no floor motion to
+    # replace: refused in one line, as for a block (issue 35: one road for both).
+    facade = ROOT / "examples" / "two-storey-facade.toml"
+    code, out, err = run("assess", str(facade), "--record", str(PULSES[0]), "--mechanism",
+                         "overturning, whole wall", "--ground")  # fmt: skip
+    assert code == 2 and out == ""
+    assert err.startswith("error: ") and "--ground" in err and err.count("\n") == 1
+    assert "the block is on the ground already" in err
