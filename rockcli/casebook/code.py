@@ -31,6 +31,7 @@ from rockcli.mechanics import (
     linear_global_stiffness,
     stiffness_coefficient,
 )
+from rockcli.mechanisms.side import ChainSide
 from rockcli.model.derive import to_block
 from rockcli.model.schema import Model
 from rockcli.records.record import Record
@@ -166,8 +167,8 @@ def instability_displacement(
     theta0 = zero_rotation(mech)
     if theta0 is None:
         return None
-    assert mech.geometry is not None
-    hinge = mech.geometry.states(theta0)[1]
+    assert isinstance(mech.view, ChainSide)
+    hinge = mech.view.states(theta0)[1]
     return hinge.px - hinge.cx
 
 

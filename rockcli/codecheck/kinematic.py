@@ -17,10 +17,9 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, replace
-from functools import cached_property
 
 from rockcli.codecheck.free import branch_acceleration, branch_end
-from rockcli.mechanics import Block, Restrainer
+from rockcli.mechanics import Restrainer
 from rockcli.mechanisms.block import BlockSide, Polar, polar_of
 from rockcli.mechanisms.side import ChainPoint, ChainSide
 
@@ -44,36 +43,29 @@ LOCK_SHARE = 0.95
 @dataclass(frozen=True)
 class Mechanism:
     """A mechanism opening to one side, with its loads, thrusts and restrainers (the model's
-    physical description, shared with the rocking analysis).
+    physical description, shared with the rocking analysis), and the edition's sums.
 
     Attributes:
-        block: the rigid block, its restrainers, loads and thrusts (mass required), when the
-            mechanism is today's block turning about a base edge; None for the catalogue's
-            other mechanisms (``geometry``).
-        side: the side it overturns to (+1: θ > 0, pivot O; −1: θ < 0, pivot O′).
+        view: its geometry about the pivot of its side: the rectangle's closed forms
+            (rockcli.mechanisms.block.BlockSide) or the general chain of bodies
+            (rockcli.mechanisms.side.ChainSide), each with the side it opens to (+1: θ > 0,
+            pivot O; −1: θ < 0, pivot O′).
         distributed: True when each body's mass is spread over its section for M* and e*
             (e* = 0.75 for a lone rectangle), False when lumped at its centroid (e* = 1).
-        geometry: the mechanism's one geometry (rockcli.mechanisms.side.ChainSide); None:
-            the block's closed forms (rockcli.mechanisms.block.BlockSide).
         per_block: True for the 2019 sums of M*, e* and d* over the rigid blocks, each the
             resultant of its own and carried weights (Circ. 7/2019 Eqs. C8.7.1.4–C8.7.1.5
             of §C8.7.1.2.1.3, P_k of §C8.7.1.2.1.1); False for the 2009 sums over the
             weights (Circ. 617/2009 Eqs. C8A.4.2–C8A.4.3), where ``distributed`` applies.
     """
 
-    block: Block | None = None
-    side: int = 1
+    view: BlockSide | ChainSide
     distributed: bool = False
-    geometry: ChainSide | None = None
     per_block: bool = False
 
-    @cached_property
-    def view(self) -> BlockSide | ChainSide:
-        """The geometry the formulas read: the block's closed forms, or the general chain."""
-        if self.geometry is not None:
-            return self.geometry
-        assert self.block is not None
-        return BlockSide(self.block, self.side)
+    @property
+    def side(self) -> int:
+        """The side it overturns to (+1: θ > 0, pivot O; −1: θ < 0, pivot O′)."""
+        return self.view.side
 
     @property
     def g(self) -> float:

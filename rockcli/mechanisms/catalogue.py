@@ -159,7 +159,7 @@ def attach(wall: Wall, frame: Frame, motion, bodies, link_of: Callable[[float], 
             anchors.append(Attached(k, frame.x(rs.x), frame.z(rs.z)))
     return ChainSide(motion=motion, bodies=tuple(bodies), g=wall.g, loads=tuple(loads),
                      thrusts=tuple(thrusts), restrainers=tuple(members),
-                     anchors=tuple(anchors))  # fmt: skip
+                     anchors=tuple(anchors), side=frame.side)  # fmt: skip
 
 
 def storey_at(wall: Wall, hinge: float) -> int:

@@ -110,6 +110,7 @@ class ChainSide:
         loads, thrusts: on the links, in the side frame.
         restrainers: the members, in the model's order; ``anchors`` their points.
         g: gravity [m/s²].
+        side: the side it opens to (+1: θ > 0; −1: θ < 0), which the frame's x was turned to.
     """
 
     motion: Motion
@@ -119,6 +120,7 @@ class ChainSide:
     thrusts: tuple[SideThrust, ...] = ()
     restrainers: tuple[Restrainer, ...] = ()
     anchors: tuple[Attached, ...] = field(default_factory=tuple)
+    side: int = 1
 
     @property
     def limit(self) -> float:

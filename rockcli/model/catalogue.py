@@ -63,6 +63,33 @@ class FreeMember:
 
 
 @dataclass(frozen=True)
+class Opening:
+    """One side of a mechanism as both analyses read it (:attr:`Mechanism.openings`).
+
+    Attributes:
+        side: +1 (θ > 0, outward for a wall) or −1.
+        opens: True when the mechanism can open to this side (a side it cannot is still
+            placed: the impact that ends a phase there).
+        alpha0: the code check's α0 of this side (Circolare 7/2019 §C8.7.1.1; a restrainer
+            as its ``code_action`` says: a tie-rod's design strength raises it).
+        uplift: the ground acceleration that lifts it off this side from rest, in g (the
+            engines' threshold; the restrainers' pretension alone enters, so without
+            restrainers it is α0 to rounding).
+        collapse: the rotation at which the weights stop restoring on this side [rad].
+        restitution: the e applied at an impact that ends a phase on this side [-].
+        e_rule: how e was set (the model's ``[restitution] rule``).
+    """
+
+    side: int
+    opens: bool
+    alpha0: float
+    uplift: float
+    collapse: float
+    restitution: float
+    e_rule: str
+
+
+@dataclass(frozen=True)
 class Mechanism:
     """One mechanism of a model, derived once (module docstring).
 
@@ -114,11 +141,29 @@ class Mechanism:
 
     def check(self, side: int, distributed: bool, per_block: bool) -> SideCheck:
         """The code check's view of ``side`` with the edition's sums (codecheck.kinematic)."""
-        view = self.view(side)
-        if isinstance(view, BlockSide):
-            return SideCheck(block=view.block, side=side, distributed=distributed,
-                             per_block=per_block)  # fmt: skip
-        return SideCheck(side=side, distributed=distributed, geometry=view, per_block=per_block)
+        return SideCheck(self.view(side), distributed=distributed, per_block=per_block)
+
+    @cached_property
+    def openings(self) -> tuple[Opening, Opening]:
+        """Side +1 then side −1, each with its α0, uplift, collapse rotation and e, read from
+        its one placement (``views``) and what the engines rock of it (``rocker``)."""
+        from rockcli.mechanics import collapse_rotations, uplift_accelerations
+
+        rocker = self.rocker
+        uplifts, collapses = uplift_accelerations(rocker), collapse_rotations(rocker)
+        rule = self.model.restitution.rule.value
+        return tuple(  # type: ignore[return-value]
+            Opening(
+                side=s,
+                opens=s in self.sides,
+                alpha0=alpha0(SideCheck(self.view(s))),
+                uplift=uplifts[k],
+                collapse=collapses[k],
+                restitution=rocker.restitution(s),
+                e_rule=rule,
+            )  # fmt: skip
+            for k, s in enumerate((1, -1))
+        )
 
     @cached_property
     def rocker(self) -> Rocker:
@@ -301,7 +346,7 @@ def resolved(wall: Wall, spec: MechanismSpec, sides: tuple[int, ...]):
 
     def smallest(z: float) -> float:
         at = replace(spec, hinge_height=z)
-        return min(alpha0(SideCheck(side=s, geometry=placed(wall, at, s))) for s in sides)
+        return min(alpha0(SideCheck(placed(wall, at, s))) for s in sides)
 
     z = optimal_hinge(lo, hi, smallest)
     found = ("optimal hinge at {z:.3f} m (the lowest α0 between {lo:.3f} and {hi:.3f} m: the "

@@ -93,12 +93,7 @@ def governing_order(m: MechanismResult) -> tuple[float, float, float]:
 
 def mechanism_of(wall: Wall, spec: MechanismSpec, side: int, settings: NtcSettings) -> Mechanism:
     """The code check's view of one mechanism of a wall on one side (its hinge resolved)."""
-    return Mechanism(
-        side=side,
-        distributed=settings.distributed,
-        geometry=placed(wall, spec, side),
-        per_block=settings.edition == "2019",
-    )
+    return Mechanism(placed(wall, spec, side), settings.distributed, settings.edition == "2019")
 
 
 def side_check(mech: CatalogueMechanism, side: int, settings: NtcSettings) -> Mechanism:

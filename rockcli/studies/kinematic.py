@@ -12,14 +12,9 @@ from collections.abc import Callable
 from dataclasses import dataclass, replace
 
 from rockcli.codecheck.demand import LimitStateDemand, Spectrum, record_demand
-from rockcli.codecheck.kinematic import (
-    Mechanism,
-)
 from rockcli.codecheck.result import KinematicResult
 from rockcli.errors import InputError
-from rockcli.mechanics import Block
 from rockcli.model.bounds import MIN_AG
-from rockcli.model.catalogue import UNIT_MASS
 from rockcli.model.catalogue import Mechanism as CatalogueMechanism
 from rockcli.model.derive_ntc import NtcSettings
 from rockcli.model.schema import Model
@@ -27,19 +22,6 @@ from rockcli.records.record import Record
 
 #: Limit states each edition checks.
 LIMIT_STATES = {"2009": ("SLD", "SLV"), "2019": ("SLD", "SLV", "SLC")}
-
-
-def mechanism(block: Block, settings: NtcSettings, side: int) -> Mechanism:
-    """The mechanism on one side: the block with its loads and thrusts (the model's own; a
-    unit mass when it has none, rockcli.model.catalogue.UNIT_MASS)."""
-    if block.mass is None:
-        block = replace(block, mass=UNIT_MASS)
-    return Mechanism(
-        block=block,
-        side=side,
-        distributed=settings.distributed,
-        per_block=settings.edition == "2019",
-    )
 
 
 def code_demand(

@@ -29,6 +29,7 @@ from rockcli.codecheck.kinematic import (
 from rockcli.codecheck.rules2009 import quantities
 from rockcli.codecheck.rules2019 import SLV_SHARE, limit_displacements
 from rockcli.mechanics import Block, Load, Restrainer, point_polar, spring_elongation
+from rockcli.mechanisms.block import BlockSide
 from rockcli.model.derive import to_block
 from rockcli.model.schema import Model
 
@@ -77,7 +78,7 @@ def tie(
 @pytest.mark.parametrize("force", [10e3, 82.28e3])
 def test_alpha0_with_a_tie_force(h_t: float, force: float) -> None:
     # Circolare 617/2009 §C8A.4.1: α0 = (W b + T h_T)/(W h_G), the tie at the inner face x = 0.
-    mech = Mechanism(block(tie(0.0, h_t, force)))
+    mech = Mechanism(BlockSide(block(tie(0.0, h_t, force)), 1))
     assert alpha0(mech) == pytest.approx((W * B + force * h_t) / (W * H), rel=REL)
 
 
@@ -86,7 +87,7 @@ def test_alpha0_with_a_tie_force_and_a_roof_load() -> None:
     # α0 = (W b + P x_P + T h_T)/(W h_G + P h_P).
     P, x_p, h_p, T, h_t = 50e3, 0.45, 2 * H, 82.28e3, 7.5
     roof = Load("roof", P, x_p, 2 * B - x_p, h_p)
-    mech = Mechanism(block(tie(0.1, h_t, T), loads=(roof,)))
+    mech = Mechanism(BlockSide(block(tie(0.1, h_t, T), loads=(roof,)), 1))
     expected = (W * B + P * x_p + T * h_t) / (W * H + P * h_p)
     assert alpha0(mech) == pytest.approx(expected, rel=REL)
 
@@ -95,7 +96,7 @@ def test_force_is_constant_on_the_whole_curve() -> None:
     # The force keeps its size; its arm is the point's height in the rotated position
     # z cos θ + x sin θ; gravity W R sin(α − θ), the earthquake W R cos(α − θ).
     x, z, T = 0.2, 7.0, 60e3
-    mech = Mechanism(block(tie(x, z, T)))
+    mech = Mechanism(BlockSide(block(tie(x, z, T)), 1))
     for theta in (0.0, 0.01, 0.05, 0.2, 0.5):
         arm = z * math.cos(theta) + x * math.sin(theta)
         expected = (W * R * math.sin(ALPHA - theta) + T * arm) / (W * R * math.cos(ALPHA - theta))
@@ -106,7 +107,7 @@ def test_force_at_the_inner_face_zero_of_the_curve() -> None:
     # A tie at x = 0 that is never lost: W R sin(α − θ) + T z cos θ = 0 gives
     # tan θ0 = (W b + T z)/(W h) = α0; d0* is the centroid's displacement there (e* = 1).
     T, z = 40e3, 8.0
-    cap = capacity(Mechanism(block(tie(0.0, z, T))), FC=1.0)
+    cap = capacity(Mechanism(BlockSide(block(tie(0.0, z, T)), 1)), FC=1.0)
     theta0 = math.atan((W * B + T * z) / (W * H))
     d0 = R * (math.sin(ALPHA) - math.sin(ALPHA - theta0))
     assert cap.d0_star == pytest.approx(d0, rel=BISECTION_REL)
@@ -117,8 +118,8 @@ def test_force_is_lost_at_rupture() -> None:
     # The member is lost when its elongation reaches fails_at (mechanics.spring_failure_rotation):
     # the curve has the force just before, gravity alone just after.
     u_f, T, z = 0.02, 50e3, 8.0
-    mech = Mechanism(block(tie(0.0, z, T, fails_at=u_f)))
-    theta_f = loss_rotation(mech.block.restrainers[0], 1)
+    mech = Mechanism(BlockSide(block(tie(0.0, z, T, fails_at=u_f)), 1))
+    theta_f = loss_rotation(mech.restrainers[0], 1)
     assert spring_elongation(z, 0.0, theta_f) == pytest.approx(u_f, rel=REL)
     below, above = theta_f * (1 - 1e-6), theta_f * (1 + 1e-6)
     assert load_multiplier(mech, below) > math.tan(ALPHA - below)
@@ -135,10 +136,10 @@ def test_du_star_2009_from_the_rupture_of_a_force() -> None:
     # Circolare 617/2009 §C8A.4.2.3 as the code applies it (rules2009.du_star): with positive
     # stiffness (a stiff spring that is never lost) du* is the first restrainer's loss.
     stiff = Restrainer("stiff", 1e9, 1e9, 2 * R, ALPHA, 2 * R, ALPHA)
-    mech = Mechanism(block(stiff, tie(0.0, 8.0, 50e3, fails_at=0.01)))
+    mech = Mechanism(BlockSide(block(stiff, tie(0.0, 8.0, 50e3, fails_at=0.01)), 1))
     cap = capacity(mech, FC=1.0)
     assert cap.d0_star is None
-    theta_f = loss_rotation(mech.block.restrainers[1], 1)
+    theta_f = loss_rotation(mech.restrainers[1], 1)
     assert quantities(cap, None)["du_star"] == pytest.approx(cap.d_star_at(theta_f), rel=REL)
 
 
@@ -146,7 +147,7 @@ def test_d_slv_2019_capped_by_the_loss_of_a_force() -> None:
     # Circolare 7/2019 §C8.7.1.2.1 (rules2019.limit_displacements): a loss that removes more
     # than half the capacity caps d_SLV at its d*. A tie of 3 W b/h_T triples α0; lost early.
     T, z = 3 * W * B / 8.0, 8.0
-    mech = Mechanism(block(tie(0.0, z, T, fails_at=0.001)))
+    mech = Mechanism(BlockSide(block(tie(0.0, z, T, fails_at=0.001)), 1))
     cap = capacity(mech, FC=1.0)
     [(_, theta_f, drop)] = failure_rotations(mech)
     assert drop > 0.5
@@ -163,12 +164,12 @@ def test_force_only_on_the_side_it_works() -> None:
                      code_force=5e4)  # fmt: skip
     assert force_at(one, 1, 0.0) == 5e4
     assert force_at(one, -1, 0.0) == 0.0
-    assert alpha0(Mechanism(block(one), side=-1)) == pytest.approx(B / H, rel=REL)
+    assert alpha0(Mechanism(BlockSide(block(one), -1))) == pytest.approx(B / H, rel=REL)
 
 
 def test_spring_without_pretension_leaves_alpha0() -> None:
     # Paper §4.4 / Circolare: a spring without initial force does no work at θ = 0.
-    mech = Mechanism(block(tie(0.0, 8.0, 5e4, action="spring")))
+    mech = Mechanism(BlockSide(block(tie(0.0, 8.0, 5e4, action="spring")), 1))
     assert alpha0(mech) == pytest.approx(B / H, rel=REL)
 
 
@@ -177,14 +178,16 @@ def test_pretension_raises_alpha0() -> None:
     # α0 = tan α + P0 r cos φ / (W h_G).
     P0, x, z = 20e3, 0.3, 7.0
     sp = tie(x, z, 8e4, action="spring", pretension=P0)
-    assert alpha0(Mechanism(block(sp))) == pytest.approx(B / H + P0 * z / (W * H), rel=REL)
+    assert alpha0(Mechanism(BlockSide(block(sp), 1))) == pytest.approx(
+        B / H + P0 * z / (W * H), rel=REL
+    )
 
 
 def test_spring_is_capped_at_its_strength() -> None:
     # min(strength, yield force of the side): K u grows past it, the force does not.
     k, z, S, Y = 2.2e7, 8.0, 8.0e4, 9.0e4
     sp = tie(0.0, z, S, k=k, action="spring", yield_pos=Y, yield_neg=Y)
-    mech = Mechanism(block(sp))
+    mech = Mechanism(BlockSide(block(sp), 1))
     theta_cap = math.asin(S / (k * z))  # K z sin θ = S: u = z sin θ at x = 0
     small = theta_cap / 2
     assert force_at(sp, 1, small) == pytest.approx(k * z * math.sin(small), rel=REL)
@@ -220,7 +223,7 @@ def test_curve_rows_never_exceed_gravity_plus_strengths() -> None:
         tie(0.0, 8.0, 82.28e3),
         tie(0.2, 6.0, 40e3, k=1e9, action="spring", yield_pos=6e4, yield_neg=6e4),
     )
-    mech = Mechanism(block(*members))
+    mech = Mechanism(BlockSide(block(*members), 1))
     for row in curve_points(capacity(mech, FC=1.0), n=41):
         theta = row["theta"]
         bound = W * R * math.sin(ALPHA - theta) + sum(
@@ -266,7 +269,7 @@ def test_model_tie_rod_never_gives_more_than_its_strength(
     blk = to_block(model)
     [sp] = blk.restrainers
     assert math.isfinite(sp.strength)
-    mech = Mechanism(blk)
+    mech = Mechanism(BlockSide(blk, 1))
     for row in curve_points(capacity(mech, FC=1.0), n=21):
         theta = row["theta"]
         assert force_at(sp, 1, theta) <= sp.strength

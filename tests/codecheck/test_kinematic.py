@@ -23,6 +23,7 @@ from rockcli.codecheck.kinematic import (
 from rockcli.codecheck.position import building_period, gamma, height_amplification, psi
 from rockcli.codecheck.rules2009 import quantities
 from rockcli.mechanics import Block, Load, Restrainer
+from rockcli.mechanisms.block import BlockSide
 
 G = 9.81
 ALTAR = Block(R=1.499, alpha=0.163, mass=1000.0, g=G)
@@ -35,7 +36,7 @@ def top_spring(block: Block, k: float, fails_at: float = math.inf) -> Restrainer
 def test_altar_vectors_2009_fc_105() -> None:
     # spec/ntc.md, test vectors (computed from the formulas, printed to 5 significant digits:
     # tolerance half a unit of the last digit).
-    cap = capacity(Mechanism(ALTAR), FC=1.05)
+    cap = capacity(Mechanism(BlockSide(ALTAR, 1)), FC=1.05)
     q = quantities(cap, None)
     assert cap.a0_star == pytest.approx(1.5365, abs=5e-5)
     assert cap.d0_star == pytest.approx(0.24326, abs=5e-6)
@@ -47,7 +48,7 @@ def test_altar_vectors_2009_fc_105() -> None:
 
 def test_altar_ts_with_fc_1() -> None:
     # spec/ntc.md: with FC = 1.00, Ts = 1.0648 s.
-    q = quantities(capacity(Mechanism(ALTAR), FC=1.0), None)
+    q = quantities(capacity(Mechanism(BlockSide(ALTAR, 1)), FC=1.0), None)
     assert q["Ts"] == pytest.approx(1.0648, abs=5e-5)
 
 
@@ -56,14 +57,14 @@ def test_activation_equals_engine_uplift_threshold() -> None:
     # acceleration (mechanics.Block.uplift_acceleration, in g) — the same function by design.
     for alpha in (0.05, 0.163, 0.25, 0.6):
         block = Block(R=2.0, alpha=alpha, mass=500.0, g=G)
-        cap = capacity(Mechanism(block), FC=1.2)
+        cap = capacity(Mechanism(BlockSide(block, 1)), FC=1.2)
         assert cap.a0_star * cap.e_star * cap.FC == pytest.approx(G * math.tan(alpha), rel=1e-14)
         assert cap.alpha0 == pytest.approx(block.uplift_acceleration, rel=1e-14)
 
 
 def test_free_block_curve_is_tan_alpha_minus_theta() -> None:
     # Equilibrium of the rotated block alone: α(θ) = tan(α − θ) (spec/ntc.md).
-    mech = Mechanism(ALTAR)
+    mech = Mechanism(BlockSide(ALTAR, 1))
     for theta in (0.0, 0.05, 0.1, 0.163):
         assert load_multiplier(mech, theta) == pytest.approx(math.tan(0.163 - theta), abs=1e-15)
     assert control_displacement(mech, 0.163) == pytest.approx(ALTAR.b, rel=1e-14)
@@ -73,9 +74,12 @@ def test_restrainer_raises_the_curve_not_alpha0() -> None:
     # Paper §4.4: "for all K values the acceleration that triggers motion a0* does not change,
     # as the spring at u = 0 is inactive"; the curve rises with K (Fig. 18).
     block = Block(R=3.0, alpha=0.05, mass=18e3 * 6 * 6 * 0.05 * 3 / G, g=G)
-    free = capacity(Mechanism(block), FC=1.0)
+    free = capacity(Mechanism(BlockSide(block, 1)), FC=1.0)
     tied = capacity(
-        Mechanism(Block(**{**block.__dict__, "restrainers": (top_spring(block, 1e3),)})), FC=1.0
+        Mechanism(
+            BlockSide(Block(**{**block.__dict__, "restrainers": (top_spring(block, 1e3),)}), 1)
+        ),
+        FC=1.0,
     )
     assert tied.a0_star == free.a0_star
     assert tied.d0_star is not None and free.d0_star is not None
@@ -93,9 +97,9 @@ def test_stiff_restrainer_gives_positive_stiffness() -> None:
     k_limit = block.mass * G / (4 * block.R * math.cos(block.alpha))
     twice = Block(**{**block.__dict__, "restrainers": (top_spring(block, 2 * k_limit),)})
     stiff = Block(**{**block.__dict__, "restrainers": (top_spring(block, 50 * k_limit),)})
-    far = capacity(Mechanism(twice), FC=1.0).d0_star
+    far = capacity(Mechanism(BlockSide(twice, 1)), FC=1.0).d0_star
     assert far is not None and far > 10 * block.b
-    assert capacity(Mechanism(stiff), FC=1.0).d0_star is None
+    assert capacity(Mechanism(BlockSide(stiff, 1)), FC=1.0).d0_star is None
 
 
 def test_failing_restrainer_is_left_out_of_d0() -> None:
@@ -104,16 +108,16 @@ def test_failing_restrainer_is_left_out_of_d0() -> None:
     block = Block(R=3.0, alpha=0.05, mass=1e4, g=G)
     k = 2.0 * block.mass * G / (4 * block.R * math.cos(block.alpha))
     weak = Block(**{**block.__dict__, "restrainers": (top_spring(block, k, fails_at=0.01),)})
-    assert capacity(Mechanism(weak), FC=1.0).d0_star == pytest.approx(
-        capacity(Mechanism(block), FC=1.0).d0_star, rel=1e-12
+    assert capacity(Mechanism(BlockSide(weak, 1)), FC=1.0).d0_star == pytest.approx(
+        capacity(Mechanism(BlockSide(block, 1)), FC=1.0).d0_star, rel=1e-12
     )
 
 
 def test_distributed_mass_changes_a0_and_d0_not_ts() -> None:
     # spec/ntc.md: spread over the height e* = 0.75 for a rectangle; a0* and d0* change, Ts
     # does not.
-    lumped = capacity(Mechanism(ALTAR), FC=1.05)
-    spread = capacity(Mechanism(ALTAR, distributed=True), FC=1.05)
+    lumped = capacity(Mechanism(BlockSide(ALTAR, 1)), FC=1.05)
+    spread = capacity(Mechanism(BlockSide(ALTAR, 1), distributed=True), FC=1.05)
     assert spread.e_star == pytest.approx(0.75, rel=1e-14)
     assert spread.a0_star == pytest.approx(lumped.a0_star / 0.75, rel=1e-14)
     assert spread.d0_star == pytest.approx(lumped.d0_star * 4 / 3, rel=1e-12)
@@ -130,7 +134,7 @@ def test_roof_load_at_the_top() -> None:
     P = 0.5 * W
     b, h = ALTAR.b, ALTAR.h
     roof = Load("roof", P, b, b, 2 * h)
-    mech = Mechanism(replace(ALTAR, loads=(roof,)))
+    mech = Mechanism(BlockSide(replace(ALTAR, loads=(roof,)), 1))
     assert alpha0(mech) == pytest.approx((W + P) * b / (W * h + 2 * P * h), rel=1e-14)
     expected_e = (W * h + 2 * P * h) ** 2 / ((W * h**2 + 4 * P * h**2) * (W + P))
     assert e_star(mech) == pytest.approx(expected_e, rel=1e-14)
@@ -142,7 +146,7 @@ def test_pushing_load_only_in_the_denominator() -> None:
     W, b, h = ALTAR.weight, ALTAR.b, ALTAR.h
     Q = 0.3 * W
     floor = Load("floor", Q, b, b, 2 * h, bears=False)
-    mech = Mechanism(replace(ALTAR, loads=(floor,)))
+    mech = Mechanism(BlockSide(replace(ALTAR, loads=(floor,)), 1))
     assert alpha0(mech) == pytest.approx(W * b / (W * h + Q * 2 * h), rel=1e-14)
 
 
@@ -166,13 +170,13 @@ def test_positive_stiffness_needs_a_limit_2009() -> None:
     block = Block(R=3.0, alpha=0.05, mass=1e4, g=G)
     k = 50 * block.mass * G / (4 * block.R * math.cos(block.alpha))
     stiff = Block(**{**block.__dict__, "restrainers": (top_spring(block, k),)})
-    cap = capacity(Mechanism(stiff), FC=1.0)
+    cap = capacity(Mechanism(BlockSide(stiff, 1)), FC=1.0)
     assert quantities(cap, None)["du_star"] is None
     assert quantities(cap, 0.05)["du_star"] == 0.05
     both = Block(
         **{**stiff.__dict__, "restrainers": (top_spring(block, k), top_spring(block, k, 0.02))}
     )
-    cap2 = capacity(Mechanism(both), FC=1.0)
+    cap2 = capacity(Mechanism(BlockSide(both, 1)), FC=1.0)
     theta_f = 0.02 / (
         2 * block.R * math.cos(block.alpha)
     )  # u = 2R[sin α − sin(α − θ)] ≈ 2R cos α θ
@@ -193,7 +197,7 @@ def test_the_activation_terms_sum_to_alpha0_and_the_tied_block_closed_form() -> 
     tie = Restrainer("tie", 2e7, 2e7, h_T / math.cos(0.05), 0.05, h_T / math.cos(0.05), 0.05,
                      code_action="force", code_force=T)  # fmt: skip
     block = Block(R=R, alpha=a, mass=W_kg, e=0.9, restrainers=(tie,))
-    mech = Mechanism(block=block, side=1, distributed=False)
+    mech = Mechanism(BlockSide(block, 1), distributed=False)
     terms = activation_terms(mech)
     W = W_kg * block.g
     b, h = R * math.sin(a), R * math.cos(a)

@@ -30,6 +30,7 @@ from rockcli.codecheck.restrainer_check import (
 from rockcli.codecheck.result import Check, Location, Method
 from rockcli.codecheck.spectra import ElasticSpectrum, Soil, Topography
 from rockcli.mechanics import Block, Restrainer, point_polar, spring_elongation
+from rockcli.mechanisms.block import BlockSide
 from rockcli.studies.capacity_check import governing_demand
 
 G = 9.81
@@ -60,7 +61,7 @@ def member(action: str, strength: float = 8e4, **extra: float) -> Restrainer:
 
 def cap_of(*members: Restrainer):
     block = Block(R=math.hypot(B, H), alpha=math.atan2(B, H), mass=W / G, g=G, restrainers=members)
-    return capacity(Mechanism(block), FC=1.0)
+    return capacity(Mechanism(BlockSide(block, 1)), FC=1.0)
 
 
 def test_force_is_its_own_demand() -> None:

@@ -27,6 +27,7 @@ from rockcli.codecheck.rules2019 import (
 )
 from rockcli.codecheck.spectra import ElasticSpectrum, Soil
 from rockcli.mechanics import Block, Restrainer
+from rockcli.mechanisms.block import BlockSide
 
 G = 9.81
 BLOCK = Block(R=2.0, alpha=0.15, mass=1e4, g=G)
@@ -78,14 +79,14 @@ def test_floor_spectrum_uses_the_building_damping() -> None:
 
 def test_sld_capacity_on_the_ground_soil_a() -> None:
     # Soil A: S = 1, so ag·S(ag) = a0*/g gives ag,SLD = a0*/g = tan α (e* = FC = 1).
-    cap = capacity(Mechanism(BLOCK), FC=1.0)
+    cap = capacity(Mechanism(BlockSide(BLOCK, 1)), FC=1.0)
     check = sld_check(cap, code("SLD", 0.05), GROUND, G)
     assert check.capacity == pytest.approx(math.tan(0.15), rel=1e-12)
     assert check.demand == 0.05 and check.passed
 
 
 def test_sld_capacity_at_height_inverts_the_floor_acceleration() -> None:
-    cap = capacity(Mechanism(BLOCK), FC=1.0)
+    cap = capacity(Mechanism(BlockSide(BLOCK, 1)), FC=1.0)
     dem = code("SLD", 0.05)
     check = sld_check(cap, dem, HIGH, G)
     assert check.capacity is not None
@@ -95,7 +96,7 @@ def test_sld_capacity_at_height_inverts_the_floor_acceleration() -> None:
 
 def test_displacement_capacity_inverts_the_spectrum() -> None:
     # The capacity ag makes SDe(T_SLV, 8 %) equal to d_SLV (root search, §C8.7.1.2.1).
-    cap = capacity(Mechanism(BLOCK), FC=1.0)
+    cap = capacity(Mechanism(BlockSide(BLOCK, 1)), FC=1.0)
     dem = code("SLV", 0.15, Soil.C)
     d, T = 0.4 * cap.d0_star, 1.2
     check = displacement_check("SLV", d, T, dem, GROUND, G, sld_cap=None)
@@ -110,7 +111,7 @@ def test_capacity_below_sld_is_raised_to_sld() -> None:
 
 
 def test_linear_slv_is_q_times_sld() -> None:
-    cap = capacity(Mechanism(BLOCK), FC=1.0)
+    cap = capacity(Mechanism(BlockSide(BLOCK, 1)), FC=1.0)
     dem = {ls: code(ls, ag) for ls, ag in (("SLD", 0.05), ("SLV", 0.15), ("SLC", 0.2))}
     values, checks, _ = check_2019(cap, dem, GROUND, 2.0, None)
     sld, slv_linear = checks[0], checks[1]
@@ -124,7 +125,9 @@ def test_failing_tie_caps_d_slv() -> None:
     # Here the tie carries about 3/4 of the restoring moment when it breaks at u = 5 cm.
     k = 20 * BLOCK.mass * G / (4 * BLOCK.R)
     tie = Restrainer("tie", k, k, 2 * BLOCK.R, 0.15, 2 * BLOCK.R, 0.15, fails_at=0.05)
-    cap = capacity(Mechanism(Block(**{**BLOCK.__dict__, "restrainers": (tie,)})), FC=1.0)
+    cap = capacity(
+        Mechanism(BlockSide(Block(**{**BLOCK.__dict__, "restrainers": (tie,)}), 1)), FC=1.0
+    )
     d_slv, d_slc, note = limit_displacements(cap, None)
     assert d_slv is not None and d_slc is not None and cap.d0_star is not None
     assert d_slv < 0.4 * cap.d0_star and "tie" in note

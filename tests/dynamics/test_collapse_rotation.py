@@ -87,7 +87,7 @@ def test_each_mechanism_s_sides_match_the_code_check_statics(name: str) -> None:
         spec, _ = resolved(wall, spec, (1, -1))
     got = collapse_rotations(block)
     for k, s in enumerate((1, -1)):
-        expected = restoring_zero(Mechanism(side=s, geometry=build(wall, spec, s)))
+        expected = restoring_zero(Mechanism(build(wall, spec, s)))
         assert got[k] == pytest.approx(expected, rel=1e-6), (name, s)
 
 

@@ -43,6 +43,7 @@ from rockcli.mechanics import (
     point_table,
     uplift_accelerations,
 )
+from rockcli.mechanisms.block import BlockSide
 
 G = 9.81
 R_BLOCK = 1.5
@@ -114,8 +115,8 @@ def test_the_code_checks_alpha0_is_the_uplift_acceleration_bit_for_bit(name: str
     # One restoring-moment function (mechanics.point_moments) serves both analyses.
     blk = CASES[name]
     pos, neg = uplift_accelerations(blk)
-    assert alpha0(Mechanism(blk, side=1)) == pos
-    assert alpha0(Mechanism(blk, side=-1)) == neg
+    assert alpha0(Mechanism(BlockSide(blk, 1))) == pos
+    assert alpha0(Mechanism(BlockSide(blk, -1))) == neg
 
 
 @pytest.mark.parametrize("name", list(CASES))
@@ -155,7 +156,7 @@ def test_alpha0_equals_the_uplift_acceleration_for_any_loads(blk: Block) -> None
     # The property of the architecture: the uplift acceleration of each side equals α0 of that
     # side, bit for bit, and both equal statics (1e-12: sums of up to five terms).
     for side, value in zip((1, -1), uplift_accelerations(blk), strict=True):
-        assert alpha0(Mechanism(blk, side=side)) == value
+        assert alpha0(Mechanism(BlockSide(blk, side))) == value
         assert value == pytest.approx(statics_uplift(blk, side), rel=1e-12)
 
 

@@ -2,7 +2,7 @@
 
 The same wall seen two ways must give the same code check: the general chain
 (rockcli.mechanisms.catalogue.overturning, a ChainSide) and the block's closed forms
-(rockcli.mechanisms.block.BlockSide through Mechanism(block=...)), with the same loads,
+(rockcli.mechanisms.block.BlockSide through Mechanism(BlockSide(..., 1))), with the same loads,
 thrusts and restrainers (a restrainer's r, φ about the block's pivots from
 rockcli.mechanics.point_polar of its point: (x, z) about O, (t − x, z) about O′; a load's
 x_pos = x, x_neg = t − x). Block: R = √(b² + h²), α = atan2(b, h), mass = W/g.
@@ -30,6 +30,7 @@ from rockcli.codecheck.kinematic import (
 )
 from rockcli.mechanics import Block, Load, Restrainer, Thrust, point_polar
 from rockcli.mechanisms import catalogue
+from rockcli.mechanisms.block import BlockSide
 from rockcli.mechanisms.wall import Storey, Wall, WallLoad, WallRestrainer, WallThrust
 
 G = 9.81
@@ -87,8 +88,7 @@ def pair(case: str, s: int, distributed: bool = False) -> tuple[Mechanism, Mecha
     held = tuple(WallRestrainer(m, p.x, p.z) for m, p in zip(members, points, strict=True))
     wall = Wall(storeys=(Storey(HEIGHT, THICK),), width=WIDTH, unit_weight=GAMMA, g=G,
                 loads=loads, thrusts=thrusts, restrainers=held)  # fmt: skip
-    chain = Mechanism(side=s, distributed=distributed,
-                      geometry=catalogue.overturning(wall, 0.0, s, "o"))  # fmt: skip
+    chain = Mechanism(catalogue.overturning(wall, 0.0, s, "o"), distributed=distributed)
     b, h = THICK / 2, HEIGHT / 2
     block = Block(
         R=math.hypot(b, h),
@@ -103,7 +103,7 @@ def pair(case: str, s: int, distributed: bool = False) -> tuple[Mechanism, Mecha
             Thrust(th.name, th.force, th.direction, th.x, THICK - th.x, th.z) for th in thrusts
         ),  # fmt: skip
     )
-    return chain, Mechanism(block=block, side=s, distributed=distributed)
+    return chain, Mechanism(BlockSide(block, s), distributed=distributed)
 
 
 PARAMS = [(case, s) for case in CASES for s in (1, -1)]

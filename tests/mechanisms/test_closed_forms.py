@@ -49,7 +49,7 @@ def weight(h: float, t: float, depth: float = WIDTH) -> float:
 
 def a0(side: ChainSide, s: int) -> float:
     """α0 of the code check of the mechanism on side s."""
-    return alpha0(Mechanism(side=s, geometry=side))
+    return alpha0(Mechanism(side))
 
 
 def tie(force: float) -> Restrainer:
@@ -240,7 +240,7 @@ def test_flexure_instability_displacement() -> None:
     # t − X_H = t − t cos θ0 + (h/2) sin θ0 = t. θ0 by bisection of α(θ), resolved to
     # rounding (ε·W·h on G, slope W·h): 1e-12 relative.
     side = catalogue.flexure(wall((H1, T1)), 1, H1 / 2, 1, "f")
-    theta0 = zero_rotation(Mechanism(side=1, geometry=side))
+    theta0 = zero_rotation(Mechanism(side))
     assert theta0 is not None
     assert theta0 == pytest.approx(math.atan(2 * T1 / H1), rel=1e-12)
     assert isinstance(side.motion, TwoBlock)

@@ -120,7 +120,7 @@ def test_the_uplift_of_each_side_is_the_codes_alpha0_bit_for_bit() -> None:
     for name in ("vertical flexure, storey 1", "vertical flexure, storey 2"):
         spec, _ = resolved(wall, named_spec(wall, name), (1, -1))
         block = mechanism_block(model, wall, spec)
-        code = tuple(alpha0(Mechanism(geometry=build(wall, spec, s))) for s in (1, -1))
+        code = tuple(alpha0(Mechanism(build(wall, spec, s))) for s in (1, -1))
         assert uplift_accelerations(block) == code
 
 

@@ -93,8 +93,8 @@ def test_the_uplift_with_a_pretension_is_the_codes_alpha0(tmp_path: Path) -> Non
     model, wall, spec = flexure_with(tmp_path, spring(2e6, extra))
     block = mechanism_block(model, wall, spec)
     for s in (1, -1):
-        code = alpha0(Mechanism(geometry=build(wall, spec, s), side=s))
-        bare = alpha0(Mechanism(geometry=build(to_wall_without(model), spec, s), side=s))
+        code = alpha0(Mechanism(build(wall, spec, s)))
+        bare = alpha0(Mechanism(build(to_wall_without(model), spec, s)))
         assert code > bare * 1.5  # the member does raise it
         slope = 0.05 * s
         run_ = simulate(block, np.array([0.0, 40.0]), np.array([0.0, 40.0 * slope]), 0.01)

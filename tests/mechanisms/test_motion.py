@@ -90,7 +90,7 @@ def test_housner_rest_and_alpha0() -> None:
     # restrainers) = tan α = b/h for the block; g Γ = H of work_terms (rounding: 1e-14).
     side, _, _, alpha = housner()
     assert potential(side, 0.0) == 0.0
-    a0 = alpha0(Mechanism(side=1, geometry=side))
+    a0 = alpha0(Mechanism(side))
     assert potential_slope(side, 0.0) / (G * participation(side, 0.0)) == pytest.approx(
         a0, rel=1e-14
     )
@@ -268,5 +268,5 @@ def test_two_block_mid_height_at_rest() -> None:
     assert participation(side, 0.0) == pytest.approx(m * h / 4, rel=1e-13)
     assert potential_slope(side, 0.0) == pytest.approx(w * t, rel=1e-13)
     assert potential_slope(side, 0.0) / (G * participation(side, 0.0)) == pytest.approx(
-        alpha0(Mechanism(side=1, geometry=side)), rel=1e-14
+        alpha0(Mechanism(side)), rel=1e-14
     )

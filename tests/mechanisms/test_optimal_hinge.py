@@ -40,10 +40,7 @@ def smallest(wall: Wall, storey: int) -> Callable[[float], float]:
     """z ↦ the smaller α0 of the flexure's two sides with the hinge at z."""
 
     def f(z: float) -> float:
-        return min(
-            alpha0(Mechanism(side=s, geometry=catalogue.flexure(wall, storey, z, s, "f")))
-            for s in (1, -1)
-        )
+        return min(alpha0(Mechanism(catalogue.flexure(wall, storey, z, s, "f"))) for s in (1, -1))
 
     return f
 

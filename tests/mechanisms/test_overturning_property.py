@@ -62,7 +62,7 @@ def test_alpha0_by_hand(wall: Wall) -> None:
     num = w * s.thickness / 2 + sum(ld.weight * ld.x for ld in wall.loads)
     den = w * s.height / 2 + sum(ld.weight * ld.z for ld in wall.loads)
     side = catalogue.overturning(wall, 0.0, 1, "o")
-    assert alpha0(Mechanism(side=1, geometry=side)) == pytest.approx(num / den, rel=REL)
+    assert alpha0(Mechanism(side)) == pytest.approx(num / den, rel=REL)
 
 
 @EXAMPLES
@@ -70,7 +70,7 @@ def test_alpha0_by_hand(wall: Wall) -> None:
 def test_mirror(wall: Wall, theta: float) -> None:
     inner = catalogue.overturning(wall, 0.0, -1, "o")
     outer = catalogue.overturning(mirror(wall), 0.0, 1, "o")
-    m_in, m_out = Mechanism(side=-1, geometry=inner), Mechanism(side=1, geometry=outer)
+    m_in, m_out = Mechanism(inner), Mechanism(outer)
     assert alpha0(m_in) == pytest.approx(alpha0(m_out), rel=REL)
     assert e_star(m_in) == pytest.approx(e_star(m_out), rel=REL)
     # α(θ) passes through zero (order-one away from it): abs 1e-12 as well.

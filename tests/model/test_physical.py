@@ -20,10 +20,10 @@ from click.testing import CliRunner
 from rockcli.cli.main import cli
 from rockcli.errors import InputError
 from rockcli.mechanics import NEGATIVE, POSITIVE
+from rockcli.model.catalogue import catalogue
 from rockcli.model.derive import describe, to_block
 from rockcli.model.derive_ntc import building_settings, ntc_settings
 from rockcli.model.load import load_model
-from rockcli.studies.kinematic import mechanism
 
 ROOT = Path(__file__).resolve().parents[2]
 PULSE = ROOT / "records" / "ricker_Tp0.5s_0.5g.txt"
@@ -137,9 +137,11 @@ def test_the_kinematic_mechanism_carries_the_models_loads_and_thrusts(tmp_path: 
     # The code check reads the same block as the rocking analysis: its loads and thrusts.
     model = load_model(write(tmp_path, VALID))
     block, settings = to_block(model), ntc_settings(model)
+    (only,) = catalogue(model)
     for side in (POSITIVE, NEGATIVE):
-        mech = mechanism(block, settings, side)
-        assert (mech.block.loads, mech.block.thrusts) == (block.loads, block.thrusts)
+        mech = only.check(side, settings.distributed, settings.edition == "2019")
+        assert mech.side == side
+        assert (mech.view.block.loads, mech.view.block.thrusts) == (block.loads, block.thrusts)
 
 
 # --- bad input: one line naming the key, the value and what is allowed ----------------------

@@ -49,6 +49,13 @@ def check_uplift_is_alpha0(data: dict[str, Any]) -> int:
             code = alpha0(mech.check(side, distributed=False, per_block=True))
             scale = max(abs(code), abs(uplift[side]), 1e-300)
             assert abs(uplift[side] - code) <= REL * scale, (mech.name, side, uplift, code)
+        # The value's own record of each side says the same, computed the same way.
+        for opening in mech.openings:
+            assert opening.opens == (opening.side in mech.sides)
+            assert opening.uplift == uplift[opening.side]
+            if opening.opens:
+                scale = max(abs(opening.alpha0), abs(opening.uplift), 1e-300)
+                assert abs(opening.uplift - opening.alpha0) <= REL * scale, (mech.name, opening)
         checked += 1
     return checked
 
