@@ -88,30 +88,14 @@ def extend_with_tail(
     )
 
 
-#: The last record extended with its tail: (time, accel, dt, tail) → (times, accel, free
-#: from). The polarities of a run, and the cases of a study's chunk, share the record.
-_last_samples: tuple[tuple, tuple] | None = None
-
-
 def samples_with_tail(
     time: np.ndarray, accel: np.ndarray, dt: float, tail: float
 ) -> tuple[np.ndarray, np.ndarray, int]:
     """The kernel's samples (extend_with_tail, the record timed from 0) and the first free
-    sample (free_from), for the same arrays as the last call given back without recomputing.
-    The arrays are not changed by the engines."""
-    global _last_samples
-    # The arrays' identity, and their sums (an array changed in place is not the same record).
-    key = (time, accel, dt, tail, float(accel.sum()), float(time.sum()))
-    last = _last_samples
-    if last is not None:
-        old, found = last
-        if old[0] is time and old[1] is accel and old[2:] == key[2:]:
-            return found
+    sample (free_from). :func:`assess` makes them once for both polarities."""
     origin = float(time[0])
     times, acc = extend_with_tail(time - origin if origin else time, accel, dt, tail)
-    found = (times, acc, free_from(acc, time.size))
-    _last_samples = (key, found)
-    return found
+    return times, acc, free_from(acc, time.size)
 
 
 def free_from(accel: np.ndarray, n_record: int) -> int:
@@ -354,6 +338,7 @@ def simulate(
     history: bool = False,
     theta0: float = 0.0,
     omega0: float = 0.0,
+    samples: tuple[np.ndarray, np.ndarray, int] | None = None,
 ) -> RockingRun:
     """One rocking run of `block` under the ground acceleration `accel` [g] at `time` [s].
 
@@ -365,12 +350,15 @@ def simulate(
         engine: FAST (compiled DP5(4)) or REFERENCE (scipy DOP853, tight tolerance).
         history: keep θ(t), θ̇(t) at the sample times.
         theta0, omega0: initial rotation [rad] and velocity [rad/s] (default: at rest).
+        samples: :func:`samples_with_tail` of these arrays and this block's tail, when the
+            caller has made them (both polarities share them); made here otherwise.
     """
     settings = settings or SolverSettings()
     time = np.asarray(time, float)
     origin = float(time[0])
-    times, acc, first_free = samples_with_tail(time, np.asarray(accel, float), dt,
-                                               settings.tail_for(block.p))  # fmt: skip
+    if samples is None:
+        samples = samples_with_tail(time, np.asarray(accel, float), dt, settings.tail_for(block.p))
+    times, acc, first_free = samples
     if engine is Engine.REFERENCE:
         rtol, atol = _reference_tolerances()
     else:
@@ -612,17 +600,26 @@ def assess(
     response to −üg is the mirror image, θ → −θ (mirror_run), marked ``mirror_of = 1``.
     mirror=False integrates both (the property tests check the two agree).
     """
-    if mirror and mirror_symmetric(block):
-        first = simulate(
-            block, time, accel, dt, polarity=1, settings=settings, engine=engine, history=history
-        )
-        return Assessment(runs=(first, mirror_run(first)))
+    settings = settings or SolverSettings()
+    time = np.asarray(time, float)
+    samples = samples_with_tail(time, np.asarray(accel, float), dt, settings.tail_for(block.p))
+    polarities = (1,) if mirror and mirror_symmetric(block) else (1, -1)
     runs = tuple(
         simulate(
-            block, time, accel, dt, polarity=pol, settings=settings, engine=engine, history=history
-        )
-        for pol in (1, -1)
+            block,
+            time,
+            accel,
+            dt,
+            polarity=pol,
+            settings=settings,
+            engine=engine,
+            history=history,
+            samples=samples,
+        )  # fmt: skip
+        for pol in polarities
     )
+    if len(runs) == 1:
+        return Assessment(runs=(runs[0], mirror_run(runs[0])))
     return Assessment(runs=runs)
 
 

@@ -116,6 +116,7 @@ class Mechanism:
         strength_notes: the hinges set back by the stress block (f_m given).
         model: the model it comes from (the engine's settings and e rule).
         wall, spec: the wall and its entry (None for a block file).
+        block: a block file's block, what the engines rock (None for a wall's mechanism).
     """
 
     name: str
@@ -134,6 +135,7 @@ class Mechanism:
     model: Model
     wall: Wall | None = None
     spec: MechanismSpec | None = None
+    block: Block | None = None
 
     def view(self, side: int) -> BlockSide | ChainSide:
         """Its geometry about the pivot of ``side``."""
@@ -172,15 +174,15 @@ class Mechanism:
         RigidBody of its own shape; a vertical flexure as a Chain (its table built here)."""
         from rockcli.mechanisms.flexure import flexure_block
         from rockcli.mechanisms.rigid import rigid_block
-        from rockcli.model.derive import block_of, to_block, with_system_restitution
+        from rockcli.model.derive import derive_block, with_system_restitution
 
-        if self.wall is None:
-            return to_block(self.model)
-        block = block_of(self.model)
+        if self.block is not None:
+            return self.block
+        block = derive_block(self.model)
         plus, minus = self.views
         assert isinstance(plus, ChainSide) and isinstance(minus, ChainSide)
         if self.type is MechanismType.VERTICAL_FLEXURE:
-            assert self.storey is not None
+            assert self.storey is not None and self.wall is not None
             top = self.wall.storeys[self.storey - 1].height  # above the storey's base
             rocker: Rocker = flexure_block(plus, minus, top, block)
         else:
@@ -257,18 +259,16 @@ def free_side_of(model: Model) -> int | None:
     return free_side(motion.stopped) if motion.sides is Sides.ONE else None
 
 
-def block_view(model: Model, side: int) -> BlockSide:
+def block_view(block: Block, side: int) -> BlockSide:
     """The block's closed forms on ``side`` (a unit mass when the model gives none)."""
-    from rockcli.model.derive import to_block
-
-    block = to_block(model)
     if block.mass is None:
         block = replace(block, mass=UNIT_MASS)
     return BlockSide(block, side)
 
 
 def block_mechanism(model: Model) -> Mechanism:
-    """The block file's one mechanism: the block's overturning about its base edge."""
+    """The block file's one mechanism: the block's overturning about its base edge (the block
+    derived once: the code check's views and what the engines rock)."""
     from rockcli.model.derive import to_block
 
     block: Block = to_block(model)
@@ -279,7 +279,8 @@ def block_mechanism(model: Model) -> Mechanism:
         hinge_height=0.0,
         storey=None,
         sides=sides,
-        views=(block_view(model, 1), block_view(model, -1)),
+        views=(block_view(block, 1), block_view(block, -1)),
+        block=block,
         reported=(1, -1),
         base=0.0,
         wall_height=2.0 * block.h,

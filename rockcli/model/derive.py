@@ -126,20 +126,15 @@ class Description:
     thrusts: tuple[Thrust, ...] = ()
 
 
-#: The last model turned into a block, and its block: validating a model derives its block
-#: (load.check_derived) and running it derives it again, once per case of a study.
-_last_block: tuple[Model, Block] | None = None
-
-
 def to_block(model: Model) -> Block:
     """The rigid block with its restrainers, in SI floats (spec/rocking.md).
 
-    The same model object asked twice in a row gives the same block (models are not changed
-    after validation). A wall whose mechanisms are not the block's (rockcli.model.derive_wall)
-    is refused: the time history rocks the rectangular block only (InputError).
+    A wall whose mechanisms are not the block's (rockcli.model.derive_wall) is refused: the
+    time history rocks the rectangular block only (InputError). Derived anew on each call:
+    a caller that needs it twice keeps it (rockcli.model.catalogue derives it once a model).
     """
     refuse_unrockable(model)
-    return block_of(model)
+    return derive_block(model)
 
 
 def refuse_unrockable(model: Model) -> None:
@@ -166,20 +161,10 @@ def refuse_unrockable(model: Model) -> None:
     )
 
 
-def block_of(model: Model) -> Block:
-    """:func:`to_block` without the check of the mechanisms (the model's validation derives
-    the block's numbers of any model to check they are finite)."""
-    global _last_block
-    last = _last_block
-    if last is not None and last[0] is model:
-        return last[1]
-    block = derive_block(model)
-    _last_block = (model, block)
-    return block
-
-
 def derive_block(model: Model) -> Block:
-    """:func:`to_block` without its memory of the last model."""
+    """:func:`to_block` without the check of the mechanisms (the model's validation derives
+    the block's numbers of any model to check they are finite; a wall's mechanisms take the
+    engine's settings from it)."""
     R, alpha = model.geometry.polar
     motion = model.motion
     one_sided = motion.sides is Sides.ONE

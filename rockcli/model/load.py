@@ -30,7 +30,7 @@ from pydantic.fields import FieldInfo
 from pydantic_core import ErrorDetails
 
 from rockcli.errors import InputError
-from rockcli.model.derive import block_of
+from rockcli.model.derive import derive_block
 from rockcli.model.derived_checks import FINITE_POSITIVE, check_block
 from rockcli.model.schema import Model
 from rockcli.model.table_rules import RULE_ERROR
@@ -204,7 +204,7 @@ def check_derived(model: Model, file: str | None = None) -> None:
     """InputError when the block derived from a valid model is not finite (see
     :mod:`rockcli.model.derived_checks`)."""
     try:
-        check_block(block_of(model))
+        check_block(derive_block(model))
     except InputError as exc:
         raise exc.with_file(file) if file else exc from None
     except ArithmeticError as exc:

@@ -15,6 +15,7 @@ from rockcli.notes import Note
 from rockcli.records.record import Record
 
 if TYPE_CHECKING:
+    from rockcli.model.catalogue import Mechanism as CatalogueMechanism
     from rockcli.studies.floor import Floor
     from rockcli.studies.rocked import Rocked
 
@@ -65,6 +66,7 @@ def assess_model_output(
     file: str | None = None,
     tolerance_check: bool = True,
     mechanism: str | None = None,
+    mechanisms: Catalogue | None = None,
 ) -> AssessmentOutput:
     """Both polarities of a validated model under a record: the record itself for a block on
     the ground (or with ``ground``), its floor motion for a block at height (studies.floor).
@@ -73,13 +75,15 @@ def assess_model_output(
     its run (dynamics.tolerance; the fast engine only: the reference engine is the accuracy
     reference, its tolerances fixed). mechanism: the wall's mechanism to rock (None: the
     governing one; a model of one block has only its own, "overturning, whole wall").
+    mechanisms: the model's catalogue when the caller has derived it (derived here else).
     """
     from rockcli.dynamics.simulate import assess
     from rockcli.model.derive import describe, solver_options
     from rockcli.model.plausible import model_warnings
     from rockcli.studies.rocked import mechanism_notes
 
-    rocked_value, shaking, floor = rocked_motion(model, record, ground, file, mechanism)
+    rocked_value, shaking, floor = rocked_motion(model, record, ground, file, mechanism,
+                                                 mechanisms)  # fmt: skip
     block, rocked = rocked_value.block, rocked_value.named
     settings = settings_from(solver_options(model))
     result = assess(
@@ -142,29 +146,33 @@ def restitution_rule(rule: str, block: Rocker, rocked: tuple[str, str] | None) -
     return own
 
 
+#: A model's mechanisms as derived once (rockcli.model.catalogue.catalogue).
+Catalogue = tuple["CatalogueMechanism", ...]
+
 #: The one mechanism of a model of one block.
 BLOCK_MECHANISM = WHOLE_WALL
 
 
 def rocked_input(model: Model, record: Record, ground: bool, file: str | None,
-                 mechanism: str | None):  # fmt: skip
+                 mechanism: str | None, mechanisms: Catalogue | None = None):  # fmt: skip
     """(what the engine rocks, the motion it sees, its floor, (name, type) of a wall's
     mechanism or None for a block file's block) (:func:`rocked_motion`)."""
-    rocked, shaking, floor = rocked_motion(model, record, ground, file, mechanism)
+    rocked, shaking, floor = rocked_motion(model, record, ground, file, mechanism, mechanisms)
     return rocked.block, shaking, floor, rocked.named
 
 
 def rocked_motion(model: Model, record: Record, ground: bool, file: str | None,
-                  mechanism: str | None) -> tuple[Rocked, Record, Floor | None]:  # fmt: skip
+                  mechanism: str | None, mechanisms: Catalogue | None = None,
+                  ) -> tuple[Rocked, Record, Floor | None]:  # fmt: skip
     """(the mechanism rocked, the motion it sees, its floor): the catalogue's mechanism
     named, the only one or the governing one (rockcli.studies.rocked), on its floor motion
     unless ``ground`` (refused for a mechanism on the ground, where it would change nothing
-    the user asked)."""
+    the user asked). mechanisms: the model's catalogue when the caller has derived it."""
     from rockcli.errors import InputError
     from rockcli.studies.floor import floor_record
     from rockcli.studies.rocked import rocked_mechanism
 
-    rocked = rocked_mechanism(model, record, mechanism)
+    rocked = rocked_mechanism(model, record, mechanism, mechanisms)
     if ground and rocked.floor is None:
         raise InputError(
             "the block is on the ground already (building.Z = 0 or no [building], and the "

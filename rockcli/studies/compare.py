@@ -17,7 +17,7 @@ from rockcli.codecheck.result import KinematicResult
 from rockcli.dynamics.result import Assessment, RockingRun, RunStatus, Verdict
 from rockcli.model.schema import Model
 from rockcli.records.record import Record
-from rockcli.studies.assess import AssessmentOutput, assess_model_output
+from rockcli.studies.assess import AssessmentOutput, Catalogue, assess_model_output
 from rockcli.studies.catalogue import main_mechanism, named_result
 
 
@@ -149,7 +149,8 @@ def said(collapse: bool) -> str:
 
 
 def reference_rerun(model: Model, record: Record, ground: bool, file: str | None,
-                    mechanism: str | None) -> Rerun:  # fmt: skip
+                    mechanism: str | None, mechanisms: Catalogue | None = None,
+                    ) -> Rerun:  # fmt: skip
     """The reference engine's run of one polarity of what assess_model_output rocks (the same
     block, motion and settings)."""
 
@@ -159,7 +160,7 @@ def reference_rerun(model: Model, record: Record, ground: bool, file: str | None
         from rockcli.model.derive import solver_options
         from rockcli.studies.assess import rocked_input, settings_from
 
-        block, shaking, _, _ = rocked_input(model, record, ground, file, mechanism)
+        block, shaking, _, _ = rocked_input(model, record, ground, file, mechanism, mechanisms)
         settings = settings_from(solver_options(model))
         return simulate(block, shaking.time, shaking.accel, shaking.dt, polarity=polarity,
                         settings=settings, engine=Engine.REFERENCE)  # fmt: skip
@@ -210,8 +211,11 @@ class ComparisonOutput:
         kinematic: the code's check. rocking: both polarities and the block.
         classification: how the two collapse verdicts relate.
         code_demand: the earthquake the code check saw (the record, or the model's spectrum).
+        mechanisms: each mechanism of a wall's catalogue compared (empty for a block).
         classification_note: why the rocking verdict is not decided though its runs ended
             (:func:`decided_collapse`), or None.
+        catalogue: the model's mechanisms as derived for this comparison
+            (rockcli.model.catalogue), which a report's further sections rock again.
     """
 
     kinematic: KinematicResult
@@ -220,6 +224,7 @@ class ComparisonOutput:
     code_demand: CodeDemand = CodeDemand.RECORD
     mechanisms: tuple[MechanismComparison, ...] = ()
     classification_note: str | None = None
+    catalogue: Catalogue = ()
 
 
 @dataclass(frozen=True)
@@ -270,38 +275,40 @@ def compare_model_output(
     motion of the record (the code check applies the code's at-height rules to the record's
     spectrum); ground: rock it on the record itself.
     """
+    from rockcli.model.catalogue import catalogue
     from rockcli.studies.kinematic import kinematic_model
 
     check_code_demand(model, code_demand)
     own = code_demand == CodeDemand.RECORD
+    mechanisms = catalogue(model)  # derived once: both analyses read these values
     kin = kinematic_model(
         model,
         edition=edition,
         record=record if own else None,
         spectrum=spectrum if own else None,
         grid_file=grid_file,
+        mechanisms=mechanisms,
     )
     main = main_mechanism(kin, mechanism)
-    rocking = assess_model_output(
-        model, record, engine, history=history, ground=ground, file=file,
-        mechanism=None if main is None else main.name,
-    )  # fmt: skip
-    kin = shown_result(kin, main)
     name = None if main is None else main.name
+    rocking = assess_model_output(model, record, engine, history=history, ground=ground,
+                                  file=file, mechanism=name, mechanisms=mechanisms)  # fmt: skip
+    kin = shown_result(kin, main)
     collapse, why = decided_collapse(rocking.result, rerun(model, record, engine, ground, file,
-                                                           name))  # fmt: skip
+                                                           name, mechanisms))  # fmt: skip
     kind = classify(code_collapse(kin), collapse)
-    others = catalogue_comparisons(model, record, engine, kin, main, (rocking, why), ground)
-    return ComparisonOutput(kin, rocking, kind, CodeDemand(code_demand), others, why)
+    others = catalogue_comparisons(model, record, engine, kin, main, (rocking, why), ground,
+                                   mechanisms)  # fmt: skip
+    return ComparisonOutput(kin, rocking, kind, CodeDemand(code_demand), others, why, mechanisms)
 
 
 def rerun(model: Model, record: Record, engine: str, ground: bool, file: str | None,
-          mechanism: str | None) -> Rerun | None:  # fmt: skip
+          mechanism: str | None, mechanisms: Catalogue | None = None) -> Rerun | None:  # fmt: skip
     """The reference engine's second run of a fast comparison (:func:`decided_collapse`);
     None when the comparison runs the reference engine itself."""
     if engine != "fast":
         return None
-    return reference_rerun(model, record, ground, file, mechanism)
+    return reference_rerun(model, record, ground, file, mechanism, mechanisms)
 
 
 def shown_result(kin: KinematicResult, main: Any) -> KinematicResult:
@@ -335,19 +342,22 @@ def mechanism_output(
     from ``whole``'s catalogue, its rocking run again with its histories (for its full section
     of a report); the catalogue's comparisons are ``whole``'s, not repeated."""
     main = named_result(whole.kinematic, name)
+    mechanisms = whole.catalogue or None
     rocking = assess_model_output(model, record, engine, history=True, ground=ground, file=file,
-                                  mechanism=name)  # fmt: skip
+                                  mechanism=name, mechanisms=mechanisms)  # fmt: skip
     kin = shown_result(whole.kinematic, main)
-    collapse, why = decided_collapse(rocking.result,
-                                     rerun(model, record, engine, ground, file, name))  # fmt: skip
+    collapse, why = decided_collapse(
+        rocking.result, rerun(model, record, engine, ground, file, name, mechanisms)
+    )
     kind = classify(code_collapse(kin), collapse)
-    return ComparisonOutput(kin, rocking, kind, whole.code_demand, (), why)
+    return ComparisonOutput(kin, rocking, kind, whole.code_demand, (), why, whole.catalogue)
 
 
-def catalogue_comparisons(model, record, engine, kin, main, shown, ground):
+def catalogue_comparisons(model, record, engine, kin, main, shown, ground, mechanisms=None):
     """Every mechanism of a wall's catalogue: the main one's comparison as made (``shown``:
     its rocking and the note of its decision), each other one run with its tolerance check
-    and classified (one the time history refuses is listed with the reason)."""
+    and classified (one the time history refuses is listed with the reason). mechanisms:
+    the catalogue's values, derived once by the caller."""
     from rockcli.errors import InputError
 
     if main is None:
@@ -361,14 +371,14 @@ def catalogue_comparisons(model, record, engine, kin, main, shown, ground):
             collapse = None if why is not None else rocking_collapse(run)
         else:
             try:
-                run = assess_model_output(model, record, engine, ground=ground,
-                                          mechanism=m.name).result  # fmt: skip
+                run = assess_model_output(model, record, engine, ground=ground, mechanism=m.name,
+                                          mechanisms=mechanisms).result  # fmt: skip
             except InputError as exc:
                 reason = exc.note()
                 out.append(MechanismComparison(m.name, m.type, m.result, None, None, reason))
                 continue
             collapse, why = decided_collapse(run, rerun(model, record, engine, ground, None,
-                                                        m.name))  # fmt: skip
+                                                        m.name, mechanisms))  # fmt: skip
         kind = classify(code_collapse(m.result), collapse)
         out.append(MechanismComparison(m.name, m.type, m.result, run, kind, None, why))
     return tuple(out)

@@ -123,16 +123,20 @@ def mechanism_notes(mech: CatalogueMechanism) -> tuple[Note, ...]:
     )
 
 
-def rocked_mechanism(model: Model, record: Record, name: str | None) -> Rocked:
+def rocked_mechanism(model: Model, record: Record, name: str | None,
+                     mechanisms: tuple[CatalogueMechanism, ...] | None = None,
+                     ) -> Rocked:  # fmt: skip
     """The mechanism of the model the time history rocks (the one named, the only one, or
-    the governing one of the code check) and its floor."""
-    from rockcli.model.catalogue import catalogue, named_mechanism
+    the governing one of the code check) and its floor. mechanisms: the model's catalogue
+    when the caller has derived it (rockcli.model.catalogue.catalogue); else the mechanism
+    named is derived alone, or the catalogue here."""
+    from rockcli.model.catalogue import catalogue, named, named_mechanism
     from rockcli.model.derive_ntc import building_settings
 
     if name is not None:
-        mech = named_mechanism(model, name)  # that one alone derived
+        mech = named_mechanism(model, name) if mechanisms is None else named(mechanisms, name)
     else:
-        mechanisms = catalogue(model)
+        mechanisms = catalogue(model) if mechanisms is None else mechanisms
         mech = mechanisms[0] if len(mechanisms) == 1 else governing(model, mechanisms, record)
     return Rocked(mech, mechanism_floor(mech, building_settings(model)))
 

@@ -186,7 +186,7 @@ def test_rock_compare_marks_a_mechanism_the_engines_disagree_on(monkeypatch, mod
     survives = Reference(SURVIVED)
     asked = []
 
-    def rerun(model, record, ground, file, mechanism):
+    def rerun(model, record, ground, file, mechanism, mechanisms=None):
         asked.append(mechanism)
         return survives
 

@@ -40,7 +40,7 @@ from rockcli.mechanisms import motion
 from rockcli.mechanisms.catalogue import build
 from rockcli.mechanisms.flexure import flexure_block
 from rockcli.mechanisms.table import tabulate, terms
-from rockcli.model.derive import block_of
+from rockcli.model.derive import derive_block
 from rockcli.model.derive_wall import to_wall
 from rockcli.model.load import load_model
 from rockcli.studies.rocked import mechanism_block, named_spec
@@ -128,7 +128,7 @@ def flexure_of(model, wall, spec):
     """The flexure as the engine rocks it, from its placement about each pivot (its storey's
     height: where the floor holds its top)."""
     top = wall.storeys[spec.storey - 1].height
-    return flexure_block(build(wall, spec, 1), build(wall, spec, -1), top, block_of(model))
+    return flexure_block(build(wall, spec, 1), build(wall, spec, -1), top, derive_block(model))
 
 
 def test_the_impact_ratio_is_the_hand_projection() -> None:

@@ -21,7 +21,7 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from rockcli.errors import InputError
-from rockcli.model.derive import block_of, describe
+from rockcli.model.derive import derive_block, describe
 from rockcli.model.derived_checks import check_block
 from rockcli.model.load import MAX_ERRORS, load_model
 from rockcli.model.plausible import model_warnings
@@ -118,7 +118,7 @@ def check_load(path: Path) -> None:
         assert 1 <= len(lines) <= MAX_ERRORS + 1
         assert all(line.startswith(f"{path}: ") and "\n" not in line for line in lines), lines
         return
-    check_block(block_of(model))
+    check_block(derive_block(model))
     describe(model)
     assert all(isinstance(w, str) for w in model_warnings(model))
 

@@ -18,7 +18,7 @@ from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 
 from rockcli.errors import InputError
-from rockcli.model.derive import block_of
+from rockcli.model.derive import derive_block
 from rockcli.model.load import load_model, to_toml, validate_model
 
 
@@ -220,7 +220,7 @@ def test_valid_model_survives_a_toml_round_trip(data: dict[str, Any]) -> None:
 @settings(max_examples=300, deadline=None)
 @given(models())
 def test_every_valid_model_derives_a_block(data: dict[str, Any]) -> None:
-    block = block_of(validate_model(data))
+    block = derive_block(validate_model(data))
     assert 0.0 <= block.e <= 1.0
     assert block.R > 0 and 0 < block.alpha < math.pi / 2
     for spring in block.restrainers:

@@ -180,11 +180,13 @@ def run_case(
     plan: StudyPlan, model: Model, record: Record | None, spectrum: RecordSpectrum | None
 ) -> dict[str, Any]:
     """The analyses of one case: the block, the rocking envelope, the code check."""
+    from rockcli.model.catalogue import catalogue
     from rockcli.studies.compare import CodeDemand, classify, code_collapse, rocking_collapse
 
     R, alpha = model.geometry.polar
     row: dict[str, Any] = {"block_R": R, "block_alpha": alpha}
     roc = kin = None
+    mechanisms = catalogue(model)  # once a case: both analyses read these values
     if "kinematic" in plan.analyses:
         from rockcli.studies.kinematic import kinematic_model
 
@@ -194,6 +196,7 @@ def run_case(
             record=record if own else None,
             spectrum=spectrum if own else None,
             grid_file=plan.grid_file,
+            mechanisms=mechanisms,
         )
     mechanism, kin = case_mechanism(kin)
     if "rocking" in plan.analyses and record is not None:
@@ -203,7 +206,7 @@ def run_case(
         ground = plan.ground and model_floor(model) is not None
         out = assess_model_output(
             model, record, plan.engine, ground=ground, tolerance_check=plan.check_tolerance,
-            mechanism=mechanism,
+            mechanism=mechanism, mechanisms=mechanisms,
         )  # fmt: skip
         roc = out.result
         if out.mechanism is not None:  # a wall: the rocked body's R and α, its name
