@@ -62,10 +62,11 @@ def in_process(model_path: str, record_path: str, repeats: int) -> None:
     from rockcli.model.load import read_toml, validate_model
     from rockcli.records import files
     from rockcli.studies.assess import assess_model_output
+    from rockcli.studies.choices import Analyses
     from rockcli.studies.kinematic import kinematic_model
     from rockcli.studies.retrofit import run as retrofit_run
     from rockcli.studies.retrofit.candidates import build_candidate, make_plan
-    from rockcli.studies.retrofit.run import Analyses, run_candidate, shared_spectrum
+    from rockcli.studies.retrofit.run import run_candidate, shared_spectrum
 
     table = read_toml(model_path)
     plan = make_plan(table, validate_model(table), diameters_mm=DIAMETERS)

@@ -149,7 +149,8 @@ def report(
     from rockcli.cli.assess import one_record_or_suite
     from rockcli.cli.compare import demand_for
     from rockcli.cli.invocation import command_line
-    from rockcli.document.run import write_report, write_suite_report
+    from rockcli.document.run import ReportChoices, write_report, write_suite_report
+    from rockcli.studies.choices import Analyses, ComparisonChoices
 
     model_paths = model  # MODEL... in the usage, MODEL in a message
 
@@ -178,8 +179,7 @@ def report(
                              allowed="--retrofit with --record")  # fmt: skip
         written = write_suite_report(
             model_paths, suite_path, target, grid_file, **common, allow_outside=allow_outside,
-            options={"code_demand": code_demand, "edition": edition, "engine": engine,
-                     "ground": ground},
+            analyses=Analyses(engine, edition, ground), code_demand=code_demand,
         )  # fmt: skip
         for path, detail in written:
             announce_written(path, detail)
@@ -202,9 +202,10 @@ def report(
         record,
         **common,
         files=(("record", record_path),) + ((("hazard_grid", grid_file),) if grid_file else ()),
-        options={"code_demand": code_demand, "edition": edition, "engine": engine,
-                 "ground": ground, "grid_file": grid_file, "mechanism": mechanism_name,
-                 "mechanisms": mechanisms_shown, "retrofit": retrofit},
+        choices=ReportChoices(
+            ComparisonChoices(Analyses(engine, edition, ground), code_demand, grid_file,
+                              mechanism_name),
+            shown=mechanisms_shown, retrofit=retrofit),
     )  # fmt: skip
     for path, detail in written:
         announce_written(path, detail)

@@ -84,9 +84,10 @@ def retrofit(model_path, record_path, record_format, dt, units, scale, pga, name
     """Size a tie-rod of MODEL: for each diameter, the code's ULS check and the time history
     under the record; the smallest diameter that passes both and holds the rod's force."""
     from rockcli.cli.sweep import worker_count
+    from rockcli.studies.choices import Analyses
     from rockcli.studies.parallel.executor import local_executor
     from rockcli.studies.retrofit.choose import choose
-    from rockcli.studies.retrofit.run import Analyses, run_retrofit
+    from rockcli.studies.retrofit.run import run_retrofit
     from rockcli.terminal.retrofit import retrofit_document, retrofit_report
     from rockcli.terminal.sweep import progress_bar
     from rockcli.terminal.table import show

@@ -4,13 +4,27 @@ from __future__ import annotations
 
 import os
 from collections.abc import Sequence
+from dataclasses import dataclass
 from datetime import UTC, datetime
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
+from rockcli.studies.choices import Analyses, ComparisonChoices
+
 if TYPE_CHECKING:
     from rockcli.document.content import Document
     from rockcli.records.record import Record
+
+
+@dataclass(frozen=True)
+class ReportChoices:
+    """What `rock report` on a record chooses: the comparison of each model; ``shown``: "all"
+    gives every mechanism of a wall its full section, "governing" only the one compared;
+    ``retrofit``: size the tie-rod where the comparison asks for an intervention."""
+
+    comparison: ComparisonChoices
+    shown: str = "all"
+    retrofit: bool = False
 
 
 def report_date() -> str:
@@ -54,14 +68,13 @@ def write_report(
     lang: str,
     command: str,
     files: Sequence[tuple[str, str]],
-    options: dict[str, Any],
+    choices: ReportChoices,
     front: dict[str, Any] | None = None,
     docx_path: str | None = None,
 ) -> list[tuple[str, str]]:
     """Run both analyses of each model under the record, write one report; what was written
     (``front``: the project and where the casebook goes, :func:`report_front`; ``files``:
-    the record's and the grid's, each model's added; ``options["mechanisms"]``: "all" shows
-    every mechanism of a wall in full, "governing" only the one compared).
+    the record's and the grid's, each model's added).
 
     Every model is read and checked before any analysis runs."""
     from rockcli.document.build import Inputs, build_document
@@ -69,19 +82,17 @@ def write_report(
     from rockcli.model.load import load_model
     from rockcli.studies.compare import check_code_demand
 
-    options = dict(options)
-    shown = options.pop("mechanisms", "all")
-    retrofit = options.pop("retrofit", False)
+    comparison = choices.comparison
     models = [load_model(path) for path in model_paths]
     for path, model in zip(model_paths, models, strict=True):
-        check_code_demand(model, options["code_demand"], file=path)
-    front = report_front(front, options.get("grid_file"))
+        check_code_demand(model, comparison.code_demand, file=path)
+    front = report_front(front, comparison.grid_file)
     parts = []
     for path, model in zip(model_paths, models, strict=True):
-        out, doc, others = wall_comparisons(model, record, path, options, shown)
+        out, doc, others = wall_comparisons(model, record, path, comparison, choices.shown)
         inputs = Inputs(path, model, record, (("model", path), *files), command, report_date(),
                         **front)  # fmt: skip
-        sizing = wall_sizing(path, record, doc, options) if retrofit else None
+        sizing = wall_sizing(path, record, doc, comparison.analyses) if choices.retrofit else None
         parts.append(Part(inputs, out, doc, others, sizing))
     document = build_document(parts, lang)
     verdict = ", ".join(str(part.doc["classification"]) for part in parts)
@@ -89,13 +100,18 @@ def write_report(
 
 
 def wall_comparisons(
-    model: Any, record: Record, path: str, options: dict[str, Any], shown: str
+    model: Any, record: Record, path: str, choices: ComparisonChoices, shown: str
 ) -> tuple[Any, dict[str, Any], tuple[tuple[Any, dict[str, Any]], ...]]:
     """A model's comparison and its document, and each other mechanism's that the time
     history rocks (with ``shown`` "all"), each with its document."""
     from rockcli.studies.compare import compare_model_output, mechanism_output
 
-    out = compare_model_output(model, record, file=path, history=True, **options)
+    analyses = choices.analyses
+    out = compare_model_output(
+        model, record, engine=analyses.engine, edition=analyses.edition,
+        grid_file=choices.grid_file, code_demand=choices.code_demand, history=True,
+        ground=analyses.ground, file=path, mechanism=choices.mechanism,
+    )  # fmt: skip
     doc = comparison_document(out, record)
     if shown != "all":
         return out, doc, ()
@@ -103,22 +119,20 @@ def wall_comparisons(
     for m in out.mechanisms:
         if m.name == out.kinematic.mechanism or m.rocking is None:
             continue
-        one = mechanism_output(model, record, out, m.name, engine=options.get("engine", "fast"),
-                               ground=options.get("ground", False), file=path)  # fmt: skip
+        one = mechanism_output(model, record, out, m.name, engine=analyses.engine,
+                               ground=analyses.ground, file=path)  # fmt: skip
         others.append((one, comparison_document(one, record)))
     return out, doc, tuple(others)
 
 
-def wall_sizing(path: str, record: Record, doc: dict[str, Any], options: dict[str, Any]) -> Any:
+def wall_sizing(path: str, record: Record, doc: dict[str, Any], analyses: Analyses) -> Any:
     """What rock retrofit finds for the model's tie-rod when the comparison asks for an
     intervention ("not needed" otherwise)."""
     from rockcli.document.conclusions import needs_retrofit
-    from rockcli.studies.retrofit.run import Analyses, size_rod
+    from rockcli.studies.retrofit.run import size_rod
 
     if not needs_retrofit(doc):
         return "not needed"
-    analyses = Analyses(options.get("engine", "fast"), options.get("edition"),
-                        options.get("ground", False))  # fmt: skip
     return size_rod(path, record, analyses)
 
 
@@ -172,7 +186,8 @@ def write_suite_report(
     pdf_path: str | None,
     lang: str,
     command: str,
-    options: dict[str, Any],
+    analyses: Analyses,
+    code_demand: str,
     allow_outside: bool = False,
     front: dict[str, Any] | None = None,
     docx_path: str | None = None,
@@ -191,7 +206,7 @@ def write_suite_report(
     front = report_front(front, grid_file)
     parts = []
     for path, loaded in zip(model_paths, loads, strict=True):
-        doc, runs = suite_comparison(loaded, path, grid_file, options)
+        doc, runs = suite_comparison(loaded, path, grid_file, analyses, code_demand)
         files = [("model", path)]
         if Path(suite_path).is_file():
             files.append(("suite", suite_path))
@@ -205,19 +220,22 @@ def write_suite_report(
 
 
 def suite_comparison(
-    loaded: Any, path: str, grid_file: str | None, options: dict[str, Any]
+    loaded: Any, path: str, grid_file: str | None, analyses: Analyses, code_demand: str
 ) -> tuple[dict[str, Any], list[tuple[Any, dict[str, Any], Record]]]:
-    """`rock compare --suite`'s document of a loaded model and suite, and each record's time
-    history with its history kept (its `rock assess` document, the scaled record)."""
+    """`rock compare --suite`'s document of a loaded model and suite (the code check's
+    ``code_demand``: the suite's target or mean), and each record's time history with its
+    history kept (its `rock assess` document, the scaled record)."""
     from rockcli.studies.assess import assess_model_output
     from rockcli.studies.suite_run.compare import compare_loaded
     from rockcli.terminal.assess import assessment_output_document
     from rockcli.terminal.suite import suite_comparison_document
 
-    doc = suite_comparison_document(compare_loaded(loaded, grid_file, **options))
+    result = compare_loaded(loaded, grid_file, code_demand=code_demand, edition=analyses.edition,
+                            engine=analyses.engine, ground=analyses.ground)  # fmt: skip
+    doc = suite_comparison_document(result)
     runs = []
     for record in loaded.check.records:
-        out = assess_model_output(loaded.model, record, options["engine"],
-                                  ground=options["ground"], file=path, history=True)  # fmt: skip
+        out = assess_model_output(loaded.model, record, analyses.engine, ground=analyses.ground,
+                                  file=path, history=True)  # fmt: skip
         runs.append((out, assessment_output_document(out, record), record))
     return doc, runs

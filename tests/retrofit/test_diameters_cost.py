@@ -26,10 +26,11 @@ from rockcli.codecheck.response import RecordSpectrum
 from rockcli.errors import InputError
 from rockcli.model.load import read_toml, validate_model
 from rockcli.records import files
+from rockcli.studies.choices import Analyses
 from rockcli.studies.parallel.executor import local_executor
 from rockcli.studies.retrofit import run as retrofit_run
 from rockcli.studies.retrofit.candidates import MAX_DIAMETERS, make_plan, parse_diameters
-from rockcli.studies.retrofit.run import Analyses, run_retrofit, shared_spectrum
+from rockcli.studies.retrofit.run import run_retrofit, shared_spectrum
 from tests.cli.conftest import ROOT
 
 FACADE = ROOT / "examples" / "facade.toml"

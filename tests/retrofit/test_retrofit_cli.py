@@ -14,10 +14,11 @@ from click.testing import CliRunner
 from rockcli.cli.main import cli
 from rockcli.model.load import read_toml, validate_model
 from rockcli.records import files
+from rockcli.studies.choices import Analyses
 from rockcli.studies.parallel.executor import local_executor
 from rockcli.studies.retrofit.candidates import make_plan
 from rockcli.studies.retrofit.choose import failures
-from rockcli.studies.retrofit.run import Analyses, run_retrofit
+from rockcli.studies.retrofit.run import run_retrofit
 from tests.cli.conftest import ROOT
 
 FACADE = ROOT / "examples" / "facade.toml"

@@ -25,6 +25,7 @@ from typing import TYPE_CHECKING, Any
 
 from rockcli.dynamics.result import RunStatus
 from rockcli.notes import Note
+from rockcli.studies.choices import Analyses
 from rockcli.studies.retrofit.candidates import RetrofitPlan, build_candidate
 
 if TYPE_CHECKING:
@@ -42,16 +43,6 @@ class Candidate:
 
     id: int
     diameter_mm: float
-
-
-@dataclass(frozen=True)
-class Analyses:
-    """How both analyses run: the rocking engine, the code edition (None: the model's) and
-    ``ground`` (a block at height rocks on the record itself)."""
-
-    engine: str = "fast"
-    edition: str | None = None
-    ground: bool = False
 
 
 @dataclass(frozen=True)
