@@ -46,6 +46,9 @@ class Inputs:
         every input file (model, record, hazard grid…), hashed in the identification.
         command: the command line that made the report. date: when (ISO 8601).
         casebook: the validation casebook's result on this install, or None when not run.
+        mechanisms: the model's catalogue as the analyses derived it
+            (rockcli.model.catalogue): what the report shows of each mechanism is read from
+            these values, never derived again.
     """
 
     model_path: str
@@ -59,6 +62,7 @@ class Inputs:
     project: Any | None = None
     #: Where the casebook's cases go: "annex" (after the signature), "inline" (in §10.2).
     casebook_place: str = "annex"
+    mechanisms: tuple[Any, ...] = ()
 
 
 def build_document(parts: Sequence[Part], lang: str) -> Document:
@@ -331,7 +335,7 @@ def demand_section(
     record_spectrum = RecordSpectrum.from_record(record, g=rocking["model"]["g"])
     marks = {"Ts": kin["Ts"]} if kin.get("Ts") else {}
     code = [(st, sp) for st, sp, _ in code_spectra]
-    pos = check_position(inputs.model, kin["edition"], out.kinematic.mechanism)
+    pos = check_position(inputs, kin["edition"], out.kinematic.mechanism)
     blocks.append(figure(
         "spectra",
         spectra(code, record_spectrum, record.name, marks, w),
@@ -344,17 +348,22 @@ def demand_section(
     return Section("demand", w("section.demand"), tuple(blocks))
 
 
-def check_position(model: Model, edition: str, mechanism: str | None) -> Position:
+def shown_mechanism(inputs: Inputs, name: str | None) -> Any:
+    """The catalogue's value of the mechanism shown (the first when none is named: a block
+    file's block), from the values the analyses derived (Inputs.mechanisms)."""
+    from rockcli.model.catalogue import named
+
+    return inputs.mechanisms[0] if name is None else named(inputs.mechanisms, name)
+
+
+def check_position(inputs: Inputs, edition: str, mechanism: str | None) -> Position:
     """Where the code check put the mechanism shown, by the check's own function
-    (studies.catalogue.mechanism_position of the catalogue's mechanism; a block file's block
-    when no mechanism is named)."""
-    from rockcli.model.catalogue import catalogue, named_mechanism
+    (studies.catalogue.mechanism_position of the catalogue's value)."""
     from rockcli.studies.catalogue import mechanism_position
     from rockcli.studies.kinematic import check_settings
 
-    settings = check_settings(model, edition)
-    mech = catalogue(model)[0] if mechanism is None else named_mechanism(model, mechanism)
-    return mechanism_position(mech, settings.building)
+    settings = check_settings(inputs.model, edition)
+    return mechanism_position(shown_mechanism(inputs, mechanism), settings.building)
 
 
 def floor_figure(
@@ -451,7 +460,7 @@ def kinematic_section(
     blocks: list[Block] = [Paragraph(w(f"kin.intro_{kin['edition']}"))]
     if catalogue and len(kin.get("mechanisms", ())) > 1:
         blocks.append(catalogue_grid(kin, w))
-    mechs = mechanisms(inputs.model, kin)
+    mechs = mechanisms(inputs, kin)
     blocks.append(activation_grid(mechs, w))
     quantities = [
         ("M*", participating_mass_of(mechs, kin), "kg", "kin.M_star"),
@@ -506,20 +515,18 @@ def catalogue_grid(kin: Mapping[str, Any], w: Words) -> Grid:
                 (False, *([True] * 8)))  # fmt: skip
 
 
-def mechanisms(model: Model, kin: Mapping[str, Any]) -> dict[int, Any]:
+def mechanisms(inputs: Inputs, kin: Mapping[str, Any]) -> dict[int, Any]:
     """The check's mechanism on each side it looks at, keyed by side: the catalogue's
     mechanism shown (rockcli.model.catalogue: a vertical flexure's two blocks about the hinge
     the check found, not what the time history rocks; a block file's block with its loads
     and thrusts), with the edition's sums (studies.catalogue.side_check)."""
-    from rockcli.model.catalogue import catalogue, named_mechanism
     from rockcli.studies.catalogue import side_check
     from rockcli.studies.kinematic import check_settings
 
-    settings = check_settings(model, kin["edition"])
+    settings = check_settings(inputs.model, kin["edition"])
     sides = sorted({int(s) for s in kin.get("alpha0_by_side", {})} | {int(kin["side"])},
                    reverse=True)  # fmt: skip
-    name = kin.get("mechanism")
-    mech = catalogue(model)[0] if name is None else named_mechanism(model, name)
+    mech = shown_mechanism(inputs, kin.get("mechanism"))
     return {side: side_check(mech, side, settings) for side in sides}
 
 

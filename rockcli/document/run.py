@@ -91,7 +91,7 @@ def write_report(
     for path, model in zip(model_paths, models, strict=True):
         out, doc, others = wall_comparisons(model, record, path, comparison, choices.shown)
         inputs = Inputs(path, model, record, (("model", path), *files), command, report_date(),
-                        **front)  # fmt: skip
+                        **front, mechanisms=out.catalogue)  # fmt: skip
         sizing = wall_sizing(path, record, doc, comparison.analyses) if choices.retrofit else None
         parts.append(Part(inputs, out, doc, others, sizing))
     document = build_document(parts, lang)
@@ -198,6 +198,7 @@ def write_suite_report(
     and checked before any analysis runs."""
     from rockcli.document.build import Inputs
     from rockcli.document.suite import SuitePart, build_suite_document
+    from rockcli.model.catalogue import catalogue
     from rockcli.studies.suite_run.assess import load_suite_and_model
     from rockcli.suites.run import suite_document
 
@@ -212,7 +213,8 @@ def write_suite_report(
             files.append(("suite", suite_path))
         files += [("record", str(entry.path)) for entry in loaded.settings.entries]
         files += [("hazard_grid", grid_file)] if grid_file else []
-        inputs = Inputs(path, loaded.model, None, tuple(files), command, report_date(), **front)
+        inputs = Inputs(path, loaded.model, None, tuple(files), command, report_date(), **front,
+                        mechanisms=catalogue(loaded.model))  # fmt: skip
         parts.append(SuitePart(inputs, doc, suite_document(loaded.check), runs))
     document = build_suite_document(parts, lang)
     verdict = ", ".join(str(part.doc["classification"]) for part in parts)

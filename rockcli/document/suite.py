@@ -148,7 +148,7 @@ def suite_demand_section(
     blocks.append(figure("compatibility", compatibility(check, w),
                          w("figure.compatibility_caption")))  # fmt: skip
     kin = doc["kinematic"]
-    pos = check_position(inputs.model, kin["edition"], kin.get("mechanism"))
+    pos = check_position(inputs, kin["edition"], kin.get("mechanism"))
     if pos.at_height and code_spectra:
         code = [(st, sp) for st, sp, _ in code_spectra]
         # Each record's floor motion was rocked (not drawn: one curve per record), or with

@@ -136,7 +136,8 @@ def demand_figures(model_path: Path, ground: bool = False) -> list:
     model, record = load_model(model_path), read_record(PULSE)
     out = compare_model_output(model, record, ground=ground)
     doc = comparison_output_document(out, record)
-    inputs = Inputs(str(model_path), model, record, (), "rock report", "2025-01-01")
+    inputs = Inputs(str(model_path), model, record, (), "rock report", "2025-01-01",
+                    mechanisms=out.catalogue)  # fmt: skip
     section = demand_section(inputs, doc, record, Words("it"), out)
     return [b for b in section.blocks if hasattr(b, "svg")]
 
