@@ -18,11 +18,19 @@ from rockcli.document.figures import (
     floor_spectra,
 )
 from rockcli.document.words import Words
+from rockcli.model.catalogue import catalogue
 from rockcli.model.load import load_model
 from rockcli.records.files import read_record
 from rockcli.studies.kinematic import check_settings, given_demands, kinematic_model
 
 pytest.importorskip("matplotlib", reason="the report extra (matplotlib) is not installed")
+
+
+def report_inputs(model) -> Inputs:
+    """The report's inputs of a model, with its catalogue as the analyses derive it."""
+    return Inputs("m.toml", model, None, (), "rock report", "2025-01-01",
+                  mechanisms=catalogue(model))  # fmt: skip
+
 
 ROOT = Path(__file__).resolve().parents[2]
 TOP_STOREY = ROOT / "examples" / "top-storey-wall.toml"
@@ -52,7 +60,7 @@ def wall():
     """The top-storey wall (Z = 3.5 m, 2019), its check on the model's spectra, its position."""
     model = load_model(TOP_STOREY)
     kin = kinematic_model(model)
-    return model, kin, check_position(model, kin.edition, kin.mechanism)
+    return model, kin, check_position(report_inputs(model), kin.edition, kin.mechanism)
 
 
 def test_the_position_is_the_checks_own(wall) -> None:
@@ -116,7 +124,7 @@ def test_the_2009_demand_at_height_is_the_circolare_617s() -> None:
     # d·(2π/T)²/g: Se(T1)·ψ·γ as T → 0 (the linear checks), ÷ √0.02 at T = T1.
     model = load_model(ALTAR)
     kin = kinematic_model(model)
-    pos = check_position(model, kin.edition, kin.mechanism)
+    pos = check_position(report_inputs(model), kin.edition, kin.mechanism)
     demands = given_demands(check_settings(model), model.analysis.g)
     spectrum = demands["SLV"].spectrum
     T, values = floor_curve(spectrum, "SLV", pos, "2009", np.array([0.0, 1e-6, 1.09]))
