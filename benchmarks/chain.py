@@ -64,9 +64,9 @@ def single_block() -> Block:
 
 def mechanism(name: str) -> Block:
     """A mechanism of the example façade as the engine rocks it."""
+    from rockcli.analyses.rocked import mechanism_block, named_spec
     from rockcli.model.derive_wall import to_wall
     from rockcli.model.load import load_model
-    from rockcli.studies.rocked import mechanism_block, named_spec
 
     model = load_model(str(ROOT / "examples" / "two-storey-facade.toml"))
     wall = to_wall(model)

@@ -32,10 +32,10 @@ def main() -> None:
 
     import rockcli.kernels  # noqa: F401 - registers the warm-up
     from benchmarks.sweep import SHARED, scale_study
+    from rockcli.analyses.assess import settings_from
     from rockcli.dynamics import batch as arrays
     from rockcli.dynamics import layout as L
     from rockcli.model.derive import solver_options
-    from rockcli.studies.assess import settings_from
     from rockcli.studies.parallel.setup import warm
     from rockcli.studies.sweep import batch, worker
     from rockcli.studies.sweep.cases import expand

@@ -59,11 +59,11 @@ def cpu_per_item(fn: Any, items: tuple[float, ...]) -> float:
 
 
 def in_process(model_path: str, record_path: str, repeats: int) -> None:
+    from rockcli.analyses.assess import assess_model_output
+    from rockcli.analyses.choices import Analyses
+    from rockcli.analyses.kinematic import kinematic_model
     from rockcli.model.load import read_toml, validate_model
     from rockcli.records import files
-    from rockcli.studies.assess import assess_model_output
-    from rockcli.studies.choices import Analyses
-    from rockcli.studies.kinematic import kinematic_model
     from rockcli.studies.retrofit import run as retrofit_run
     from rockcli.studies.retrofit.candidates import build_candidate, make_plan
     from rockcli.studies.retrofit.run import run_candidate, shared_spectrum

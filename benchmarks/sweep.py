@@ -96,9 +96,9 @@ def start_up() -> None:
 def per_case() -> None:
     import numpy as np
 
+    from rockcli.analyses.assess import assess_model
+    from rockcli.analyses.kinematic import kinematic_model
     from rockcli.codecheck.response import RecordSpectrum, response_spectrum
-    from rockcli.studies.assess import assess_model
-    from rockcli.studies.kinematic import kinematic_model
     from rockcli.studies.parallel.setup import warm
     from rockcli.studies.sweep.cases import Case, build_model
     from rockcli.studies.sweep.study import load_study

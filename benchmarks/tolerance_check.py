@@ -2,7 +2,7 @@
 
 Prints, per case, the median CPU time (time.thread_time: on a shared, loaded machine the wall
 time of runs of a few ms includes the scheduler's preemptions) of the rocking analysis of
-`rock assess` (both polarities, the engine loaded; rockcli.studies.assess.assess_model_output)
+`rock assess` (both polarities, the engine loaded; rockcli.analyses.assess.assess_model_output)
 without and with the check, interleaved over REPEATS runs, their difference, and the median
 wall times.
 
@@ -19,11 +19,11 @@ import statistics
 import time
 from pathlib import Path
 
+from rockcli.analyses.assess import assess_model_output
 from rockcli.model.load import load_model, validate_model
 from rockcli.model.schema import Model
 from rockcli.records import files, transform
 from rockcli.records.record import Record
-from rockcli.studies.assess import assess_model_output
 
 ROOT = Path(__file__).resolve().parents[1]
 SHARED = ROOT.parent / "shared" / "records"

@@ -82,7 +82,7 @@ def kinematic(
     """``rock kinematic MODEL``: the code's kinematic analysis of every mechanism (α0, e*, a0*,
     d0*, the capacity curve and the checks), under the record's spectrum, a site (lon, lat with
     the hazard grid) or the model's own demand; ``mechanism`` names the one detailed."""
-    from rockcli.studies.kinematic import run_kinematic
+    from rockcli.analyses.kinematic import run_kinematic
     from rockcli.terminal.kinematic import kinematic_document
 
     out = run_kinematic(str(model), edition=edition, record=record, site=site,
@@ -102,7 +102,7 @@ def assess(
     """``rock assess MODEL --record REC``: the rocking time history of both polarities and the
     verdict; ``ground`` rocks a block at height on the record itself; ``history`` keeps θ(t)
     (``result.output.result.runs[k].history``)."""
-    from rockcli.studies.assess import run_assessment_output
+    from rockcli.analyses.assess import run_assessment_output
     from rockcli.terminal.assess import assessment_output_document
 
     out = run_assessment_output(str(model), record, engine, history=history, ground=ground,
@@ -124,7 +124,7 @@ def compare(
     """``rock compare MODEL --record REC``: both analyses on the same earthquake, side by side,
     and their classification (``code_demand="model"``: the code check on the model's own
     spectrum instead of the record's)."""
-    from rockcli.studies.compare import run_comparison_output
+    from rockcli.analyses.compare import run_comparison_output
     from rockcli.terminal.compare import comparison_output_document, comparison_warnings
 
     out = run_comparison_output(str(model), record, engine=engine, edition=edition,

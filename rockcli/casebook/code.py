@@ -1,7 +1,7 @@
 """The model, kinematic and spectrum cases, on the paths `rock` itself takes.
 
 Model quantities come from the derived block (``rockcli.model.derive.to_block``), the
-kinematic ones from ``rockcli.studies.kinematic.kinematic_model`` (what `rock kinematic`
+kinematic ones from ``rockcli.analyses.kinematic.kinematic_model`` (what `rock kinematic`
 runs), of the mechanism of its catalogue the case names, the spectra from
 ``rockcli.codecheck`` (NTC spectrum, hazard grid, response spectrum, floor motion) and the
 suite's ratio from ``rockcli.suites.compat`` (what `rock suite check` runs).
@@ -37,9 +37,9 @@ from rockcli.model.schema import Model
 from rockcli.records.record import Record
 
 if TYPE_CHECKING:
+    from rockcli.analyses.catalogue import MechanismResult
     from rockcli.codecheck.result import KinematicResult
     from rockcli.codecheck.spectra import ElasticSpectrum
-    from rockcli.studies.catalogue import MechanismResult
 
 #: NTC 2018 §3.2.3.6 band of the suite case (the ratio itself is what is checked).
 SUITE_BAND = (-0.10, 0.30)
@@ -90,8 +90,8 @@ def positive_stiffness_ratio(block: Block, index: int) -> float:
 def kinematic_quantity(model: Model, inputs: KinematicInput, quantity: str) -> float | None:
     """A quantity of `rock kinematic` on the model (its own demand), of the mechanism named
     (default: the governing one): its check's, or M* and the hinge's height of the catalogue
-    (rockcli.studies.catalogue.MechanismResult), or a flexure's instability displacement."""
-    from rockcli.studies.kinematic import kinematic_model
+    (rockcli.analyses.catalogue.MechanismResult), or a flexure's instability displacement."""
+    from rockcli.analyses.kinematic import kinematic_model
 
     entry = catalogue_entry(kinematic_model(model, edition=inputs.edition), inputs.mechanism)
     if quantity == "e_rocking":
@@ -112,10 +112,10 @@ def kinematic_quantity(model: Model, inputs: KinematicInput, quantity: str) -> f
 
 def rocking_restitution(model: Model, name: str) -> float:
     """The coefficient of restitution the time history gives the mechanism named, side +1
-    (rockcli.studies.rocked.mechanism_block: Housner's about the new pivot, or a one-sided
+    (rockcli.analyses.rocked.mechanism_block: Housner's about the new pivot, or a one-sided
     mechanism's √(e₊·e₋))."""
+    from rockcli.analyses.rocked import mechanism_block, named_spec
     from rockcli.model.derive_wall import to_wall
-    from rockcli.studies.rocked import mechanism_block, named_spec
 
     wall = to_wall(model)
     return mechanism_block(model, wall, named_spec(wall, name)).restitution(1)
@@ -127,7 +127,7 @@ def catalogue_entry(result: KinematicResult, name: str | None) -> MechanismResul
     As `rock kinematic --mechanism` (rockcli.terminal.kinematic.chosen_result); an unknown
     name is an InputError listing the catalogue.
     """
-    from rockcli.studies.catalogue import named
+    from rockcli.analyses.catalogue import named
 
     if name is None:
         return result.catalogue[0]
@@ -143,15 +143,15 @@ def instability_displacement(
     capacity curve reaches zero (the instability displacement Δ_ins of Doherty, Griffith,
     Lam & Wilson 2002, EESD 31:833–850), on the side and at the hinge height checked.
 
-    The mechanism is rebuilt as the catalogue builds it (rockcli.studies.catalogue
+    The mechanism is rebuilt as the catalogue builds it (rockcli.analyses.catalogue
     .mechanism_of); θ0 is rockcli.codecheck.kinematic.zero_rotation's, and the hinge's
     displacement away from the wall is its rest x less its x at θ0 (rockcli.mechanisms.links:
     the upper link's reference point is the hinge). None: the curve never reaches zero.
     """
+    from rockcli.analyses.catalogue import mechanism_of
+    from rockcli.analyses.kinematic import check_settings
     from rockcli.codecheck.kinematic import zero_rotation
     from rockcli.model.derive_wall import to_wall
-    from rockcli.studies.catalogue import mechanism_of
-    from rockcli.studies.kinematic import check_settings
 
     if entry.type != "vertical-flexure":
         raise InputError(

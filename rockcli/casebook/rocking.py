@@ -4,7 +4,7 @@ Each case's block is its model's (``rockcli.model.derive.to_block``), run by
 ``rockcli.dynamics.simulate.simulate`` with the model's solver settings, as `rock assess` runs
 it; the pulses are `rock record pulse`'s (``rockcli.records.pulses.make_pulse``); the ground
 motion of an uplift case reaches a block at height through its floor
-(``rockcli.studies.floor.block_input``, as in `rock assess`). Thresholds are bisected: the
+(``rockcli.analyses.floor.block_input``, as in `rock assess`). Thresholds are bisected: the
 amplitude where the engine's verdict flips from survives to overturns, inside the case's
 bracket.
 """
@@ -16,6 +16,8 @@ from dataclasses import replace
 
 import numpy as np
 
+from rockcli.analyses.assess import settings_from
+from rockcli.analyses.floor import block_input
 from rockcli.casebook.schema import (
     FreeRockingInput,
     ImpulseInput,
@@ -33,8 +35,6 @@ from rockcli.model.derive import solver_options, to_block
 from rockcli.model.schema import Model
 from rockcli.records.pulses import make_pulse
 from rockcli.records.record import Record
-from rockcli.studies.assess import settings_from
-from rockcli.studies.floor import block_input
 
 #: Bisection stops when the bracket is this narrow, relative to its upper end: 1e-6, ten
 #: times below the tightest tolerance of a threshold case.

@@ -99,7 +99,7 @@ def assess(
 ):
     """Rocking time history of MODEL under a record (or every record of a suite), both
     polarities, with the verdict."""
-    from rockcli.studies.assess import run_assessment_output
+    from rockcli.analyses.assess import run_assessment_output
     from rockcli.terminal.assess import assessment_output_document
 
     check_allow_outside(allow_outside, suite_path)
@@ -160,9 +160,9 @@ def assess_every_mechanism(
     model_path, record, engine, ground, output, fail_on_overturn, single_options
 ) -> None:
     """--all: each mechanism the time history rocks, a document each (JSON ``mechanisms``)."""
+    from rockcli.analyses.assess import run_assessment_output
+    from rockcli.analyses.rocked import rockable_names
     from rockcli.errors import InputError
-    from rockcli.studies.assess import run_assessment_output
-    from rockcli.studies.rocked import rockable_names
     from rockcli.terminal.assess import assessment_output_document, assessment_report
     from rockcli.terminal.table import console_for, render
 

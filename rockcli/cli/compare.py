@@ -29,7 +29,7 @@ from rockcli.cli.plot_option import plot_option
 
 #: Exit code of --fail-on when the classification matches (as assess's --fail-on-overturn).
 EXIT_FAIL_ON = 1
-#: The classifications of rockcli.studies.compare.Classification (kept here as strings so
+#: The classifications of rockcli.analyses.compare.Classification (kept here as strings so
 #: that `rock --help` does not import the studies).
 CLASSIFICATIONS = (
     "consistent-safe",
@@ -38,7 +38,7 @@ CLASSIFICATIONS = (
     "code-unconservative",
     "undetermined",
 )
-#: The values of --code-demand with --record (rockcli.studies.compare.CodeDemand) and with
+#: The values of --code-demand with --record (rockcli.analyses.compare.CodeDemand) and with
 #: --suite (rockcli.studies.suite_run.compare.SuiteCodeDemand); the first of each is the default.
 RECORD_DEMANDS = ("record", "model")
 SUITE_DEMANDS = ("target", "suite-mean")
@@ -129,8 +129,8 @@ def compare(
 ):
     """Kinematic check and rocking time history of MODEL on the same record (or suite of
     records), side by side."""
+    from rockcli.analyses.compare import run_comparison_output
     from rockcli.cli.assess import one_record_or_suite
-    from rockcli.studies.compare import run_comparison_output
     from rockcli.terminal.compare import (
         comparison_output_document,
         comparison_report,

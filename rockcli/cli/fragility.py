@@ -19,7 +19,7 @@ from rockcli.cli.options import (
 from rockcli.cli.plot_option import check_study_plot, plot_option
 
 if TYPE_CHECKING:
-    from rockcli.fragility.study import FragilityPlan
+    from rockcli.studies.fragility.study import FragilityPlan
 
 
 class FragilityCommands(RockCommands):
@@ -77,8 +77,8 @@ def fit(data, method, ddof, output):
     import numpy as np
 
     from rockcli.errors import InputError
-    from rockcli.fragility.data import read_data
-    from rockcli.fragility.fit import band_points, ida_curve, msa_curve
+    from rockcli.studies.fragility.data import read_data
+    from rockcli.studies.fragility.fit import band_points, ida_curve, msa_curve
     from rockcli.terminal.fragility import fit_document, fit_report
     from rockcli.terminal.table import show
 
@@ -165,8 +165,8 @@ def run(
 
     from rockcli.cli.options import announce_written
     from rockcli.cli.sweep import interrupt_exits, terminate_as_interrupt, worker_count
-    from rockcli.fragility.analysis import FragilityInterrupted, run_fragility
-    from rockcli.fragility.study import load_fragility
+    from rockcli.studies.fragility.analysis import FragilityInterrupted, run_fragility
+    from rockcli.studies.fragility.study import load_fragility
     from rockcli.studies.parallel.executor import dask_executor, local_executor
     from rockcli.terminal.fragility import study_report
     from rockcli.terminal.sweep import progress_bar

@@ -97,7 +97,7 @@ def kinematic(
     output,
 ):
     """NTC kinematic analysis of MODEL: α0, e*, a0*, capacity curve, DLS and ULS checks."""
-    from rockcli.studies.kinematic import run_kinematic
+    from rockcli.analyses.kinematic import run_kinematic
     from rockcli.terminal.kinematic import kinematic_document
 
     check_record_options(record_path, record_format, dt, units, scale, pga)

@@ -310,7 +310,7 @@ def _check_floor_parameters(t1: float, psi: float, gamma: float, xi: float) -> N
 
 def _floor_record(rec, t1: float, psi: float, gamma: float, xi: float):
     """The record's floor motion, as a Record whose notes say how it was made."""
-    from rockcli.studies.floor import Floor, floor_record
+    from rockcli.analyses.floor import Floor, floor_record
 
     return floor_record(rec, Floor(Z=None, T1=t1, psi=psi, gamma=gamma, xi=xi))
 

@@ -146,11 +146,11 @@ def report(
     mechanism in full, the conclusions and the software's section (theory, field of use, the
     validation casebook run on this install), in Italian or English. Several models (a
     building's walls, under --record) make one report with one summary over all."""
+    from rockcli.analyses.choices import Analyses, ComparisonChoices
     from rockcli.cli.assess import one_record_or_suite
     from rockcli.cli.compare import demand_for
     from rockcli.cli.invocation import command_line
     from rockcli.document.run import ReportChoices, write_report, write_suite_report
-    from rockcli.studies.choices import Analyses, ComparisonChoices
 
     model_paths = model  # MODEL... in the usage, MODEL in a message
 

@@ -83,8 +83,8 @@ def retrofit(model_path, record_path, record_format, dt, units, scale, pga, name
              plot_path, force, output):  # fmt: skip
     """Size a tie-rod of MODEL: for each diameter, the code's ULS check and the time history
     under the record; the smallest diameter that passes both and holds the rod's force."""
+    from rockcli.analyses.choices import Analyses
     from rockcli.cli.sweep import worker_count
-    from rockcli.studies.choices import Analyses
     from rockcli.studies.parallel.executor import local_executor
     from rockcli.studies.retrofit.choose import choose
     from rockcli.studies.retrofit.run import run_retrofit

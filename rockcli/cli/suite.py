@@ -96,13 +96,13 @@ def check_grid_option(grid_file: str | None, has_site: bool, suite_path: str) ->
 
 
 def model_floor_of(model_path: str | None):
-    """The floor at the model's height (rockcli.studies.floor.Floor); None without --model;
+    """The floor at the model's height (rockcli.analyses.floor.Floor); None without --model;
     InputError for a model on the ground (its check is the ground's: drop --model)."""
     if model_path is None:
         return None
+    from rockcli.analyses.floor import model_floor
     from rockcli.errors import InputError
     from rockcli.model.load import load_model
-    from rockcli.studies.floor import model_floor
 
     floor = model_floor(load_model(model_path))
     if floor is None:

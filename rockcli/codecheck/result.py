@@ -106,7 +106,7 @@ class KinematicResult:
             mid-plane and thrusts make them differ.
         restrainer_actions: how each restrainer entered the check, and its verification.
         catalogue: every mechanism of the model with its own result, the governing one
-            first (rockcli.studies.catalogue.MechanismResult); this result is the governing
+            first (rockcli.analyses.catalogue.MechanismResult); this result is the governing
             mechanism's. governing: its name. mechanism: the name of the mechanism this
             result describes (None: the block, outside a catalogue).
         FC_rule: why the check used that FC (given, a knowledge level's, LC1's by

@@ -30,10 +30,10 @@ RECORD_FACTS = ("name", "event", "station", "component", "npts", "dt", "duration
 if TYPE_CHECKING:
     from matplotlib.figure import Figure as MplFigure
 
+    from rockcli.analyses.compare import ComparisonOutput
     from rockcli.codecheck.position import Position
     from rockcli.model.schema import Model
     from rockcli.records.record import Record
-    from rockcli.studies.compare import ComparisonOutput
 
 
 @dataclass(frozen=True)
@@ -358,9 +358,9 @@ def shown_mechanism(inputs: Inputs, name: str | None) -> Any:
 
 def check_position(inputs: Inputs, edition: str, mechanism: str | None) -> Position:
     """Where the code check put the mechanism shown, by the check's own function
-    (studies.catalogue.mechanism_position of the catalogue's value)."""
-    from rockcli.studies.catalogue import mechanism_position
-    from rockcli.studies.kinematic import check_settings
+    (analyses.catalogue.mechanism_position of the catalogue's value)."""
+    from rockcli.analyses.catalogue import mechanism_position
+    from rockcli.analyses.kinematic import check_settings
 
     settings = check_settings(inputs.model, edition)
     return mechanism_position(shown_mechanism(inputs, mechanism), settings.building)
@@ -500,7 +500,7 @@ def kinematic_section(
 
 def catalogue_grid(kin: Mapping[str, Any], w: Words) -> Grid:
     """Every mechanism of the catalogue in one table: α0, M*, e*, a0*, d0*, ζ_E of DLS and
-    ULS, the governing one first (rockcli.studies.catalogue)."""
+    ULS, the governing one first (rockcli.analyses.catalogue)."""
     n = w.number
     rows = tuple(
         (w.note(m["name"]), n(m["hinge_height"], "{:.3g}"), n(m["alpha0"]), n(m["M_star"] / 1e3),
@@ -519,9 +519,9 @@ def mechanisms(inputs: Inputs, kin: Mapping[str, Any]) -> dict[int, Any]:
     """The check's mechanism on each side it looks at, keyed by side: the catalogue's
     mechanism shown (rockcli.model.catalogue: a vertical flexure's two blocks about the hinge
     the check found, not what the time history rocks; a block file's block with its loads
-    and thrusts), with the edition's sums (studies.catalogue.side_check)."""
-    from rockcli.studies.catalogue import side_check
-    from rockcli.studies.kinematic import check_settings
+    and thrusts), with the edition's sums (analyses.catalogue.side_check)."""
+    from rockcli.analyses.catalogue import side_check
+    from rockcli.analyses.kinematic import check_settings
 
     settings = check_settings(inputs.model, kin["edition"])
     sides = sorted({int(s) for s in kin.get("alpha0_by_side", {})} | {int(kin["side"])},
@@ -661,7 +661,7 @@ def rocking_section(
 
 
 def other_mechanisms(out: ComparisonOutput, w: Words) -> list[Block]:
-    """A wall's other mechanisms' time histories (rockcli.studies.compare.catalogue_comparisons):
+    """A wall's other mechanisms' time histories (rockcli.analyses.compare.catalogue_comparisons):
     each polarity's status, max θ/α, first uplift, overturning and impacts."""
     shown = out.kinematic.mechanism
     others = [(m.name, m.rocking) for m in out.mechanisms if m.name != shown and m.rocking]

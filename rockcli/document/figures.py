@@ -222,10 +222,10 @@ def floor_curve(
 ) -> tuple[np.ndarray, np.ndarray]:
     """(T [s], S [g]): the demand at the mechanism's height ``pos`` of one limit state's
     ground spectrum, by the edition's rule (:func:`floor_curve_2019`, :func:`floor_curve_2009`);
-    empty for a limit state the edition does not check (studies.kinematic.LIMIT_STATES)."""
+    empty for a limit state the edition does not check (analyses.kinematic.LIMIT_STATES)."""
     import numpy as np
 
-    from rockcli.studies.kinematic import LIMIT_STATES
+    from rockcli.analyses.kinematic import LIMIT_STATES
 
     if state not in LIMIT_STATES[edition]:
         return np.array([]), np.array([])

@@ -9,7 +9,7 @@ from datetime import UTC, datetime
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-from rockcli.studies.choices import Analyses, ComparisonChoices
+from rockcli.analyses.choices import Analyses, ComparisonChoices
 
 if TYPE_CHECKING:
     from rockcli.document.content import Document
@@ -77,10 +77,10 @@ def write_report(
     the record's and the grid's, each model's added).
 
     Every model is read and checked before any analysis runs."""
+    from rockcli.analyses.compare import check_code_demand
     from rockcli.document.build import Inputs, build_document
     from rockcli.document.walls import Part
     from rockcli.model.load import load_model
-    from rockcli.studies.compare import check_code_demand
 
     comparison = choices.comparison
     models = [load_model(path) for path in model_paths]
@@ -104,7 +104,7 @@ def wall_comparisons(
 ) -> tuple[Any, dict[str, Any], tuple[tuple[Any, dict[str, Any]], ...]]:
     """A model's comparison and its document, and each other mechanism's that the time
     history rocks (with ``shown`` "all"), each with its document."""
-    from rockcli.studies.compare import compare_model_output, mechanism_output
+    from rockcli.analyses.compare import compare_model_output, mechanism_output
 
     analyses = choices.analyses
     out = compare_model_output(
@@ -227,7 +227,7 @@ def suite_comparison(
     """`rock compare --suite`'s document of a loaded model and suite (the code check's
     ``code_demand``: the suite's target or mean), and each record's time history with its
     history kept (its `rock assess` document, the scaled record)."""
-    from rockcli.studies.assess import assess_model_output
+    from rockcli.analyses.assess import assess_model_output
     from rockcli.studies.suite_run.compare import compare_loaded
     from rockcli.terminal.assess import assessment_output_document
     from rockcli.terminal.suite import suite_comparison_document

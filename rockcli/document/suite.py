@@ -28,8 +28,8 @@ from rockcli.document.tolerance import other_suite_warnings, suite_paragraphs
 from rockcli.document.words import Words
 
 if TYPE_CHECKING:
+    from rockcli.analyses.assess import AssessmentOutput
     from rockcli.records.record import Record
-    from rockcli.studies.assess import AssessmentOutput
 
 
 @dataclass(frozen=True)

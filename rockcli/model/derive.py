@@ -141,7 +141,7 @@ def refuse_unrockable(model: Model) -> None:
     """InputError unless the time history can rock the model: a block, or a one-storey wall
     without a gable and without a masonry strength (the set-back hinge) whose mechanisms are
     none or include its overturning about the base (the rectangle the engine rocks; the
-    other mechanisms are checked by the code only, rockcli.studies.compare says so)."""
+    other mechanisms are checked by the code only, rockcli.analyses.compare says so)."""
     geometry = model.geometry
     storeys = geometry.storeys or ()
     rocked = not model.mechanisms or any(

@@ -72,7 +72,7 @@ def target_spectrum(spectrum: ElasticSpectrum, periods: np.ndarray) -> np.ndarra
 
 
 class FloorFilter(Protocol):
-    """The building's first mode at the block's height (rockcli.studies.floor.Floor)."""
+    """The building's first mode at the block's height (rockcli.analyses.floor.Floor)."""
 
     Z: float | None
     T1: float

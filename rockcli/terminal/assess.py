@@ -10,19 +10,16 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from rockcli.dynamics.result import Assessment, RockingRun
+from rockcli.dynamics.result import RockingRun
 from rockcli.dynamics.tolerance import sensitive
 from rockcli.mechanics import (
     Chain,
     Rocker,
     collapse_rotations,
-    linear_global_stiffness,
-    restrainer_coefficient,
     uplift_accelerations,
 )
 from rockcli.notes import Note
 from rockcli.records.record import Record
-from rockcli.studies.strength import restrainer_checks
 from rockcli.terminal.records import record_document, record_report
 from rockcli.terminal.table import Column, Report, Table, format_value, key_value
 from rockcli.terminal.tolerance import (
@@ -36,45 +33,9 @@ from rockcli.terminal.tolerance import (
 from rockcli.version import __version__
 
 if TYPE_CHECKING:
-    from rockcli.studies.assess import AssessmentOutput
+    from rockcli.analyses.assess import AssessmentOutput
 
 SCHEMA = 1
-
-
-def effectiveness(block: Rocker) -> list[dict[str, Any]]:
-    """The paper's §4.3 quick check of every restrainer, per side.
-
-    c_K = K r²/I0 against c_E = p² (c_K should exceed c_E by one or two orders of magnitude
-    to matter), and the sign of the linearized global stiffness on that side with all
-    restrainers acting (paper Eq. 16–18; mechanics.linear_global_stiffness).
-    """
-    if not block.restrainers or block.mass is None:
-        return []
-    rows = []
-    sides = (
-        ((block.free_side, "θ > 0" if block.free_side > 0 else "θ < 0"),)
-        if block.one_sided
-        else ((1, "θ > 0"), (-1, "θ < 0"))
-    )
-    for side, label in sides:
-        stiff = linear_global_stiffness(block, side)
-        for sp in block.restrainers:
-            k, r, _ = sp.side(side)
-            if sp.path:  # on a chain's upper block: the radius of a point with its arm at rest
-                r = sp.arm_at_rest(side)
-            c_k = restrainer_coefficient(k, r, block.inertia)
-            rows.append(
-                {
-                    "name": sp.name,
-                    "side": label,
-                    "K": k,
-                    "c_K": c_k,
-                    "c_E": block.p2,
-                    "ratio": c_k / block.p2,
-                    "global_stiffness": "positive" if stiff > 0 else "negative",
-                }
-            )
-    return rows
 
 
 def check_table_row(c: dict[str, Any]) -> dict[str, Any]:
@@ -133,7 +94,7 @@ def strength_warnings(checks: list[dict[str, Any]]) -> list[Note]:
 
 
 def strength_warning(c: dict[str, Any]) -> Note:
-    """The warning of one failed check (studies.strength.restrainer_checks row): its force,
+    """The warning of one failed check (analyses.strength.restrainer_checks row): its force,
     its ductility or its anchorage."""
     duct, anchor = c["ductility"], c["anchor"] or {}
     if c["utilisation"] is None and c["ruptured"]:
@@ -341,14 +302,14 @@ def impact_rule(block: Rocker) -> str:
 def assessment_document(
     model: dict[str, Any],
     record: Record,
-    block: Rocker,
-    result: Assessment,
-    warnings: tuple[str, ...] = (),
+    out: AssessmentOutput,
 ) -> dict[str, Any]:
-    """The whole `rock assess --format json` document (schema 1); ``warnings``: the inputs'
-    (model and record magnitudes that look like unit slips), before the runs' own."""
+    """The whole `rock assess --format json` document (schema 1) of an assess workflow's
+    results; its warnings: the inputs' (model and record magnitudes that look like unit
+    slips), before the runs' own."""
+    result, warnings = out.result, out.warnings
     first = result.runs[0]
-    checks = restrainer_checks(block, result)
+    checks = list(out.restrainer_checks)
     runs = [run_document(r) for r in result.runs]
     return {
         "schema": SCHEMA,
@@ -364,7 +325,7 @@ def assessment_document(
         },
         "runs": runs,
         "restrainer_checks": checks,
-        "effectiveness": effectiveness(block),
+        "effectiveness": list(out.effectiveness),
         "verdict": str(result.verdict),
         "max_ratio": result.max_ratio,
         # max_ratio: max |θ|/θc with θc the collapse rotation of the side of θ
@@ -383,7 +344,7 @@ def assessment_document(
 def assessment_output_document(out: AssessmentOutput, record: Record) -> dict[str, Any]:
     """The `rock assess --format json` document of an assess workflow's results."""
     info = model_document(out.name, out.kind, out.block, out.e_rule)
-    doc = assessment_document(info, record, out.block, out.result, out.warnings)
+    doc = assessment_document(info, record, out)
     doc["record"] = {**doc["record"], **input_document(out)}
     if out.mechanism is not None:
         doc["mechanism"] = {"name": out.mechanism[0], "type": out.mechanism[1]}

@@ -14,7 +14,7 @@ from rockcli.terminal.tolerance import verdict_caveat
 from rockcli.version import __version__
 
 if TYPE_CHECKING:
-    from rockcli.studies.compare import ComparisonOutput
+    from rockcli.analyses.compare import ComparisonOutput
 
 SCHEMA = 1
 #: The warning and the verdict's tail when the code check did not see the record

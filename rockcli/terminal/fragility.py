@@ -14,8 +14,8 @@ from typing import Any
 
 import numpy as np
 
-from rockcli.fragility.data import FragilityData
-from rockcli.fragility.fit import CONFIDENCE, Fit, band_method
+from rockcli.studies.fragility.data import FragilityData
+from rockcli.studies.fragility.fit import CONFIDENCE, Fit, band_method
 from rockcli.terminal.table import Column, Report, Table, key_value
 from rockcli.version import __version__
 

@@ -67,7 +67,7 @@ def kinematic_document(
 
 def chosen_result(result: KinematicResult, mechanism: str | None) -> KinematicResult:
     """The result of the mechanism named (InputError naming the catalogue when unknown)."""
-    from rockcli.studies.catalogue import named
+    from rockcli.analyses.catalogue import named
 
     return result if mechanism is None else named(result.catalogue, mechanism).result
 

@@ -20,7 +20,7 @@ import io
 from collections.abc import Sequence
 from typing import Any
 
-from rockcli.fragility.spectrum import Scan
+from rockcli.studies.fragility.spectrum import Scan
 from rockcli.terminal.table import Column, Report, Table, key_value
 from rockcli.version import __version__
 

@@ -38,8 +38,8 @@ def retrofit_document(
 ) -> dict[str, Any]:
     """The `rock retrofit --format json` document: every candidate, the choice and why, and
     the warnings on the model and the record (magnitudes that look like unit slips)."""
+    from rockcli.analyses.floor import model_floor
     from rockcli.model.plausible import model_warnings
-    from rockcli.studies.floor import model_floor
 
     floor = model_floor(model) is not None and not ground
     if rows and "input" in rows[0]:  # a wall's mechanism at height rocks on its floor

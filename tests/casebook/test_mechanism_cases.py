@@ -13,13 +13,13 @@ from pathlib import Path
 
 from click.testing import CliRunner
 
+from rockcli.analyses.kinematic import kinematic_model
 from rockcli.casebook.code import catalogue_entry, kinematic_quantity
 from rockcli.casebook.load import load_case_file
 from rockcli.casebook.schema import KinematicInput
 from rockcli.cli.main import cli
 from rockcli.model.load import load_model
 from rockcli.model.wall_tables import MechanismKind
-from rockcli.studies.kinematic import kinematic_model
 from tests.casebook.conftest import CASEBOOK, write_casebook
 
 CASE_FILE = CASEBOOK / "mechanisms.toml"

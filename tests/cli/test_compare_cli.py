@@ -8,10 +8,10 @@ from pathlib import Path
 import pytest
 from click.testing import CliRunner
 
+from rockcli.analyses.compare import Classification, classify, code_sets_demand
 from rockcli.cli.compare import CLASSIFICATIONS
 from rockcli.cli.main import cli
 from rockcli.model.load import load_model
-from rockcli.studies.compare import Classification, classify, code_sets_demand
 from rockcli.terminal.compare import DIFFERENT_EARTHQUAKES
 from tests.cli.conftest import PULSES, ROOT
 
@@ -161,8 +161,8 @@ def test_the_old_record_demand_flag_is_refused() -> None:
 
 
 def test_the_code_demand_choices_are_the_studies() -> None:
+    from rockcli.analyses.compare import CodeDemand
     from rockcli.cli.compare import RECORD_DEMANDS, SUITE_DEMANDS
-    from rockcli.studies.compare import CodeDemand
     from rockcli.studies.suite_run.compare import SuiteCodeDemand
 
     assert RECORD_DEMANDS == tuple(c.value for c in CodeDemand)

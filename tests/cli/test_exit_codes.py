@@ -26,7 +26,7 @@ def _raise(exc: BaseException):
 
 def test_unexpected_exception_is_one_line_and_exit_3(monkeypatch: pytest.MonkeyPatch) -> None:
     monkeypatch.delenv("ROCK_DEBUG", raising=False)
-    monkeypatch.setattr("rockcli.studies.kinematic.run_kinematic", _raise(ZeroDivisionError("x")))
+    monkeypatch.setattr("rockcli.analyses.kinematic.run_kinematic", _raise(ZeroDivisionError("x")))
     result = CliRunner().invoke(cli, ["kinematic", ALTAR])
     assert result.exit_code == EXIT_INTERNAL == 3
     lines = result.stderr.strip().splitlines()
@@ -38,7 +38,7 @@ def test_unexpected_exception_is_one_line_and_exit_3(monkeypatch: pytest.MonkeyP
 
 def test_rock_debug_shows_the_traceback(monkeypatch: pytest.MonkeyPatch) -> None:
     monkeypatch.setenv("ROCK_DEBUG", "1")
-    monkeypatch.setattr("rockcli.studies.kinematic.run_kinematic", _raise(ZeroDivisionError("x")))
+    monkeypatch.setattr("rockcli.analyses.kinematic.run_kinematic", _raise(ZeroDivisionError("x")))
     result = CliRunner().invoke(cli, ["kinematic", ALTAR])
     assert result.exit_code == EXIT_INTERNAL
     assert "Traceback" in result.stderr and "ZeroDivisionError" in result.stderr
@@ -46,7 +46,7 @@ def test_rock_debug_shows_the_traceback(monkeypatch: pytest.MonkeyPatch) -> None
 
 
 def test_ctrl_c_says_interrupted_and_exits_130(monkeypatch: pytest.MonkeyPatch) -> None:
-    monkeypatch.setattr("rockcli.studies.kinematic.run_kinematic", _raise(KeyboardInterrupt()))
+    monkeypatch.setattr("rockcli.analyses.kinematic.run_kinematic", _raise(KeyboardInterrupt()))
     result = CliRunner().invoke(cli, ["kinematic", ALTAR])
     assert result.exit_code == EXIT_INTERRUPTED == 130
     assert result.stderr.strip() == "interrupted"

@@ -23,8 +23,8 @@ from pathlib import Path
 
 import pytest
 
+from rockcli.analyses.kinematic import kinematic_model
 from rockcli.model.load import load_model
-from rockcli.studies.kinematic import kinematic_model
 from tests.demand import SOIL_B
 
 WALL = (

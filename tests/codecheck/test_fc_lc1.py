@@ -15,9 +15,9 @@ from pathlib import Path
 import pytest
 from click.testing import CliRunner
 
+from rockcli.analyses.kinematic import kinematic_model
 from rockcli.cli.main import cli
 from rockcli.model.load import load_model
-from rockcli.studies.kinematic import kinematic_model
 from tests.demand import SOIL_B
 
 WALL = (

@@ -1,5 +1,5 @@
 """Each restrainer's action in the kinematic check and its verification against its strength
-(rockcli.codecheck.restrainer_check; studies.capacity_check.governing_demand).
+(rockcli.codecheck.restrainer_check; analyses.capacity_check.governing_demand).
 
 Sources: NTC 2018 §4.2.4.1.2 (the member's design strength is the limit); the spring's force
 P0 + K·u with u = r[sin φ − sin(φ − θ)] (mechanics.spring_elongation) at the rotation of the
@@ -13,6 +13,7 @@ from dataclasses import replace
 
 import pytest
 
+from rockcli.analyses.capacity_check import governing_demand
 from rockcli.codecheck import rules2019
 from rockcli.codecheck.demand import LimitStateDemand
 from rockcli.codecheck.kinematic import Mechanism, capacity, rotation_at
@@ -31,7 +32,6 @@ from rockcli.codecheck.result import Check, Location, Method
 from rockcli.codecheck.spectra import ElasticSpectrum, Soil, Topography
 from rockcli.mechanics import Block, Restrainer, point_polar, spring_elongation
 from rockcli.mechanisms.block import BlockSide
-from rockcli.studies.capacity_check import governing_demand
 
 G = 9.81
 B, H, W = 0.3, 4.0, 300e3

@@ -11,6 +11,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+from rockcli.analyses.kinematic import check_settings, given_demands, kinematic_model
 from rockcli.document.build import Inputs, check_position, demand_section
 from rockcli.document.figures import (
     SPECTRUM_PERIODS,
@@ -21,7 +22,6 @@ from rockcli.document.words import Words
 from rockcli.model.catalogue import catalogue
 from rockcli.model.load import load_model
 from rockcli.records.files import read_record
-from rockcli.studies.kinematic import check_settings, given_demands, kinematic_model
 
 pytest.importorskip("matplotlib", reason="the report extra (matplotlib) is not installed")
 
@@ -138,7 +138,7 @@ def test_the_2009_demand_at_height_is_the_circolare_617s() -> None:
 
 def demand_figures(model_path: Path, ground: bool = False) -> list:
     """The figures of the report's demand section of the model under the pulse."""
-    from rockcli.studies.compare import compare_model_output
+    from rockcli.analyses.compare import compare_model_output
     from rockcli.terminal.compare import comparison_output_document
 
     model, record = load_model(model_path), read_record(PULSE)

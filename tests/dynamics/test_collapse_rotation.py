@@ -14,6 +14,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+from rockcli.analyses.rocked import mechanism_block, named_spec
 from rockcli.codecheck.kinematic import Mechanism
 from rockcli.dynamics.settings import SolverSettings
 from rockcli.dynamics.simulate import assess
@@ -21,7 +22,6 @@ from rockcli.mechanics import Block, Load, Thrust, collapse_rotations
 from rockcli.mechanisms.catalogue import build
 from rockcli.model.derive_wall import to_wall
 from rockcli.model.load import load_model
-from rockcli.studies.rocked import mechanism_block, named_spec
 
 ROOT = Path(__file__).resolve().parents[2]
 FACADE = ROOT / "examples" / "two-storey-facade.toml"

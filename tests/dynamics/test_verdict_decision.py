@@ -1,5 +1,5 @@
 """A comparison's rocking verdict is decided only when a second integration agrees
-(rockcli.studies.compare.decided_collapse; docs/interpretations.md, "A verdict two
+(rockcli.analyses.compare.decided_collapse; docs/interpretations.md, "A verdict two
 integrations disagree on").
 
 The rule: the rocking verdict (overturning in either polarity) is not decided, and the
@@ -21,16 +21,16 @@ from pathlib import Path
 
 import pytest
 
-from rockcli.dynamics.result import Assessment, RockingRun, RunStatus, ToleranceCheck
-from rockcli.model.load import load_model
-from rockcli.records.pulses import ricker
-from rockcli.studies import compare
-from rockcli.studies.compare import (
+from rockcli.analyses import compare
+from rockcli.analyses.compare import (
     Classification,
     classify,
     compare_model_output,
     decided_collapse,
 )
+from rockcli.dynamics.result import Assessment, RockingRun, RunStatus, ToleranceCheck
+from rockcli.model.load import load_model
+from rockcli.records.pulses import ricker
 from rockcli.terminal.compare import comparison_output_document, comparison_warnings
 
 ROOT = Path(__file__).resolve().parents[2]

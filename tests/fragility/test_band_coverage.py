@@ -1,4 +1,4 @@
-"""The 95 % bands of rockcli/fragility/fit.py hold the true fragility in 95 % of data sets.
+"""The 95 % bands of rockcli/studies/fragility/fit.py hold the true fragility in 95 % of data sets.
 
 Monte Carlo: data sets drawn from a known lognormal fragility, θ = 0.4 and β = 0.5, each
 fitted with its band, and the share of the bands that hold the true P at three intensities:
@@ -20,7 +20,7 @@ from __future__ import annotations
 import numpy as np
 from scipy import special
 
-from rockcli.fragility.fit import ida_band, ida_censored_band, msa_band
+from rockcli.studies.fragility.fit import ida_band, ida_censored_band, msa_band
 
 THETA, BETA = 0.4, 0.5
 #: The intensities checked, in units of β from the median, and the true P there.

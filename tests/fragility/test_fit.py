@@ -1,4 +1,4 @@
-"""The fragility fits (rockcli/fragility/fit.py) against independent computations.
+"""The fragility fits (rockcli/studies/fragility/fit.py) against independent computations.
 
 - IDA: θ and β against numpy on the logs of the collapse intensities, and against
   scipy.stats.lognorm.fit with its location at 0 (the maximum likelihood, divisor n); with
@@ -15,7 +15,7 @@ import numpy as np
 import pytest
 from scipy import stats
 
-from rockcli.fragility.fit import BETA_DDOF, ida_band, ida_fit, msa_band, msa_fit
+from rockcli.studies.fragility.fit import BETA_DDOF, ida_band, ida_fit, msa_band, msa_fit
 
 #: Collapse intensities of ten records [g] (hand-made).
 COLLAPSES = np.array([0.21, 0.34, 0.29, 0.45, 0.18, 0.52, 0.39, 0.27, 0.61, 0.33])
@@ -116,7 +116,7 @@ def test_censored_ida_is_the_censored_maximum_likelihood() -> None:
     """Against a brute-force grid (within two steps; its likelihood at least the grid's best)
     and against scipy's own censored fit, stats.lognorm.fit(CensoredData, floc=0), whose
     optimiser stops earlier (agreement 1e-3; rock's likelihood at least scipy's)."""
-    from rockcli.fragility.fit import ida_censored_fit
+    from rockcli.studies.fragility.fit import ida_censored_fit
 
     fit = ida_censored_fit(COLLAPSES, CENSORED)
     theta = np.linspace(0.3, 0.7, 801)  # steps of 5e-4 g
@@ -138,13 +138,13 @@ def test_censored_ida_is_the_censored_maximum_likelihood() -> None:
 
 
 def test_censored_ida_without_censored_records_is_the_closed_form() -> None:
-    from rockcli.fragility.fit import ida_censored_fit
+    from rockcli.studies.fragility.fit import ida_censored_fit
 
     assert ida_censored_fit(COLLAPSES, np.array([])) == ida_fit(COLLAPSES)
 
 
 def test_the_censored_band_holds_its_fit_and_repeats_with_its_seed() -> None:
-    from rockcli.fragility.fit import ida_censored_band, ida_censored_fit
+    from rockcli.studies.fragility.fit import ida_censored_band, ida_censored_fit
 
     at = np.array([0.2, 0.4, 0.8])
     band = ida_censored_band(COLLAPSES, CENSORED, at, samples=200)
@@ -198,7 +198,7 @@ def test_the_censored_refits_are_the_censored_maximum_likelihood_of_each_resampl
     likelihood at least scipy's best − 1e-9, θ and β within 1e-5 (the search's)."""
     from scipy import optimize
 
-    from rockcli.fragility.fit import censored_refits, ida_censored_fit
+    from rockcli.studies.fragility.fit import censored_refits, ida_censored_fit
 
     whole = ida_censored_fit(COLLAPSES, CENSORED)
     every = np.concatenate([COLLAPSES, CENSORED])

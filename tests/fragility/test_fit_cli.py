@@ -16,8 +16,8 @@ from hypothesis import strategies as st
 
 from rockcli.cli.main import cli
 from rockcli.errors import InputError
-from rockcli.fragility.data import read_data
-from rockcli.fragility.fit import ida_fit, msa_fit
+from rockcli.studies.fragility.data import read_data
+from rockcli.studies.fragility.fit import ida_fit, msa_fit
 
 ROOT = Path(__file__).resolve().parents[2]
 MSA = ROOT / "examples" / "fragility" / "msa.csv"
@@ -112,7 +112,7 @@ def test_the_reader_reads_or_refuses_any_text(text: str, method: str) -> None:
 def test_ida_with_censored_records_is_the_censored_fit(tmp_path: Path) -> None:
     """An IDA data set with a censored column: the fit is fit.ida_censored_fit's (itself
     tested against scipy's censored fit); the document counts the censored records."""
-    from rockcli.fragility.fit import ida_censored_fit
+    from rockcli.studies.fragility.fit import ida_censored_fit
 
     data = tmp_path / "ida.csv"
     data.write_text("im,censored\n0.21,0\n0.34,0\n0.29,false\n0.45,0\n0.7,1\n0.7,true\n",

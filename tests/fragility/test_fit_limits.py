@@ -4,7 +4,8 @@ in modest memory, never an internal error (issue 34: F3, F6, F7, F10, F16, F18, 
 What the fault campaign found, each a test here:
 
 - F3: three stripes of 7 runs (1, 3, 4 exceedances) stopped with exit 3, an OverflowError of
-  ``math.exp`` in the MSA search. The fits now work in log space (rockcli.fragility.likelihood).
+  ``math.exp`` in the MSA search. The fits now work in log space
+  (rockcli.studies.fragility.likelihood).
 - F6: a 250 000-row CSV under the 1 MiB input limit took 1.9 GiB (the censored bootstrap's
   resamples × records, the band's intensities × stripes). Now at most ROW_LIMIT rows, refused
   in one line, and the largest file fits under a 1 GiB address space.
@@ -40,7 +41,7 @@ from hypothesis import strategies as st
 from scipy import optimize, stats
 
 from rockcli.cli.main import cli
-from rockcli.fragility.data import IM_MAX, ROW_LIMIT, RUNS_MAX
+from rockcli.studies.fragility.data import IM_MAX, ROW_LIMIT, RUNS_MAX
 from tests.limited import run_rock
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -277,7 +278,7 @@ def test_the_band_points_are_the_datas_own_and_bounded() -> None:
     """Every distinct intensity up to BAND_POINTS (increasing, each once); beyond, that many
     spread in rank with both ends; for MSA, at most BAND_WORK / levels, at least
     MIN_BAND_POINTS."""
-    from rockcli.fragility.fit import BAND_POINTS, BAND_WORK, MIN_BAND_POINTS, band_points
+    from rockcli.studies.fragility.fit import BAND_POINTS, BAND_WORK, MIN_BAND_POINTS, band_points
 
     few = np.array([0.4, 0.2, 0.4, 0.1])
     assert band_points(few).tolist() == [0.1, 0.2, 0.4]

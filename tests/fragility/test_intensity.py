@@ -1,4 +1,4 @@
-"""Intensity measures (rockcli/fragility/intensity.py) against closed forms.
+"""Intensity measures (rockcli/studies/fragility/intensity.py) against closed forms.
 
 A sine a(t) = A·sin(ωt) [g] over whole periods: PGA = A (a sample on each crest), and the
 velocity from rest v(t) = A·g·(1 − cos ωt)/ω, so PGV = 2·A·g/ω; the trapezoidal rule's error
@@ -12,7 +12,7 @@ import math
 import numpy as np
 import pytest
 
-from rockcli.fragility.intensity import ground_velocity, pga, pga_ratio, pgv, pgv_ratio, sa
+from rockcli.studies.fragility.intensity import ground_velocity, pga, pga_ratio, pgv, pgv_ratio, sa
 from rockcli.units import DEFAULT_GRAVITY as G
 
 A, PERIOD = 0.3, 2.0

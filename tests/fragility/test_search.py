@@ -1,4 +1,4 @@
-"""The first-exceedance search (rockcli/fragility/search.py) on responses whose thresholds
+"""The first-exceedance search (rockcli/studies/fragility/search.py) on responses whose thresholds
 are known by construction: a monotonic response, and a non-monotonic one where a bisection
 over the whole range converges to the wrong boundary."""
 
@@ -8,7 +8,7 @@ import math
 
 import pytest
 
-from rockcli.fragility.search import first_exceedances
+from rockcli.studies.fragility.search import first_exceedances
 
 
 def test_a_monotonic_response_is_found_to_the_tolerance() -> None:

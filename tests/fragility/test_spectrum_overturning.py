@@ -1,7 +1,8 @@
-"""The overturning spectrum (rockcli/fragility/spectrum.py, rockcli/fragility/overturning.py,
-`rock spectrum overturning`): size independence, the casebook's published pulse thresholds,
-a lowest overturn below a safe band that a bisection misses, the record spectrum against the
-pulse spectrum, the JSON contract, bad input and a run on two workers.
+"""The overturning spectrum (rockcli/studies/fragility/spectrum.py,
+rockcli/studies/fragility/overturning.py, `rock spectrum overturning`): size independence, the
+casebook's published pulse thresholds, a lowest overturn below a safe band that a bisection
+misses, the record spectrum against the pulse spectrum, the JSON contract, bad input and a run
+on two workers.
 
 The casebook's values (examples/validation/thresholds.toml) are the overturning WITHOUT impact
 ("mode 2", Zhang & Makris 2001; Makris & Konstantinidis 2003): the lowest overturn can lie
@@ -18,7 +19,7 @@ import pytest
 from click.testing import CliRunner
 
 from rockcli.cli.main import cli
-from rockcli.fragility.overturning import (
+from rockcli.studies.fragility.overturning import (
     PulseCase,
     RecordCase,
     Target,
@@ -26,7 +27,7 @@ from rockcli.fragility.overturning import (
     record_row,
     rocked_block,
 )
-from rockcli.fragility.spectrum import Scan, pulse_period
+from rockcli.studies.fragility.spectrum import Scan, pulse_period
 
 ROOT = Path(__file__).resolve().parents[2]
 CASES = {
@@ -105,11 +106,11 @@ def test_the_lowest_overturn_lies_below_a_safe_band_that_a_bisection_misses() ->
     # 0.01 scan, docs/spectra.md). A bisection between the scan's ends (1 survives, 20
     # overturns) converges to the band's upper edge, the casebook's value; the search finds
     # the lowest overturn.
+    from rockcli.analyses.assess import rocked_input, settings_from
     from rockcli.dynamics.settings import Engine
-    from rockcli.fragility.spectrum import OVERTURN, overturn_response, sampled_pulse
     from rockcli.model.derive import solver_options
     from rockcli.model.load import validate_model
-    from rockcli.studies.assess import rocked_input, settings_from
+    from rockcli.studies.fragility.spectrum import OVERTURN, overturn_response, sampled_pulse
 
     target, ratio, mode2 = casebook(ONE_COSINE)
     model = validate_model(target.table)
@@ -139,8 +140,8 @@ def test_a_pulse_read_as_a_record_gives_the_pulse_spectrum() -> None:
     # The record spectrum of a one-sine record is the pulse spectrum at ωp/p = 2π/(Tp·p):
     # a record sampled as the pulse is (400 per period) gives the same threshold, to the
     # bisection's 1e-5 and the one-sine's end (zero: no step to sharpen).
-    from rockcli.fragility.spectrum import SAMPLES_PER_PERIOD
     from rockcli.records.pulses import make_pulse
+    from rockcli.studies.fragility.spectrum import SAMPLES_PER_PERIOD
 
     target = block(1.0, 0.2)
     pulse = pulse_row(target, FINE, PulseCase(0, "one-sine", 3.0))
@@ -280,7 +281,7 @@ def test_a_models_block_at_each_size_is_the_free_block_of_its_alpha(tmp_path: Pa
 def test_floor_periods_change_the_floor_motion() -> None:
     """The altar at height (examples/altar.toml) on the Ricker record in buildings of three
     periods: x is T1, one threshold per period, and the period matters (the floor motion is
-    the building's filter of the ground's: rockcli.studies.floor)."""
+    the building's filter of the ground's: rockcli.analyses.floor)."""
     altar = str(ROOT / "examples" / "altar.toml")
     code, out, err = rock("--model", altar, "--record", RICKER, "--floor-periods", "0.3,1.09,2",
                           "--format", "json")  # fmt: skip

@@ -24,8 +24,8 @@ from hypothesis import strategies as st
 
 from rockcli.cli.main import cli
 from rockcli.errors import InputError
-from rockcli.fragility.fit import ida_fit
-from rockcli.fragility.study import load_fragility
+from rockcli.studies.fragility.fit import ida_fit
+from rockcli.studies.fragility.study import load_fragility
 
 ALPHA, R, G = 0.2, 3.0, 9.81
 P = math.sqrt(3.0 * G / (4.0 * R))  # Housner's p of a rectangular block, [rad/s]
@@ -263,7 +263,7 @@ def test_msa_needs_increasing_levels(folder: Path, tmp_path: Path) -> None:
 
 
 def test_ida_fit_matches_scipy_on_the_study_data(folder: Path, tmp_path: Path) -> None:
-    """The fit the study reports is rockcli.fragility.fit's (tested against scipy there)."""
+    """The fit the study reports is rockcli.studies.fragility.fit's (tested against scipy there)."""
     code, out, _ = run(folder, study_text(), "--out", str(tmp_path / "f"))
     doc = json.loads(out)
     over = doc["damage_states"][1]
@@ -306,10 +306,10 @@ def test_reader_never_fails_otherwise(folder: Path, data: dict[str, object]) -> 
 
 
 def test_sa_at_the_blocks_own_period(folder: Path, tmp_path: Path) -> None:
-    """Sa(2π/p): the record's 5 %-damped Sa at the rocked block's 2π/p (rockcli.fragility
+    """Sa(2π/p): the record's 5 %-damped Sa at the rocked block's 2π/p (rockcli.studies.fragility
     .intensity, itself tested against closed forms), computed here independently of the study."""
-    from rockcli.fragility.intensity import sa
     from rockcli.records.files import read_record
+    from rockcli.studies.fragility.intensity import sa
 
     text = study_text(measure="sa").replace(
         'measure = "sa"', 'measure = "sa"\nperiod = "mechanism"'
@@ -454,8 +454,8 @@ def test_records_that_do_not_reach_a_state_are_censored(folder: Path, tmp_path: 
     """A scan that ends at 0.45 g: the t1 = 0.5 s pulse overturns at 0.368 g, the 0.32 s one
     (0.507 g) is censored at the scan's last intensity, 0.45 g; with a third record (t1 =
     0.4 s, 0.430 g) the fit is the censored maximum likelihood of the two collapses and one
-    censored record (rockcli.fragility.fit.ida_censored_fit, tested against scipy)."""
-    from rockcli.fragility.fit import ida_censored_fit
+    censored record (rockcli.studies.fragility.fit.ida_censored_fit, tested against scipy)."""
+    from rockcli.studies.fragility.fit import ida_censored_fit
 
     args = ["record", "pulse", "rectangular", "--amplitude", "1", "--period", "0.4", "--dt",
             str(DT), "-o", str(folder / "rect-0.4.txt"), "--force"]  # fmt: skip

@@ -1,8 +1,8 @@
 """Issue 34, finding F16: a fragility study's intensities have a physical bound and its numbers
 a strict type (a string or a boolean is never read as a number): one line, exit 2.
 
-The bounds are rockcli.fragility.study.MAX_INTENSITY, about twice the largest intensities ever
-recorded (PGA ≈ 4 g, PGV ≈ 3 m/s): PGA ≤ 10 g, PGV ≤ 10 m/s, Sa ≤ 30 g, the ratios ≤ 1000.
+The bounds are rockcli.studies.fragility.study.MAX_INTENSITY, about twice the largest intensities
+ever recorded (PGA ≈ 4 g, PGV ≈ 3 m/s): PGA ≤ 10 g, PGV ≤ 10 m/s, Sa ≤ 30 g, the ratios ≤ 1000.
 """
 
 from __future__ import annotations
@@ -79,7 +79,7 @@ def test_msa_levels_are_strict_and_bounded(
 def test_the_bound_itself_is_accepted(tmp_path: Path) -> None:
     """10 g is the last PGA allowed: the study is read (it runs; the pulses' runs at that
     intensity overturn)."""
-    from rockcli.fragility.study import load_fragility
+    from rockcli.studies.fragility.study import load_fragility
 
     study = make_study(tmp_path / "s")
     text = study.read_text(encoding="utf-8").replace("last = 1.0", "last = 10")

@@ -32,6 +32,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+from rockcli.analyses.rocked import mechanism_block, named_spec
 from rockcli.codecheck.kinematic import Mechanism, alpha0
 from rockcli.dynamics.settings import Engine, SolverSettings
 from rockcli.dynamics.simulate import simulate
@@ -43,7 +44,6 @@ from rockcli.mechanisms.table import tabulate, terms
 from rockcli.model.derive import derive_block
 from rockcli.model.derive_wall import to_wall
 from rockcli.model.load import load_model
-from rockcli.studies.rocked import mechanism_block, named_spec
 
 ROOT = Path(__file__).resolve().parents[2]
 FLEXURE = ROOT / "examples" / "validation" / "models" / "mech-flexure.toml"

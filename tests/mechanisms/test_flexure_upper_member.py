@@ -24,6 +24,7 @@ import numpy as np
 import pytest
 from click.testing import CliRunner
 
+from rockcli.analyses.rocked import mechanism_block, named_spec
 from rockcli.cli.main import cli
 from rockcli.codecheck.kinematic import Mechanism, alpha0
 from rockcli.dynamics.settings import Engine, SolverSettings
@@ -33,7 +34,6 @@ from rockcli.mechanisms import motion
 from rockcli.mechanisms.catalogue import build
 from rockcli.model.derive_wall import to_wall
 from rockcli.model.load import load_model
-from rockcli.studies.rocked import mechanism_block, named_spec
 
 ROOT = Path(__file__).resolve().parents[2]
 #: The wall `rock compare` refused: its one mechanism a flexure, a tie-rod on its upper block.

@@ -31,6 +31,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+from rockcli.analyses.rocked import mechanism_block
 from rockcli.dynamics.settings import SolverSettings
 from rockcli.dynamics.simulate import simulate
 from rockcli.errors import InputError
@@ -40,7 +41,6 @@ from rockcli.model.derive import to_block
 from rockcli.model.derive_wall import to_wall
 from rockcli.model.load import load_model
 from rockcli.model.schema import RestitutionModel
-from rockcli.studies.rocked import mechanism_block
 
 ROOT = Path(__file__).resolve().parents[2]
 FACADE = ROOT / "examples" / "two-storey-facade.toml"

@@ -1,7 +1,7 @@
 """The optimal hinge of a vertical flexure (rockcli.mechanisms.catalogue.optimal_hinge).
 
 The function minimised is the code check's: the smaller α0 of sides 1 and −1 of the flexure
-at each hinge height (rockcli.studies.catalogue.resolved). Each case is checked against a
+at each hinge height (rockcli.analyses.catalogue.resolved). Each case is checked against a
 brute-force scan of 2001 heights over catalogue.flexure_range (the optimum's α0 no more than
 the scan's least + 1e-9 relative, its height within one scan step of the scan's best) and
 against the closed form of the two-block chain.

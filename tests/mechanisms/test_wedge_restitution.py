@@ -30,11 +30,11 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+from rockcli.analyses.rocked import mechanism_block
 from rockcli.dynamics.settings import SolverSettings
 from rockcli.dynamics.simulate import simulate
 from rockcli.model.derive_wall import to_wall
 from rockcli.model.load import load_model
-from rockcli.studies.rocked import mechanism_block
 from tests.demand import SOIL_B
 
 G = 9.81

@@ -2,7 +2,7 @@
 
 Bounded hypothesis fuzz of the wall reader and the catalogue (issue 21): storeys, a gable,
 return walls, f_m, loads, thrusts, a tie and every mechanism type with random keys, validated
-and checked by `rock kinematic`'s path (rockcli.studies.kinematic.kinematic_model). Every
+and checked by `rock kinematic`'s path (rockcli.analyses.kinematic.kinematic_model). Every
 model either gives a catalogue whose numbers are finite, governing first, or is refused with
 an InputError naming a key — the two outcomes a user may see.
 """
@@ -15,10 +15,10 @@ from typing import Any
 from hypothesis import HealthCheck, example, given, settings
 from hypothesis import strategies as st
 
+from rockcli.analyses.catalogue import governing_order
+from rockcli.analyses.kinematic import kinematic_model
 from rockcli.errors import InputError
 from rockcli.model.load import validate_model
-from rockcli.studies.catalogue import governing_order
-from rockcli.studies.kinematic import kinematic_model
 
 DEMAND = {
     "edition": "2019",

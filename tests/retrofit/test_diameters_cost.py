@@ -20,13 +20,13 @@ from typing import Any
 import pytest
 from click.testing import CliRunner
 
+from rockcli.analyses.choices import Analyses
 from rockcli.cli.main import cli
 from rockcli.codecheck import response
 from rockcli.codecheck.response import RecordSpectrum
 from rockcli.errors import InputError
 from rockcli.model.load import read_toml, validate_model
 from rockcli.records import files
-from rockcli.studies.choices import Analyses
 from rockcli.studies.parallel.executor import local_executor
 from rockcli.studies.retrofit import run as retrofit_run
 from rockcli.studies.retrofit.candidates import MAX_DIAMETERS, make_plan, parse_diameters

@@ -11,10 +11,10 @@ from typing import Any
 import pytest
 from click.testing import CliRunner
 
+from rockcli.analyses.choices import Analyses
 from rockcli.cli.main import cli
 from rockcli.model.load import read_toml, validate_model
 from rockcli.records import files
-from rockcli.studies.choices import Analyses
 from rockcli.studies.parallel.executor import local_executor
 from rockcli.studies.retrofit.candidates import make_plan
 from rockcli.studies.retrofit.choose import failures
@@ -232,8 +232,8 @@ def test_non_finite_run_exits_3_after_the_report(monkeypatch: pytest.MonkeyPatch
 def test_broken_runs_lists_only_non_finite_runs() -> None:
     import dataclasses
 
+    from rockcli.analyses.assess import assess_model_output
     from rockcli.dynamics.result import Assessment, RunStatus
-    from rockcli.studies.assess import assess_model_output
     from rockcli.studies.retrofit.run import broken_runs
 
     result = assess_model_output(validate_model(read_toml(str(FACADE))), files.read_record(

@@ -11,10 +11,10 @@ import numpy as np
 import pytest
 from click.testing import CliRunner
 
+from rockcli.analyses.compare import classify
 from rockcli.cli.main import cli
 from rockcli.codecheck.demand import MeanSpectrum
 from rockcli.codecheck.spectra import ElasticSpectrum
-from rockcli.studies.compare import classify
 from tests.suites.conftest import PULSES, ROOT, newmark_peak, pulse_copies, write_suite
 
 WALL = ROOT / "examples" / "wall.toml"

@@ -6,10 +6,10 @@ import tomllib
 
 import pytest
 
+from rockcli.analyses.assess import assess_model_output
 from rockcli.model.load import validate_model
 from rockcli.records.files import read_record
 from rockcli.records.transform import scale
-from rockcli.studies.assess import assess_model_output
 from rockcli.studies.parallel.executor import local_executor
 from rockcli.studies.suite_run.rule import suite_measure
 from rockcli.studies.suite_run.run import SuiteRecord, outcomes, run_suite

@@ -408,9 +408,9 @@ def test_a_record_timed_from_another_origin(tmp_path: Path) -> None:
     """Samples timed from 100 s (the engines run them from 0 and shift the times back; a
     record read from a file starts at 0, this is the API's case): the batched envelope,
     overturning times included, is rockcli.dynamics.simulate.assess's case by case."""
+    from rockcli.analyses.assess import settings_from
     from rockcli.dynamics.simulate import assess
     from rockcli.model.derive import solver_options, to_block
-    from rockcli.studies.assess import settings_from
 
     base = spring_wall(position="top", k=0.0)
     axes = [

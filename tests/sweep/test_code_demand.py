@@ -6,8 +6,8 @@ from __future__ import annotations
 
 import pytest
 
+from rockcli.analyses.kinematic import kinematic_model
 from rockcli.records.files import read_record
-from rockcli.studies.kinematic import kinematic_model
 from rockcli.studies.sweep.cases import Case, build_model
 from rockcli.studies.sweep.columns import uls_ratio
 from rockcli.studies.sweep.study import load_study

@@ -10,7 +10,7 @@ from pathlib import Path
 import pytest
 
 ROOT = Path(__file__).resolve().parents[2] / "rockcli"
-STUDIES = sorted((ROOT / "studies").rglob("*.py"))
+STUDIES = sorted([*(ROOT / "studies").rglob("*.py"), *(ROOT / "analyses").rglob("*.py")])
 #: What a study module may not import: the document and terminal layers, the command line.
 FORBIDDEN = ("rockcli.terminal", "rockcli.plots", "rockcli.cli", "click", "rich")
 

@@ -114,11 +114,11 @@ def test_a_case_at_height_rocks_on_the_floor_motion(
     write_study: WriteStudy, tmp_path: Path
 ) -> None:
     # building.Z swept from the ground to 3 m: the case at height runs on the floor motion,
-    # the same numbers `rock assess` gives for that model (studies.assess, floor input).
+    # the same numbers `rock assess` gives for that model (analyses.assess, floor input).
     import csv
 
+    from rockcli.analyses.assess import assess_model_output
     from rockcli.records.files import read_record
-    from rockcli.studies.assess import assess_model_output
     from rockcli.studies.parallel.executor import local_executor
     from rockcli.studies.sweep.cases import case_table
     from rockcli.studies.sweep.run import run_sweep
@@ -156,8 +156,8 @@ def test_a_study_with_ground_rocks_every_case_on_the_record(
     # the case on the ground is unchanged (no error), and the column says "ground" for both.
     import csv
 
+    from rockcli.analyses.assess import assess_model_output
     from rockcli.records.files import read_record
-    from rockcli.studies.assess import assess_model_output
     from rockcli.studies.parallel.executor import local_executor
     from rockcli.studies.sweep.run import run_sweep
 

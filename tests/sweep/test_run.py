@@ -15,10 +15,10 @@ from typing import Any
 
 import pytest
 
+from rockcli.analyses.compare import compare_model_output
 from rockcli.errors import InputError
 from rockcli.model.load import validate_model
 from rockcli.records.files import read_record
-from rockcli.studies.compare import compare_model_output
 from rockcli.studies.parallel.executor import local_executor
 from rockcli.studies.sweep import run as sweep_run
 from rockcli.studies.sweep.cases import case_table, expand

@@ -7,11 +7,11 @@ from pathlib import Path
 
 import pytest
 
+from rockcli.analyses.assess import assess_model
+from rockcli.analyses.strength import restrainer_checks
 from rockcli.model.derive import to_block
 from rockcli.records.files import read_record
-from rockcli.studies.assess import assess_model
 from rockcli.studies.parallel.executor import local_executor
-from rockcli.studies.strength import restrainer_checks
 from rockcli.studies.sweep.cases import build_model, expand
 from rockcli.studies.sweep.run import run_sweep
 from rockcli.studies.sweep.study import load_study

@@ -17,8 +17,8 @@ LAYERS = (
     ("dynamics", "codecheck", "records", "kernels"),
     ("model",),
     ("suites",),
-    ("studies",),
-    ("fragility", "casebook"),
+    ("analyses",),
+    ("studies", "casebook"),
     ("terminal", "plots", "document"),
     ("api", "rockcli", "cli", "__main__"),
 )  # fmt: skip

@@ -1,7 +1,8 @@
 """`rock spectrum overturning`: the lowest overturning pulse against ωp/p, or the lowest
 overturning scale of records against the block's size or the building's period
-(rockcli.fragility.spectrum), run on the sweep's executor (rockcli.fragility.overturning); the
-options are read into the plan of the runs by rockcli.cli.overturning.plan."""
+(rockcli.studies.fragility.spectrum), run on the sweep's executor
+(rockcli.studies.fragility.overturning); the options are read into the plan of the runs by
+rockcli.cli.overturning.plan."""
 
 from __future__ import annotations
 
@@ -214,7 +215,7 @@ def overturning(
 def run_points(target, scan, cases, jobs, scheduler, progress):
     """Every point's row, on local workers or a dask cluster, with a progress bar."""
     from rockcli.cli.sweep import worker_count
-    from rockcli.fragility.overturning import run_spectrum
+    from rockcli.studies.fragility.overturning import run_spectrum
     from rockcli.studies.parallel.executor import dask_executor, local_executor
     from rockcli.terminal.sweep import progress_bar
 
@@ -239,8 +240,8 @@ def pulse_doc(pulse, cases, rows, scan, subject, target):
 def _plain_block(target) -> bool:
     """The model's mechanism rocked is the paper's rectangle without loads, restrainers or a
     stopped side (its a0 is g·tan α, or g·α)."""
-    from rockcli.fragility.overturning import rocked_block
     from rockcli.mechanics import Block
+    from rockcli.studies.fragility.overturning import rocked_block
 
     block, _ = rocked_block(validated(target), target)
     plain = not block.loaded and not block.restrainers and not block.one_sided

@@ -8,7 +8,7 @@ from __future__ import annotations
 import math
 
 from rockcli.errors import InputError
-from rockcli.fragility.search import MAX_SCAN_POINTS, MIN_TOLERANCE_SHARE
+from rockcli.studies.fragility.search import MAX_SCAN_POINTS, MIN_TOLERANCE_SHARE
 
 #: Most values of --ratios, --p or --R.
 MAX_VALUES = 200
@@ -18,7 +18,7 @@ DEFAULT_RATIOS = "1,2,3,4,6,8"
 
 def make_scan(first: float, step: float, last: float, tolerance: float):
     """The Scan of the options (InputError naming the option at fault)."""
-    from rockcli.fragility.spectrum import Scan
+    from rockcli.studies.fragility.spectrum import Scan
 
     for option, value in (
         ("--scan-from", first),
@@ -157,7 +157,7 @@ def _p_allowed() -> str:
 
 def pulse_plan(pulse, ratios, alpha, e, linearized, model_path, mechanism, ground, engine, scan):
     """(target, subject, cases) of a pulse spectrum, every ratio's period checked."""
-    from rockcli.fragility.overturning import PulseCase, pulse_period_of, rocked_block
+    from rockcli.studies.fragility.overturning import PulseCase, pulse_period_of, rocked_block
 
     values = parse_values(DEFAULT_RATIOS if ratios is None else ratios, "--ratios")
     target = pulse_target(alpha, e, linearized, model_path, mechanism, ground, engine)
@@ -177,7 +177,7 @@ def pulse_plan(pulse, ratios, alpha, e, linearized, model_path, mechanism, groun
 
 def pulse_target(alpha, e, linearized, model_path, mechanism, ground, engine):
     """The Target of --alpha/--e/--linearized or of --model/--mechanism/--ground."""
-    from rockcli.fragility.overturning import Target
+    from rockcli.studies.fragility.overturning import Target
 
     if (alpha is None) == (model_path is None):
         raise InputError(
@@ -222,8 +222,8 @@ def wall_mechanism(model, model_path: str, mechanism: str | None) -> str | None:
             where="--mechanism",
             allowed=f"--mechanism NAME: {names}",
         )
+    from rockcli.analyses.assess import rocked_input
     from rockcli.records.pulses import make_pulse
-    from rockcli.studies.assess import rocked_input
 
     probe = make_pulse("one-sine", 0.1, 1.0, dt=0.01)  # the model's demand chooses, not it
     rocked = rocked_input(model, probe, False, model_path, None)[3]
@@ -284,7 +284,7 @@ def read_records(record_paths, record_format, dt, units) -> list:
 def block_sizes(records, alpha, e, linearized, p_values, R_values, engine):
     """(target, subject, cases, (option, sizes)) of a record spectrum of free blocks of
     slenderness --alpha: every size validated as a block."""
-    from rockcli.fragility.overturning import Target
+    from rockcli.studies.fragility.overturning import Target
 
     if alpha is None:
         raise InputError(
@@ -301,7 +301,7 @@ def block_sizes(records, alpha, e, linearized, p_values, R_values, engine):
 
 def parse_sizes(p_values, R_values) -> tuple[str, list[float], list[float]]:
     """(option, its values, the semi-diagonals R [m]) of --p or --R, exactly one given."""
-    from rockcli.fragility.overturning import radius_of
+    from rockcli.studies.fragility.overturning import radius_of
     from rockcli.units import DEFAULT_GRAVITY
 
     if (p_values is None) == (R_values is None):
@@ -318,9 +318,9 @@ def model_sizes(records, model_path, mechanism, ground, p_values, R_values, peri
     """(target, subject, cases, (option, values)) of a record spectrum of MODEL: its block at
     each size (--p or --R, α kept: a model of one block), or in a building of each period
     (--floor-periods: a model at height, on its floor motion)."""
-    from rockcli.fragility.overturning import Target, sized_table, with_period
     from rockcli.model.catalogue import rocks_its_block
     from rockcli.model.load import read_toml, validate_model
+    from rockcli.studies.fragility.overturning import Target, sized_table, with_period
 
     table = read_toml(model_path)
     model = validate_model(table, file=model_path)
@@ -367,7 +367,7 @@ def model_sizes(records, model_path, mechanism, ground, p_values, R_values, peri
 
 def record_cases(records, values, key: str) -> list:
     """One case per record and value, records outermost."""
-    from rockcli.fragility.overturning import RecordCase
+    from rockcli.studies.fragility.overturning import RecordCase
 
     return [
         RecordCase(i * len(values) + j, rec, v, key)

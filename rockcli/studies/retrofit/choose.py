@@ -3,7 +3,7 @@
 A candidate passes when the code's ULS check is satisfied, the block survives the time
 history (both polarities), the rod does not rupture and its largest force stays within its
 strength (utilisation ≤ 1 within the rounding of a yield plateau, FORCE_RTOL; NTC 2018
-§4.2.4.1.2 through rockcli.studies.strength). A rod that yielded at its design strength and
+§4.2.4.1.2 through rockcli.analyses.strength). A rod that yielded at its design strength and
 held passes: the time history has taken its yielding into account.
 """
 
@@ -12,8 +12,8 @@ from __future__ import annotations
 from collections.abc import Sequence
 from typing import Any
 
+from rockcli.analyses.strength import FORCE_RTOL
 from rockcli.notes import Items, Note
-from rockcli.studies.strength import FORCE_RTOL
 
 #: The largest utilisation (force / design strength) a rod may reach.
 UTILISATION_LIMIT = 1.0

@@ -23,17 +23,17 @@ from collections.abc import Callable, MutableSequence
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
+from rockcli.analyses.choices import Analyses
 from rockcli.dynamics.result import RunStatus
 from rockcli.notes import Note
-from rockcli.studies.choices import Analyses
 from rockcli.studies.retrofit.candidates import RetrofitPlan, build_candidate
 
 if TYPE_CHECKING:
+    from rockcli.analyses.assess import AssessmentOutput
     from rockcli.codecheck.response import RecordSpectrum
     from rockcli.codecheck.result import KinematicResult
     from rockcli.dynamics.result import Assessment
     from rockcli.records.record import Record
-    from rockcli.studies.assess import AssessmentOutput
     from rockcli.studies.parallel.executor import Lane
 
 
@@ -101,8 +101,8 @@ def run_candidate(
     rod: a stronger rod can hand the governing role to another mechanism), rocked as
     ``rock compare`` rocks it; ``mechanism`` names it, ``on_mechanism`` says whether the rod
     is one of its members (a rod below its hinge, or at a flexure's held top, is not)."""
-    from rockcli.studies.assess import assess_model_output
-    from rockcli.studies.kinematic import kinematic_model
+    from rockcli.analyses.assess import assess_model_output
+    from rockcli.analyses.kinematic import kinematic_model
 
     model = build_candidate(plan, diameter_mm)
     spectrum = shared_spectrum(record, model.analysis.g)
@@ -153,7 +153,7 @@ def code_columns(kin: KinematicResult) -> dict[str, Any]:
 
 def rocking_columns(out: AssessmentOutput, index: int | None) -> dict[str, Any]:
     """The time history over both polarities: max θ/α, overturning, the rod's peak force,
-    its utilisation (rockcli.studies.strength) and whether it ruptured (``index``: the rod
+    its utilisation (rockcli.analyses.strength) and whether it ruptured (``index``: the rod
     among the members of the body rocked; None: not one of them, no force)."""
     result = out.result
     common = {
@@ -185,12 +185,10 @@ def broken_runs(result: Assessment) -> list[dict[str, Any]]:
 
 
 def rod_check(out: AssessmentOutput, index: int) -> dict[str, Any]:
-    """The rod's row of the assessment's restrainer checks (rockcli.studies.strength): its
+    """The rod's row of the assessment's restrainer checks (rockcli.analyses.strength): its
     utilisation (force over strength; None: no strength), its ductility and its anchorage
     (each {demand, capacity, passed, rule}; None: not a bar of known steel)."""
-    from rockcli.studies.strength import restrainer_checks
-
-    rows = [r for r in restrainer_checks(out.block, out.result) if r["index"] == index]
+    rows = [r for r in out.restrainer_checks if r["index"] == index]
     if not rows:
         return {"utilisation": None, "ductility": None, "anchor": None}
     row = rows[0]

@@ -20,10 +20,10 @@ from dataclasses import dataclass, replace
 from enum import StrEnum
 from typing import TYPE_CHECKING, Any
 
+from rockcli.analyses.compare import Classification, classify
 from rockcli.codecheck.demand import LimitStateDemand
 from rockcli.errors import InputError
 from rockcli.notes import Items, Note
-from rockcli.studies.compare import Classification, classify
 from rockcli.studies.suite_run.assess import LoadedSuite, SuiteAssessment
 
 if TYPE_CHECKING:
@@ -92,8 +92,8 @@ def target_demand(
 ) -> LimitStateDemand:
     """The target's spectrum for one limit state: the target's own, or its site's at the
     state's return period (same VN, CU, soil, topography; rockcli.suites.run.target_of)."""
+    from rockcli.analyses.kinematic import code_demand
     from rockcli.codecheck.categories import LimitState
-    from rockcli.studies.kinematic import code_demand
     from rockcli.suites.run import target_of
 
     spec = target_of(target.model_copy(update={"limit_state": LimitState(limit_state)}), grid_file)
@@ -115,8 +115,8 @@ def target_demands(
 
     file: the suite file, for messages.
     """
-    from rockcli.studies.compare import code_sets_demand
-    from rockcli.studies.kinematic import LIMIT_STATES, demands
+    from rockcli.analyses.compare import code_sets_demand
+    from rockcli.analyses.kinematic import LIMIT_STATES, demands
 
     own = target.limit_state.value
 
@@ -155,9 +155,9 @@ def mean_demands(
 ) -> Callable[[NtcSettings, float], dict[str, LimitStateDemand]]:
     """Every limit state's demand: the mean response spectrum of the suite's scaled records
     (as one record's spectrum is with --code-demand record). name: the suite's."""
+    from rockcli.analyses.kinematic import LIMIT_STATES
     from rockcli.codecheck.demand import MeanSpectrum, record_demand
     from rockcli.codecheck.response import RecordSpectrum
-    from rockcli.studies.kinematic import LIMIT_STATES
 
     source = (
         f"the mean response spectrum of the suite's {len(records)} records (as scaled), "
@@ -248,7 +248,7 @@ def compare_loaded(
 ) -> SuiteComparison:
     """:func:`compare_suite` on a model and suite already read (the calculation report keeps
     the suite's scaled records for its figures)."""
-    from rockcli.studies.kinematic import check_settings, kinematic_model
+    from rockcli.analyses.kinematic import check_settings, kinematic_model
     from rockcli.studies.suite_run.assess import assess_loaded
 
     which = SuiteCodeDemand(code_demand)

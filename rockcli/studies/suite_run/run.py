@@ -98,8 +98,8 @@ def record_row(
     whether it is tolerance-sensitive (``sensitive``, rockcli.dynamics.tolerance) and each
     polarity's check (``tolerance``); a wall's ``mechanism`` rocked (None: the model's
     block)."""
+    from rockcli.analyses.assess import assess_model_output
     from rockcli.dynamics.tolerance import sensitive
-    from rockcli.studies.assess import assess_model_output
 
     out = assess_model_output(model, item.record, engine, ground=ground, file=file,
                               tolerance_check=tolerance_check, mechanism=mechanism)  # fmt: skip

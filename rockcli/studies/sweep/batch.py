@@ -140,9 +140,9 @@ def plain_block(model: Model, ground: bool) -> Block | None:
     """The model's block when rockcli.dynamics.batch can run it (a catalogue of one mechanism
     that rocks as the paper's rectangle without loads, on the ground or run at the ground
     with --ground), else None."""
+    from rockcli.analyses.floor import model_floor
     from rockcli.mechanics import Block
     from rockcli.model.catalogue import catalogue
-    from rockcli.studies.floor import model_floor
 
     if model.loads or model.thrusts or model.geometry.gable_height is not None:
         return None
@@ -391,9 +391,9 @@ def run_arrays(
 ) -> tuple[Blocks, Runs] | None:
     """The blocks of a chunk's cases and their runs under one record, as arrays; None when
     one of them is not valid (the chunk then runs case by case, which gives its error row)."""
+    from rockcli.analyses.assess import settings_from
     from rockcli.dynamics.batch import run_blocks
     from rockcli.model.derive import solver_options
-    from rockcli.studies.assess import settings_from
 
     indices = np.array([c.indices for c in cases], dtype=np.int64).reshape(len(cases), -1)
     blocks, valid = derive(form, indices)
@@ -410,9 +410,9 @@ def suite_rows(form: Form, cases: Sequence[Case], suite: SuiteInput) -> list[dic
     through the suite's own rule (rockcli.studies.suite_run.rule.suite_measure, with outcomes
     made as rockcli.studies.suite_run.run.outcomes makes them): the same numbers as case by case.
     """
+    from rockcli.analyses.assess import settings_from
     from rockcli.dynamics.batch import run_blocks
     from rockcli.model.derive import solver_options
-    from rockcli.studies.assess import settings_from
     from rockcli.studies.suite_run.assess import limit_for
     from rockcli.studies.suite_run.rule import RecordOutcome, suite_measure
 
@@ -490,7 +490,7 @@ def envelope(blocks: Blocks, runs: Runs) -> dict[str, np.ndarray]:
 def utilisation(blocks: Blocks, runs: Runs) -> np.ndarray:
     """worker.max_utilisation of each case: the largest, over the restrainers with a strength
     (in their order), of the larger peak force of the two polarities over the strength
-    (rockcli.studies.strength.check_row); nan where no restrainer has a strength."""
+    (rockcli.analyses.strength.check_row); nan where no restrainer has a strength."""
     from rockcli.dynamics import layout as L
     from rockcli.dynamics.batch import python_max
 

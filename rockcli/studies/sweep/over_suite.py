@@ -94,8 +94,8 @@ def suite_checks(plan: StudyPlan) -> Callable[[Model], None] | None:
     suites = [source for source in plan.records if source.suite]
     if not suites or "kinematic" not in plan.analyses:
         return None
-    from rockcli.studies.compare import code_sets_demand
-    from rockcli.studies.kinematic import check_settings
+    from rockcli.analyses.compare import code_sets_demand
+    from rockcli.analyses.kinematic import check_settings
 
     seen: set[tuple[str, bool, float]] = set()
 
@@ -120,9 +120,9 @@ TARGET_ALLOWED = (
 def check_suite_demand(plan: StudyPlan, model: Model, source: RecordSource) -> None:
     """InputError when the code check of the model cannot be made under this suite:
     compare's problem, the suite file named as the study names it, what the study can do."""
+    from rockcli.analyses.compare import CodeDemand
+    from rockcli.analyses.kinematic import check_settings
     from rockcli.errors import InputError
-    from rockcli.studies.compare import CodeDemand
-    from rockcli.studies.kinematic import check_settings
     from rockcli.studies.suite_run.compare import VERDICT_KEY, target_demands, verdict_key
     from rockcli.studies.sweep.study import shown_path
 
@@ -150,7 +150,7 @@ def check_suite_demand(plan: StudyPlan, model: Model, source: RecordSource) -> N
 def run_suite_case(plan: StudyPlan, model: Model, suite: SuiteInput) -> dict[str, Any]:
     """The analyses of one case under a suite: the records' time histories and the rule,
     the code check at the target's limit state, the classification."""
-    from rockcli.studies.compare import classify
+    from rockcli.analyses.compare import classify
 
     R, alpha = model.geometry.polar
     row: dict[str, Any] = {"block_R": R, "block_alpha": alpha}
@@ -174,8 +174,8 @@ def run_suite_case(plan: StudyPlan, model: Model, suite: SuiteInput) -> dict[str
 def suite_rocking_columns(plan: StudyPlan, model: Model, suite: SuiteInput) -> dict[str, Any]:
     """Every record of the suite, both polarities, and the code's rule against the model's
     limit for the target's limit state."""
+    from rockcli.analyses.floor import model_floor
     from rockcli.dynamics.tolerance import any_sensitive
-    from rockcli.studies.floor import model_floor
     from rockcli.studies.suite_run.assess import limit_for
     from rockcli.studies.suite_run.rule import suite_measure
     from rockcli.studies.suite_run.run import outcomes, record_row
@@ -203,8 +203,8 @@ def suite_code_check(plan: StudyPlan, model: Model, suite: SuiteInput) -> tuple[
     """The code check of a suite case and the verdict key of the target's limit state: on the
     target's spectrum (code_demand "record": the suite's own earthquake) or on the model's
     own spectrum (code_demand "model")."""
-    from rockcli.studies.compare import CodeDemand
-    from rockcli.studies.kinematic import check_settings, kinematic_model
+    from rockcli.analyses.compare import CodeDemand
+    from rockcli.analyses.kinematic import check_settings, kinematic_model
     from rockcli.studies.suite_run.compare import target_demands, verdict_key
 
     settings = suite.settings

@@ -89,7 +89,7 @@ class RecordSpec(Table):
 
 
 class CodeDemandName(StrEnum):
-    """The study key code_demand (as rockcli.studies.compare.CodeDemand)."""
+    """The study key code_demand (as rockcli.analyses.compare.CodeDemand)."""
 
     RECORD = "record"
     MODEL = "model"

@@ -23,10 +23,10 @@ from rockcli.studies.sweep.columns import kinematic_columns, plain_number
 from rockcli.studies.sweep.study import RecordSource, StudyPlan
 
 if TYPE_CHECKING:
+    from rockcli.analyses.assess import AssessmentOutput
     from rockcli.codecheck.response import RecordSpectrum
     from rockcli.codecheck.result import KinematicResult
     from rockcli.dynamics.result import Assessment
-    from rockcli.mechanics import Rocker
     from rockcli.model.schema import Model
     from rockcli.records.record import Record
     from rockcli.studies.sweep.over_suite import SuiteInput
@@ -180,15 +180,15 @@ def run_case(
     plan: StudyPlan, model: Model, record: Record | None, spectrum: RecordSpectrum | None
 ) -> dict[str, Any]:
     """The analyses of one case: the block, the rocking envelope, the code check."""
+    from rockcli.analyses.compare import CodeDemand, classify, code_collapse, rocking_collapse
     from rockcli.model.catalogue import catalogue
-    from rockcli.studies.compare import CodeDemand, classify, code_collapse, rocking_collapse
 
     R, alpha = model.geometry.polar
     row: dict[str, Any] = {"block_R": R, "block_alpha": alpha}
     roc = kin = None
     mechanisms = catalogue(model)  # once a case: both analyses read these values
     if "kinematic" in plan.analyses:
-        from rockcli.studies.kinematic import kinematic_model
+        from rockcli.analyses.kinematic import kinematic_model
 
         own = record is not None and plan.code_demand == CodeDemand.RECORD
         kin = kinematic_model(
@@ -200,8 +200,8 @@ def run_case(
         )
     mechanism, kin = case_mechanism(kin)
     if "rocking" in plan.analyses and record is not None:
-        from rockcli.studies.assess import assess_model_output
-        from rockcli.studies.floor import model_floor
+        from rockcli.analyses.assess import assess_model_output
+        from rockcli.analyses.floor import model_floor
 
         ground = plan.ground and model_floor(model) is not None
         out = assess_model_output(
@@ -218,7 +218,7 @@ def run_case(
             from rockcli.dynamics.tolerance import sensitive
 
             row["sensitive"] = sensitive(roc.runs)
-        row["utilisation"] = max_utilisation(out.block, roc)
+        row["utilisation"] = max_utilisation(out)
     if kin is not None:
         row.update(kinematic_columns(kin))
     if mechanism is not None:
@@ -231,8 +231,8 @@ def run_case(
 def case_mechanism(kin: KinematicResult | None) -> tuple[str | None, KinematicResult | None]:
     """(the mechanism a wall's case rocks and checks, its code check): as `rock compare`, the
     governing one (None, kin unchanged: a model of one block, or no code check)."""
-    from rockcli.studies.catalogue import main_mechanism
-    from rockcli.studies.compare import shown_result
+    from rockcli.analyses.catalogue import main_mechanism
+    from rockcli.analyses.compare import shown_result
 
     if kin is None:
         return None, None
@@ -242,11 +242,9 @@ def case_mechanism(kin: KinematicResult | None) -> tuple[str | None, KinematicRe
     return main.name, shown_result(kin, main)
 
 
-def max_utilisation(block: Rocker, result: Assessment) -> float | None:
+def max_utilisation(out: AssessmentOutput) -> float | None:
     """The largest force/strength of the restrainers that have a strength (None: none has)."""
-    from rockcli.studies.strength import restrainer_checks
-
-    known = [c["utilisation"] for c in restrainer_checks(block, result)]
+    known = [c["utilisation"] for c in out.restrainer_checks]
     known = [u for u in known if u is not None]  # a member checked by its elongation alone
     return plain_number(max(known)) if known else None
 

@@ -1,18 +1,18 @@
 """The fragility of each grid point and damage state, fitted from the tasks' runs.
 
 - IDA: each record's first exceedance of the state (the intensity, found again from the
-  runs by the same search: rockcli.fragility.run.exceedances) and the lognormal of those
-  intensities (rockcli.fragility.fit.ida_fit); a record that does not reach the state by the
+  runs by the same search: rockcli.studies.fragility.run.exceedances) and the lognormal of those
+  intensities (rockcli.studies.fragility.fit.ida_fit); a record that does not reach the state by the
   scan's last intensity is right-censored there (``not_reached``), and the fit is then the
-  censored maximum likelihood (rockcli.fragility.fit.ida_censored_fit: β with divisor n,
+  censored maximum likelihood (rockcli.studies.fragility.fit.ida_censored_fit: β with divisor n,
   whatever ddof asks: docs/fragility.md).
 - MSA: at each level, the records run and those whose max θ/α reaches the state's level, and
-  the binomial maximum likelihood over the levels (rockcli.fragility.fit.msa_fit).
+  the binomial maximum likelihood over the levels (rockcli.studies.fragility.fit.msa_fit).
 
 Each fit has its 95 % band at intensities inside the analysed range (MSA: at the levels, at
-most as many as rockcli.fragility.fit.band_points gives), and ``band_method``
-says what the band is (rockcli.fragility.fit.band_method: the profile likelihood for MSA; for
-IDA the exact noncentral-t band, or with censored records a parametric bootstrap). The
+most as many as rockcli.studies.fragility.fit.band_points gives), and ``band_method``
+says what the band is (rockcli.studies.fragility.fit.band_method: the profile likelihood
+for MSA; for IDA the exact noncentral-t band, or with censored records a parametric bootstrap). The
 document is the `rock fragility --format json` contract.
 """
 
@@ -24,10 +24,10 @@ from typing import Any
 
 import numpy as np
 
-from rockcli.fragility.fit import Fit, band_method, band_points, ida_curve, msa_curve
-from rockcli.fragility.run import Task, TaskResult, exceedances, stripe_counts
-from rockcli.fragility.search import scan_points
-from rockcli.fragility.study import FragilityPlan, State
+from rockcli.studies.fragility.fit import Fit, band_method, band_points, ida_curve, msa_curve
+from rockcli.studies.fragility.run import Task, TaskResult, exceedances, stripe_counts
+from rockcli.studies.fragility.search import scan_points
+from rockcli.studies.fragility.study import FragilityPlan, State
 from rockcli.version import __version__
 
 SCHEMA = 1

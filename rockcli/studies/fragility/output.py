@@ -21,9 +21,9 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import Any
 
-from rockcli.fragility.run import Task, TaskResult, task_labels
-from rockcli.fragility.study import FragilityPlan
 from rockcli.studies.folder.folder import StudyFolder, digest_of, record_identities
+from rockcli.studies.fragility.run import Task, TaskResult, task_labels
+from rockcli.studies.fragility.study import FragilityPlan
 from rockcli.version import __version__
 
 STATE_FILE = "state.json"

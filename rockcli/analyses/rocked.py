@@ -7,7 +7,7 @@ storey's base, the wedge, the gable) as a RigidBody of their own shape
 the governing one of the code check on the same record (like with like: the code side's
 spectrum is the record's, as `rock compare` takes it). A storey mechanism rocks on the floor
 motion at its hinge, Z + the hinge's height, through the same first mode as the code check's
-floor spectrum (rockcli.studies.catalogue.mechanism_position); a
+floor spectrum (rockcli.analyses.catalogue.mechanism_position); a
 vertical flexure on the motion of its storey's base (the floor above, which holds its top,
 moves otherwise: docs/interpretations.md). The two-block vertical flexure rocks as its chain
 (rockcli.mechanisms.flexure), with its restrainers on either block.
@@ -17,6 +17,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from rockcli.analyses.floor import Floor
 from rockcli.mechanics import Rocker
 from rockcli.mechanisms.wall import MechanismSpec, Wall
 from rockcli.model.catalogue import Mechanism as CatalogueMechanism
@@ -24,7 +25,6 @@ from rockcli.model.derive_ntc import BuildingSettings
 from rockcli.model.schema import Model
 from rockcli.notes import Note
 from rockcli.records.record import Record
-from rockcli.studies.floor import Floor
 
 
 @dataclass(frozen=True)
@@ -59,7 +59,7 @@ class Rocked:
 
 def named_spec(wall: Wall, name: str) -> MechanismSpec:
     """The mechanism of that name (InputError listing the catalogue's names)."""
-    from rockcli.studies.catalogue import named
+    from rockcli.analyses.catalogue import named
 
     return named(wall.mechanisms, name)
 
@@ -69,8 +69,8 @@ def governing(model: Model, mechanisms: tuple[CatalogueMechanism, ...],
     """The governing mechanism of the code check: under the model's own demand when it sets
     one (so that every record of a suite rocks the same mechanism), else under the record's
     spectrum (`rock compare` names the mechanism it rocks itself)."""
-    from rockcli.studies.catalogue import main_mechanism, named
-    from rockcli.studies.kinematic import kinematic_model
+    from rockcli.analyses.catalogue import main_mechanism, named
+    from rockcli.analyses.kinematic import kinematic_model
 
     own = model.ntc is not None and model.ntc.demand is not None  # a site needs the grid
     kin = kinematic_model(model, record=None if own else record, mechanisms=mechanisms)
@@ -143,8 +143,8 @@ def rocked_mechanism(model: Model, record: Record, name: str | None,
 
 def mechanism_floor(mech: CatalogueMechanism, building: BuildingSettings) -> Floor | None:
     """The floor at the mechanism's base (None on the ground): Z + its base, through the
-    position the code check gives it (rockcli.studies.catalogue.mechanism_position)."""
-    from rockcli.studies.catalogue import mechanism_position
+    position the code check gives it (rockcli.analyses.catalogue.mechanism_position)."""
+    from rockcli.analyses.catalogue import mechanism_position
 
     pos = mechanism_position(mech, building)
     if not pos.at_height:

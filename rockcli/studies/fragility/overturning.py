@@ -3,9 +3,9 @@ a block size) per chunk (rockcli.studies.parallel.chunks.run_chunks).
 
 A chunk carries the model table, not a model (as a retrofit's: the worker validates it again,
 rockcli.studies.retrofit.run), and for a record point the record itself. Each point derives
-its block and the motion it sees as `rock assess` does (rockcli.studies.assess.rocked_input:
+its block and the motion it sees as `rock assess` does (rockcli.analyses.assess.rocked_input:
 a block at height on its floor motion), then searches the lowest overturning intensity
-(rockcli.fragility.spectrum). A point's row is plain data, keyed by its case id.
+(rockcli.studies.fragility.spectrum). A point's row is plain data, keyed by its case id.
 """
 
 from __future__ import annotations
@@ -14,14 +14,14 @@ from collections.abc import Callable, MutableSequence, Sequence
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
 
-from rockcli.fragility.spectrum import Scan, Threshold
 from rockcli.records.kinds import PulseKind
+from rockcli.studies.fragility.spectrum import Scan, Threshold
 
 if TYPE_CHECKING:
+    from rockcli.analyses.floor import Floor
     from rockcli.mechanics import Rocker
     from rockcli.model.schema import Model
     from rockcli.records.record import Record
-    from rockcli.studies.floor import Floor
     from rockcli.studies.parallel.executor import Lane
 
 #: The pulses of a pulse spectrum, and their length in periods Tp (rockcli.records.pulses).
@@ -92,7 +92,7 @@ def run_overturning_chunk(chunk: SpectrumChunk) -> list[dict[str, Any]]:
 def pulse_row(target: Target, scan: Scan, case: PulseCase) -> dict[str, Any]:
     """The lowest ap/a0 that overturns under the pulse of ωp/p = case.ratio (a0: the block's
     uplift acceleration), the pulse reaching a block at height through its floor."""
-    from rockcli.fragility.spectrum import sampled_pulse
+    from rockcli.studies.fragility.spectrum import sampled_pulse
 
     model = _model(target)
     block, floor = rocked_block(model, target)
@@ -131,10 +131,10 @@ def record_row(target: Target, scan: Scan, case: RecordCase) -> dict[str, Any]:
 
 def search(model: Model, target: Target, record: Record, scan: Scan, per_unit: float) -> Threshold:
     """The first overturning intensity of the model under record × (intensity × per_unit)."""
+    from rockcli.analyses.assess import rocked_input, settings_from
     from rockcli.dynamics.settings import Engine
-    from rockcli.fragility.spectrum import lowest_overturn, overturn_response
     from rockcli.model.derive import solver_options
-    from rockcli.studies.assess import rocked_input, settings_from
+    from rockcli.studies.fragility.spectrum import lowest_overturn, overturn_response
 
     block, shaking, _, _ = rocked_input(model, record, target.ground, target.file, target.mechanism)
     settings = settings_from(solver_options(model))
@@ -149,17 +149,17 @@ def search(model: Model, target: Target, record: Record, scan: Scan, per_unit: f
 
 def pulse_period_of(ratio: float, block: Rocker) -> float:
     """Tp [s] of ωp/p = ratio for the block."""
-    from rockcli.fragility.spectrum import pulse_period
+    from rockcli.studies.fragility.spectrum import pulse_period
 
     return pulse_period(ratio, block.p)
 
 
 def rocked_block(model: Model, target: Target) -> tuple[Rocker, Floor | None]:
     """The block the runs rock and its floor (None: the ground motion itself), as
-    rockcli.studies.assess.rocked_input derives them (the record does not matter when the
+    rockcli.analyses.assess.rocked_input derives them (the record does not matter when the
     mechanism is named or the model is a block: a short probe stands in for it)."""
+    from rockcli.analyses.assess import rocked_input
     from rockcli.records.pulses import make_pulse
-    from rockcli.studies.assess import rocked_input
 
     probe = make_pulse(PulseKind.ONE_SINE, 0.1, 1.0, dt=0.01)
     block, _, floor, _ = rocked_input(model, probe, target.ground, target.file, target.mechanism)

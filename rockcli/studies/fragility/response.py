@@ -2,13 +2,13 @@
 
 A model, a ground motion and (for a wall) a mechanism are prepared once (:func:`prepare`):
 the block the time history rocks and the motion it sees, exactly as `rock assess` derives
-them (rockcli.studies.assess.rocked_input: a block at height on its floor motion, a wall's
+them (rockcli.analyses.assess.rocked_input: a block at height on its floor motion, a wall's
 mechanism the one named or the governing one). The floor motion is a linear filter of the
-ground motion (rockcli.studies.floor), so the ground scaled by s gives the floor motion scaled
+ground motion (rockcli.analyses.floor), so the ground scaled by s gives the floor motion scaled
 by s, and each run scales the prepared motion.
 
 The response of a run (:meth:`ScaledRun.response`) is the damage measure of the search
-(rockcli.fragility.search): max|θ|/α over both polarities, +inf when either polarity
+(rockcli.studies.fragility.search): max|θ|/α over both polarities, +inf when either polarity
 overturns (spec/rocking.md: the verdict is the worse polarity's).
 
 Pure and silent apart from the model derivation's own InputErrors.
@@ -53,13 +53,13 @@ class ScaledRun:
         """max|θ|/α over both polarities of the motion × scale; +inf when it overturns.
 
         Raises:
-            UndecidedRun (rockcli.fragility.spectrum): a run met a non-finite number or did
+            UndecidedRun (rockcli.studies.fragility.spectrum): a run met a non-finite number or did
             not finish.
         """
         from rockcli.dynamics.result import Verdict
         from rockcli.dynamics.settings import Engine
         from rockcli.dynamics.simulate import assess
-        from rockcli.fragility.spectrum import UndecidedRun
+        from rockcli.studies.fragility.spectrum import UndecidedRun
 
         result = assess(
             self.block,
@@ -88,8 +88,8 @@ def prepare(
     file: str | None = None,
 ) -> ScaledRun:
     """The model's rocked block and the motion it sees under the record at scale 1."""
+    from rockcli.analyses.assess import rocked_input, settings_from
     from rockcli.model.derive import solver_options
-    from rockcli.studies.assess import rocked_input, settings_from
 
     block, shaking, _, rocked = rocked_input(model, record, ground, file, mechanism)
     return ScaledRun(

@@ -2,8 +2,8 @@
 demands: the checks of the settings' edition, the restrainers' actions and the demand's
 numbers as the result reports them.
 
-Shared by the block's workflow (rockcli.studies.kinematic) and a wall's catalogue
-(rockcli.studies.catalogue), which both build a Capacity and hand it here: one road from a
+Shared by the block's workflow (rockcli.analyses.kinematic) and a wall's catalogue
+(rockcli.analyses.catalogue), which both build a Capacity and hand it here: one road from a
 capacity to a KinematicResult. Composition only: the formulas live in rockcli.codecheck.
 """
 

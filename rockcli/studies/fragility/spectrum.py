@@ -13,7 +13,7 @@ with impacts θ̇⁺ = e·θ̇⁻: with x = ap/(g·tan α) it depends on α, e a
 127(5):473–483; Makris & Konstantinidis 2003, EESD 32(2):265–289, the "overturning spectrum").
 
 The lowest overturning x is found by the first-exceedance search
-(:func:`rockcli.fragility.search.first_exceedances`): a scan up at a fixed step, a bisection
+(:func:`rockcli.studies.fragility.search.first_exceedances`): a scan up at a fixed step, a bisection
 inside the first step that overturns. Above the lowest overturning amplitude a block can
 survive again (the safe region of Zhang & Makris 2001): a bisection between the scan's ends
 would find any boundary, the scan finds the lowest one it can see.
@@ -32,10 +32,10 @@ import numpy as np
 from rockcli.dynamics.result import RunStatus
 from rockcli.dynamics.settings import Engine, SolverSettings
 from rockcli.dynamics.simulate import assess
-from rockcli.fragility.search import first_exceedances
 from rockcli.mechanics import Rocker
 from rockcli.records.pulses import make_pulse
 from rockcli.records.record import Record
+from rockcli.studies.fragility.search import first_exceedances
 
 #: Samples per pulse period: a sine joined linearly between samples shrinks by (2π/N)²/12
 #: ≈ 2e-5 at N = 400 (the threshold moves by as much), far below a scan step of 0.05.

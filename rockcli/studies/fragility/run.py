@@ -1,10 +1,10 @@
 """Run a fragility study: one task per grid point and record, on the sweep's executors.
 
-A task prepares the model's rocked block under its record once (rockcli.fragility.response)
+A task prepares the model's rocked block under its record once (rockcli.studies.fragility.response)
 and runs the record scaled to each intensity the method asks for:
 
 - IDA: the hunt-and-fill search of each damage state's first exceedance
-  (rockcli.fragility.search), over the study's scan of intensities;
+  (rockcli.studies.fragility.search), over the study's scan of intensities;
 - MSA: each of the study's intensity levels.
 
 Every intensity measure is linear in the record's scale (PGA, PGV and Sa are linear in the
@@ -26,12 +26,12 @@ from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
 
 from rockcli.errors import InputError
-from rockcli.fragility.search import Exceedance, first_exceedances
-from rockcli.fragility.study import FragilityPlan, Measure
+from rockcli.studies.fragility.search import Exceedance, first_exceedances
+from rockcli.studies.fragility.study import FragilityPlan, Measure
 
 if TYPE_CHECKING:
-    from rockcli.fragility.response import ScaledRun
     from rockcli.records.record import Record
+    from rockcli.studies.fragility.response import ScaledRun
 
 
 @dataclass(frozen=True)
@@ -96,7 +96,7 @@ def tasks(
 
 def run_task(task: Task) -> TaskResult:
     """The task's runs; a failure is the result's error (the study goes on)."""
-    from rockcli.fragility.spectrum import UndecidedRun
+    from rockcli.studies.fragility.spectrum import UndecidedRun
     from rockcli.studies.sweep.worker import one_line
 
     runs: dict[float, float] = dict(task.known)
@@ -131,7 +131,7 @@ def _new(task: Task, runs: Mapping[float, float]) -> tuple[float, ...]:
 
 def prepared(task: Task) -> tuple[ScaledRun, Record]:
     """The task's model, its rocked block and the record (InputError naming the case)."""
-    from rockcli.fragility.response import prepare
+    from rockcli.studies.fragility.response import prepare
     from rockcli.studies.sweep.cases import Case, build_model, case_error
     from rockcli.studies.sweep.worker import read_source
 
@@ -159,7 +159,7 @@ def unit_intensity(plan: FragilityPlan, rocker: ScaledRun, record: Record) -> fl
     Raises:
         InputError: the record cannot give it (zero, or not finite).
     """
-    from rockcli.fragility import intensity
+    from rockcli.studies.fragility import intensity
 
     block = rocker.block
     g = block.g

@@ -1,4 +1,4 @@
-"""The two log-likelihoods of the fragility fits (rockcli/fragility/fit.py), and their
+"""The two log-likelihoods of the fragility fits (rockcli/studies/fragility/fit.py), and their
 maximisation by Newton's method with bounded work whatever the data.
 
 Both are written in the probit's intercept and slope (a, b), P = Φ(a + b·t), on a

@@ -12,13 +12,13 @@ from dataclasses import dataclass
 from enum import StrEnum
 from typing import Any
 
+from rockcli.analyses.assess import AssessmentOutput, Catalogue, assess_model_output
+from rockcli.analyses.catalogue import main_mechanism, named_result
 from rockcli.codecheck.demand import Spectrum
 from rockcli.codecheck.result import KinematicResult
 from rockcli.dynamics.result import Assessment, RockingRun, RunStatus, Verdict
 from rockcli.model.schema import Model
 from rockcli.records.record import Record
-from rockcli.studies.assess import AssessmentOutput, Catalogue, assess_model_output
-from rockcli.studies.catalogue import main_mechanism, named_result
 
 
 class Classification(StrEnum):
@@ -155,10 +155,10 @@ def reference_rerun(model: Model, record: Record, ground: bool, file: str | None
     block, motion and settings)."""
 
     def run(polarity: int) -> RockingRun:
+        from rockcli.analyses.assess import rocked_input, settings_from
         from rockcli.dynamics.settings import Engine
         from rockcli.dynamics.simulate import simulate
         from rockcli.model.derive import solver_options
-        from rockcli.studies.assess import rocked_input, settings_from
 
         block, shaking, _, _ = rocked_input(model, record, ground, file, mechanism, mechanisms)
         settings = settings_from(solver_options(model))
@@ -275,8 +275,8 @@ def compare_model_output(
     motion of the record (the code check applies the code's at-height rules to the record's
     spectrum); ground: rock it on the record itself.
     """
+    from rockcli.analyses.kinematic import kinematic_model
     from rockcli.model.catalogue import catalogue
-    from rockcli.studies.kinematic import kinematic_model
 
     check_code_demand(model, code_demand)
     own = code_demand == CodeDemand.RECORD

@@ -26,7 +26,7 @@ or with censored records a parametric bootstrap read through the lognormal's piv
 (:func:`ida_censored_band`). :func:`band_method` names each in words.
 
 Every likelihood is maximised in log space by Newton's method with bounded work
-(rockcli/fragility/likelihood.py), so a fit and its band end in seconds whatever the data:
+(rockcli/studies/fragility/likelihood.py), so a fit and its band end in seconds whatever the data:
 intensities of 1e-300 and 1e4 alike, counts of a million runs. A level repeated in MSA data is
 one stripe (the binomial likelihood is the same: its runs and exceedances add up).
 
@@ -43,7 +43,7 @@ from dataclasses import dataclass
 import numpy as np
 from scipy import special
 
-from rockcli.fragility.likelihood import (
+from rockcli.studies.fragility.likelihood import (
     NEWTON_TOLERANCE,
     CensoredSets,
     censored_fit,
@@ -127,7 +127,7 @@ def ida_censored_fit(
     """The maximum-likelihood lognormal of collapse intensities ``im`` and of records
     right-censored at ``censored`` (each the intensity below which such a record was seen
     not to reach the state; module docstring), by Newton's method to ``tolerance``
-    (rockcli.fragility.likelihood.censored_fit). Without censored records: ida_fit with ddof
+    (rockcli.studies.fragility.likelihood.censored_fit). Without censored records: ida_fit with ddof
     0, in closed form."""
     c = np.asarray(censored, dtype=float)
     if c.size == 0:
@@ -142,7 +142,7 @@ def _censored_search(
     logs: np.ndarray, censored_logs: np.ndarray, tolerance: float = NEWTON_TOLERANCE
 ) -> tuple[float, float, float, float]:
     """(m, s, a, b) of the censored maximum likelihood: the standardization of the records'
-    logs and the probit's intercept and slope on it (rockcli.fragility.likelihood)."""
+    logs and the probit's intercept and slope on it (rockcli.studies.fragility.likelihood)."""
     every = np.concatenate([logs, censored_logs])
     m, s = standardize(every)
     y = ((every - m) / s)[None, :]
@@ -224,7 +224,7 @@ def msa_fit(
     """The maximum-likelihood lognormal fit of exceedance counts at intensity levels (MSA):
     θ, β maximising the binomial log-likelihood (module docstring), by Newton's method on
     the probit's intercept and slope over the standardized log levels (a concave problem:
-    rockcli.fragility.likelihood) to ``tolerance``."""
+    rockcli.studies.fragility.likelihood) to ``tolerance``."""
     logs, n, z = msa_stripes(im, runs, exceedances)
     m, s, a, b = _msa_search(logs, n, z, tolerance)
     return _lognormal(m - s * a / b, s / b, None, int(n.sum()))
@@ -402,7 +402,7 @@ def ida_censored_band(
     :func:`ida_band`'s exact band). A plain percentile bootstrap is short for a handful of
     records (its β̂* are biased low as β̂ is). The resamples are refitted by Newton's method
     all at once, CHUNK_ELEMENTS at a time, in the standardized logs of the data
-    (rockcli.fragility.likelihood.censored_fit). A resample whose likelihood has no maximum
+    (rockcli.studies.fragility.likelihood.censored_fit). A resample whose likelihood has no maximum
     (no record reaches the state, and its θ runs off upwards; or the records that do are all
     at one intensity, above every censored one) counts as P = 1 at every intensity: its
     records were drawn high, and dropping it would leave the band short on that side."""
@@ -443,8 +443,8 @@ def censored_refits(
     """The censored maximum likelihood of every resample at once: θ, β and whether each
     converged. Row k of ``logs`` (K × records) holds resample k's ln IM, a collapse intensity
     where ``reached`` and else a censoring one; each is searched from ``start``
-    (rockcli.fragility.likelihood.censored_fit, on the logs standardized by start's ln θ and
-    β). A resample without a finite maximum (rockcli.fragility.likelihood.has_maximum) does
+    (rockcli.studies.fragility.likelihood.censored_fit, on the logs standardized by start's ln θ and
+    β). A resample without a finite maximum (rockcli.studies.fragility.likelihood.has_maximum) does
     not converge: NaN."""
     m, s = math.log(start.median), start.beta
     y = (np.asarray(logs, dtype=float) - m) / s

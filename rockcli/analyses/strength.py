@@ -22,7 +22,7 @@ from rockcli.codecheck.restrainer_check import DISPLACEMENT_BASIS
 from rockcli.codecheck.steel import CLAUSE
 from rockcli.codecheck.tie import Verification, anchorage, ductility
 from rockcli.dynamics.result import Assessment
-from rockcli.mechanics import Restrainer, Rocker
+from rockcli.mechanics import Restrainer, Rocker, linear_global_stiffness, restrainer_coefficient
 
 #: A member on its yield plateau carries F_y exactly; on its elastic branch K·(u − c) can pass
 #: F_y by the rounding of c (measured 3e-14 relative in tests/dynamics/test_hysteresis.py):
@@ -99,3 +99,39 @@ def first_time(times: Iterable[float | None]) -> float | None:
     """The earliest of the times given, None when none is."""
     given = [t for t in times if t is not None]
     return min(given) if given else None
+
+
+def restrainer_effectiveness(block: Rocker) -> list[dict[str, Any]]:
+    """The paper's §4.3 quick check of every restrainer, per side.
+
+    c_K = K r²/I0 against c_E = p² (c_K should exceed c_E by one or two orders of magnitude
+    to matter), and the sign of the linearized global stiffness on that side with all
+    restrainers acting (paper Eq. 16–18; mechanics.linear_global_stiffness).
+    """
+    if not block.restrainers or block.mass is None:
+        return []
+    rows = []
+    sides = (
+        ((block.free_side, "θ > 0" if block.free_side > 0 else "θ < 0"),)
+        if block.one_sided
+        else ((1, "θ > 0"), (-1, "θ < 0"))
+    )
+    for side, label in sides:
+        stiff = linear_global_stiffness(block, side)
+        for sp in block.restrainers:
+            k, r, _ = sp.side(side)
+            if sp.path:  # on a chain's upper block: the radius of a point with its arm at rest
+                r = sp.arm_at_rest(side)
+            c_k = restrainer_coefficient(k, r, block.inertia)
+            rows.append(
+                {
+                    "name": sp.name,
+                    "side": label,
+                    "K": k,
+                    "c_K": c_k,
+                    "c_E": block.p2,
+                    "ratio": c_k / block.p2,
+                    "global_stiffness": "positive" if stiff > 0 else "negative",
+                }
+            )
+    return rows

@@ -2,7 +2,7 @@
 
 Composition only: the geometry of each mechanism comes from rockcli.mechanisms.catalogue, its
 capacity from rockcli.codecheck.kinematic, its checks from the edition's rules through
-:func:`rockcli.studies.capacity_check.analyse_capacity` — the very path of today's block. A storey
+:func:`rockcli.analyses.capacity_check.analyse_capacity` — the very path of today's block. A storey
 mechanism stands in the building at the height of its hinge (Z + hinge height: ψ and the floor
 spectra there). The governing mechanism is the one with the lowest ULS ζ_E (capacity over
 demand of the deciding checks), then the lowest DLS ζ_E, then the lowest α0
@@ -14,6 +14,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, replace
 
+from rockcli.analyses.capacity_check import analyse_capacity
 from rockcli.codecheck.demand import LimitStateDemand
 from rockcli.codecheck.free import MASONRY_TYPES, elastic_period
 from rockcli.codecheck.kinematic import Capacity, Mechanism, alpha0, capacity
@@ -25,7 +26,6 @@ from rockcli.model.catalogue import Mechanism as CatalogueMechanism
 from rockcli.model.catalogue import named, placed
 from rockcli.model.derive_ntc import BuildingSettings, NtcSettings
 from rockcli.notes import Note
-from rockcli.studies.capacity_check import analyse_capacity
 
 
 def main_mechanism(kin: KinematicResult, name: str | None = None) -> MechanismResult | None:

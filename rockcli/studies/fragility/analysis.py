@@ -1,6 +1,6 @@
 """Run a fragility study on the sweep's executors (local processes or a dask cluster).
 
-The tasks (rockcli.fragility.run) go to the lanes as chunks of one task each
+The tasks (rockcli.studies.fragility.run) go to the lanes as chunks of one task each
 (rockcli.studies.parallel.chunks); each task's runs are appended to cases.csv as it completes,
 so Ctrl-C keeps every finished task, and ``--resume`` hands each task the runs already on
 disk. The document is made from every task's runs once all are done.
@@ -14,9 +14,9 @@ from dataclasses import dataclass
 from typing import Any
 
 from rockcli.errors import InputError
-from rockcli.fragility.output import Folder, Kept
-from rockcli.fragility.run import Task, TaskResult, run_task, task_labels, tasks
-from rockcli.fragility.study import FragilityPlan
+from rockcli.studies.fragility.output import Folder, Kept
+from rockcli.studies.fragility.run import Task, TaskResult, run_task, task_labels, tasks
+from rockcli.studies.fragility.study import FragilityPlan
 from rockcli.studies.parallel.executor import Lane
 
 Progress = Callable[[int, int], None]
@@ -50,8 +50,8 @@ def run_fragility(
     started: float | None = None,
 ) -> FragilityResult:
     """Every task of the study, the runs on disk kept with ``resume``; the document."""
-    from rockcli.fragility.results import document
     from rockcli.process import interrupted
+    from rockcli.studies.fragility.results import document
     from rockcli.studies.parallel.chunks import run_chunks
     from rockcli.studies.parallel.setup import warm
 

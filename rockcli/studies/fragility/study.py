@@ -31,15 +31,15 @@ from typing import Annotated, Any, Literal
 from pydantic import BaseModel, Field, ValidationError
 
 from rockcli.errors import InputError
-from rockcli.fragility.search import MAX_SCAN_POINTS, MIN_TOLERANCE_SHARE, scan_problem
 from rockcli.model.schema_base import Table
 from rockcli.records.periods import MAX_PERIOD, MIN_PERIOD
+from rockcli.studies.fragility.search import MAX_SCAN_POINTS, MIN_TOLERANCE_SHARE, scan_problem
 from rockcli.studies.sweep.paths import AxisSpec
 from rockcli.studies.sweep.study import EngineName, RecordSource, RecordSpec, StudyPlan
 
 
 class Measure(StrEnum):
-    """The intensity measures (rockcli.fragility.intensity)."""
+    """The intensity measures (rockcli.studies.fragility.intensity)."""
 
     PGA = "pga"
     PGV = "pgv"
@@ -339,8 +339,8 @@ def check_mechanism(name: str | None, model_file: str, file: str) -> None:
     model of one block has only its own)."""
     if name is None:
         return
-    from rockcli.studies.assess import BLOCK_MECHANISM
-    from rockcli.studies.rocked import rockable_names
+    from rockcli.analyses.assess import BLOCK_MECHANISM
+    from rockcli.analyses.rocked import rockable_names
 
     names = [str(n) for n in rockable_names(model_file) if n is not None] or [str(BLOCK_MECHANISM)]
     if name not in names:

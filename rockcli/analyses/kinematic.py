@@ -143,8 +143,8 @@ def kinematic_model(
     record suite's target, rockcli.studies.suite_run.compare). mechanisms: the model's catalogue
     when the caller already has it (rockcli.model.catalogue.catalogue).
     """
+    from rockcli.analyses.catalogue import analyse_catalogue
     from rockcli.model.catalogue import catalogue
-    from rockcli.studies.catalogue import analyse_catalogue
 
     settings = check_settings(model, edition)
     if mechanisms is None:

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import dataclasses
 from dataclasses import dataclass
+from functools import cached_property
 from typing import TYPE_CHECKING, Any
 
 from rockcli.dynamics.result import Assessment
@@ -15,9 +16,9 @@ from rockcli.notes import Note
 from rockcli.records.record import Record
 
 if TYPE_CHECKING:
+    from rockcli.analyses.floor import Floor
+    from rockcli.analyses.rocked import Rocked
     from rockcli.model.catalogue import Mechanism as CatalogueMechanism
-    from rockcli.studies.floor import Floor
-    from rockcli.studies.rocked import Rocked
 
 
 @dataclass(frozen=True)
@@ -50,6 +51,22 @@ class AssessmentOutput:
     shaking: Record | None = None
     mechanism: tuple[str, str] | None = None
 
+    @cached_property
+    def restrainer_checks(self) -> list[dict[str, Any]]:
+        """Each restrainer against its strength over both polarities, as data
+        (rockcli.analyses.strength.restrainer_checks)."""
+        from rockcli.analyses.strength import restrainer_checks
+
+        return restrainer_checks(self.block, self.result)
+
+    @cached_property
+    def effectiveness(self) -> list[dict[str, Any]]:
+        """The paper's §4.3 quick check of every restrainer, per side
+        (rockcli.analyses.strength.restrainer_effectiveness)."""
+        from rockcli.analyses.strength import restrainer_effectiveness
+
+        return restrainer_effectiveness(self.block)
+
 
 def settings_from(options: Any) -> SolverSettings:
     """SolverSettings from the model's [analysis] options (same field names by design)."""
@@ -69,7 +86,7 @@ def assess_model_output(
     mechanisms: Catalogue | None = None,
 ) -> AssessmentOutput:
     """Both polarities of a validated model under a record: the record itself for a block on
-    the ground (or with ``ground``), its floor motion for a block at height (studies.floor).
+    the ground (or with ``ground``), its floor motion for a block at height (analyses.floor).
 
     tolerance_check: run each polarity again at tighter tolerances and attach the check to
     its run (dynamics.tolerance; the fast engine only: the reference engine is the accuracy
@@ -77,10 +94,10 @@ def assess_model_output(
     governing one; a model of one block has only its own, "overturning, whole wall").
     mechanisms: the model's catalogue when the caller has derived it (derived here else).
     """
+    from rockcli.analyses.rocked import mechanism_notes
     from rockcli.dynamics.simulate import assess
     from rockcli.model.derive import describe, solver_options
     from rockcli.model.plausible import model_warnings
-    from rockcli.studies.rocked import mechanism_notes
 
     rocked_value, shaking, floor = rocked_motion(model, record, ground, file, mechanism,
                                                  mechanisms)  # fmt: skip
@@ -165,12 +182,12 @@ def rocked_motion(model: Model, record: Record, ground: bool, file: str | None,
                   mechanism: str | None, mechanisms: Catalogue | None = None,
                   ) -> tuple[Rocked, Record, Floor | None]:  # fmt: skip
     """(the mechanism rocked, the motion it sees, its floor): the catalogue's mechanism
-    named, the only one or the governing one (rockcli.studies.rocked), on its floor motion
+    named, the only one or the governing one (rockcli.analyses.rocked), on its floor motion
     unless ``ground`` (refused for a mechanism on the ground, where it would change nothing
     the user asked). mechanisms: the model's catalogue when the caller has derived it."""
+    from rockcli.analyses.floor import floor_record
+    from rockcli.analyses.rocked import rocked_mechanism
     from rockcli.errors import InputError
-    from rockcli.studies.floor import floor_record
-    from rockcli.studies.rocked import rocked_mechanism
 
     rocked = rocked_mechanism(model, record, mechanism, mechanisms)
     if ground and rocked.floor is None:
