@@ -615,7 +615,7 @@ def assess(
             engine=engine,
             history=history,
             samples=samples,
-        )  # fmt: skip
+        )
         for pol in polarities
     )
     if len(runs) == 1:
