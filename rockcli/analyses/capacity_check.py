@@ -93,6 +93,7 @@ def analyse_capacity(
     pos: Position,
     alpha0_by_side: dict[str, float],
     extra_notes: tuple[str, ...] = (),
+    activation_by_side: dict[str, dict[str, float]] | None = None,
 ) -> KinematicResult:
     """The checks of the settings' edition on one mechanism's capacity at its position."""
     notes = [*pos.notes, *extra_notes]
@@ -159,6 +160,8 @@ def analyse_capacity(
         alpha0_by_side=alpha0_by_side,
         restrainer_actions=actions,
         FC_rule=str(settings.FC_rule),
+        position=pos,
+        activation_by_side=activation_by_side or {},
     )
 
 

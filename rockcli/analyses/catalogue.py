@@ -196,8 +196,11 @@ def analyse_mechanism(
     by_side = {str(s): alpha0(side_check(mech, s, settings)) for s in mech.reported}
     notes = (*mech.notes, *free_notes, *mech.strength_notes)
     pos = mechanism_position(mech, settings.building)
-    result = analyse_capacity(cap, settings, dem, pos, by_side, notes)
-    from rockcli.codecheck.kinematic import participating_mass
+    from rockcli.codecheck.kinematic import activation_terms, participating_mass
+
+    terms = {str(s): activation_terms(side_check(mech, s, settings))
+             for s in sorted({*mech.reported, cap.mech.side}, reverse=True)}  # fmt: skip
+    result = analyse_capacity(cap, settings, dem, pos, by_side, notes, terms)
 
     return MechanismResult(mech.name, mech.type.value, mech.hinge_height, mech.storey,
                            participating_mass(cap.mech),

@@ -111,6 +111,11 @@ class KinematicResult:
             result describes (None: the block, outside a catalogue).
         FC_rule: why the check used that FC (given, a knowledge level's, LC1's by
             Circolare 7/2019 §C8.7.1.2.1.3).
+        position: where the check put the mechanism (codecheck.position.Position: its
+            height, the building's T1, ψ, γ), whose floor spectra it read.
+        activation_by_side: α0's virtual work term by term on each side of
+            ``alpha0_by_side`` and the side analysed (codecheck.kinematic.activation_terms),
+            keys as ``alpha0_by_side``.
     """
 
     edition: str
@@ -132,6 +137,8 @@ class KinematicResult:
     governing: str | None = None
     mechanism: str | None = None
     FC_rule: str = ""
+    position: Any = None
+    activation_by_side: dict[str, dict[str, float]] = field(default_factory=dict)
 
     def verdict(self) -> dict[str, bool | None]:
         """DLS and ULS satisfied? (None: not evaluated).

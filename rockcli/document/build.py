@@ -32,6 +32,7 @@ if TYPE_CHECKING:
 
     from rockcli.analyses.compare import ComparisonOutput
     from rockcli.codecheck.position import Position
+    from rockcli.codecheck.result import KinematicResult
     from rockcli.model.schema import Model
     from rockcli.records.record import Record
 
@@ -46,9 +47,6 @@ class Inputs:
         every input file (model, record, hazard grid…), hashed in the identification.
         command: the command line that made the report. date: when (ISO 8601).
         casebook: the validation casebook's result on this install, or None when not run.
-        mechanisms: the model's catalogue as the analyses derived it
-            (rockcli.model.catalogue): what the report shows of each mechanism is read from
-            these values, never derived again.
     """
 
     model_path: str
@@ -62,7 +60,6 @@ class Inputs:
     project: Any | None = None
     #: Where the casebook's cases go: "annex" (after the signature), "inline" (in §10.2).
     casebook_place: str = "annex"
-    mechanisms: tuple[Any, ...] = ()
 
 
 def build_document(parts: Sequence[Part], lang: str) -> Document:
@@ -122,7 +119,7 @@ def mechanism_sections(part: Part, record: Any, w: Words) -> list[Section]:
         own = part.inputs.model.notes
         blocks: list[Block] = [Paragraph(w("summary.mechanism_intro", name=name))]
         blocks += [b for b in body.blocks[1:] if not (isinstance(b, Paragraph) and b.text == own)]
-        blocks += kinematic_section(part.inputs, doc["kinematic"], w, catalogue=False).blocks
+        blocks += kinematic_section(out.kinematic, doc["kinematic"], w, catalogue=False).blocks
         blocks += rocking_section(doc["rocking"], out, record, w).blocks
         blocks.append(Paragraph(w(f"class.{doc['classification']}"), "verdict"))
         section = Section(f"mechanism-{i}", w("section.mechanism", name=name), tuple(blocks))
@@ -140,7 +137,7 @@ def wall_sections(part: Part, w: Words) -> list[Section]:
     return [
         model_section(inputs, doc["rocking"]["model"], w, doc["rocking"].get("mechanism")),
         demand_section(inputs, doc, record, w, out),
-        kinematic_section(inputs, doc["kinematic"], w),
+        kinematic_section(out.kinematic, doc["kinematic"], w),
         rocking_section(doc["rocking"], out, record, w),
         comparison_section(doc, w),
         *mechanism_sections(part, record, w),
@@ -335,7 +332,7 @@ def demand_section(
     record_spectrum = RecordSpectrum.from_record(record, g=rocking["model"]["g"])
     marks = {"Ts": kin["Ts"]} if kin.get("Ts") else {}
     code = [(st, sp) for st, sp, _ in code_spectra]
-    pos = check_position(inputs, kin["edition"], out.kinematic.mechanism)
+    pos = out.kinematic.position  # where the check put the mechanism shown
     blocks.append(figure(
         "spectra",
         spectra(code, record_spectrum, record.name, marks, w),
@@ -346,24 +343,6 @@ def demand_section(
         blocks.append(floor_figure(code, pos, kin["edition"], shaking, record.name,
                                    rocking["model"]["g"], marks, w))  # fmt: skip
     return Section("demand", w("section.demand"), tuple(blocks))
-
-
-def shown_mechanism(inputs: Inputs, name: str | None) -> Any:
-    """The catalogue's value of the mechanism shown (the first when none is named: a block
-    file's block), from the values the analyses derived (Inputs.mechanisms)."""
-    from rockcli.model.catalogue import named
-
-    return inputs.mechanisms[0] if name is None else named(inputs.mechanisms, name)
-
-
-def check_position(inputs: Inputs, edition: str, mechanism: str | None) -> Position:
-    """Where the code check put the mechanism shown, by the check's own function
-    (analyses.catalogue.mechanism_position of the catalogue's value)."""
-    from rockcli.analyses.catalogue import mechanism_position
-    from rockcli.analyses.kinematic import check_settings
-
-    settings = check_settings(inputs.model, edition)
-    return mechanism_position(shown_mechanism(inputs, mechanism), settings.building)
 
 
 def floor_figure(
@@ -449,7 +428,7 @@ def record_demand_grids(demand: Mapping[str, Any], w: Words) -> list[Block]:
 
 
 def kinematic_section(
-    inputs: Inputs, kin: Mapping[str, Any], w: Words, catalogue: bool = True
+    result: KinematicResult, kin: Mapping[str, Any], w: Words, catalogue: bool = True
 ) -> Section:
     """The code's check of the mechanism shown (``catalogue``: with the table of every
     mechanism of a wall, which the governing mechanism's section has and the others' need
@@ -460,10 +439,9 @@ def kinematic_section(
     blocks: list[Block] = [Paragraph(w(f"kin.intro_{kin['edition']}"))]
     if catalogue and len(kin.get("mechanisms", ())) > 1:
         blocks.append(catalogue_grid(kin, w))
-    mechs = mechanisms(inputs, kin)
-    blocks.append(activation_grid(mechs, w))
+    blocks.append(activation_grid(result.activation_by_side, w))
     quantities = [
-        ("M*", participating_mass_of(mechs, kin), "kg", "kin.M_star"),
+        ("M*", participating_mass_of(result), "kg", "kin.M_star"),
         ("e*", kin["e_star"], "", "kin.e_star"),
         ("a0*", kin["a0_star"], "m/s²", "kin.a0_star"),
         ("FC", kin["FC"], "", "kin.FC"),
@@ -515,43 +493,23 @@ def catalogue_grid(kin: Mapping[str, Any], w: Words) -> Grid:
                 (False, *([True] * 8)))  # fmt: skip
 
 
-def mechanisms(inputs: Inputs, kin: Mapping[str, Any]) -> dict[int, Any]:
-    """The check's mechanism on each side it looks at, keyed by side: the catalogue's
-    mechanism shown (rockcli.model.catalogue: a vertical flexure's two blocks about the hinge
-    the check found, not what the time history rocks; a block file's block with its loads
-    and thrusts), with the edition's sums (analyses.catalogue.side_check)."""
-    from rockcli.analyses.catalogue import side_check
-    from rockcli.analyses.kinematic import check_settings
+def participating_mass_of(result: KinematicResult) -> float:
+    """M* of the mechanism shown, on the side the check governs (Circolare 617/2009 Eq.
+    C8A.4.2; Circolare 7/2019 e*·Σ P/g of Eq. C8.7.1.5), as the check computed it
+    (rockcli.analyses.catalogue.MechanismResult.M_star)."""
+    from rockcli.model.catalogue import named
 
-    settings = check_settings(inputs.model, kin["edition"])
-    sides = sorted({int(s) for s in kin.get("alpha0_by_side", {})} | {int(kin["side"])},
-                   reverse=True)  # fmt: skip
-    mech = shown_mechanism(inputs, kin.get("mechanism"))
-    return {side: side_check(mech, side, settings) for side in sides}
+    return float(named(result.catalogue, result.mechanism or "").M_star)
 
 
-def participating_mass_of(mechs: Mapping[int, Any], kin: Mapping[str, Any]) -> float:
-    """M* of the side the check governs (Circolare 617/2009 Eq. C8A.4.2; Circolare 7/2019
-    e*·Σ P/g of Eq. C8.7.1.5), by codecheck.kinematic.participating_mass, the function e*
-    comes from; a wall's mechanism: the catalogue's own."""
-    from rockcli.codecheck.kinematic import participating_mass
-
-    for entry in kin.get("mechanisms", ()):
-        if entry["name"] == kin.get("mechanism") and len(kin["mechanisms"]) > 1:
-            return float(entry["M_star"])
-    return participating_mass(mechs[int(kin["side"])])
-
-
-def activation_grid(mechs: Mapping[int, Any], w: Words) -> Grid:
-    """α0 by virtual work, term by term, on each side the check looks at (codecheck.kinematic
-    activation_terms: the same sums as α0 itself)."""
-    from rockcli.codecheck.kinematic import activation_terms
-
+def activation_grid(by_side: Mapping[str, Mapping[str, float]], w: Words) -> Grid:
+    """α0 by virtual work, term by term, on each side the check looks at, as the check
+    computed them (KinematicResult.activation_by_side: codecheck.kinematic.activation_terms,
+    the same sums as α0 itself)."""
     rows = []
-    for side, mech in mechs.items():
-        terms = activation_terms(mech)
+    for key, terms in by_side.items():
         rows.append((
-            "O" if side > 0 else "O′",
+            "O" if int(key) > 0 else "O′",
             *(w.number(terms[k] / 1e3, "{:.4g}") for k in ("stabilising", "thrusts",
                                                             "restrainers", "overturning")),
             w.number(terms["alpha0"]),

@@ -91,7 +91,7 @@ def write_report(
     for path, model in zip(model_paths, models, strict=True):
         out, doc, others = wall_comparisons(model, record, path, comparison, choices.shown)
         inputs = Inputs(path, model, record, (("model", path), *files), command, report_date(),
-                        **front, mechanisms=out.catalogue)  # fmt: skip
+                        **front)  # fmt: skip
         sizing = wall_sizing(path, record, doc, comparison.analyses) if choices.retrofit else None
         parts.append(Part(inputs, out, doc, others, sizing))
     document = build_document(parts, lang)
@@ -198,7 +198,6 @@ def write_suite_report(
     and checked before any analysis runs."""
     from rockcli.document.build import Inputs
     from rockcli.document.suite import SuitePart, build_suite_document
-    from rockcli.model.catalogue import catalogue
     from rockcli.studies.suite_run.assess import load_suite_and_model
     from rockcli.suites.run import suite_document
 
@@ -207,15 +206,14 @@ def write_suite_report(
     front = report_front(front, grid_file)
     parts = []
     for path, loaded in zip(model_paths, loads, strict=True):
-        doc, runs = suite_comparison(loaded, path, grid_file, analyses, code_demand)
+        doc, runs, kin = suite_comparison(loaded, path, grid_file, analyses, code_demand)
         files = [("model", path)]
         if Path(suite_path).is_file():
             files.append(("suite", suite_path))
         files += [("record", str(entry.path)) for entry in loaded.settings.entries]
         files += [("hazard_grid", grid_file)] if grid_file else []
-        inputs = Inputs(path, loaded.model, None, tuple(files), command, report_date(), **front,
-                        mechanisms=catalogue(loaded.model))  # fmt: skip
-        parts.append(SuitePart(inputs, doc, suite_document(loaded.check), runs))
+        inputs = Inputs(path, loaded.model, None, tuple(files), command, report_date(), **front)
+        parts.append(SuitePart(inputs, doc, suite_document(loaded.check), runs, kin))
     document = build_suite_document(parts, lang)
     verdict = ", ".join(str(part.doc["classification"]) for part in parts)
     return write_document(document, html_path, pdf_path, verdict, docx_path)
@@ -223,10 +221,11 @@ def write_suite_report(
 
 def suite_comparison(
     loaded: Any, path: str, grid_file: str | None, analyses: Analyses, code_demand: str
-) -> tuple[dict[str, Any], list[tuple[Any, dict[str, Any], Record]]]:
+) -> tuple[dict[str, Any], list[tuple[Any, dict[str, Any], Record]], Any]:
     """`rock compare --suite`'s document of a loaded model and suite (the code check's
     ``code_demand``: the suite's target or mean), and each record's time history with its
-    history kept (its `rock assess` document, the scaled record)."""
+    history kept (its `rock assess` document, the scaled record); and the code check's
+    result."""
     from rockcli.analyses.assess import assess_model_output
     from rockcli.studies.suite_run.compare import compare_loaded
     from rockcli.terminal.assess import assessment_output_document
@@ -240,4 +239,4 @@ def suite_comparison(
         out = assess_model_output(loaded.model, record, analyses.engine, ground=analyses.ground,
                                   file=path, history=True)  # fmt: skip
         runs.append((out, assessment_output_document(out, record), record))
-    return doc, runs
+    return doc, runs, result.kinematic

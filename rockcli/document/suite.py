@@ -15,7 +15,6 @@ from typing import TYPE_CHECKING, Any
 from rockcli.document.build import (
     Inputs,
     assemble,
-    check_position,
     code_spectra_of,
     figure,
     floor_figure,
@@ -29,6 +28,7 @@ from rockcli.document.words import Words
 
 if TYPE_CHECKING:
     from rockcli.analyses.assess import AssessmentOutput
+    from rockcli.codecheck.result import KinematicResult
     from rockcli.records.record import Record
 
 
@@ -42,12 +42,15 @@ class SuitePart:
         check: the `rock suite check` JSON document of the suite (its compatibility).
         records: each record's time history with its history kept, its `rock assess`
             document and the scaled record, in the suite's order.
+        kinematic: the code check on the suite's demand (its position, the virtual work of
+            each side: the values the sections show).
     """
 
     inputs: Inputs
     doc: Mapping[str, Any]
     check: Mapping[str, Any]
     records: Sequence[tuple[AssessmentOutput, Mapping[str, Any], Record]]
+    kinematic: KinematicResult
 
 
 def build_suite_document(parts: Sequence[SuitePart], lang: str) -> Document:
@@ -82,8 +85,8 @@ def suite_sections(part: SuitePart, w: Words) -> list[Section]:
     first = records[0][1]
     return [
         model_section(inputs, first["model"], w, first.get("mechanism")),
-        suite_demand_section(inputs, doc, part.check, w, first),
-        kinematic_section(inputs, doc["kinematic"], w),
+        suite_demand_section(inputs, doc, part.check, w, first, part.kinematic),
+        kinematic_section(part.kinematic, doc["kinematic"], w),
         suite_rocking_section(doc, records, w),
         suite_comparison_section(doc, w, named(doc, records)),
         suite_conclusions_section(doc, w),
@@ -119,7 +122,7 @@ def suite_summary_section(parts: Sequence[SuitePart], w: Words) -> Section:
 
 def suite_demand_section(
     inputs: Inputs, doc: Mapping[str, Any], check: Mapping[str, Any], w: Words,
-    first: Mapping[str, Any],
+    first: Mapping[str, Any], result: KinematicResult,
 ) -> Section:  # fmt: skip
     """The suite: its records and scales, its target, its compatibility (table and figure);
     for a mechanism at height, the code's spectra there (``first``: the first record's
@@ -148,7 +151,7 @@ def suite_demand_section(
     blocks.append(figure("compatibility", compatibility(check, w),
                          w("figure.compatibility_caption")))  # fmt: skip
     kin = doc["kinematic"]
-    pos = check_position(inputs, kin["edition"], kin.get("mechanism"))
+    pos = result.position  # where the check put the mechanism
     if pos.at_height and code_spectra:
         code = [(st, sp) for st, sp, _ in code_spectra]
         # Each record's floor motion was rocked (not drawn: one curve per record), or with

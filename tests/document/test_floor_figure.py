@@ -12,24 +12,17 @@ import numpy as np
 import pytest
 
 from rockcli.analyses.kinematic import check_settings, given_demands, kinematic_model
-from rockcli.document.build import Inputs, check_position, demand_section
+from rockcli.document.build import Inputs, demand_section
 from rockcli.document.figures import (
     SPECTRUM_PERIODS,
     floor_curve,
     floor_spectra,
 )
 from rockcli.document.words import Words
-from rockcli.model.catalogue import catalogue
 from rockcli.model.load import load_model
 from rockcli.records.files import read_record
 
 pytest.importorskip("matplotlib", reason="the report extra (matplotlib) is not installed")
-
-
-def report_inputs(model) -> Inputs:
-    """The report's inputs of a model, with its catalogue as the analyses derive it."""
-    return Inputs("m.toml", model, None, (), "rock report", "2025-01-01",
-                  mechanisms=catalogue(model))  # fmt: skip
 
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -60,7 +53,7 @@ def wall():
     """The top-storey wall (Z = 3.5 m, 2019), its check on the model's spectra, its position."""
     model = load_model(TOP_STOREY)
     kin = kinematic_model(model)
-    return model, kin, check_position(report_inputs(model), kin.edition, kin.mechanism)
+    return model, kin, kin.position
 
 
 def test_the_position_is_the_checks_own(wall) -> None:
@@ -124,7 +117,7 @@ def test_the_2009_demand_at_height_is_the_circolare_617s() -> None:
     # d·(2π/T)²/g: Se(T1)·ψ·γ as T → 0 (the linear checks), ÷ √0.02 at T = T1.
     model = load_model(ALTAR)
     kin = kinematic_model(model)
-    pos = check_position(report_inputs(model), kin.edition, kin.mechanism)
+    pos = kin.position
     demands = given_demands(check_settings(model), model.analysis.g)
     spectrum = demands["SLV"].spectrum
     T, values = floor_curve(spectrum, "SLV", pos, "2009", np.array([0.0, 1e-6, 1.09]))
@@ -144,8 +137,7 @@ def demand_figures(model_path: Path, ground: bool = False) -> list:
     model, record = load_model(model_path), read_record(PULSE)
     out = compare_model_output(model, record, ground=ground)
     doc = comparison_output_document(out, record)
-    inputs = Inputs(str(model_path), model, record, (), "rock report", "2025-01-01",
-                    mechanisms=out.catalogue)  # fmt: skip
+    inputs = Inputs(str(model_path), model, record, (), "rock report", "2025-01-01")
     section = demand_section(inputs, doc, record, Words("it"), out)
     return [b for b in section.blocks if hasattr(b, "svg")]
 
