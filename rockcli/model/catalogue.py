@@ -163,7 +163,7 @@ class Mechanism:
                 collapse=collapses[k],
                 restitution=rocker.restitution(s),
                 e_rule=rule,
-            )  # fmt: skip
+            )
             for k, s in enumerate((1, -1))
         )
 
