@@ -29,8 +29,17 @@ def cover_rows(project: Project | None, date: str, w: Words) -> tuple[tuple[str,
         rows.append((w("project.coordinates"), coordinates(project, w)))
     designer = t.designer + (f" — {t.designer_registration}" if t.designer_registration else "")
     rows.append((w("project.designer"), designer))
-    rows.append((w("project.date"), t.date.isoformat() if t.date else date[:10]))
+    rows.append((w("project.date"), signed_on(project, date, w)))
     return tuple(rows)
+
+
+def signed_on(project: Project, date: str, w: Words) -> str:
+    """The day the report is signed, in the report's language: the project's ``date``, or
+    the day of the report (``date``: the report's time stamp, ISO 8601 first)."""
+    import datetime
+
+    day = project.table.date or datetime.date.fromisoformat(date[:10])
+    return w.date(day)
 
 
 def coordinates(project: Project, w: Words) -> str:
@@ -49,7 +58,7 @@ def signature_lines(project: Project | None, date: str, w: Words) -> tuple[str, 
     if project is None:
         return ()
     t = project.table
-    when = t.date.isoformat() if t.date else date[:10]
+    when = signed_on(project, date, w)
     lines = [w("project.place_date", comune=t.comune, date=when), w("project.the_designer"),
              t.designer]  # fmt: skip
     if t.designer_registration:

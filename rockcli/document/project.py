@@ -228,7 +228,7 @@ lat = 42.3498                                    # optional, degrees north
 datum = "WGS84"                                  # "WGS84" (a phone, a map) or "ED50" (the grid)
 designer = "Ing. Maria Rossi"                    # progettista
 designer_registration = "Ordine degli Ingegneri della Provincia dell'Aquila, n. 1234"
-date = 2026-11-27                                # optional; default: the day of the report
+# date = 2027-01-15                              # optional; default: the day of the report
 
 # The engineer's own text, in Markdown, placed before the analyses in this order. Each file
 # lies in this file's folder or below it (rock report --allow-outside lifts that).

@@ -7,6 +7,7 @@ Numbers are written with the language's decimal mark (0,1645 in Italian).
 
 from __future__ import annotations
 
+import datetime
 import tomllib
 from dataclasses import dataclass
 from functools import cache
@@ -17,6 +18,13 @@ from rockcli.notes import Items, Note
 
 #: The report's languages, the filing language first (the default).
 LANGUAGES = ("it", "en")
+#: The months as each language writes them in a date ("7 dicembre 2026").
+MONTHS = {
+    "it": ("gennaio", "febbraio", "marzo", "aprile", "maggio", "giugno", "luglio", "agosto",
+           "settembre", "ottobre", "novembre", "dicembre"),
+    "en": ("January", "February", "March", "April", "May", "June", "July", "August",
+           "September", "October", "November", "December"),
+}  # fmt: skip
 
 
 @cache
@@ -51,6 +59,11 @@ class Words:
         """The message ``key``, its ``{name}`` fields filled (numbers already formatted)."""
         text = catalogue(self.lang)[key]
         return text.format(**values) if values else text
+
+    def date(self, day: datetime.date) -> str:
+        """A calendar day as this language writes it in a document: "7 dicembre 2026",
+        "7 December 2026" (never ISO 8601 in the text a reviewer reads)."""
+        return f"{day.day} {MONTHS[self.lang][day.month - 1]} {day.year}"
 
     def number(self, value: float | None, fmt: str = "{:.4g}") -> str:
         """A number as this language writes it; an em dash for none (or NaN)."""

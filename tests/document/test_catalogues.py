@@ -52,6 +52,14 @@ def test_numbers_take_the_languages_decimal_mark() -> None:
     assert Words("it").number(None) == "—" and Words("en").number(float("nan")) == "—"
 
 
+def test_a_day_is_written_as_the_language_writes_it() -> None:
+    import datetime
+
+    assert Words("it").date(datetime.date(2026, 12, 7)) == "7 dicembre 2026"
+    assert Words("en").date(datetime.date(2026, 1, 31)) == "31 January 2026"
+    assert Words("it").date(datetime.date(2027, 8, 1)) == "1 agosto 2027"
+
+
 def test_the_code_terms_in_italian() -> None:
     it = Words("it")
     assert it("ls.ULS") == "SLV" and it("ls.DLS") == "SLD"

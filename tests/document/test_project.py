@@ -50,6 +50,24 @@ def test_the_template_loads(tmp_path: Path) -> None:
     path.write_text(TEMPLATE, encoding="utf-8")
     project = load_project(path)
     assert project.table.designer and project.sections == ()
+    # No fixed day: a report is signed on the day it is made unless the engineer sets one.
+    assert project.table.date is None
+
+
+def test_the_signature_is_dated_in_the_reports_language(tmp_path: Path, monkeypatch) -> None:
+    pytest.importorskip("jinja2")
+    pytest.importorskip("pyproj")
+    # 2026-12-07 09:30 UTC, the report's time stamp; the example project sets no date.
+    monkeypatch.setenv("SOURCE_DATE_EPOCH", "1796635800")
+    for lang, day in (("it", "7 dicembre 2026"), ("en", "7 December 2026")):
+        html = tmp_path / f"r-{lang}.html"
+        code, _, err = run("report", str(FACADE), "--record", str(RICKER), "--project",
+                           str(PROJECT), "--lang", lang, "-o", str(html))  # fmt: skip
+        assert code == 0, err
+        text = html.read_text(encoding="utf-8")
+        assert f"L&#39;Aquila (AQ), {day}" in text, lang
+        cover = text[: text.index("</table>")]  # the cover's facts, the date among them
+        assert day in cover and "2026-12-07" not in cover, lang
 
 
 BAD = [
