@@ -4,7 +4,10 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 from enum import StrEnum
-from typing import Any
+from typing import TYPE_CHECKING, Any
+
+if TYPE_CHECKING:
+    from rockcli.codecheck.position import Position
 
 
 class Method(StrEnum):
@@ -137,7 +140,7 @@ class KinematicResult:
     governing: str | None = None
     mechanism: str | None = None
     FC_rule: str = ""
-    position: Any = None
+    position: Position | None = None
     activation_by_side: dict[str, dict[str, float]] = field(default_factory=dict)
 
     def verdict(self) -> dict[str, bool | None]:

@@ -333,6 +333,7 @@ def demand_section(
     marks = {"Ts": kin["Ts"]} if kin.get("Ts") else {}
     code = [(st, sp) for st, sp, _ in code_spectra]
     pos = out.kinematic.position  # where the check put the mechanism shown
+    assert pos is not None  # every catalogue check sets it (analyses.catalogue)
     blocks.append(figure(
         "spectra",
         spectra(code, record_spectrum, record.name, marks, w),

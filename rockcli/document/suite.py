@@ -152,6 +152,7 @@ def suite_demand_section(
                          w("figure.compatibility_caption")))  # fmt: skip
     kin = doc["kinematic"]
     pos = result.position  # where the check put the mechanism
+    assert pos is not None  # every catalogue check sets it (analyses.catalogue)
     if pos.at_height and code_spectra:
         code = [(st, sp) for st, sp, _ in code_spectra]
         # Each record's floor motion was rocked (not drawn: one curve per record), or with
