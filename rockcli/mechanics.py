@@ -147,6 +147,30 @@ class Restrainer:
 
 
 @dataclass(frozen=True)
+class WorkItem:
+    """A body, load or thrust of a mechanism at rest, with its virtual displacement per unit
+    rotation about the hinge (the code check's virtual-work table, codecheck.kinematic).
+
+    Attributes:
+        name: its label. kind: "body", "load" or "thrust". force: its weight, or a thrust's
+        force [N]. x, z: its point [m]. dx, dy: its virtual displacement outward and up [m/rad].
+        bears: its weight rests on the mechanism. moves: its mass follows it horizontally.
+        opens: a thrust's direction, +1 pushing the mechanism open, −1 shut (0: a weight).
+    """
+
+    name: str
+    kind: str
+    force: float
+    x: float
+    z: float
+    dx: float
+    dy: float
+    bears: bool = True
+    moves: bool = True
+    opens: int = 0
+
+
+@dataclass(frozen=True)
 class Load:
     """A weight carried by or pushing on the block, as a point of the block.
 

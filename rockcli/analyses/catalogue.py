@@ -196,11 +196,13 @@ def analyse_mechanism(
     by_side = {str(s): alpha0(side_check(mech, s, settings)) for s in mech.reported}
     notes = (*mech.notes, *free_notes, *mech.strength_notes)
     pos = mechanism_position(mech, settings.building)
-    from rockcli.codecheck.kinematic import activation_terms, participating_mass
+    from rockcli.codecheck.kinematic import activation_terms, activation_work, participating_mass
 
-    terms = {str(s): activation_terms(side_check(mech, s, settings))
-             for s in sorted({*mech.reported, cap.mech.side}, reverse=True)}  # fmt: skip
+    sides = sorted({*mech.reported, cap.mech.side}, reverse=True)
+    checks = {str(s): side_check(mech, s, settings) for s in sides}
+    terms = {key: activation_terms(check) for key, check in checks.items()}
     result = analyse_capacity(cap, settings, dem, pos, by_side, notes, terms)
+    result = replace(result, work_by_side={key: activation_work(c) for key, c in checks.items()})
 
     return MechanismResult(mech.name, mech.type.value, mech.hinge_height, mech.storey,
                            participating_mass(cap.mech),

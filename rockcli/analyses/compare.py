@@ -265,6 +265,7 @@ def compare_model_output(
     ground: bool = False,
     file: str | None = None,
     mechanism: str | None = None,
+    mechanisms: Catalogue | None = None,
 ) -> ComparisonOutput:
     """Both analyses of a validated model under a record, and their classification.
 
@@ -273,14 +274,16 @@ def compare_model_output(
     (InputError when it sets none). spectrum: the record's, when the caller has it already;
     history: keep θ(t) of both polarities (for plots). A block at height rocks on the floor
     motion of the record (the code check applies the code's at-height rules to the record's
-    spectrum); ground: rock it on the record itself.
+    spectrum); ground: rock it on the record itself. mechanisms: the model's catalogue when
+    the caller has derived it.
     """
     from rockcli.analyses.kinematic import kinematic_model
     from rockcli.model.catalogue import catalogue
 
     check_code_demand(model, code_demand)
     own = code_demand == CodeDemand.RECORD
-    mechanisms = catalogue(model)  # derived once: both analyses read these values
+    if mechanisms is None:  # derived once: both analyses read these values
+        mechanisms = catalogue(model)
     kin = kinematic_model(
         model,
         edition=edition,

@@ -140,12 +140,14 @@ def report(
     allow_outside, html_path, pdf_path, lang, code_demand, edition, engine, ground, grid_file,
     docx_path, project_path, casebook_place, mechanism_name, retrofit, mechanisms_shown, force,
 ):  # fmt: skip
-    """The calculation report of MODEL under a record (or a record suite): identification
-    and input digests, a summary of every mechanism, the model and its sketch, the site and
-    demand, the kinematic analysis, the rocking analysis, the comparison, every other
-    mechanism in full, the conclusions and the software's section (theory, field of use, the
-    validation casebook run on this install), in Italian or English. Several models (a
-    building's walls, under --record) make one report with one summary over all."""
+    """The calculation report of MODEL: the safety verification of every mechanism by the
+    code's kinematic analysis on the site's (or the model's) NTC spectra, with the conclusions
+    NTC 2018 §8.3 draws for the use class; with --record, the scenario of that record (the
+    rocking time history, the code check on its spectrum, their comparison) in its own
+    sections; with --suite, the suite's time histories by the code's rule. Identification and
+    input digests, a summary of every mechanism, the model, the software's section (theory,
+    field of use, the validation casebook run on this install), in Italian or English.
+    Several models (a building's walls) make one report with one summary over all."""
     from rockcli.analyses.choices import Analyses, ComparisonChoices
     from rockcli.cli.assess import one_record_or_suite
     from rockcli.cli.compare import demand_for
@@ -157,7 +159,17 @@ def report(
     check_allow_outside(allow_outside, suite_path, project_path,
                         applies_to="a suite or a project file",
                         usage="--suite SUITE or --project FILE with --allow-outside")  # fmt: skip
-    with_suite = one_record_or_suite(record_path, suite_path, None, None, None, target)
+    # No record and no suite: the verification alone, on the site's spectra (the filing form).
+    alone = record_path is None and suite_path is None
+    with_suite = not alone and one_record_or_suite(record_path, suite_path, None, None, None,
+                                                   target)  # fmt: skip
+    if alone and code_demand is not None:
+        from rockcli.errors import InputError
+
+        raise InputError("chooses the demand of a record's or a suite's code check",
+                         where="--code-demand", value=code_demand,
+                         allowed="--code-demand with --record or --suite (without them the "
+                         "code check is on the model's own spectra)")  # fmt: skip
     code_demand = demand_for(code_demand, with_suite)
     check_report_paths(html_path, pdf_path, force, docx_path)
     front = {"project": None, "casebook": casebook_place}
@@ -191,17 +203,28 @@ def report(
     if mechanism_name is not None and len(model_paths) > 1:
         raise InputError("names a mechanism of one model", where="--mechanism",
                          value=mechanism_name, allowed="--mechanism with one model")  # fmt: skip
+    if alone:
+        check_record_options(None, record_format, dt, units, scale, pga)
+        if target is not None:
+            raise InputError("applies only to a folder of records given as the suite",
+                             where="--target", value=target,
+                             allowed="--suite DIR --target KEY=VALUE,…")  # fmt: skip
+        if retrofit:
+            # rock retrofit checks each diameter under a record (the code and the time history).
+            raise InputError("sizes the rod under a record", where="--retrofit",
+                             allowed="--retrofit with --record FILE")  # fmt: skip
     if retrofit and code_demand != "record":
         # rock retrofit checks each diameter on the record's spectrum (one earthquake).
         raise InputError("sizes the rod on the record's spectrum", where="--retrofit",
                          value=f"--code-demand {code_demand}",
                          allowed="--retrofit with --code-demand record (the default)")  # fmt: skip
-    record = load_record(record_path, record_format, dt, units, scale, pga)
+    record = None if alone else load_record(record_path, record_format, dt, units, scale, pga)
     written = write_report(
         model_paths,
         record,
         **common,
-        files=(("record", record_path),) + ((("hazard_grid", grid_file),) if grid_file else ()),
+        files=((() if alone else (("record", record_path),))
+               + ((("hazard_grid", grid_file),) if grid_file else ())),
         choices=ReportChoices(
             ComparisonChoices(Analyses(engine, edition, ground), code_demand, grid_file,
                               mechanism_name),

@@ -5,7 +5,7 @@ from __future__ import annotations
 
 from enum import StrEnum
 
-__all__ = ["Edition", "LimitState", "Soil", "Topography"]
+__all__ = ["USE_COEFFICIENT", "Edition", "LimitState", "Soil", "Topography", "UseClass"]
 
 
 class Soil(StrEnum):
@@ -41,3 +41,16 @@ class Edition(StrEnum):
 
     E2009 = "2009"  # NTC 2008 + Circolare 617/2009
     E2019 = "2019"  # NTC 2018 + Circolare 7/2019
+
+
+class UseClass(StrEnum):
+    """Use class of the building (NTC 2018 §2.4.2)."""
+
+    I = "I"  # noqa: E741 (the code's numeral)
+    II = "II"
+    III = "III"
+    IV = "IV"
+
+
+#: The use coefficient CU of each use class (NTC 2018 §2.4.3, Tab. 2.4.II).
+USE_COEFFICIENT = {"I": 0.7, "II": 1.0, "III": 1.5, "IV": 2.0}

@@ -19,6 +19,7 @@ import math
 from dataclasses import dataclass, replace
 
 from rockcli.codecheck.free import branch_acceleration, branch_end
+from rockcli.codecheck.result import WorkTerm
 from rockcli.mechanics import Restrainer
 from rockcli.mechanisms.block import BlockSide, Polar, polar_of
 from rockcli.mechanisms.side import ChainPoint, ChainSide
@@ -117,6 +118,32 @@ def activation_terms(mech: Mechanism) -> dict[str, float]:
         "overturning": h,
         "alpha0": (g - t + restrainers) / h,
     }
+
+
+def activation_work(mech: Mechanism) -> tuple[WorkTerm, ...]:
+    """α0's virtual work per body, load, thrust and restrainer at θ = 0 (codecheck.result
+    .WorkTerm): the terms :func:`activation_terms` sums, item by item, so that α0 =
+    Σ resisting / Σ overturning can be recomputed from a printed table (Circolare 7/2019
+    §C8.7.1.2.1.1, Eq. C8.7.1.1; Circolare 617/2009 §C8A.4.1)."""
+    terms = []
+    for it in mech.view.work_items():
+        if it.kind == "thrust":
+            resisting, overturning = -it.opens * it.force * it.dx, 0.0
+        else:
+            resisting = it.force * it.dy if it.bears else 0.0
+            overturning = it.force * it.dx if it.moves else 0.0
+        terms.append(WorkTerm(it.name, it.kind, it.force, it.x, it.z, it.dx, it.dy,
+                              resisting + 0.0, overturning))  # fmt: skip
+    for i, sp in enumerate(mech.restrainers):
+        place = mech.placement(i)
+        if can_be_lost(sp, mech.side) and 0.0 > loss_rotation(sp, mech.side, place):
+            continue  # as _spring_moments at θ = 0
+        arm = place.moment(1.0, 0.0)  # δx of its point per unit rotation
+        moment = restrainer_moment(sp, mech.side, 0.0, place)
+        x, z = mech.view.anchor(i)
+        terms.append(WorkTerm(sp.name, "restrainer", moment / arm if arm else 0.0, x, z, arm,
+                              0.0, moment, 0.0))  # fmt: skip
+    return tuple(terms)
 
 
 def _moments(mech: Mechanism) -> tuple[float, float]:

@@ -25,6 +25,35 @@ class Location(StrEnum):
 
 
 @dataclass(frozen=True)
+class WorkTerm:
+    """One body, load, thrust or restrainer in α0's virtual work (Circ. 7/2019 §C8.7.1.2.1.1,
+    Eq. C8.7.1.1; Circ. 617/2009 §C8A.4.1), per unit virtual rotation about the hinge.
+
+    Attributes:
+        item: its name. kind: "body", "load", "thrust" or "restrainer".
+        force: its weight P, a thrust's or a restrainer's horizontal force F [N].
+        x, z: its point: inward from the hinge and above it [m] (a catalogue mechanism's
+            side frame).
+        dx, dy: its virtual displacement, outward and upward [m per rad].
+        resisting: its term of α0's numerator [N·m]: P·δy of a weight that bears, −F·δx of
+            a thrust pushing the mechanism open (+ when it pushes it shut), F·δx of a
+            restrainer.
+        overturning: its term of the denominator [N·m]: P·δx of a weight whose mass moves.
+    α0 = Σ resisting / Σ overturning.
+    """
+
+    item: str
+    kind: str
+    force: float
+    x: float
+    z: float
+    dx: float
+    dy: float
+    resisting: float
+    overturning: float
+
+
+@dataclass(frozen=True)
 class SpectralDemand:
     """Where a displacement check read its demand on the spectrum, so that it can be redone by
     hand: the damping, the period (or the range searched and the period of its maximum) and the
@@ -142,6 +171,9 @@ class KinematicResult:
     FC_rule: str = ""
     position: Position | None = None
     activation_by_side: dict[str, dict[str, float]] = field(default_factory=dict)
+    #: α0's virtual work per body, load, thrust and restrainer on each side of
+    #: ``activation_by_side`` (codecheck.kinematic.activation_work), whose sums are its terms.
+    work_by_side: dict[str, tuple[WorkTerm, ...]] = field(default_factory=dict)
 
     def verdict(self) -> dict[str, bool | None]:
         """DLS and ULS satisfied? (None: not evaluated).

@@ -63,28 +63,45 @@ class Inputs:
 
 
 def build_document(parts: Sequence[Part], lang: str) -> Document:
-    """The report of the comparisons of one wall or several (``parts``: each its inputs, its
-    comparison, its JSON document and its other mechanisms in full) in language ``lang``."""
+    """The report of one wall or several (``parts``: each its inputs, its verification on the
+    site's spectra, and with a record its comparison, JSON document and other mechanisms in
+    full) in language ``lang``."""
+    from rockcli.document.data import report_data
     from rockcli.document.walls import summary_section
 
     w = Words(lang)
     inputs = parts[0].inputs
-    if inputs.record is None:
-        raise ValueError("the report of one record needs its record (a suite: document.suite)")
     many = len(parts) > 1
     if many:
         inputs = replace(inputs, files=merged_files([part.inputs for part in parts]))
-    summary = (summary_section(parts, w),) if many or parts[0].doc.get("mechanisms") else ()
+    summary = (summary_section(parts, w),) if many or catalogued(parts[0]) else ()
     body = [
-        rekeyed(s, f"w{i}", part.doc["rocking"]["model"]["name"]) if many else s
+        rekeyed(s, f"w{i}", part.name) if many else s
         for i, part in enumerate(parts, 1)
         for s in wall_sections(part, w)
     ]
-    record = parts[0].doc["rocking"]["record"]["name"]
-    names = [part.doc["rocking"]["model"]["name"] for part in parts]
-    subtitle = (w("report.subtitle_many", n=len(parts), record=record) if many
-                else w("report.subtitle", model=names[0], record=record))  # fmt: skip
-    return assemble(inputs, w, subtitle, names, (*summary, *body))
+    names = [part.name for part in parts]
+    record = None if inputs.record is None else inputs.record.name
+    subtitle = report_subtitle(names, record, w)
+    document = assemble(inputs, w, subtitle, names, (*summary, *body))
+    return replace(document, data=report_data(parts))
+
+
+def catalogued(part: Part) -> bool:
+    """Whether the wall has more than one mechanism (its report then sums them up first)."""
+    from rockcli.document.walls import kinematic_of
+
+    return len(kinematic_of(part).get("mechanisms", ())) > 1
+
+
+def report_subtitle(names: Sequence[str], record: str | None, w: Words) -> str:
+    """What the report is: the verification of one element or several on the site's spectra,
+    and the record's scenario when there is one."""
+    if len(names) > 1:
+        text = w("report.subtitle_verify_many", n=len(names))
+    else:
+        text = w("report.subtitle_verify", model=names[0])
+    return text if record is None else f"{text} {w('report.subtitle_scenario', record=record)}"
 
 
 def assemble(
@@ -109,8 +126,8 @@ def assemble(
 
 
 def mechanism_sections(part: Part, record: Any, w: Words) -> list[Section]:
-    """Each other mechanism of the wall in full, one section each: the body as rocked, its
-    code check, its time history and their classification."""
+    """Each other mechanism of the wall in full under the record, one section each: the body
+    as rocked, its code check, its time history and their classification."""
     sections = []
     for i, (out, doc) in enumerate(part.others, 1):
         name = w.note(doc["kinematic"]["mechanism"])
@@ -122,26 +139,62 @@ def mechanism_sections(part: Part, record: Any, w: Words) -> list[Section]:
         blocks += kinematic_section(out.kinematic, doc["kinematic"], w, catalogue=False).blocks
         blocks += rocking_section(doc["rocking"], out, record, w).blocks
         blocks.append(Paragraph(w(f"class.{doc['classification']}"), "verdict"))
-        section = Section(f"mechanism-{i}", w("section.mechanism", name=name), tuple(blocks))
+        title = w("scenario.prefix", record=record.name) + " — " + w("section.mechanism",
+                                                                     name=name)  # fmt: skip
+        section = Section(f"mechanism-{i}", title, tuple(blocks))
         sections.append(replace(rekeyed(section, f"m{i}"), key=section.key))
     return sections
 
 
 def wall_sections(part: Part, w: Words) -> list[Section]:
-    """One wall's sections: its model, demand, code check, time history and their comparison
-    for the mechanism shown, the other mechanisms in full, the conclusions."""
+    """One wall's sections: its model; the verification (the site's action and the code check
+    on it); with a record, the scenario (the record, the code check on its spectrum, the time
+    history, their comparison, the other mechanisms in full); the conclusions."""
     from rockcli.document.conclusions import conclusions_section
+    from rockcli.document.verification import verification_sections
 
+    sections = [wall_model_section(part, w)]
+    if part.verification is not None:
+        sections += verification_sections(part.inputs.model, part.verification, w)
+    if part.doc is not None:
+        sections += scenario_sections(part, w)
+    sections.append(conclusions_section(part, w))
+    return sections
+
+
+def wall_model_section(part: Part, w: Words) -> Section:
+    """The model section: the body the scenario rocks, or without a record the governing
+    mechanism's body (the same description both analyses read)."""
+    if part.doc is not None:
+        rocked = part.doc["rocking"]
+        return model_section(part.inputs, rocked["model"], w, rocked.get("mechanism"))
+    from rockcli.document.data import governing_body
+
+    body, mechanism = governing_body(part)
+    return model_section(part.inputs, body, w, mechanism)
+
+
+def scenario_sections(part: Part, w: Words) -> list[Section]:
+    """The record's scenario: its demand and the code check on its spectrum (keys prefixed
+    "scenario-", which the verification's own sections do not collide with), the time
+    history, the comparison, the other mechanisms in full; every title says it is the
+    scenario of that record."""
     inputs, out, doc = part.inputs, part.out, part.doc
+    assert doc is not None and inputs.record is not None
     record = inputs.record
+    prefix = w("scenario.prefix", record=record.name)
+    intro = w("scenario.intro" if part.verification is not None else "scenario.intro_only",
+              record=record.name)  # fmt: skip
+    demand = demand_section(inputs, doc, record, w, out)
+    demand = replace(
+        demand, title=w("section.scenario_demand"), blocks=(Paragraph(intro), *demand.blocks)
+    )
     return [
-        model_section(inputs, doc["rocking"]["model"], w, doc["rocking"].get("mechanism")),
-        demand_section(inputs, doc, record, w, out),
-        kinematic_section(out.kinematic, doc["kinematic"], w),
-        rocking_section(doc["rocking"], out, record, w),
-        comparison_section(doc, w),
+        rekeyed(demand, "scenario", prefix),
+        rekeyed(kinematic_section(out.kinematic, doc["kinematic"], w), "scenario", prefix),
+        rekeyed(rocking_section(doc["rocking"], out, record, w), "", prefix),
+        rekeyed(comparison_section(doc, w), "", prefix),
         *mechanism_sections(part, record, w),
-        conclusions_section(doc, w, part.sizing),
     ]
 
 

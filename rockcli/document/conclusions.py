@@ -85,21 +85,59 @@ def overturning_mechanisms(doc: Mapping[str, Any]) -> list[Mapping[str, Any]]:
             if m.get("rocking") and m["rocking"]["verdict"] == "overturns"]  # fmt: skip
 
 
-def conclusions_section(doc: Mapping[str, Any], w: Words, sizing: Any = None) -> Section:
-    """The conclusions, in the report's language; ``sizing``: what rock retrofit found for
-    the model's tie-rod (rockcli.studies.retrofit.run.Sizing; "not needed" when the element
-    is safe, None when not asked)."""
+def asks_intervention(verification: Any, doc: Mapping[str, Any] | None) -> bool:
+    """Whether the report asks for an intervention: a limit state NTC 2018 §8.3 requires fails
+    the verification on the site's spectra; without a verification (the model sets no code
+    spectrum), the record's comparison fails at the ULS or overturns (:func:`needs_retrofit`;
+    the ULS alone, as §8.3 requires of every class but IV). A record's scenario never
+    overrules the verification."""
+    if verification is not None:
+        verdicts = {state: passed for state, _, passed in risk_indices(verification.doc)}
+        return any(verdicts.get(state) is False for state in verification.required)
+    return doc is not None and needs_retrofit(doc)
+
+
+def conclusions_section(part: Any, w: Words) -> Section:
+    """The conclusions of a wall, in the report's language: the verification on the site's
+    spectra and what §8.3 makes of it (rockcli.document.verification), then what the record's
+    scenario adds (:func:`scenario_blocks`), what follows, and what rock retrofit found for
+    the tie-rod (``part.sizing``: "not needed", a Sizing, or None when not asked)."""
+    from rockcli.document.verification import verification_blocks
+
+    blocks: list[Block] = []
+    if part.verification is not None:
+        blocks += verification_blocks(part.verification, w)[0]
+    else:
+        blocks.append(Paragraph(w("verify.none"), "warning"))
+    if part.doc is not None:
+        record = part.doc["rocking"]["record"]["name"]
+        key = "scenario.concl_intro" if part.verification is not None else "scenario.concl_only"
+        blocks.append(Paragraph(w(key, record=record), "subheading"))
+        blocks += scenario_blocks(part.doc, w, single=not part.doc.get("mechanisms"))
+    unsafe = asks_intervention(part.verification, part.doc)
+    prefix = "verify" if part.verification is not None else "concl"
+    blocks.append(Paragraph(w(f"{prefix}.next_unsafe" if unsafe else f"{prefix}.next_safe")))
+    if part.sizing is not None:
+        blocks.append(sizing_paragraph(part.sizing, w))
+    return Section("conclusions", w("section.conclusions"), tuple(blocks))
+
+
+def scenario_blocks(doc: Mapping[str, Any], w: Words, single: bool) -> list[Block]:
+    """What the record's comparison says: the code check on the record's spectrum (ζ_E per
+    limit state), the rocking, the classification, the restrainers in the time history, the
+    mechanisms that fail or overturn; the reference paper's systemic finding only for a
+    single block (``single``), the case the paper's systematic analyses cover."""
     n = w.number
-    kin, rocking = doc["kinematic"], doc["rocking"]
+    rocking = doc["rocking"]
     blocks: list[Block] = []
     if doc.get("mechanisms"):
         blocks.append(Paragraph(w("concl.governing", name=w.note(doc.get("governing") or ""))))
-    code, failing = code_blocks(kin, w)
-    blocks += code
+    blocks += code_blocks(doc["kinematic"], w)[0]
     blocks.append(Paragraph(w(f"concl.rocking_{rocking['verdict']}",
                               ratio=n(rocking["max_ratio"], "{:.3f}"))))  # fmt: skip
     blocks.append(Paragraph(w(f"class.{doc['classification']}"), "verdict"))
-    blocks.append(Paragraph(w(f"concl.paper_{doc['classification']}")))
+    if single:
+        blocks.append(Paragraph(w(f"concl.paper_{doc['classification']}")))
     blocks += [restrainer_sentence(c, w) for c in rocking.get("restrainer_checks", ())]
     others = unsafe_mechanisms(doc)
     if others:
@@ -109,11 +147,7 @@ def conclusions_section(doc: Mapping[str, Any], w: Words, sizing: Any = None) ->
     if falling:
         names = ", ".join(f"'{w.note(m['name'])}'" for m in falling)
         blocks.append(Paragraph(w("concl.mechanisms_overturn", names=names), "warning"))
-    unsafe = is_unsafe(doc)
-    blocks.append(Paragraph(w("concl.next_unsafe" if unsafe else "concl.next_safe")))
-    if sizing is not None:
-        blocks.append(sizing_paragraph(sizing, w))
-    return Section("conclusions", w("section.conclusions"), tuple(blocks))
+    return blocks
 
 
 def sizing_paragraph(sizing: Any, w: Words) -> Paragraph:

@@ -69,3 +69,5 @@ class Document:
     signature: tuple[str, ...] = ()
     #: Sections after the signature (the validation casebook's annex).
     annexes: tuple[Section, ...] = ()
+    #: The numbers the report shows, as JSON (the HTML's rock-data script; "" for none).
+    data: str = ""

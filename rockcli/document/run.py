@@ -61,7 +61,7 @@ def report_front(front: dict[str, Any] | None, grid_file: str | None) -> dict[st
 
 def write_report(
     model_paths: Sequence[str],
-    record: Record,
+    record: Record | None,
     *,
     html_path: str,
     pdf_path: str | None,
@@ -72,7 +72,9 @@ def write_report(
     front: dict[str, Any] | None = None,
     docx_path: str | None = None,
 ) -> list[tuple[str, str]]:
-    """Run both analyses of each model under the record, write one report; what was written
+    """The report of each model: the code check on the site's (or the model's) spectra, the
+    verification (:func:`verification_of`), and with a record the scenario of that record
+    (both analyses under it, :func:`wall_comparisons`); write it, say what was written
     (``front``: the project and where the casebook goes, :func:`report_front`; ``files``:
     the record's and the grid's, each model's added).
 
@@ -80,37 +82,97 @@ def write_report(
     from rockcli.analyses.compare import check_code_demand
     from rockcli.document.build import Inputs, build_document
     from rockcli.document.walls import Part
+    from rockcli.model.catalogue import catalogue
     from rockcli.model.load import load_model
 
     comparison = choices.comparison
     models = [load_model(path) for path in model_paths]
     for path, model in zip(model_paths, models, strict=True):
-        check_code_demand(model, comparison.code_demand, file=path)
+        check_verifiable(model, path, record)
+        if record is not None:
+            check_code_demand(model, comparison.code_demand, file=path)
     front = report_front(front, comparison.grid_file)
     parts = []
     for path, model in zip(model_paths, models, strict=True):
-        out, doc, others = wall_comparisons(model, record, path, comparison, choices.shown)
+        mechanisms = catalogue(model)  # derived once: the verification and the scenario
+        verification = verification_of(model, comparison, mechanisms)
+        out, doc, others = (None, None, ()) if record is None else wall_comparisons(
+            model, record, path, comparison, choices.shown, mechanisms)  # fmt: skip
         inputs = Inputs(path, model, record, (("model", path), *files), command, report_date(),
                         **front)  # fmt: skip
-        sizing = wall_sizing(path, record, doc, comparison.analyses) if choices.retrofit else None
-        parts.append(Part(inputs, out, doc, others, sizing))
+        sizing = None
+        if choices.retrofit and record is not None:
+            sizing = wall_sizing(path, record, verification, doc, comparison.analyses)
+        parts.append(Part(inputs, out, doc, others, sizing, verification))
     document = build_document(parts, lang)
-    verdict = ", ".join(str(part.doc["classification"]) for part in parts)
+    verdict = ", ".join(part_verdict(part) for part in parts)
     return write_document(document, html_path, pdf_path, verdict, docx_path)
 
 
+def check_verifiable(model: Any, path: str, record: Record | None) -> None:
+    """Without a record, the model must give the code's spectra the report verifies on
+    (InputError naming the file and what to give)."""
+    from rockcli.analyses.compare import code_sets_demand
+    from rockcli.errors import InputError
+
+    if record is None and not code_sets_demand(model):
+        raise InputError(
+            "sets no code spectrum for the verification",
+            file=path,
+            where="ntc",
+            allowed="[ntc.site] (with --hazard-grid) or [ntc.demand.SLD/SLV/SLC] in the model; "
+            "or --record FILE for a report of that record alone",
+        )
+
+
+def verification_of(model: Any, choices: ComparisonChoices, mechanisms: Any) -> Any:
+    """The code check of every mechanism on the model's own spectra (its site on the hazard
+    grid, or its [ntc.demand]): the report's verification; None when the model sets none."""
+    from rockcli.analyses.compare import code_sets_demand
+    from rockcli.analyses.kinematic import kinematic_model
+    from rockcli.codecheck.existing import required_limit_states
+    from rockcli.document.verification import Verification, demand_kind
+    from rockcli.model.derive_ntc import ntc_settings
+    from rockcli.model.plausible import model_warnings
+    from rockcli.terminal.kinematic import kinematic_document
+
+    if not code_sets_demand(model):
+        return None
+    result = kinematic_model(model, edition=choices.analyses.edition,
+                             grid_file=choices.grid_file, mechanisms=mechanisms)  # fmt: skip
+    doc = kinematic_document(model.name, result, model_warnings(model))
+    use_class = ntc_settings(model).use_class
+    return Verification(result, doc, demand_kind(model), use_class,
+                        required_limit_states(use_class), mechanisms)  # fmt: skip
+
+
+def part_verdict(part: Any) -> str:
+    """What the "wrote" line says of a wall: the verification's outcome, and the scenario's
+    classification when there is one."""
+    from rockcli.document.conclusions import asks_intervention
+
+    said = []
+    if part.verification is not None:
+        failing = asks_intervention(part.verification, None)
+        said.append("verification " + ("not satisfied" if failing else "satisfied"))
+    if part.doc is not None:
+        said.append(f"scenario {part.doc['classification']}")
+    return ", ".join(said)
+
+
 def wall_comparisons(
-    model: Any, record: Record, path: str, choices: ComparisonChoices, shown: str
-) -> tuple[Any, dict[str, Any], tuple[tuple[Any, dict[str, Any]], ...]]:
-    """A model's comparison and its document, and each other mechanism's that the time
-    history rocks (with ``shown`` "all"), each with its document."""
+    model: Any, record: Record, path: str, choices: ComparisonChoices, shown: str,
+    mechanisms: Any = None,
+) -> tuple[Any, dict[str, Any], tuple[tuple[Any, dict[str, Any]], ...]]:  # fmt: skip
+    """A model's comparison under the record (the scenario) and its document, and each other
+    mechanism's that the time history rocks (with ``shown`` "all"), each with its document."""
     from rockcli.analyses.compare import compare_model_output, mechanism_output
 
     analyses = choices.analyses
     out = compare_model_output(
         model, record, engine=analyses.engine, edition=analyses.edition,
         grid_file=choices.grid_file, code_demand=choices.code_demand, history=True,
-        ground=analyses.ground, file=path, mechanism=choices.mechanism,
+        ground=analyses.ground, file=path, mechanism=choices.mechanism, mechanisms=mechanisms,
     )  # fmt: skip
     doc = comparison_document(out, record)
     if shown != "all":
@@ -125,13 +187,15 @@ def wall_comparisons(
     return out, doc, tuple(others)
 
 
-def wall_sizing(path: str, record: Record, doc: dict[str, Any], analyses: Analyses) -> Any:
-    """What rock retrofit finds for the model's tie-rod when the comparison asks for an
-    intervention ("not needed" otherwise)."""
-    from rockcli.document.conclusions import needs_retrofit
+def wall_sizing(
+    path: str, record: Record, verification: Any, doc: dict[str, Any] | None, analyses: Analyses
+) -> Any:
+    """What rock retrofit finds for the model's tie-rod when the report asks for an
+    intervention (rockcli.document.conclusions.asks_intervention; "not needed" otherwise)."""
+    from rockcli.document.conclusions import asks_intervention
     from rockcli.studies.retrofit.run import size_rod
 
-    if not needs_retrofit(doc):
+    if not asks_intervention(verification, doc):
         return "not needed"
     return size_rod(path, record, analyses)
 

@@ -24,10 +24,19 @@ class Part:
     (None: not asked; rockcli.document.conclusions.conclusions_section)."""
 
     inputs: Any
+    #: The record's comparison and its document (the scenario); None without a record.
     out: Any
-    doc: Mapping[str, Any]
+    doc: Mapping[str, Any] | None
     others: tuple[tuple[Any, Mapping[str, Any]], ...] = ()
     sizing: Any = None
+    #: The code check on the site's (or model's) spectra (rockcli.document.verification);
+    #: None when the model sets no code spectrum.
+    verification: Any = None
+
+    @property
+    def name(self) -> str:
+        """The wall's (the model's) name."""
+        return str(self.inputs.model.name)
 
 
 def merged_files(inputs: Sequence[Any]) -> tuple[tuple[str, str], ...]:
@@ -38,20 +47,26 @@ def merged_files(inputs: Sequence[Any]) -> tuple[tuple[str, str], ...]:
 
 
 def summary_section(parts: Sequence[Part], w: Words) -> Section:
-    """Every wall's every mechanism in one table, each wall's governing mechanism first."""
+    """Every wall's every mechanism in one table, each wall's governing mechanism first: the
+    verification's α0 and ζ_E on the site's spectra, and with a record its scenario's time
+    history and classification."""
     many = len(parts) > 1
-    rows = tuple(
-        row[0 if many else 1 :]
-        for part in parts
-        for row in summary_rows(part.doc["rocking"]["model"]["name"], part.doc, w)
-    )
-    headers = (w("summary.element"), w("cmp.mechanism"), "α0", w("summary.zeta_dls"),
-               w("summary.zeta_uls"), "max θ/α", w("cmp.rocking_verdict"),
-               w("cmp.classification"))  # fmt: skip
-    numeric = (False, False, True, True, True, True, False, False)
-    grid = Grid(w("summary.caption"), headers[0 if many else 1 :], rows,
-                numeric[0 if many else 1 :])  # fmt: skip
+    scenario = any(part.doc is not None for part in parts)
+    rows = tuple(row[0 if many else 1 :] for part in parts for row in summary_rows(part, w))
+    headers: tuple[str, ...] = (w("summary.element"), w("cmp.mechanism"), "α0",
+                                w("summary.zeta_dls"), w("summary.zeta_uls"))  # fmt: skip
+    numeric: tuple[bool, ...] = (False, False, True, True, True)
+    if scenario:
+        headers += ("max θ/α", w("cmp.rocking_verdict"), w("cmp.classification"))
+        numeric += (True, False, False)
+    else:
+        rows = tuple(row[:-3] for row in rows)
+    verified = any(part.verification is not None for part in parts)
+    caption = "summary.caption" if verified else "summary.caption_record"
+    grid = Grid(w(caption), headers[0 if many else 1 :], rows, numeric[0 if many else 1 :])
     intro = w("summary.intro_many" if many else "summary.intro")
+    if not verified:
+        intro = w("summary.intro_record_many" if many else "summary.intro_record")
     return Section("summary", w("section.summary"), (Paragraph(intro), grid))
 
 
@@ -64,33 +79,56 @@ def zeta_pair(kin: Mapping[str, Any]) -> tuple[float | None, float | None]:
     return zeta.get("SLD", zeta.get("DLS")), (min(uls) if uls else None)
 
 
-def summary_rows(name: str, doc: Mapping[str, Any], w: Words) -> Iterator[tuple[str, ...]]:
-    """A wall's rows: each mechanism of its catalogue, or its one block."""
+def kinematic_of(part: Part) -> Mapping[str, Any]:
+    """The code check a wall's summary reads: the verification's, else (the model sets no
+    code spectrum) the record's comparison's."""
+    if part.verification is not None:
+        return part.verification.doc
+    assert part.doc is not None  # a part has a verification or a record
+    return part.doc["kinematic"]
+
+
+def summary_rows(part: Part, w: Words) -> Iterator[tuple[str, ...]]:
+    """A wall's rows, one per mechanism of its catalogue: α0 and ζ_E of the verification (of
+    the record's spectrum when the model sets no code spectrum), and the scenario's rocking
+    (three dashes without a record, which the table then drops)."""
     n = w.number
-    kin = doc["kinematic"]
+    kin = kinematic_of(part)
+    scenario = {m["name"]: m for m in (part.doc or {}).get("mechanisms", ())}
+    for k in kin.get("mechanisms") or [{"name": None, "alpha0": kin["alpha0"]}]:
+        dls, uls = (k["zeta"]["DLS"], k["zeta"]["ULS"]) if "zeta" in k else zeta_pair(kin)
+        name = w("summary.whole_block") if k["name"] is None else w.note(k["name"])
+        yield (part.name, name, n(k["alpha0"]), n(dls, "{:.3f}"), n(uls, "{:.3f}"),
+               *scenario_cells(part.doc, scenario.get(k["name"]), w))  # fmt: skip
+
+
+def scenario_cells(
+    doc: Mapping[str, Any] | None, m: Mapping[str, Any] | None, w: Words
+) -> tuple[str, str, str]:
+    """max θ/α, the rocking's verdict and the classification of a mechanism under the record
+    (a block's: the comparison's own); dashes without a record or for a mechanism not rocked."""
+    if doc is None:
+        return ("—", "—", "—")
     if not doc.get("mechanisms"):
-        dls, uls = zeta_pair(kin)
-        rocking = doc["rocking"]
-        yield (name, w("summary.whole_block"), n(kin["alpha0"]), n(dls, "{:.3f}"),
-               n(uls, "{:.3f}"), n(rocking["max_ratio"], "{:.3f}"),
-               w(f"cmp.rocked_{rocking['verdict']}"),
-               w(f"kind.{doc['classification']}"))  # fmt: skip
-        return
-    checked = {m["name"]: m for m in kin.get("mechanisms", ())}
-    for m in doc["mechanisms"]:
-        k, rocking, kind = checked.get(m["name"], {}), m["rocking"], m["classification"]
-        zeta = k.get("zeta", {})
-        yield (name, w.note(m["name"]), n(k.get("alpha0")), n(zeta.get("DLS"), "{:.3f}"),
-               n(zeta.get("ULS"), "{:.3f}"),
-               "—" if rocking is None else n(rocking["max_ratio"], "{:.3f}"),
-               w("cmp.not_rocked") if rocking is None else w(f"cmp.rocked_{rocking['verdict']}"),
-               "—" if kind is None else w(f"kind.{kind}"))  # fmt: skip
+        rocking, kind = doc["rocking"], doc["classification"]
+    elif m is None or m["rocking"] is None:
+        return ("—", w("cmp.not_rocked"), "—")
+    else:
+        rocking, kind = m["rocking"], m["classification"]
+    return (n3(rocking["max_ratio"], w), w(f"cmp.rocked_{rocking['verdict']}"),
+            "—" if kind is None else w(f"kind.{kind}"))  # fmt: skip
+
+
+def n3(value: float | None, w: Words) -> str:
+    return w.number(value, "{:.3f}")
 
 
 def rekeyed(section: Section, prefix: str, title: str = "") -> Section:
     """The section with its anchor and its figures' keys prefixed (unique in the report), its
     title prefixed by ``title`` (a wall's name in a report over several)."""
+    heading = f"{title} — {section.title}" if title else section.title
+    if not prefix:  # the title alone
+        return Section(section.key, heading, section.blocks)
     blocks = tuple(replace(b, key=f"{prefix}-{b.key}") if isinstance(b, Figure) else b
                    for b in section.blocks)  # fmt: skip
-    heading = f"{title} — {section.title}" if title else section.title
     return Section(f"{prefix}-{section.key}", heading, blocks)

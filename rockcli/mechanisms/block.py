@@ -19,6 +19,7 @@ from functools import cached_property
 from rockcli.mechanics import (
     Block,
     Restrainer,
+    WorkItem,
     point_moments,
     point_table,
     spring_elongation,
@@ -92,6 +93,26 @@ class BlockSide:
         of a unit horizontal acceleration (1 g) of the moving masses."""
         g, h, t, _, _ = point_moments(self.points, self.side, math.sin(theta), math.cos(theta))
         return g, self.side * t, h
+
+    def work_items(self) -> tuple[WorkItem, ...]:
+        """The block, its loads and thrusts at rest about the side's pivot: a point (x, z)
+        inward and up from the pivot moves δx = z outward and δy = x up per unit rotation."""
+        b, s = self.block, self.side
+        items = [WorkItem("block", "body", b.weight, b.b, b.h, b.h, b.b)]
+        for ld in b.loads:
+            x = ld.x_pos if s > 0 else ld.x_neg
+            items.append(WorkItem(ld.name, "load", ld.weight, x, ld.z, ld.z, x, ld.bears,
+                                  ld.moves))  # fmt: skip
+        for th in b.thrusts:
+            x = th.x_pos if s > 0 else th.x_neg
+            items.append(WorkItem(th.name, "thrust", th.force, x, th.z, th.z, x,
+                                  opens=th.direction * s))  # fmt: skip
+        return tuple(items)
+
+    def anchor(self, index: int) -> tuple[float, float]:
+        """Restrainer ``index``'s point (x inward, z up) from the side's pivot [m]."""
+        p = self.placement(index)
+        return p.r * math.sin(p.phi), p.r * math.cos(p.phi)
 
     @property
     def moving(self) -> tuple[tuple[float, float], ...]:

@@ -25,7 +25,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 
-from rockcli.mechanics import Restrainer
+from rockcli.mechanics import Restrainer, WorkItem
 from rockcli.mechanisms.bodies import Body
 from rockcli.mechanisms.links import LinkState, Motion
 
@@ -157,6 +157,29 @@ class ChainSide:
             dx = states[th.at.link].place(th.at.x, th.at.z)[2]
             t -= th.opens * th.force * dx
         return g, t, h
+
+    def work_items(self) -> tuple[WorkItem, ...]:
+        """Every body, load and thrust at rest with its virtual displacement per unit rotation
+        (δx = −dX/dθ outward, δy = dZ/dθ up), as :meth:`work_terms` sums them at θ = 0."""
+        states = self.states(0.0)
+        items = []
+        for link, body in self.bodies:
+            _, _, dx, dz = states[link].place(body.x, body.z)
+            items.append(WorkItem(body.name, "body", body.weight, body.x, body.z, -dx, dz))
+        for ld in self.loads:
+            _, _, dx, dz = states[ld.at.link].place(ld.at.x, ld.at.z)
+            items.append(WorkItem(ld.name, "load", ld.weight, ld.at.x, ld.at.z, -dx, dz,
+                                  ld.bears, ld.moves))  # fmt: skip
+        for th in self.thrusts:
+            _, _, dx, dz = states[th.at.link].place(th.at.x, th.at.z)
+            items.append(WorkItem(th.name, "thrust", th.force, th.at.x, th.at.z, -dx, dz,
+                                  opens=th.opens))  # fmt: skip
+        return tuple(items)
+
+    def anchor(self, index: int) -> tuple[float, float]:
+        """Restrainer ``index``'s point in the side frame [m]."""
+        at = self.anchors[index]
+        return at.x, at.z
 
     def masses_at_rest(self) -> list[tuple[int, float, float, float]]:
         """(link, P, δx, P·δx² spread) of every moving weight at θ = 0: the bodies (δx of the

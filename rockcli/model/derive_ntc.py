@@ -9,6 +9,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from rockcli.codecheck.existing import use_class_of
 from rockcli.errors import InputError
 from rockcli.model.ntc import KNOWLEDGE_LEVEL_FC, Ntc
 from rockcli.model.schema import Model
@@ -55,7 +56,8 @@ class NtcSettings:
     Attributes:
         edition: "2009" or "2019". FC, q: as in the code (FC the factor used). FC_rule: why
         that FC (a note). soil, topography: category names.
-        VN [years], CU [-]. building: the element's place in the building ([building]).
+        VN [years], CU [-]. use_class: "I"–"IV" or None. building: the element's place in
+        the building ([building]).
         distributed: mass spread over the height for M*, e*. limit: local ultimate
         displacement of the control point [m]. site: (lon, lat) or None. demand: per limit
         state (ag [g], F0, Tc* [s]). defaults: which settings were not given (shown with the
@@ -76,6 +78,9 @@ class NtcSettings:
     site: tuple[float, float] | None
     demand: dict[str, tuple[float, float, float]]
     defaults: tuple[Note, ...]
+    #: The use class (NTC 2018 §2.4.2): as given, else CU's (Tab. 2.4.II); None: CU is not
+    #: one of the table's.
+    use_class: str | None = None
 
 
 def ntc_settings(model: Model, edition: str | None = None) -> NtcSettings:
@@ -106,6 +111,7 @@ def ntc_settings(model: Model, edition: str | None = None) -> NtcSettings:
         site=None if ntc.site is None else (ntc.site.lon, ntc.site.lat),
         demand=demand,
         defaults=_defaults(ntc, given),
+        use_class=ntc.use_class.value if ntc.use_class is not None else use_class_of(ntc.CU),
     )
 
 

@@ -12,7 +12,7 @@ from typing import Annotated, Any
 
 from pydantic import BeforeValidator, Field, model_validator
 
-from rockcli.codecheck.categories import Edition, Soil, Topography
+from rockcli.codecheck.categories import USE_COEFFICIENT, Edition, Soil, Topography, UseClass
 from rockcli.model.bounds import (
     MAX_BEHAVIOUR_FACTOR,
     MAX_LENGTH,
@@ -159,6 +159,12 @@ class Ntc(Table):
         ge=MIN_USE_COEFFICIENT,
         le=MAX_USE_COEFFICIENT,
     )
+    use_class: UseClass | None = Field(
+        None,
+        description="Use class 'I'–'IV' (NTC 2018 §2.4.2): sets CU (Tab. 2.4.II) and the limit "
+        "states the assessment of an existing building requires (§8.3: the SLV; class IV also "
+        "the SLD); default: the class of CU",
+    )
     mass_distribution: MassDistribution = Field(
         MassDistribution.LUMPED,
         description="'lumped' (weight at the centroid, e* = 1; default) or 'distributed' "
@@ -190,6 +196,28 @@ class Ntc(Table):
             also = "; also moved: " + ", ".join(f"ntc.{k} to {_new_place(k)}" for k in others)
             also = also if others else ""
             raise rule_error(first, problem + also, allowed, _scalar(data[first]))
+        return data
+
+    @model_validator(mode="before")
+    @classmethod
+    def _use_coefficient(cls, data: Any) -> Any:
+        """CU from use_class when only the class is given; both given must agree."""
+        if not isinstance(data, Mapping) or not isinstance(data.get("use_class"), str):
+            return data
+        coefficient = USE_COEFFICIENT.get(data["use_class"])
+        if coefficient is None:
+            return data  # the enum refuses it
+        if "CU" not in data:
+            return {**data, "CU": coefficient}
+        given = data["CU"]
+        if isinstance(given, int | float) and abs(given - coefficient) > 1e-12:
+            raise rule_error(
+                "CU",
+                f"does not agree with use_class = '{data['use_class']}' (CU {coefficient:g})",
+                f"CU = {coefficient:g} with use class {data['use_class']} (NTC 2018 Tab. 2.4.II), "
+                "or only one of the two",
+                _scalar(given),
+            )
         return data
 
     @model_validator(mode="after")

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from typing import Any
 
-from rockcli.codecheck.result import Check, KinematicResult, RestrainerAction
+from rockcli.codecheck.result import Check, KinematicResult, RestrainerAction, WorkTerm
 from rockcli.terminal.table import Column, Report, Table, key_value
 from rockcli.version import __version__
 
@@ -88,10 +88,19 @@ def catalogue_entry(m: Any) -> dict[str, Any]:
         "a0_star": r.a0_star,
         "d0_star": r.d0_star,
         "zeta": {"DLS": m.zeta_dls, "ULS": m.zeta_uls},
+        "virtual_work": [work_document(t) for t in r.work_by_side.get(str(r.side), ())],
         "checks": [check_document(c, r.edition) for c in r.checks],
         "verdict": r.verdict(),
         "notes": list(r.notes),
     }
+
+
+def work_document(t: WorkTerm) -> dict[str, Any]:
+    """One item of α0's virtual work (codecheck.result.WorkTerm) in kN, m and kN·m: α0 =
+    Σ resisting_kNm / Σ overturning_kNm over the items of a side."""
+    return {"item": str(t.item), "kind": t.kind, "weight_kN": t.force / 1e3, "x": t.x, "z": t.z,
+            "dx": t.dx, "dy": t.dy, "resisting_kNm": t.resisting / 1e3,
+            "overturning_kNm": t.overturning / 1e3}  # fmt: skip
 
 
 def mechanism_document(

@@ -1,0 +1,40 @@
+"""What the safety assessment of an existing building requires (NTC 2018 §8.3): the limit
+states to be verified for the building's use class, and what the verdict of each means.
+
+§8.3: "La valutazione della sicurezza e la progettazione degli interventi sulle costruzioni
+esistenti potranno essere eseguite con riferimento ai soli SLU, salvo che per le costruzioni
+in classe d'uso IV, per le quali sono richieste anche le verifiche agli SLE specificate al
+§ 7.3.6 […]. Per la combinazione sismica le verifiche agli SLU possono essere eseguite
+rispetto alla condizione di salvaguardia della vita umana (SLV) o, in alternativa, alla
+condizione di collasso (SLC)". rock reads it (docs/interpretations.md): the ULS is verified at
+the SLV (the SLC, where the edition checks it, is reported beside it); the SLE of a local
+mechanism is its damage limit state, the SLD, required for class IV only; a CU that is not one
+of Tab. 2.4.II's leaves the class unknown, and the ULS alone is required, as for I–III.
+
+Pure: no numpy, no I/O.
+"""
+
+from __future__ import annotations
+
+from rockcli.codecheck.categories import USE_COEFFICIENT
+
+#: The ultimate limit state the assessment verifies (§8.3: SLV, or the SLC as an alternative).
+ULTIMATE = "SLV"
+#: The serviceability limit state of a local mechanism's check (its damage limit state).
+SERVICEABILITY = "SLD"
+
+
+def use_class_of(CU: float) -> str | None:  # noqa: N803 (the code's symbol)
+    """The use class whose coefficient is CU (Tab. 2.4.II), or None when none is."""
+    for name, coefficient in USE_COEFFICIENT.items():
+        if abs(CU - coefficient) < 1e-12:
+            return name
+    return None
+
+
+def required_limit_states(use_class: str | None) -> tuple[str, ...]:
+    """The limit states §8.3 requires for an existing building of ``use_class`` (None:
+    unknown, the ULS alone): the SLV for every class, and the SLD too for class IV."""
+    if use_class == "IV":
+        return (SERVICEABILITY, ULTIMATE)
+    return (ULTIMATE,)
