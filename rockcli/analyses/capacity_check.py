@@ -9,6 +9,8 @@ capacity to a KinematicResult. Composition only: the formulas live in rockcli.co
 
 from __future__ import annotations
 
+from typing import Any
+
 from rockcli.codecheck import rules2009, rules2019
 from rockcli.codecheck.demand import LimitStateDemand
 from rockcli.codecheck.kinematic import Capacity, curve_points
@@ -61,15 +63,19 @@ def with_spectral_values(
     limit_state: str,
     checks: tuple[Check, ...] | list[Check] = (),
 ) -> dict[str, object]:
-    """A record's demand with its spectrum's values where the limit state's checks read it,
-    each at the damping the check uses: Se [g] and SDe [m] at the building's T1 (at height, the
-    building's damping), at the mechanism's periods (CHECK_PERIODS) and, where a check took
-    the maximum over a range of periods (2019), at the period of that maximum."""
-    if demand.record is None:
-        return numbers
+    """The demand with its ground spectrum's values where the limit state's checks read it:
+    Se [g] and SDe [m] at the damping the check uses. At height, at the building's T1 (its
+    damping), where the floor spectrum the checks read is made from the ground's (their own
+    values at height are each check's ``demand_spectral``), for a record and a code spectrum
+    alike; on the ground, a record's at the mechanism's periods (CHECK_PERIODS) and, where a
+    check took the maximum over a range of periods (2019), at the period of that maximum."""
     building = 100.0 * pos.damping
-    periods = [("T1", pos.T1, building)] if pos.at_height else []
-    periods += [(name, values.get(name), xi) for name, xi in CHECK_PERIODS.get(limit_state, ())]
+    if pos.at_height:
+        periods: list[tuple[Any, float | None, float]] = [("T1", pos.T1, building)]
+    elif demand.record is None:
+        return numbers
+    else:
+        periods = [(name, values.get(name), xi) for name, xi in CHECK_PERIODS.get(limit_state, ())]
     periods += [
         (Note("max_over", "max over [{lo:g}, {hi:.4g}] s", lo=float(c.spectral.period_range[0]),
               hi=float(c.spectral.period_range[1])), c.spectral.period, c.spectral.damping)

@@ -206,7 +206,7 @@ def front_matter(inputs: Inputs, name: str, w: Words) -> dict[str, Any]:
     labels = ("contents", "figure", "table", "page", "annex")
     return {
         "header": f"rock {__version__} — {name}",
-        "footer": w("report.footer", date=inputs.date),
+        "footer": w("report.footer", date=w.moment(inputs.date)),
         "labels": {k: w(f"label.{k}") for k in labels},
         "cover": cover_rows(inputs.project, inputs.date, w),
         "signature": signature_lines(inputs.project, inputs.date, w),
@@ -240,7 +240,7 @@ def identification(inputs: Inputs, w: Words) -> Section:
             (w("ident.software"), w("ident.software_value")),
             (w("ident.version"), __version__),
             (w("ident.source_digest"), source_digest()),
-            (w("ident.date"), inputs.date),
+            (w("ident.date"), w.moment(inputs.date)),
             (w("ident.command"), inputs.command),
         ),
     )
@@ -463,8 +463,11 @@ def hazard_grid(spectra: Sequence[tuple[str, Any, str]], kin: Mapping[str, Any],
     return Grid(w("demand.hazard_caption"), headers, tuple(rows), (False, *([True] * 8), False))
 
 
-def record_demand_grids(demand: Mapping[str, Any], w: Words) -> list[Block]:
-    """The record's spectral values the check used, per limit state."""
+def record_demand_grids(
+    demand: Mapping[str, Any], w: Words, caption: str = "demand.spectral_caption"
+) -> list[Block]:
+    """The ground spectrum's values the check used, per limit state (at height, at T1, where
+    the floor spectra are made from it: analyses.capacity_check.with_spectral_values)."""
     rows = [
         (state, w.note(s["at"]), w.number(s["T"]), w.number(s["damping"], "{:g}"),
          w.number(s["Se"]), w.number(s["SDe"]))
@@ -474,7 +477,7 @@ def record_demand_grids(demand: Mapping[str, Any], w: Words) -> list[Block]:
     if not rows:
         return []
     headers = (w("col.limit_state"), w("col.at"), "T [s]", w("col.damping"), "Se [g]", "SDe [m]")
-    return [Grid(w("demand.spectral_caption"), headers, tuple(rows),
+    return [Grid(w(caption), headers, tuple(rows),
                  (False, False, True, True, True, True))]  # fmt: skip
 
 
@@ -643,7 +646,7 @@ def rocking_section(
     rest = n(engine["rest_velocity"], "{:.0e}")
     blocks: list[Block] = [Paragraph(w(key, rtol=n(engine["rtol"], "{:.0e}"), rest=rest, **extra))]
     rows = tuple(
-        (polarity_label(r, w), w(f"status.{r['status']}"), n(r["max_ratio"]),
+        (polarity_label(r, w), w(f"status.{r['status']}"), w.ratio(r["max_ratio"], r["overturned"]),
          n(r["t_uplift"], "{:.3f}"), n(r["t_overturn"], "{:.3f}"), str(r["impacts"]),
          n(r["impact_energy_loss"] / 1e3, "{:.3g}"))
         for r in rocking["runs"]
@@ -682,7 +685,7 @@ def other_mechanisms(out: ComparisonOutput, w: Words) -> list[Block]:
     n = w.number
     rows = tuple(
         (w.note(name), polarity_label({"polarity": r.polarity, "mirror_of": r.mirror_of}, w),
-         w(f"status.{r.status}"), n(r.max_ratio), n(r.t_uplift, "{:.3f}"),
+         w(f"status.{r.status}"), w.ratio(r.max_ratio, r.overturned), n(r.t_uplift, "{:.3f}"),
          n(r.t_overturn, "{:.3f}"), str(r.impacts))
         for name, rocking in others
         for r in rocking.runs

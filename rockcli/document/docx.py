@@ -30,9 +30,10 @@ def render_docx(document: Document) -> bytes:
         page.left_margin = page.right_margin = Cm(2.0)
         page.top_margin = page.bottom_margin = Cm(2.0)
         page.header.paragraphs[0].text = document.header
-        page.footer.paragraphs[0].text = document.footer
-    word.core_properties.title = f"{document.title} — {document.subtitle}"
-    word.core_properties.language = document.lang
+        page_numbered(page.footer.paragraphs[0], document)
+    word.core_properties.title = clipped(f"{document.title} — {document.header}")
+    word.core_properties.language = LOCALES.get(document.lang, document.lang)
+    set_language(word, LOCALES.get(document.lang, document.lang))
     word.add_heading(document.title, level=0)
     word.add_paragraph(document.subtitle)
     if document.cover:
@@ -49,6 +50,67 @@ def render_docx(document: Document) -> bytes:
     buffer = io.BytesIO()
     word.save(buffer)
     return buffer.getvalue()
+
+
+#: The language tag of each report language (the document's and its text's proofing language).
+LOCALES = {"it": "it-IT", "en": "en-GB"}
+#: The longest text a core property holds (OOXML: 255 characters).
+PROPERTY_LENGTH = 255
+
+
+def clipped(text: str) -> str:
+    """A core property's text, cut to PROPERTY_LENGTH with an ellipsis."""
+    return text if len(text) <= PROPERTY_LENGTH else text[: PROPERTY_LENGTH - 1] + "…"
+
+
+def set_language(word, tag: str) -> None:
+    """Every run's language by default (the styles' rPrDefault ``w:lang``): Word checks the
+    spelling, hyphenates and writes dates of fields in the report's language."""
+    from docx.oxml import OxmlElement
+    from docx.oxml.ns import qn
+
+    defaults = word.styles.element.find(qn("w:docDefaults"))
+    rpr = defaults.find(qn("w:rPrDefault")).find(qn("w:rPr"))
+    lang = rpr.find(qn("w:lang"))
+    if lang is None:
+        lang = OxmlElement("w:lang")
+        rpr.append(lang)
+    for key in ("w:val", "w:eastAsia", "w:bidi"):
+        lang.set(qn(key), tag)
+
+
+def page_numbered(paragraph, document: Document) -> None:
+    """The footer's text, then "Pagina N / M" as fields Word and LibreOffice fill in."""
+    paragraph.text = f"{document.footer} — {document.labels.get('page', 'Page')} "
+    add_field(paragraph, "PAGE")
+    paragraph.add_run(" / ")
+    add_field(paragraph, "NUMPAGES")
+
+
+def add_field(paragraph, instruction: str) -> None:
+    """A simple field (PAGE, NUMPAGES) at the end of the paragraph."""
+    from docx.oxml import OxmlElement
+    from docx.oxml.ns import qn
+
+    field = OxmlElement("w:fldSimple")
+    field.set(qn("w:instr"), instruction)
+    run = OxmlElement("w:r")
+    text = OxmlElement("w:t")
+    text.text = "1"
+    run.append(text)
+    field.append(run)
+    paragraph._p.append(field)
+
+
+def repeat_header(row) -> None:
+    """The table's first row repeated at the top of every page the table runs onto."""
+    from docx.oxml import OxmlElement
+    from docx.oxml.ns import qn
+
+    properties = row._tr.get_or_add_trPr()
+    header = OxmlElement("w:tblHeader")
+    header.set(qn("w:val"), "true")
+    properties.append(header)
 
 
 def cover_table(word, rows: tuple[tuple[str, str], ...]) -> None:
@@ -104,6 +166,7 @@ def add_grid(word, grid: Grid, caption: str) -> None:
     table.style = "Table Grid"
     for cell, header in zip(table.rows[0].cells, grid.headers, strict=True):
         cell.paragraphs[0].add_run(header).bold = True
+    repeat_header(table.rows[0])
     numeric = grid.numeric or (False,) * len(grid.headers)
     for row in grid.rows:
         cells = table.add_row().cells

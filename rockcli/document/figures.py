@@ -9,9 +9,11 @@ figures look the same in every browser and in the PDF.
 
 from __future__ import annotations
 
+import functools
 import io
 import math
 import re
+import weakref
 from collections.abc import Callable, Mapping, Sequence
 from typing import TYPE_CHECKING, Any
 
@@ -40,10 +42,30 @@ MARK_GAP = 0.2
 LS_COLORS = {"SLO": "tab:gray", "SLD": "tab:green", "SLV": "tab:red", "SLC": "tab:purple"}
 
 
-def new_figure(width: float, height: float) -> MplFigure:
+#: The decimal mark of each figure's language (a figure made for an Italian report writes its
+#: tick labels 0,5 as the report's tables do); weak keys: a figure is freed once rendered.
+DECIMAL_MARKS: weakref.WeakKeyDictionary[MplFigure, str] = weakref.WeakKeyDictionary()
+
+
+def new_figure(width: float, height: float, words: Words) -> MplFigure:
+    """A figure of the report (constrained layout), its tick labels in ``words``' language."""
     from matplotlib.figure import Figure
 
-    return Figure(figsize=(width, height), layout="constrained")
+    fig = Figure(figsize=(width, height), layout="constrained")
+    DECIMAL_MARKS[fig] = "," if words.lang == "it" else "."
+    return fig
+
+
+def decimal_ticks(fig: MplFigure) -> None:
+    """The tick labels of every axis with the figure's decimal mark (DECIMAL_MARKS)."""
+    mark = DECIMAL_MARKS.get(fig, ".")
+    if mark == ".":
+        return
+    for ax in fig.axes:
+        for axis in (ax.xaxis, ax.yaxis):
+            formatter = axis.get_major_formatter()
+            if not isinstance(formatter, decimal_mark_type()):
+                axis.set_major_formatter(decimal_mark_type()(formatter, mark))
 
 
 #: Resolution of a figure's PNG (the Word copy) [dots per inch].
@@ -56,6 +78,7 @@ def rendered(fig: MplFigure) -> tuple[str, bytes]:
     from rockcli.plots.files import clean_texts
 
     clean_texts(fig)
+    decimal_ticks(fig)
     buffer = io.BytesIO()
     fig.savefig(buffer, format="png", dpi=PNG_DPI, metadata={"Software": None})
     return svg_markup(fig), buffer.getvalue()
@@ -84,7 +107,9 @@ def block_sketch(model: Mapping[str, Any], words: Words) -> MplFigure:
     where the model puts it (docs/conventions.md: x from O, z above the base)."""
     b, h = model["b"], model["h"]
     width = 2.0 * b
-    fig = new_figure(PAGE_WIDTH * 0.62, min(6.5, max(3.0, 4.2 * (2 * h) / max(2 * h, 3 * width))))
+    fig = new_figure(
+        PAGE_WIDTH * 0.62, min(6.5, max(3.0, 4.2 * (2 * h) / max(2 * h, 3 * width))), words
+    )
     ax = fig.add_subplot()
     ax.fill([0, width, width, 0], [0, 0, 2 * h, 2 * h], color="#d9cbb5", ec="k", lw=1.2)
     ax.plot([-0.6 * width, 1.6 * width], [0, 0], color="k", lw=0.8)
@@ -148,7 +173,7 @@ def spectra(
     import numpy as np
 
     periods = np.linspace(*SPECTRUM_PERIODS)
-    fig = new_figure(PAGE_WIDTH, 3.2)
+    fig = new_figure(PAGE_WIDTH, 3.2, words)
     ax = fig.add_subplot()
     for state, spectrum in code:
         values = [spectrum.Se(float(T)) for T in periods]
@@ -180,7 +205,7 @@ def floor_spectra(
 
     periods = np.linspace(*SPECTRUM_PERIODS)
     Z = words.number(pos.Z, "{:g}")
-    fig = new_figure(PAGE_WIDTH, 4.0)
+    fig = new_figure(PAGE_WIDTH, 4.0, words)
     ax = fig.add_subplot()
     for state, spectrum in code:
         T, values = floor_curve(spectrum, state, pos, edition, periods)
@@ -271,7 +296,8 @@ def phrases(words: Words) -> Say:
     """The figures' words in the report's language (the catalogue's ``[plot]`` table)."""
 
     def say(key: str, **values: Any) -> str:
-        return words(f"plot.{key}", **values)
+        # Numbers with the language's decimal mark, as in the tables (0,6479 m/s²).
+        return words(f"plot.{key}", **{k: words.localised(v) for k, v in values.items()})
 
     return say
 
@@ -282,7 +308,7 @@ def on_page(
 ) -> MplFigure:  # fmt: skip
     """A terminal command's plot (``draw(ax, data, say)``) at the page's width, its title
     left to the caption, its words and axis labels in the report's language."""
-    fig = new_figure(PAGE_WIDTH, height)
+    fig = new_figure(PAGE_WIDTH, height, words)
     ax = fig.add_subplot()
     draw(ax, data, phrases(words))
     ax.set_title("")
@@ -316,7 +342,7 @@ def histories(
     """θ/α of both polarities against time, the record's acceleration beneath."""
     from rockcli.plots.histories import draw_time_panels
 
-    fig = new_figure(PAGE_WIDTH, 4.4)
+    fig = new_figure(PAGE_WIDTH, 4.4, words)
     spec = fig.add_gridspec(2, 1, height_ratios=(3, 1))
     draw_time_panels(fig, [spec[0], spec[1]], rocking, runs, record, overturn_angle,
                      phrases(words))  # fmt: skip
@@ -335,7 +361,7 @@ def restrainer_forces(
     springs = model.get("restrainers", [])
     if not springs:
         return None
-    fig = new_figure(PAGE_WIDTH, 1.2 + 1.6 * len(springs))
+    fig = new_figure(PAGE_WIDTH, 1.2 + 1.6 * len(springs), words)
     axes = fig.subplots(len(springs), 1, sharex=True, squeeze=False)[:, 0]
     for j, (ax, spring) in enumerate(zip(axes, springs, strict=True)):
         for run in runs:
@@ -356,3 +382,35 @@ def restrainer_forces(
         ax.legend(fontsize="x-small", loc="upper right")
     axes[-1].set_xlabel(words("figure.time"))
     return fig
+
+
+@functools.cache
+def decimal_mark_type() -> type:
+    """A formatter type writing another's labels with a given decimal mark, built on
+    matplotlib's Formatter when first asked for (matplotlib is the report extra's, imported
+    only when a figure is made)."""
+    from matplotlib.ticker import Formatter
+
+    class _DecimalMark(Formatter):
+        """Another formatter's labels with the decimal point written as ``mark``."""
+
+        def __init__(self, inner: Any, mark: str) -> None:
+            self.inner, self.mark = inner, mark
+
+        def set_axis(self, axis: Any) -> None:
+            super().set_axis(axis)
+            self.inner.set_axis(axis)
+
+        def set_locs(self, locs: Any) -> None:
+            self.inner.set_locs(locs)
+
+        def format_ticks(self, values: Any) -> list[str]:
+            return [t.replace(".", self.mark) for t in self.inner.format_ticks(values)]
+
+        def __call__(self, x: float, pos: int | None = None) -> str:
+            return str(self.inner(x, pos)).replace(".", self.mark)
+
+        def get_offset(self) -> str:
+            return str(self.inner.get_offset()).replace(".", self.mark)
+
+    return _DecimalMark

@@ -178,7 +178,8 @@ def suite_rocking_section(
     blocks.append(Grid(
         w("suite.runs_caption"),
         (w("col.record"), w("col.scale"), "max θ/α", w("col.overturned")),
-        tuple((r["name"], n(r["scale"], "{:.3g}"), n(r["max_ratio"]), w.yes_no(r["overturned"]))
+        tuple((r["name"], n(r["scale"], "{:.3g}"), w.ratio(r["max_ratio"], r["overturned"]),
+               w.yes_no(r["overturned"]))
               for r in suite["records"]),
         (False, True, True, False),
     ))  # fmt: skip

@@ -57,7 +57,13 @@ def zeta_by_state(kin: Mapping[str, Any]) -> dict[str, float | None]:
 def site_section(model: Model, ver: Verification, w: Words) -> Section:
     """The site's seismic action: the hazard and the spectrum's parameters per limit state,
     the spectra, and at height the floor spectra the check read (the check's own rule)."""
-    from rockcli.document.build import code_spectra_of, figure, floor_figure, hazard_grid
+    from rockcli.document.build import (
+        code_spectra_of,
+        figure,
+        floor_figure,
+        hazard_grid,
+        record_demand_grids,
+    )
     from rockcli.document.figures import spectra
 
     kin = ver.doc
@@ -70,9 +76,10 @@ def site_section(model: Model, ver: Verification, w: Words) -> Section:
         Paragraph(w(f"verify.site_intro_{ver.demand}")),
         hazard_grid(code_spectra, kin, w),
         figure("spectra", spectra(code, None, "", marks, w),
-               w("figure.spectra_ground_caption" if pos.at_height else "verify.spectra_caption")),
+               w("verify.spectra_ground_caption" if pos.at_height else "verify.spectra_caption")),
     ]  # fmt: skip
     if pos.at_height:
+        blocks += record_demand_grids(kin["demand"], w, "verify.spectral_caption")
         blocks.append(floor_figure(code, pos, kin["edition"], None, "", model.analysis.g, marks,
                                    w, rocked="verify.floor_caption"))  # fmt: skip
     return Section("demand", w("section.site"), tuple(blocks))
@@ -96,12 +103,31 @@ def virtual_work_section(kin: Mapping[str, Any], w: Words) -> Section:
     return Section("virtual-work", w("section.virtual_work"), tuple(blocks))
 
 
+#: The names the catalogue gives its bodies and a flexure's overburden
+#: (rockcli.mechanisms.catalogue), and their key in the report's words; any other load's, a
+#: thrust's and a restrainer's name is the model's own.
+BODY_NAMES = {"gable": "body.gable", "wedge (both return walls)": "body.wedge_both",
+              "wedge (one return wall)": "body.wedge_one", "lower block": "body.lower",
+              "upper block": "body.upper", "block": "body.block",
+              "the wall above": "body.above"}  # fmt: skip
+
+
+def item_name(t: Mapping[str, Any], w: Words) -> str:
+    """An item of the virtual-work table as the report's language names it."""
+    name = str(t["item"])
+    if t["kind"] not in ("body", "load"):
+        return name
+    if t["kind"] == "body" and name.startswith("storey ") and name[7:].isdigit():
+        return w("body.storey", n=name[7:])
+    return w(BODY_NAMES[name]) if name in BODY_NAMES else name
+
+
 def work_grid(m: Mapping[str, Any], w: Words) -> Grid:
     """One mechanism's virtual work on the side of its α0, with the sums and their ratio."""
     n = w.number
     terms = m["virtual_work"]
     rows = [
-        (w.note(t["item"]), w(f"verify.kind_{t['kind']}"), n(t["weight_kN"], "{:.3f}"),
+        (item_name(t, w), w(f"verify.kind_{t['kind']}"), n(t["weight_kN"], "{:.3f}"),
          n(t["x"], "{:.4f}"), n(t["z"], "{:.4f}"), n(t["dx"], "{:.4f}"), n(t["dy"], "{:.4f}"),
          n(t["resisting_kNm"], "{:.4f}"), n(t["overturning_kNm"], "{:.4f}"))
         for t in terms

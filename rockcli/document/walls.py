@@ -115,12 +115,10 @@ def scenario_cells(
         return ("—", w("cmp.not_rocked"), "—")
     else:
         rocking, kind = m["rocking"], m["classification"]
-    return (n3(rocking["max_ratio"], w), w(f"cmp.rocked_{rocking['verdict']}"),
+    overturned = rocking["verdict"] == "overturns"
+    return (w.ratio(rocking["max_ratio"], overturned, "{:.3f}"),
+            w(f"cmp.rocked_{rocking['verdict']}"),
             "—" if kind is None else w(f"kind.{kind}"))  # fmt: skip
-
-
-def n3(value: float | None, w: Words) -> str:
-    return w.number(value, "{:.3f}")
 
 
 def rekeyed(section: Section, prefix: str, title: str = "") -> Section:

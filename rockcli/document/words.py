@@ -65,12 +65,24 @@ class Words:
         "7 December 2026" (never ISO 8601 in the text a reviewer reads)."""
         return f"{day.day} {MONTHS[self.lang][day.month - 1]} {day.year}"
 
+    def moment(self, stamp: str) -> str:
+        """The report's time stamp ("2026-12-07 09:30 UTC", document.run.report_date) as this
+        language writes it: "7 dicembre 2026, 09:30 UTC"."""
+        day = datetime.date.fromisoformat(stamp[:10])
+        rest = stamp[10:].strip()
+        return f"{self.date(day)}, {rest}" if rest else self.date(day)
+
     def number(self, value: float | None, fmt: str = "{:.4g}") -> str:
         """A number as this language writes it; an em dash for none (or NaN)."""
         if value is None or value != value:
             return "—"
         text = fmt.format(value)
         return text.replace(".", ",") if self.lang == "it" else text
+
+    def ratio(self, value: float | None, overturned: bool, fmt: str = "{:.4g}") -> str:
+        """max θ/α as a table shows it: the number, or "ribalta" ("overturns") for a run that
+        overturned, whose number (the overturn angle over θc) measures nothing."""
+        return self("word.overturns") if overturned else self.number(value, fmt)
 
     def note(self, text: str) -> str:
         """A note or warning of the analyses in this language: a :class:`Note` from the
@@ -84,6 +96,11 @@ class Words:
         if template is None:
             return str(text)
         return template.format(**{k: self._localised(v) for k, v in text.values.items()})
+
+    def localised(self, value: Any) -> Any:
+        """A value to format into this language's text: a float with its decimal mark, a
+        note in this language, any other value as it is."""
+        return self._localised(value)
 
     def _localised(self, value: Any) -> Any:
         if isinstance(value, Note):

@@ -85,10 +85,26 @@ def _check_label(c: Mapping[str, Any], say: Say) -> str:
     return say("check_ag" if c["unit"] == "g" else "check_capacity", **numbers)
 
 
+def on_the_plane(c: Mapping[str, Any], kin: Mapping[str, Any]) -> tuple[str, float] | None:
+    """Where a check of ag (Circ. 7/2019 §C8.7.1.2.1.5–6: the ag the mechanism withstands
+    against the limit state's) has its demand on the a*–d* plane: a linear check's demand is
+    the spectral acceleration a0*·ag_D/ag_C (its demand scales with ag and meets a0* at the
+    capacity), ("a", a*) [m/s²]; a non-linear check's is the spectral displacement it read at
+    the limit state's ag (``demand_spectral``), ("d", d*) [m]; None when it has neither."""
+    if c["unit"] != "g" or not c["demand"] or not c["capacity"]:
+        return None
+    if c["method"] == "linear" and kin.get("a0_star"):
+        return "a", kin["a0_star"] * c["demand"] / c["capacity"]
+    if c["method"] == "nonlinear" and c.get("demand_spectral"):
+        return "d", c["demand_spectral"]
+    return None
+
+
 def _draw_checks(ax: Axes, kin: Mapping[str, Any], say: Say) -> None:
     """The demands of the checks: accelerations [m/s²] as horizontal lines (against a0*),
-    displacements [m] as points on the curve (against du*); the checks off the a*–d* plane
-    (2019: ag [g]) and those not evaluated as legend entries with a square of their colour."""
+    displacements [m] as points on the curve (against du*); a check of ag (2019) where its
+    demand lies on the plane (:func:`on_the_plane`); those not evaluated as legend entries
+    with a square of their colour."""
     from matplotlib.lines import Line2D
 
     for c in kin["checks"]:
@@ -107,6 +123,16 @@ def _draw_checks(ax: Axes, kin: Mapping[str, Any], say: Say) -> None:
             a = _a_on_curve(kin, c["demand"])
             ax.plot([c["demand"]] * 2, [0.0, a], color=color, ls=style, lw=1.2)
             ax.plot([c["demand"]], [a], "D", color=color, ms=6, label=_check_label(c, say))
+        elif c["passed"] is not None and (plane := on_the_plane(c, kin)) is not None:
+            # A check of ag (2019) drawn where its demand lies on the a*–d* plane.
+            kind, value = plane
+            label = _check_label(c, say)
+            if kind == "a":
+                ax.axhline(value, color=color, ls=style, lw=1.2, label=label)
+            else:
+                a = _a_on_curve(kin, value)
+                ax.plot([value] * 2, [0.0, a], color=color, ls=style, lw=1.2)
+                ax.plot([value], [a], "D", color=color, ms=6, label=label)
         else:
             label = _check_label(c, say)
             ax.add_line(Line2D([], [], ls="none", marker="s", color=color, label=label))
@@ -135,6 +161,8 @@ def _frame(ax: Axes, kin: Mapping[str, Any], say: Say) -> None:
     ds, as_ = _curve(kin)
     marks = [kin["a0_star"], *(kin.get(k) for k in ("as_star", "a_SLV", "a_SLC"))]
     marks += [c["demand"] for c in kin["checks"] if c["unit"] == "m/s²"]
+    planes = [p for p in (on_the_plane(c, kin) for c in kin["checks"]) if p is not None]
+    marks += [value for kind, value in planes if kind == "a"]
     top = FRAME_FACTOR * max(m for m in marks if m is not None)
     if max(as_) <= top:
         ax.set_xlim(left=0.0)
@@ -142,6 +170,7 @@ def _frame(ax: Axes, kin: Mapping[str, Any], say: Say) -> None:
         return
     xs = [_crossing(ds, as_, top), *(kin.get(k) for k in ("du_star", "d_SLV", "d_SLC"))]
     xs += [c["demand"] for c in kin["checks"] if c["unit"] == "m"]
+    xs += [value for kind, value in planes if kind == "d"]
     ax.set_xlim(0.0, 1.05 * max(x for x in xs if x is not None))
     ax.set_ylim(0.0, top)
     note = say("off_frame", a=as_[-1], d=ds[-1])
