@@ -219,17 +219,21 @@ def report(
                          value=f"--code-demand {code_demand}",
                          allowed="--retrofit with --code-demand record (the default)")  # fmt: skip
     record = None if alone else load_record(record_path, record_format, dt, units, scale, pga)
-    written = write_report(
-        model_paths,
-        record,
-        **common,
-        files=((() if alone else (("record", record_path),))
-               + ((("hazard_grid", grid_file),) if grid_file else ())),
-        choices=ReportChoices(
-            ComparisonChoices(Analyses(engine, edition, ground), code_demand, grid_file,
-                              mechanism_name),
-            shown=mechanisms_shown, retrofit=retrofit),
-    )  # fmt: skip
+    from rockcli.terminal.sweep import progress_bar
+
+    with progress_bar(None, "report") as progress:
+        written = write_report(
+            model_paths,
+            record,
+            **common,
+            files=((() if alone else (("record", record_path),))
+                   + ((("hazard_grid", grid_file),) if grid_file else ())),
+            progress=progress,
+            choices=ReportChoices(
+                ComparisonChoices(Analyses(engine, edition, ground), code_demand, grid_file,
+                                  mechanism_name),
+                shown=mechanisms_shown, retrofit=retrofit),
+        )  # fmt: skip
     for path, detail in written:
         announce_written(path, detail)
 

@@ -779,8 +779,8 @@ def software_section(casebook: Any | None, w: Words, place: str = "inline") -> S
     install (its table here with ``place`` "inline"; with "annex" its summary here and the
     cases in the annex)."""
     blocks: list[Block] = [Paragraph(w(f"soft.theory_{k}")) for k in range(1, 5)]
-    blocks.append(Paragraph(w("soft.references")))
     blocks += [Paragraph(w(f"soft.limits_{k}")) for k in range(1, 5)]
+    blocks += bibliography(w)
     if casebook is None:
         blocks.append(Paragraph(w("soft.casebook_missing"), "warning"))
     elif place == "inline":
@@ -789,6 +789,19 @@ def software_section(casebook: Any | None, w: Words, place: str = "inline") -> S
         blocks.append(casebook_blocks(casebook, w)[0])
         blocks.append(Paragraph(w("soft.casebook_in_annex")))
     return Section("software", w("section.software"), tuple(blocks))
+
+
+def bibliography(w: Words) -> list[Block]:
+    """The works the report cites, in full, numbered (rockcli.document.bibliography), each
+    with what it is to rock where the report's words say it."""
+    from rockcli.document.bibliography import REFERENCES
+    from rockcli.document.words import catalogue
+
+    blocks: list[Block] = [Paragraph(w("bib.heading"), "subheading")]
+    for k, (key, text) in enumerate(REFERENCES, start=1):
+        role = catalogue(w.lang).get(f"bib.role_{key}")
+        blocks.append(Paragraph(f"[{k}] {text}" + (f" {role}" if role else "")))
+    return blocks
 
 
 def annex_sections(casebook: Any | None, w: Words, place: str) -> tuple[Section, ...]:

@@ -12,6 +12,7 @@ from __future__ import annotations
 import io
 
 from rockcli.document.content import Document, Figure, Grid, Paragraph, Section
+from rockcli.document.symbols import pieces
 
 #: Width of a figure on an A4 page with 2 cm margins [cm] (the sketch: 62 %, as in the HTML).
 FIGURE_WIDTH_CM = 16.5
@@ -147,13 +148,24 @@ def add_paragraph(word, block: Paragraph) -> None:
     if block.kind == "subheading":
         word.add_heading(block.text, level=2)
         return
-    run = word.add_paragraph().add_run(block.text)
-    if block.kind == "verdict":
-        run.bold = True
-    elif block.kind in ("note", "warning"):
-        run.font.size = Pt(9)
-        if block.kind == "warning":
-            run.font.color.rgb = RGBColor(0x8A, 0x1C, 0x00)
+    for run in add_text(word.add_paragraph(), block.text):
+        if block.kind == "verdict":
+            run.bold = True
+        elif block.kind in ("note", "warning"):
+            run.font.size = Pt(9)
+            if block.kind == "warning":
+                run.font.color.rgb = RGBColor(0x8A, 0x1C, 0x00)
+
+
+def add_text(paragraph, text: str) -> list:
+    """``text`` as runs of the paragraph, the code's symbols with their subscripts
+    (rockcli.document.symbols); the runs added."""
+    runs = []
+    for piece, sub in pieces(text):
+        run = paragraph.add_run(piece)
+        run.font.subscript = sub or None
+        runs.append(run)
+    return runs
 
 
 def add_grid(word, grid: Grid, caption: str) -> None:
@@ -161,18 +173,19 @@ def add_grid(word, grid: Grid, caption: str) -> None:
     from docx.enum.text import WD_ALIGN_PARAGRAPH
     from docx.shared import Cm, Pt
 
-    word.add_paragraph(caption, style="Caption")
+    add_text(word.add_paragraph(style="Caption"), caption)
     table = word.add_table(rows=1, cols=len(grid.headers))
     table.style = "Table Grid"
     for cell, header in zip(table.rows[0].cells, grid.headers, strict=True):
-        cell.paragraphs[0].add_run(header).bold = True
+        for run in add_text(cell.paragraphs[0], header):
+            run.bold = True
     repeat_header(table.rows[0])
     numeric = grid.numeric or (False,) * len(grid.headers)
     for row in grid.rows:
         cells = table.add_row().cells
         for cell, text, right in zip(cells, row, numeric, strict=True):
             paragraph = cell.paragraphs[0]
-            paragraph.add_run(text)
+            add_text(paragraph, text)
             if right:
                 paragraph.alignment = WD_ALIGN_PARAGRAPH.RIGHT
     table.autofit = False
@@ -235,7 +248,7 @@ def add_figure(word, figure: Figure, caption: str) -> None:
 
     share = SKETCH_SHARE if figure.key == "sketch" else 1.0
     word.add_picture(io.BytesIO(figure.png), width=Cm(FIGURE_WIDTH_CM * share))
-    word.add_paragraph(caption, style="Caption")
+    add_text(word.add_paragraph(style="Caption"), caption)
 
 
 def signature(word, lines: tuple[str, ...]) -> None:

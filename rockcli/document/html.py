@@ -4,6 +4,7 @@ no link to anything outside it; print CSS for A4 (a browser prints it as the rep
 from __future__ import annotations
 
 from rockcli.document.content import Document
+from rockcli.document.symbols import pieces
 from rockcli.errors import display_text
 
 
@@ -46,9 +47,15 @@ def slashes_joined(text: str) -> str:
 
 
 def _shown(value: object) -> object:
-    """A text as the page shows it; markup (the figures' SVG, already clean) as it is."""
-    from markupsafe import Markup
+    """A text as the page shows it, the code's symbols with their subscripts (ζ<sub>E</sub>:
+    rockcli.document.symbols); markup (the figures' SVG, already clean) as it is."""
+    from markupsafe import Markup, escape
 
     if isinstance(value, str) and not isinstance(value, Markup):
-        return display_text(value)
+        parts = pieces(display_text(value))
+        if not any(sub for _, sub in parts):
+            return "".join(piece for piece, _ in parts)
+        return Markup("").join(
+            Markup("<sub>{}</sub>").format(piece) if sub else escape(piece) for piece, sub in parts
+        )
     return value

@@ -12,6 +12,7 @@ import tempfile
 from pathlib import Path
 
 from rockcli.document.content import Document, Figure
+from rockcli.document.symbols import pieces
 from rockcli.errors import DOCUMENT_WHITESPACE, display_text
 
 #: Characters with a meaning in Typst markup, escaped with a backslash in text.
@@ -20,9 +21,18 @@ TYPST_SPECIAL = "\\#$*_`<>@[]~/=-+'\"."
 
 def typst_text(text: object) -> str:
     """Text as literal Typst markup: every character with a meaning escaped, control
-    characters shown as ``\\xNN`` (:func:`rockcli.errors.display_text`)."""
+    characters shown as ``\\xNN`` (:func:`rockcli.errors.display_text`), the code's symbols
+    with their subscripts (``#sub[E]``: rockcli.document.symbols)."""
+    return "".join(
+        f"#sub[{escaped(piece)}]" if sub else escaped(piece)
+        for piece, sub in pieces(display_text(str(text)))
+    )
+
+
+def escaped(text: str) -> str:
+    """Text with every character that has a meaning in Typst markup escaped."""
     out = []
-    for ch in display_text(str(text)):
+    for ch in text:
         if ch in TYPST_SPECIAL:
             out.append("\\" + ch)
         elif ch in DOCUMENT_WHITESPACE:  # a line break or tab: a space in running text

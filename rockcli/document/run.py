@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 import os
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from datetime import UTC, datetime
 from pathlib import Path
@@ -71,6 +71,7 @@ def write_report(
     choices: ReportChoices,
     front: dict[str, Any] | None = None,
     docx_path: str | None = None,
+    progress: Callable[[int, int], None] | None = None,
 ) -> list[tuple[str, str]]:
     """The report of each model: the code check on the site's (or the model's) spectra, the
     verification (:func:`verification_of`), and with a record the scenario of that record
@@ -91,22 +92,44 @@ def write_report(
         check_verifiable(model, path, record)
         if record is not None:
             check_code_demand(model, comparison.code_demand, file=path)
+    outputs = 1 + (pdf_path is not None) + (docx_path is not None)
+    step = Steps(len(models) * (2 if record is None else 3) + 1 + outputs, progress)
     front = report_front(front, comparison.grid_file)
+    step()
     parts = []
     for path, model in zip(model_paths, models, strict=True):
         mechanisms = catalogue(model)  # derived once: the verification and the scenario
         verification = verification_of(model, comparison, mechanisms)
+        step()
         out, doc, others = (None, None, ()) if record is None else wall_comparisons(
             model, record, path, comparison, choices.shown, mechanisms)  # fmt: skip
+        if record is not None:
+            step()
         inputs = Inputs(path, model, record, (("model", path), *files), command, report_date(),
                         **front)  # fmt: skip
         sizing = None
         if choices.retrofit and record is not None:
             sizing = wall_sizing(path, record, verification, doc, comparison.analyses)
         parts.append(Part(inputs, out, doc, others, sizing, verification))
+        step()
     document = build_document(parts, lang)
     verdict = ", ".join(part_verdict(part) for part in parts)
-    return write_document(document, html_path, pdf_path, verdict, docx_path)
+    return write_document(document, html_path, pdf_path, verdict, docx_path, step)
+
+
+class Steps:
+    """A report's progress: ``progress(done, total)`` after each step (None: silent)."""
+
+    def __init__(self, total: int, progress: Callable[[int, int], None] | None) -> None:
+        self.total, self.done, self.progress = total, 0, progress
+        if progress is not None:
+            progress(0, total)
+
+    def __call__(self) -> None:
+        """One step done."""
+        self.done = min(self.total, self.done + 1)
+        if self.progress is not None:
+            self.progress(self.done, self.total)
 
 
 def check_verifiable(model: Any, path: str, record: Record | None) -> None:
@@ -215,6 +238,7 @@ def write_document(
     pdf_path: str | None,
     classification: str,
     docx_path: str | None = None,
+    step: Callable[[], None] | None = None,
 ) -> list[tuple[str, str]]:
     """Write the report as HTML (and PDF, and DOCX); what was written, for the "wrote" lines.
 
@@ -224,17 +248,21 @@ def write_document(
     from rockcli.document.html import render_html
     from rockcli.outfile import write_bytes
 
+    step = step or (lambda: None)
     outputs = [(html_path, render_html(document).encode("utf-8"), "--output",
                 f"calculation report ({document.lang}), {classification}")]  # fmt: skip
+    step()
     if pdf_path is not None:
         from rockcli.document.pdf import render_pdf
 
         outputs.append((pdf_path, render_pdf(document), "--pdf", "the same report as PDF"))
+        step()
     if docx_path is not None:
         from rockcli.document.docx import render_docx
 
         outputs.append((docx_path, render_docx(document), "--docx",
                         "the same report as an editable Word document"))  # fmt: skip
+        step()
     for path, data, option, _ in outputs:
         write_bytes(path, data, where=option)
     return [(path, detail) for path, _, _, detail in outputs]
