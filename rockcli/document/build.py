@@ -153,13 +153,37 @@ def wall_sections(part: Part, w: Words) -> list[Section]:
     from rockcli.document.conclusions import conclusions_section
     from rockcli.document.verification import verification_sections
 
-    sections = [wall_model_section(part, w)]
+    sections = [*wall_description(part, w), wall_model_section(part, w)]
     if part.verification is not None:
         sections += verification_sections(part.inputs.model, part.verification, w)
     if part.doc is not None:
         sections += scenario_sections(part, w)
     sections.append(conclusions_section(part, w))
     return sections
+
+
+def wall_description(part: Part, w: Words) -> list[Section]:
+    """A wall's own section (rockcli.document.wall_section): its geometry, materials, loads,
+    thrusts and restrainers, and its section drawn with each mechanism of the verification;
+    none for a block file, whose block the model section draws."""
+    from rockcli.document.wall_section import wall_drawing, wall_grids
+    from rockcli.document.walls import kinematic_of
+
+    ver = part.verification
+    walls = [m.wall for m in (ver.mechanisms if ver is not None else part.out.catalogue)]
+    if not walls or walls[0] is None:
+        return []
+    kin = kinematic_of(part)
+    blocks: list[Block] = [Paragraph(w("wall.intro", file=part.inputs.model_path))]
+    blocks += wall_grids(walls[0], kin, w)
+    blocks.append(
+        figure(
+            "wall",
+            wall_drawing(walls[0], kin, w),
+            w("wall.drawing_caption"),
+        )
+    )
+    return [Section("wall", w("section.wall"), tuple(blocks))]
 
 
 def wall_model_section(part: Part, w: Words) -> Section:

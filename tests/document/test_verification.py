@@ -61,7 +61,7 @@ def kinematic() -> dict[str, Any]:
 def test_without_a_record_the_report_is_the_verification(filed: tuple[str, str]) -> None:
     page, _ = filed
     keys = re.findall(r'<section id="([^"]+)"', page)
-    assert keys == ["identification", "summary", "model", "demand", "kinematic",
+    assert keys == ["identification", "summary", "wall", "model", "demand", "kinematic",
                     "virtual-work", "conclusions", "software"]  # fmt: skip
     assert "rocking" not in keys and "Scenario" not in page
     data = data_of(page)
@@ -135,10 +135,10 @@ def test_the_gables_alpha0_by_hand_from_the_printed_table(filed: tuple[str, str]
     a = 75.5e3 / (2.0e6 * 6.0)
     x = 0.45 / 2 - a / 2
     alpha0 = (67.5 + 8.0) * x / (67.5 * 2.5 / 3 + 8.0 * 2.5)
-    rows = table_rows(filed[0], "Tabella 16. Meccanismo &#39;ribaltamento del timpano&#39;")
+    rows = table_rows(filed[0], "Meccanismo &#39;ribaltamento del timpano&#39;, polo")
     items = {r[0]: r for r in rows}
-    assert number(items["gable"][2]) == pytest.approx(67.5)
-    assert number(items["gable"][4]) == pytest.approx(2.5 / 3, abs=5e-5)
+    assert number(items["timpano"][2]) == pytest.approx(67.5)
+    assert number(items["timpano"][4]) == pytest.approx(2.5 / 3, abs=5e-5)
     assert number(items["ridge beam"][3]) == pytest.approx(x, abs=5e-5)
     up, down = number(items["Somma"][-2]), number(items["Somma"][-1])
     assert up == pytest.approx((67.5 + 8.0) * x, abs=5e-5)
@@ -199,3 +199,28 @@ def test_a_use_class_that_disagrees_with_cu_is_refused(tmp_path: Path) -> None:
     result = run("kinematic", str(model))
     assert result.exit_code == 2
     assert "ntc.CU: does not agree with use_class = 'IV' (CU 2)" in result.output
+
+
+def test_the_wall_is_in_its_report(filed: tuple[str, str]) -> None:
+    # The model file's own numbers (examples/two-storey-facade.toml): a storey 4.0 m × 0.60 m,
+    # one 3.5 m × 0.45 m, a 2.5 m gable, γ 20 kN/m³, return walls 0.45 m, f_m 2 MPa (FC 1.35
+    # given, LC1), the floors' and roof's loads, the roof thrust, the tie-rod at 7.5 m.
+    page = filed[0]
+    assert page.index('<section id="wall"') < page.index('<section id="model"')
+    rows = {r[0]: r for r in table_rows(page, "Geometria e materiali della parete")}
+    assert rows["Piano 1 (base a 0,00 m): altezza × spessore"][1] == "4,000 × 0,600"
+    assert rows["Piano 2 (base a 4,00 m): altezza × spessore"][1] == "3,500 × 0,450"
+    assert rows["Timpano: altezza sopra l'ultimo piano"][1] == "2,500"
+    assert rows["Peso specifico della muratura"][1] == "20,00"
+    assert rows["Larghezza della parete (nel suo piano)"][1] == "6,000"
+    assert rows["Spessore delle pareti ortogonali"][1] == "0,450"
+    assert rows["Fattore di confidenza FC"][1].startswith("1,35")
+    loads = {r[0]: r for r in table_rows(page, "Carichi sulla parete")}
+    assert [loads[k][1] for k in ("first floor", "roof", "ridge beam")] == ["60,00", "45,00",
+                                                                          "8,00"]  # fmt: skip
+    thrusts = table_rows(page, "Spinte orizzontali sulla parete")
+    # No from_pivot in the file: the thrust acts at the mid-thickness of its storey.
+    assert thrusts == [["roof thrust", "6,00", "verso l'esterno", "0,225", "7,500"]]
+    ties = table_rows(page, "Vincoli (catene, collegamenti) della parete")
+    assert [t[0] for t in ties] == ["tie-rod"] and ties[0][2] == "7,500"
+    assert 'id="figure-wall"' in page  # the section drawn with every mechanism
