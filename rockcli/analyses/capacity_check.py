@@ -55,6 +55,10 @@ def demand_numbers(demand: LimitStateDemand) -> dict[str, object]:
 CHECK_PERIODS = {"SLD": (), "SLV": (("Ts", 5.0), ("T_SLV", 8.0)), "SLC": (("T_SLC", 10.0),)}
 
 
+#: The names the 2009 checks give the limit states of the demand (Circolare 617/2009: DLS, ULS).
+EDITION_2009_NAMES = {"SLD": "DLS", "SLV": "ULS"}
+
+
 def with_spectral_values(
     numbers: dict[str, object],
     demand: LimitStateDemand,
@@ -65,17 +69,23 @@ def with_spectral_values(
 ) -> dict[str, object]:
     """The demand with its ground spectrum's values where the limit state's checks read it:
     Se [g] and SDe [m] at the damping the check uses. At height, at the building's T1 (its
-    damping), where the floor spectrum the checks read is made from the ground's (their own
-    values at height are each check's ``demand_spectral``), for a record and a code spectrum
-    alike; on the ground, a record's at the mechanism's periods (CHECK_PERIODS) and, where a
-    check took the maximum over a range of periods (2019), at the period of that maximum."""
-    building = 100.0 * pos.damping
-    if pos.at_height:
-        periods: list[tuple[Any, float | None, float]] = [("T1", pos.T1, building)]
-    elif demand.record is None:
+    damping), where the floor spectrum the checks at height read is made from the ground's
+    (their own values there are each check's ``demand_spectral``), for a record and a code
+    spectrum alike; where the limit state has a check at the ground (every check on the
+    ground; 2009's ground check of an element at height), a record's or, at height, the code
+    spectrum's at the mechanism's periods (CHECK_PERIODS) and, where a check took the maximum
+    over a range of periods (2019), at the period of that maximum. A code spectrum on the
+    ground: none (its values are the checks' own)."""
+    if demand.record is None and not pos.at_height:
         return numbers
-    else:
-        periods = [(name, values.get(name), xi) for name, xi in CHECK_PERIODS.get(limit_state, ())]
+    building = 100.0 * pos.damping
+    periods: list[tuple[Any, float | None, float]] = (
+        [("T1", pos.T1, building)] if pos.at_height else []
+    )
+    states = (limit_state, EDITION_2009_NAMES.get(limit_state))
+    if any(c.limit_state in states and c.location is Location.GROUND for c in checks):
+        periods += [(name, values.get(name), xi)
+                    for name, xi in CHECK_PERIODS.get(limit_state, ())]  # fmt: skip
     periods += [
         (Note("max_over", "max over [{lo:g}, {hi:.4g}] s", lo=float(c.spectral.period_range[0]),
               hi=float(c.spectral.period_range[1])), c.spectral.period, c.spectral.damping)

@@ -13,28 +13,9 @@ from __future__ import annotations
 from collections.abc import Mapping
 from typing import Any
 
+from rockcli.document.code_check import risk_indices
 from rockcli.document.content import Block, Grid, Paragraph, Section
 from rockcli.document.words import Words
-
-#: The limit states of the verdict, in order (both editions' names).
-STATES = ("SLD", "SLV", "SLC", "DLS", "ULS")
-
-
-def risk_indices(kin: Mapping[str, Any]) -> list[tuple[str, float | None, bool | None]]:
-    """(limit state, ζ_E, its verdict) per limit state of the check: ζ_E the smallest
-    capacity/demand of the checks that decide the state's verdict — the non-linear ones where
-    the analysis has them, else the linear ones (rockcli.codecheck.result.deciding) — and the
-    verdict as the kinematic document gives it."""
-    out = []
-    verdicts = kin.get("verdict", {})
-    for state in STATES:
-        checks = [c for c in kin.get("checks", ()) if c.get("limit_state") == state]
-        if not checks:
-            continue
-        nonlinear = [c for c in checks if c.get("method") == "nonlinear"]
-        ratios = [c["ratio"] for c in nonlinear or checks if c.get("ratio") is not None]
-        out.append((state, min(ratios) if ratios else None, verdicts.get(state)))
-    return out
 
 
 def code_blocks(kin: Mapping[str, Any], w: Words) -> tuple[list[Block], list[str]]:

@@ -12,15 +12,13 @@ from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, replace
 from typing import TYPE_CHECKING, Any
 
-from rockcli.document.build import (
-    Inputs,
-    assemble,
+from rockcli.document.build import Inputs, assemble, model_section
+from rockcli.document.code_check import (
     code_spectra_of,
     figure,
     floor_figure,
     hazard_grid,
     kinematic_section,
-    model_section,
 )
 from rockcli.document.content import Block, Document, Grid, Paragraph, Section
 from rockcli.document.tolerance import other_suite_warnings, suite_paragraphs

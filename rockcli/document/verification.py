@@ -49,7 +49,7 @@ def demand_kind(model: Model) -> str:
 
 def zeta_by_state(kin: Mapping[str, Any]) -> dict[str, float | None]:
     """ζ_E of each limit state the check evaluated (rockcli.document.conclusions.risk_indices)."""
-    from rockcli.document.conclusions import risk_indices
+    from rockcli.document.code_check import risk_indices
 
     return {state: ratio for state, ratio, _ in risk_indices(kin)}
 
@@ -57,7 +57,7 @@ def zeta_by_state(kin: Mapping[str, Any]) -> dict[str, float | None]:
 def site_section(model: Model, ver: Verification, w: Words) -> Section:
     """The site's seismic action: the hazard and the spectrum's parameters per limit state,
     the spectra, and at height the floor spectra the check read (the check's own rule)."""
-    from rockcli.document.build import (
+    from rockcli.document.code_check import (
         code_spectra_of,
         figure,
         floor_figure,
@@ -87,7 +87,7 @@ def site_section(model: Model, ver: Verification, w: Words) -> Section:
 
 def verification_sections(model: Model, ver: Verification, w: Words) -> list[Section]:
     """The site's action and the kinematic check on it (the report's verification)."""
-    from rockcli.document.build import kinematic_section
+    from rockcli.document.code_check import kinematic_section
 
     check = kinematic_section(ver.result, ver.doc, w)
     intro = Paragraph(w(f"verify.kin_intro_{ver.demand}"))
@@ -183,7 +183,7 @@ def verification_blocks(ver: Verification, w: Words) -> tuple[list[Block], bool]
 
 
 def _indices(kin: Mapping[str, Any]) -> Sequence[tuple[str, float | None, bool | None]]:
-    from rockcli.document.conclusions import risk_indices
+    from rockcli.document.code_check import risk_indices
 
     return risk_indices(kin)
 

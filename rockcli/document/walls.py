@@ -12,7 +12,7 @@ from collections.abc import Iterator, Mapping, Sequence
 from dataclasses import dataclass, replace
 from typing import Any
 
-from rockcli.document.conclusions import risk_indices
+from rockcli.document.code_check import risk_indices
 from rockcli.document.content import Figure, Grid, Paragraph, Section
 from rockcli.document.words import Words
 

@@ -281,6 +281,7 @@ OTHER_KEYS: dict[str, dict[str, Any]] = {
     "ntc": {
         **{k: v for k, v in _NTC.items() if k != "demand"},
         "knowledge_level": "LC1",
+        "use_class": "II",
         "ultimate_displacement": 0.1,
     },
     "ntc.site": {"lon": 13.4, "lat": 42.35},

@@ -53,7 +53,12 @@ def test_model_parameters_come_back_with_the_ntc_spectrum() -> None:
     assert set(doc["demand"]) == {"SLD", "SLV"}  # the 2009 edition's limit states
     for ls, numbers in doc["demand"].items():
         given = model["ntc"]["demand"][ls]
-        assert set(numbers) == SPECTRUM_KEYS
+        # The altar stands at height: its ground spectrum's values at T1, where the floor
+        # spectra come from, and at Ts, which 2009's ground check reads (issue 36).
+        assert set(numbers) == SPECTRUM_KEYS | {"spectral_values"}
+        assert [v["at"] for v in numbers["spectral_values"]] == (
+            ["T1"] if ls == "SLD" else ["T1", "Ts"]
+        )
         # The model gives the parameters: no return period, the source names the table.
         assert numbers["TR"] is None and numbers["source"] == f"[ntc.demand.{ls}]"
         # Its own ag, F0, Tc* back, exactly (they are the model's numbers).
@@ -81,7 +86,10 @@ def test_site_on_the_hazard_grid_gives_the_return_periods() -> None:
     VR = 50.0 * 1.0
     assert set(doc["demand"]) == {"SLD", "SLV", "SLC"}
     for ls, numbers in doc["demand"].items():
-        assert set(numbers) == SPECTRUM_KEYS
+        # At height (2019): the ground spectrum's values at T1 only, where the floor spectra
+        # the checks read come from.
+        assert set(numbers) == SPECTRUM_KEYS | {"spectral_values"}
+        assert [v["at"] for v in numbers["spectral_values"]] == ["T1"]
         assert numbers["TR"] == pytest.approx(-VR / math.log(1.0 - P_VR[ls]), rel=REL)
         assert numbers["source"] == "hazard grid at 10.8070 E, 44.9180 N"
         assert all(math.isfinite(numbers[k]) for k in SPECTRUM_KEYS - {"source"})

@@ -66,8 +66,9 @@ def test_record_spectrum_plot_of_a_badly_named_record_warns_nothing(
 
 def test_report_svg_shows_control_characters_escaped() -> None:
     from rockcli.document.figures import new_figure, svg_markup
+    from rockcli.document.words import Words
 
-    fig = new_figure(3.0, 2.0)
+    fig = new_figure(3.0, 2.0, Words("en"))
     ax = fig.add_subplot()
     ax.set_title(f"wall {ESC}[31m red {BEL}\nsecond line")
     ax.plot([0, 1], [0, 1], label=f"rec{ESC}esc")
