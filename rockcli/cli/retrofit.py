@@ -72,6 +72,19 @@ EXIT_NONE = 1
     is_flag=True,
     help=f"Exit with code {EXIT_NONE} when no diameter in the range passes.",
 )
+@click.option(
+    "--code-demand",
+    type=click.Choice(("record", "model")),
+    default="record",
+    show_default=True,
+    help="The code check's demand: record, the record's response spectrum (one earthquake on "
+    "both sides), or model, the model's own code spectra (the report's verification).",
+)
+@click.option(
+    "--details",
+    is_flag=True,
+    help="Also a row per diameter and mechanism (the table shows one per diameter).",
+)
 @edition_option
 @engine_option
 @ground_option
@@ -79,10 +92,13 @@ EXIT_NONE = 1
 @force_option
 @output_format
 def retrofit(model_path, record_path, record_format, dt, units, scale, pga, name, at, length,
-             diameters, grade, count, jobs, progress, fail_if_none, edition, engine, ground,
-             plot_path, force, output):  # fmt: skip
-    """Size a tie-rod of MODEL: for each diameter, the code's ULS check and the time history
-    under the record; the smallest diameter that passes both and holds the rod's force."""
+             diameters, grade, count, jobs, progress, fail_if_none, code_demand, details,
+             edition, engine, ground, plot_path, force, output):  # fmt: skip
+    """Size a tie-rod of MODEL: for each diameter, the code's ULS check of every mechanism and
+    the time history of each one the rod is on, under the record; the smallest diameter that
+    makes safe every mechanism the rod restrains, its force held. A mechanism the rod does not
+    restrain (not on it, or slack on the side it fails on) and that fails needs another
+    intervention: it is named, and it does not fail the rod."""
     from rockcli.analyses.choices import Analyses
     from rockcli.cli.sweep import worker_count
     from rockcli.studies.parallel.executor import local_executor
@@ -93,20 +109,26 @@ def retrofit(model_path, record_path, record_format, dt, units, scale, pga, name
     from rockcli.terminal.table import show
 
     plan, model = retrofit_plan(model_path, name, at, length, diameters, grade, count)
+    if code_demand == "model":
+        from rockcli.analyses.compare import check_code_demand
+
+        check_code_demand(model, code_demand, file=model_path)
     check_outputs(force, plot=plot_path)
     record = load_record(record_path, record_format, dt, units, scale, pga)
     analyses = Analyses(engine, edition, ground)
     jobs = worker_count(jobs, len(plan.diameters_mm))
     with local_executor(jobs) as lanes, progress_bar(progress) as bar:
-        rows = run_retrofit(plan, record, lanes, analyses, bar)
+        rows = run_retrofit(plan, record, lanes, analyses, bar, code_demand)
     chosen, reason = choose(rows)
-    doc = retrofit_document(plan, model, record, rows, chosen, reason, ground=ground)
+    doc = retrofit_document(
+        plan, model, record, rows, chosen, reason, ground=ground, code_demand=code_demand
+    )
     if plot_path:
         from rockcli.plots.retrofit import plot_retrofit
 
         plot_retrofit(doc, plot_path)
         announce_written(plot_path)
-    show(doc, output, retrofit_report)
+    show(doc, output, lambda d: retrofit_report(d, details))
     exit_if_non_finite(
         [{**r, "message": f"Ø{c['diameter_mm']:g} mm: {r['message']}"}
          for c in rows for r in c["broken_runs"]]

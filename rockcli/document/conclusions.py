@@ -146,7 +146,15 @@ def sizing_paragraph(sizing: Any, w: Words) -> Paragraph:
         why = getattr(sizing.reason, "values", {}).get("why", sizing.reason)
         text = w("concl.retrofit_none", reason=w.note(why), **values)
         return Paragraph(text + installed, "warning")
-    text = w("concl.retrofit_found", d=w.number(sizing.chosen["diameter_mm"], "{:g}"), **values)
+    text = w(
+        "concl.retrofit_found",
+        d=w.number(sizing.chosen["diameter_mm"], "{:g}"),
+        demand=w(f"concl.retrofit_demand_{sizing.code_demand}"),
+        **values,
+    )
+    if sizing.others:
+        names = ", ".join(f"'{w.note(name)}'" for name in sizing.others)
+        text += " " + w("concl.retrofit_others", names=names)
     return Paragraph(text + installed, "verdict")
 
 

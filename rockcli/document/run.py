@@ -220,7 +220,8 @@ def wall_sizing(
 
     if not asks_intervention(verification, doc):
         return "not needed"
-    return size_rod(path, record, analyses)
+    # The code check of each diameter on the spectra of the verification, when there is one.
+    return size_rod(path, record, analyses, "record" if verification is None else "model")
 
 
 def comparison_document(out: Any, record: Record) -> dict[str, Any]:

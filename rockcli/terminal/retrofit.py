@@ -8,7 +8,6 @@ from typing import Any
 from rockcli.model.schema import Model
 from rockcli.records.record import Record
 from rockcli.studies.retrofit.candidates import RetrofitPlan
-from rockcli.studies.retrofit.choose import failures
 from rockcli.terminal.table import Column, Report, Table
 from rockcli.version import __version__
 
@@ -18,6 +17,8 @@ INPUTS = {
     "ground": "rocking input: the record itself, at the block's base",
     "floor": "rocking input: the record's floor motion at the block's height ([building])",
 }
+#: What each mechanism's code check reads (the document's code_demand).
+CODE_DEMANDS = {"record": "the record's spectrum", "model": "the model's own code spectra"}
 #: Newtons per kilonewton (the tables show kN, the JSON N).
 N_PER_KN = 1000.0
 #: What the max θ/α cell says for a block that overturns: its ratio is then the overturning
@@ -35,11 +36,13 @@ def retrofit_document(
     reason: str,
     *,
     ground: bool = False,
+    code_demand: str = "record",
 ) -> dict[str, Any]:
     """The `rock retrofit --format json` document: every candidate, the choice and why, and
     the warnings on the model and the record (magnitudes that look like unit slips)."""
     from rockcli.analyses.floor import model_floor
     from rockcli.model.plausible import model_warnings
+    from rockcli.studies.retrofit.choose import others
 
     floor = model_floor(model) is not None and not ground
     if rows and "input" in rows[0]:  # a wall's mechanism at height rocks on its floor
@@ -65,45 +68,115 @@ def retrofit_document(
         },
         "grade": plan.grade,
         "count": plan.count,
+        "code_demand": code_demand,
         "candidates": list(rows),
         "chosen": chosen,
         "reason": reason,
+        "another_intervention": others(chosen or (rows[-1] if rows else {})),
         "warnings": [*model_warnings(model), *record.warnings],
     }
 
 
+#: One row per diameter (80 columns): the rod, how many of the mechanisms it restrains it
+#: makes safe, the worst of its checks over them, and the outcome.
 COLUMNS = (
     Column("d", "d", "mm", "{:g}"),
-    Column("K", "K", "kN/m", "{:.0f}"),
     Column("strength", "strength", "kN", "{:.4g}"),
-    Column("code_zeta", "code ULS ζ", "", "{:.3f}", short="ζ"),
-    Column("code_uls", "code ULS"),
+    Column("safe", "safe / restrained", short="safe"),
     Column("max_ratio", "max θ/α", "", "{:.4f}"),
     Column("max_force", "peak force", "kN", "{:.4g}"),
+    Column("utilisation", "use", "", "{:.3f}"),
+    Column("why", "result", align="left"),
+)
+#: One row per diameter and mechanism (--details).
+DETAIL_COLUMNS = (
+    Column("d", "d", "mm", "{:g}"),
+    Column("K", "K", "kN/m", "{:.0f}"),
+    Column("name", "mechanism", align="left"),
+    Column("restrained", "restrained", short="rod"),
+    Column("code_zeta", "code ULS ζ", "", "{:.3f}", short="ζ"),
+    Column("max_ratio", "max θ/α", "", "{:.4f}"),
     Column("utilisation", "utilisation", "", "{:.3f}", short="use"),
     Column("elongation", "elongation / can take", "mm", short="elong."),
-    Column("overstrength", "γov·A·fy", "kN", "{:.4g}"),
-    Column("ruptured", "ruptured", short="rupt."),
-    Column("why", "result", align="left"),
+    Column("status", "status", align="left"),
 )
 
 
 def table_row(row: dict[str, Any]) -> dict[str, Any]:
-    """One candidate in the table's units (mm, kN/m, kN); "overturned" for the max θ/α of
-    a block that overturns."""
-    passed = row["code_uls_passed"]
+    """One diameter in the table's units (mm, kN/m, kN): the rod, the mechanisms it restrains
+    and makes safe, its peak force and utilisation over them, the outcome."""
+    from rockcli.studies.retrofit.choose import FAILS, SAFE, candidate_failures
+
+    mechanisms = row.get("mechanisms") or [row]
+    restrained = [m for m in mechanisms if m.get("restrained", True)]
+    held = [m for m in mechanisms if m.get("on_mechanism", True)]  # the rod's force acts on
+    forces = [m["max_force"] for m in held if m.get("max_force") is not None]
+    uses = [m["utilisation"] for m in held if m.get("utilisation") is not None]
+    failing = [f"'{m['name']}'" for m in mechanisms if m.get("status") == FAILS]
+    if len(mechanisms) == 1:  # a block (or a synthetic row): why, in short
+        failing = short_failures(mechanisms[0]) if candidate_failures(row) else []
+    rocked = [m for m in held if m.get("max_ratio") is not None]
     return {
-        **row,
         "d": row["diameter_mm"],
         "K": row["K"] / N_PER_KN,
         "strength": None if row["strength"] is None else row["strength"] / N_PER_KN,
-        "code_uls": "not evaluated" if passed is None else ("pass" if passed else "fail"),
-        "max_ratio": OVERTURNED if row["overturned"] else row["max_ratio"],
-        "max_force": None if row["max_force"] is None else row["max_force"] / N_PER_KN,
-        "elongation": elongation_text(row.get("ductility")),
-        "overstrength": None if not row.get("anchor") else row["anchor"]["demand"] / N_PER_KN,
-        "why": "; ".join(failures(row)) or "passes",
+        "safe": f"{sum(m.get('status', SAFE) == SAFE for m in restrained)} / {len(restrained)}",
+        "max_force": max(forces) / N_PER_KN if forces else None,
+        "utilisation": max(uses) if uses else None,
+        "max_ratio": OVERTURNED
+        if any(m["overturned"] for m in rocked)
+        else max((m["max_ratio"] for m in rocked), default=None),
+        "why": outcome(failing, single=len(mechanisms) == 1),
     }
+
+
+def short_failures(m: dict[str, Any]) -> list[str]:
+    """A mechanism's failures in a few words each (the table's cell; the JSON and --details
+    say them in full)."""
+    duct, anchor = m.get("ductility") or {}, m.get("anchor") or {}
+    use = m.get("utilisation")
+    said = [
+        (m["code_uls_passed"] is None, "code ULS not evaluated"),
+        (m["code_uls_passed"] is False,
+         f"code ζ {m['code_zeta']:.3f}" if m.get("code_zeta") is not None else "code fails"),
+        (m["overturned"], "overturns"),
+        (not m["overturned"] and m.get("rocking") not in ("survives", None), "undecided"),
+        (m["ruptured"], "rod ruptures"),
+        (use is not None and use > 1.0 + 1e-9, f"use {use or 0:.2f}"),
+        (duct.get("passed") is False, "stretches"),
+        (anchor.get("passed") is False, "anchor"),
+    ]  # fmt: skip
+    return [text for cond, text in said if cond]
+
+
+def outcome(failing: list[str], single: bool) -> str:
+    """A diameter's result: "passes", a block's reasons, or the mechanisms that fail."""
+    if not failing:
+        return "passes"
+    return "; ".join(failing) if single else "fails: " + ", ".join(failing)
+
+
+def detail_rows(row: dict[str, Any]) -> list[dict[str, Any]]:
+    """Every mechanism of one diameter, in the details' units."""
+    from rockcli.studies.retrofit.choose import failures
+
+    out = []
+    for m in row.get("mechanisms") or [row]:
+        failing = failures(m)
+        status = m.get("status") or ("safe" if not failing else "fails")
+        out.append({
+            "d": row["diameter_mm"],
+            "K": row["K"] / N_PER_KN,
+            "name": m.get("name") or m.get("mechanism") or "block",
+            "restrained": m.get("restrained", True),
+            "code_zeta": m["code_zeta"],
+            "max_ratio": OVERTURNED if m["overturned"] else m["max_ratio"],
+            "utilisation": m["utilisation"],
+            "elongation": elongation_text(m.get("ductility")),
+            "status": status if not failing or status == "safe"
+            else f"{status}: {'; '.join(failing)}",
+        })  # fmt: skip
+    return out
 
 
 def elongation_text(duct: dict[str, Any] | None) -> str | None:
@@ -113,8 +186,12 @@ def elongation_text(duct: dict[str, Any] | None) -> str | None:
     return f"{duct['demand'] * 1e3:.0f} / {duct['capacity'] * 1e3:.0f}"
 
 
-def retrofit_report(doc: dict[str, Any]) -> Report:
-    """The candidates' table, the rod and record as notes, the choice as the verdict."""
+def retrofit_report(doc: dict[str, Any], details: bool = False) -> Report:
+    """A row per diameter (the mechanisms it makes safe of those it restrains, the rod's
+    worst checks, the outcome), with ``details`` a row per diameter and mechanism; the rod,
+    the record and the mechanisms needing another intervention as notes; the choice."""
+    from rockcli.studies.retrofit.choose import others
+
     rows = tuple(table_row(r) for r in doc["candidates"])
     rod = doc["rod"]
     where = (
@@ -124,18 +201,26 @@ def retrofit_report(doc: dict[str, Any]) -> Report:
         f" m from the pivot, {rod['placed']['length']:g} m long"
     )
     chosen = doc["chosen"]
-    columns: tuple[Column, ...] = COLUMNS
-    notes: tuple[str, ...] = ()
-    names = list(dict.fromkeys(r["mechanism"] for r in doc["candidates"] if r.get("mechanism")))
-    if len(names) > 1:  # a wall whose governing mechanism changes with the rod
-        columns = (*COLUMNS[:-1], Column("mechanism", "governing mechanism", align="left"),
-                   COLUMNS[-1])  # fmt: skip
+    tables = [Table(f"'{rod['name']}': {where}", COLUMNS, rows)]
+    if details:
+        each = tuple(d for r in doc["candidates"] for d in detail_rows(r))
+        tables.append(Table("each mechanism with each diameter", DETAIL_COLUMNS, each))
+    notes = [
+        f"{doc['count']} bar(s) of {doc['grade']} per diameter; each mechanism's code ULS on "
+        f"{CODE_DEMANDS[doc.get('code_demand', 'record')]}; the time history (both "
+        "polarities) of each mechanism the rod is on; peak force and utilisation: the largest "
+        "over the mechanisms the rod is on; restrained: on it, and not slack on the side its "
+        "code check governs; the rod's elongation against ε_u·L/γ_ε, and "
+        "γov·A·fy, the force its anchorage must exceed (capacity design, NTC 2018 §7.5.1)",
+        INPUTS[doc["record"]["input"]],
+    ]
+    shown = chosen or (doc["candidates"][-1] if doc["candidates"] else {})
+    names = others(shown)
     if names:
-        notes = ("a wall: each diameter is checked by the code on the record's spectrum and "
-                 "rocked for the governing mechanism of that check (a stronger rod can hand it "
-                 "to another); no peak force where the rod is not on that mechanism (below its "
-                 "hinge, or at a vertical flexure's held top)"
-                 + (f"; governing: '{names[0]}'" if len(names) == 1 else ""),)  # fmt: skip
+        notes.append("need another intervention (the rod is not on them, or goes slack on the "
+                     "side they fail on): " + ", ".join(f"'{n}'" for n in names))  # fmt: skip
+    if not details and any(r.get("mechanisms") for r in doc["candidates"]):
+        notes.append("--details: a row per diameter and mechanism (--format json: every column)")
     verdict = (
         f"{doc['reason']} ({doc['count']} bar(s) of {doc['grade']})"
         if chosen is not None
@@ -144,15 +229,8 @@ def retrofit_report(doc: dict[str, Any]) -> Report:
     return Report(
         title=f"rock retrofit — {doc['model']['name']} under {doc['record']['name']} "
         f"(PGA {doc['record']['pga_g']:.3f} g)",
-        tables=(Table(f"'{rod['name']}': {where}", columns, rows),),
-        notes=(
-            f"{doc['count']} bar(s) of {doc['grade']} per diameter; code ULS ζ = capacity/"
-            "demand on the record's spectrum; max θ/α, peak force and utilisation over both "
-            "polarities; the rod's largest elongation against ε_u·L/γ_ε, and γov·A·fy, the force "
-            "its anchorage must exceed (capacity design, NTC 2018 §7.5.1)",
-            INPUTS[doc["record"]["input"]],
-            *notes,
-        ),
+        tables=tuple(tables),
+        notes=tuple(notes),
         warnings=tuple(doc["warnings"]),
         verdict=verdict,
     )

@@ -125,7 +125,7 @@ def test_the_retrofit_in_the_conclusions_is_rock_retrofits(tmp_path: Path) -> No
     chosen = json.loads(out)["chosen"]
     assert chosen is not None
     page = report(tmp_path, str(FACADE), *record, "--retrofit")
-    found = re.search(r"Intervention \(rock retrofit[^<]*?is Ø(\d+) mm", page)
+    found = re.search(r"Intervention \(sizing of the tie-rod[^<]*?is Ø(\d+) mm", page)
     assert found is not None and float(found.group(1)) == chosen["diameter_mm"]
     assert "The rod in the model is Ø20 mm." in page  # facade.toml's tie-rod
 

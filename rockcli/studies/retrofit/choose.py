@@ -1,10 +1,15 @@
-"""The choice of a retrofit: the smallest diameter that passes every criterion, or why none.
+"""The choice of a retrofit: the smallest diameter that makes safe every mechanism the rod
+restrains, or why none does.
 
-A candidate passes when the code's ULS check is satisfied, the block survives the time
-history (both polarities), the rod does not rupture and its largest force stays within its
-strength (utilisation ≤ 1 within the rounding of a yield plateau, FORCE_RTOL; NTC 2018
-§4.2.4.1.2 through rockcli.analyses.strength). A rod that yielded at its design strength and
-held passes: the time history has taken its yielding into account.
+A mechanism (a block file's block, or each mechanism of a wall's catalogue) is safe with a
+diameter when the code's ULS check is satisfied, it survives the time history (both
+polarities), the rod does not rupture and its largest force stays within its strength
+(utilisation ≤ 1 within the rounding of a yield plateau, FORCE_RTOL; NTC 2018 §4.2.4.1.2
+through rockcli.analyses.strength), its elongation and its anchor's capacity. A rod that
+yielded at its design strength and held passes: the time history has taken its yielding into
+account. A mechanism the rod does not restrain (the rod is not on it: below its hinge, at a
+flexure's held top; or the rod goes slack on the side it fails on: a tie opening inward) and
+that fails needs another intervention: it is said, and it does not fail the rod.
 """
 
 from __future__ import annotations
@@ -20,29 +25,44 @@ UTILISATION_LIMIT = 1.0
 
 
 def failures(row: dict[str, Any]) -> list[Note]:
-    """Why a candidate does not pass (empty: it passes), one phrase per criterion."""
-    why = []
-    if row["code_uls_passed"] is None:
-        why.append(Note("retro_not_evaluated", "the code ULS is not evaluated (set "
-                        "ntc.ultimate_displacement or a restrainer's fails_at)"))  # fmt: skip
-    elif not row["code_uls_passed"]:
-        zeta = row["code_zeta"]
-        why.append(
-            Note("retro_code_fails", "the code ULS fails (ζ = {zeta:.3f})", zeta=float(zeta))
-            if zeta is not None
-            else Note("retro_code_fails_unknown", "the code ULS fails")
-        )
+    """Why a candidate does not pass (empty: it passes), one phrase per criterion: the code's
+    (:func:`code_failures`), the rod not on the governing mechanism, the time history's and
+    the rod's (:func:`history_failures`)."""
+    why = code_failures(row)
     mechanism = row.get("mechanism")
     if mechanism and not row.get("on_mechanism", True):
         why.append(Note("retro_not_on", "the rod is not on the governing mechanism "
                         "'{mechanism}'", mechanism=mechanism))  # fmt: skip
+    return why + history_failures(row)
+
+
+def code_failures(row: dict[str, Any]) -> list[Note]:
+    """The code's ULS check not satisfied, or not evaluated."""
+    if row["code_uls_passed"] is None:
+        return [Note("retro_not_evaluated", "the code ULS is not evaluated (set "
+                     "ntc.ultimate_displacement or a restrainer's fails_at)")]  # fmt: skip
+    if not row["code_uls_passed"]:
+        zeta = row["code_zeta"]
+        return [
+            Note("retro_code_fails", "the code ULS fails (ζ = {zeta:.3f})", zeta=float(zeta))
+            if zeta is not None
+            else Note("retro_code_fails_unknown", "the code ULS fails")
+        ]
+    return []
+
+
+def history_failures(row: dict[str, Any]) -> list[Note]:
+    """The time history's and the rod's: overturning (or undecided), the rod's rupture, its
+    utilisation, its elongation, its anchor (none where the mechanism was not rocked)."""
+    why = []
+    mechanism = row.get("mechanism")
     if row["overturned"]:
         why.append(
             Note("retro_overturns", "'{mechanism}' overturns", mechanism=mechanism)
             if mechanism
             else Note("retro_block_overturns", "the block overturns")
         )
-    elif row["rocking"] != "survives":
+    elif row["rocking"] not in ("survives", None):  # None: not rocked (the rod is not on it)
         why.append(Note("retro_undecided", "the time history is undecided"))
     if row["ruptured"]:
         why.append(Note("retro_ruptures", "the rod ruptures"))
@@ -62,18 +82,65 @@ def failures(row: dict[str, Any]) -> list[Note]:
     return why
 
 
+#: What a mechanism is with a diameter (:func:`mechanism_status`).
+SAFE, FAILS, ANOTHER = "safe", "fails", "needs another intervention"
+
+
+def mechanism_status(m: dict[str, Any]) -> str:
+    """A mechanism with a diameter: SAFE (every criterion met), FAILS (the rod is on it and
+    it overturns or the rod does not hold — the rod's concern —, or the rod restrains it and
+    the code ULS still fails) or ANOTHER (the code ULS fails where the rod does not restrain
+    it: not on it, or slack on the side it fails on)."""
+    if m["on_mechanism"] and history_failures(m):
+        return FAILS
+    if code_failures(m):
+        return FAILS if m["restrained"] else ANOTHER
+    return SAFE
+
+
+def candidate_failures(row: dict[str, Any]) -> list[Note]:
+    """Why a diameter does not pass (empty: it passes): each mechanism the rod restrains that
+    still fails, with why; a candidate without mechanisms (a synthetic row) by its own
+    criteria."""
+    if "mechanisms" not in row:
+        return failures(row)
+    return [Note("retro_mechanism_fails", "'{name}': {why}", name=m["name"],
+                 why=Items(failures(m), "; "))
+            for m in row["mechanisms"] if m["status"] == FAILS]  # fmt: skip
+
+
+def others(row: dict[str, Any]) -> list[str]:
+    """The mechanisms that need another intervention with this diameter."""
+    return [m["name"] for m in row.get("mechanisms", ()) if m["status"] == ANOTHER]
+
+
 def choose(rows: Sequence[dict[str, Any]]) -> tuple[dict[str, Any] | None, Note]:
     """(the chosen candidate or None, the reason) over rows ascending in diameter."""
     if not rows:
         return None, Note("retro_none_tried", "no diameter tried")
+    restrained = any(m["restrained"] for r in rows for m in r.get("mechanisms", ()))
+    if rows[0].get("mechanisms") is not None and not restrained:
+        return None, Note("retro_restrains_none", "the rod restrains none of the mechanisms "
+                          "(each needs another intervention where it fails: {names})",
+                          names=Items([f"'{n}'" for n in others(rows[-1])] or ["—"],
+                                      ", "))  # fmt: skip
     for row in rows:
-        if not failures(row):
+        if not candidate_failures(row):
+            names = others(row)
+            if not names:
+                return row, Note(
+                    "retro_chosen", "Ø{d:g} mm is the smallest diameter for which the code "
+                    "ULS passes, the block survives and the rod neither ruptures nor exceeds "
+                    "its strength, its ductility or its anchor's capacity",
+                    d=float(row["diameter_mm"]),
+                )  # fmt: skip
             return row, Note(
-                "retro_chosen", "Ø{d:g} mm is the smallest diameter for which the code ULS "
-                "passes, the block survives and the rod neither ruptures nor exceeds its "
-                "strength, its ductility or its anchor's capacity", d=float(row["diameter_mm"]),
+                "retro_chosen_others", "Ø{d:g} mm is the smallest diameter that makes safe "
+                "every mechanism the rod restrains (the code ULS passes, it survives, the rod "
+                "holds); another intervention is needed for: {names}",
+                d=float(row["diameter_mm"]), names=Items([f"'{n}'" for n in names], ", "),
             )  # fmt: skip
     largest = rows[-1]
-    why = Items(failures(largest), "; ")
+    why = Items(candidate_failures(largest), "; ")
     return None, Note("retro_none", "none in the range: at the largest, {d:g} mm, {why}",
                       d=float(largest["diameter_mm"]), why=why)  # fmt: skip

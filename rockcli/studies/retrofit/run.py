@@ -53,12 +53,19 @@ class RetrofitChunk:
     record: Record
     analyses: Analyses
     cases: tuple[Candidate, ...]
+    #: The code check's demand: "record" (its spectrum) or "model" (the model's spectra).
+    code_demand: str = "record"
 
 
 def run_retrofit_chunk(chunk: RetrofitChunk) -> list[dict[str, Any]]:
     """The row of every candidate of the chunk (runs in a worker or in this process)."""
     return [
-        {"case": c.id, **run_candidate(chunk.plan, c.diameter_mm, chunk.record, chunk.analyses)}
+        {
+            "case": c.id,
+            **run_candidate(
+                chunk.plan, c.diameter_mm, chunk.record, chunk.analyses, chunk.code_demand
+            ),
+        }
         for c in chunk.cases
     ]
 
@@ -93,39 +100,87 @@ def shared_spectrum(record: Record, g: float) -> RecordSpectrum:
 
 
 def run_candidate(
-    plan: RetrofitPlan, diameter_mm: float, record: Record, analyses: Analyses
-) -> dict[str, Any]:
-    """Both analyses of the model with the rod of this diameter: the code check on the
-    record's spectrum (one earthquake on both sides, as ``rock compare``) and the time
-    history of both polarities. A wall: the governing mechanism of that code check (with this
-    rod: a stronger rod can hand the governing role to another mechanism), rocked as
-    ``rock compare`` rocks it; ``mechanism`` names it, ``on_mechanism`` says whether the rod
-    is one of its members (a rod below its hinge, or at a flexure's held top, is not)."""
-    from rockcli.analyses.assess import assess_model_output
+    plan: RetrofitPlan, diameter_mm: float, record: Record, analyses: Analyses,
+    code_demand: str = "record",
+) -> dict[str, Any]:  # fmt: skip
+    """Both analyses of the model with the rod of this diameter, mechanism by mechanism: the
+    code check of the whole catalogue on the record's spectrum (one earthquake on both sides,
+    as ``rock compare``; ``code_demand`` "model": on the model's own spectra, as a report's
+    verification), and the time history of both polarities of every mechanism the rod is on
+    (:func:`mechanism_rows`). The candidate's own columns are those of the governing
+    mechanism of that check (with this rod: a stronger rod can hand the governing role to
+    another); ``mechanisms`` has every one, with its status (studies.retrofit.choose)."""
     from rockcli.analyses.kinematic import kinematic_model
+    from rockcli.model.catalogue import catalogue
 
     model = build_candidate(plan, diameter_mm)
-    spectrum = shared_spectrum(record, model.analysis.g)
-    kin = kinematic_model(model, edition=analyses.edition, record=record, spectrum=spectrum)
-    out = assess_model_output(
-        model,
-        record,
-        analyses.engine,
-        ground=analyses.ground,
-        file=plan.file,
-        tolerance_check=False,  # assess, compare and report check it; the sizing does not
-        mechanism=kin.governing,
-    )
-    member = member_index(out, plan.name)
+    own = code_demand == "record"
+    spectrum = shared_spectrum(record, model.analysis.g) if own else None
+    mechanisms = catalogue(model)
+    kin = kinematic_model(model, edition=analyses.edition, record=record if own else None,
+                          spectrum=spectrum, mechanisms=mechanisms)  # fmt: skip
+    rows = mechanism_rows(model, kin, mechanisms, plan, record, analyses)
+    first = rows[0]
     return {
         "diameter_mm": diameter_mm,
-        "mechanism": None if out.mechanism is None else out.mechanism[0],
-        "on_mechanism": member is not None,
-        "input": "ground" if out.floor is None else "floor",
         **rod_columns(model, plan.index),
-        **code_columns(kin),
-        **rocking_columns(out, member),
+        **{k: v for k, v in first.items() if k not in ("name", "type", "status", "side")},
+        "mechanisms": rows,
     }
+
+
+def mechanism_rows(
+    model: Any, kin: KinematicResult, mechanisms: Any, plan: RetrofitPlan, record: Record,
+    analyses: Analyses,
+) -> list[dict[str, Any]]:  # fmt: skip
+    """Every mechanism of the catalogue with the rod, the governing one first: its code ULS
+    on the governing side, whether the rod restrains it (on it, and not slack on that side),
+    and where the rod is on it the time history with the rod's checks; its status."""
+    from rockcli.analyses.catalogue import side_check
+    from rockcli.analyses.kinematic import check_settings
+    from rockcli.model.catalogue import named
+    from rockcli.studies.retrofit.choose import mechanism_status
+
+    settings = check_settings(model, analyses.edition)
+    rows = []
+    for m in kin.catalogue or ():
+        mech = named(mechanisms, m.name)
+        rod = [r for r in side_check(mech, m.result.side, settings).restrainers
+               if r.name == plan.name]  # fmt: skip
+        row: dict[str, Any] = {
+            "name": m.name,
+            "type": m.type,
+            "side": m.result.side,
+            "mechanism": None if mech.wall is None else m.name,  # a block file's: the block
+            "on_mechanism": bool(rod),
+            "restrained": bool(rod) and rod[0].slack_side != m.result.side,
+            **code_columns(m.result),
+            **rocked_columns(model, record, analyses, plan, m.name, mechanisms, bool(rod)),
+        }
+        row["status"] = mechanism_status(row)
+        rows.append(row)
+    return rows
+
+
+def rocked_columns(
+    model: Any, record: Record, analyses: Analyses, plan: RetrofitPlan, name: str,
+    mechanisms: Any, on_it: bool,
+) -> dict[str, Any]:  # fmt: skip
+    """The time history of a mechanism the rod is on (as ``rock compare`` rocks it), with the
+    rod's checks; not run (every column None, nothing failing) where the rod is not on it."""
+    if not on_it:
+        return {"input": None, "rocking": None, "max_ratio": None, "overturned": False,
+                "broken_runs": [], "max_force": None, "utilisation": None, "ductility": None,
+                "anchor": None, "ruptured": False}  # fmt: skip
+    from rockcli.analyses.assess import assess_model_output
+
+    out = assess_model_output(
+        model, record, analyses.engine, ground=analyses.ground, file=plan.file,
+        tolerance_check=False,  # assess, compare and report check it; the sizing does not
+        mechanism=name, mechanisms=mechanisms,
+    )  # fmt: skip
+    return {"input": "ground" if out.floor is None else "floor",
+            **rocking_columns(out, member_index(out, plan.name))}  # fmt: skip
 
 
 def member_index(out: AssessmentOutput, name: str) -> int | None:
@@ -205,15 +260,17 @@ def run_retrofit(
     lanes: MutableSequence[Lane],
     analyses: Analyses,
     progress: Callable[[int, int], None] | None = None,
+    code_demand: str = "record",
 ) -> list[dict[str, Any]]:
-    """Every candidate's row, ascending in diameter, each diameter a chunk on the lanes.
+    """Every candidate's row, ascending in diameter, each diameter a chunk on the lanes
+    (``code_demand``: the code check's, :func:`run_candidate`).
 
     Raises RuntimeError when a worker process died on a candidate (the sweep's row error).
     """
     from rockcli.studies.parallel.chunks import run_chunks
 
     cases = [Candidate(i, d) for i, d in enumerate(plan.diameters_mm)]
-    chunks = [RetrofitChunk(plan, record, analyses, (c,)) for c in cases]
+    chunks = [RetrofitChunk(plan, record, analyses, (c,), code_demand) for c in cases]
     rows: dict[int, dict[str, Any]] = {}
     if progress:
         progress(0, len(cases))
@@ -241,16 +298,24 @@ class Sizing:
     chosen: dict[str, Any] | None = None
     #: The diameter of the rod in the model [mm] (None: not given).
     installed_mm: float | None = None
+    #: The mechanisms that need another intervention with the chosen diameter (or the
+    #: largest tried): the rod does not restrain them (studies.retrofit.choose.others).
+    others: tuple[str, ...] = ()
+    #: What the code check of each diameter read: "record" or "model" (its own spectra).
+    code_demand: str = "record"
 
 
-def size_rod(model_path: str, record: Record, analyses: Analyses) -> Sizing:
+def size_rod(
+    model_path: str, record: Record, analyses: Analyses, code_demand: str = "record"
+) -> Sizing:
     """`rock retrofit MODEL --record R` with its defaults (the model's one tie-rod, the default
-    diameters, its steel), in this process: the smallest diameter that passes the code's ULS,
-    the time history and the rod's own checks (rockcli.studies.retrofit.choose)."""
+    diameters, its steel), in this process: the smallest diameter that makes safe every
+    mechanism the rod restrains (rockcli.studies.retrofit.choose); ``code_demand`` "model":
+    the code check on the model's own spectra (a report's verification)."""
     from rockcli.model.load import read_toml, validate_model
     from rockcli.studies.parallel.executor import local_executor
     from rockcli.studies.retrofit.candidates import DEFAULT_DIAMETERS_MM, make_plan, tie_rods
-    from rockcli.studies.retrofit.choose import choose
+    from rockcli.studies.retrofit.choose import choose, others
 
     table = read_toml(model_path)
     model = validate_model(table, file=model_path)
@@ -265,8 +330,10 @@ def size_rod(model_path: str, record: Record, analyses: Analyses) -> Sizing:
         )  # fmt: skip
     plan = make_plan(table, model, file=model_path, diameters_mm=DEFAULT_DIAMETERS_MM)
     with local_executor(1) as lanes:
-        rows = run_retrofit(plan, record, lanes, analyses)
+        rows = run_retrofit(plan, record, lanes, analyses, code_demand=code_demand)
     chosen, reason = choose(rows)
     installed = model.restrainers[rods[0]].diameter
+    shown = chosen or (rows[-1] if rows else {})
     return Sizing(reason, plan.name, plan.grade, plan.count, plan.diameters_mm, chosen,
-                  None if installed is None else 1e3 * float(installed))  # fmt: skip
+                  None if installed is None else 1e3 * float(installed),
+                  tuple(others(shown)), code_demand)  # fmt: skip
