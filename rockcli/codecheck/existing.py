@@ -32,9 +32,17 @@ def use_class_of(CU: float) -> str | None:  # noqa: N803 (the code's symbol)
     return None
 
 
-def required_limit_states(use_class: str | None) -> tuple[str, ...]:
+#: The names the 2009 edition's check gives the same limit states (Circolare 617/2009 §C8A.4:
+#: the damage and the ultimate limit state, DLS and ULS, checked at the SLD's and the SLV's
+#: demand).
+EDITION_2009_NAMES = {"SLD": "DLS", "SLV": "ULS"}
+
+
+def required_limit_states(use_class: str | None, edition: str = "2019") -> tuple[str, ...]:
     """The limit states §8.3 requires for an existing building of ``use_class`` (None:
-    unknown, the ULS alone): the SLV for every class, and the SLD too for class IV."""
-    if use_class == "IV":
-        return (SERVICEABILITY, ULTIMATE)
-    return (ULTIMATE,)
+    unknown, the ULS alone): the SLV for every class, and the SLD too for class IV; named as
+    the ``edition``'s check names them (2009: DLS, ULS)."""
+    states = (SERVICEABILITY, ULTIMATE) if use_class == "IV" else (ULTIMATE,)
+    if edition == "2009":
+        return tuple(EDITION_2009_NAMES[s] for s in states)
+    return states

@@ -164,15 +164,18 @@ def wall_sections(part: Part, w: Words) -> list[Section]:
     return sections
 
 
-def wall_description(part: Part, w: Words) -> list[Section]:
+def wall_description(part: Any, w: Words) -> list[Section]:
     """A wall's own section (rockcli.document.wall_section): its geometry, materials, loads,
     thrusts and restrainers, and its section drawn with each mechanism of the verification;
-    none for a block file, whose block the model section draws."""
+    none for a block file, whose block the model section draws (``part``: a wall of a
+    record's report, walls.Part, or of a suite's, suite.SuitePart)."""
     from rockcli.document.wall_section import wall_drawing, wall_grids
     from rockcli.document.walls import kinematic_of
 
     ver = part.verification
-    walls = [m.wall for m in (ver.mechanisms if ver is not None else part.out.catalogue)]
+    out = getattr(part, "out", None)  # a suite's part has no comparison of one record
+    mechanisms = ver.mechanisms if ver is not None else getattr(out, "catalogue", ())
+    walls = [m.wall for m in mechanisms]
     if not walls or walls[0] is None:
         return []
     kin = kinematic_of(part)

@@ -158,13 +158,24 @@ def sizing_paragraph(sizing: Any, w: Words) -> Paragraph:
     return Paragraph(text + installed, "verdict")
 
 
-def suite_conclusions_section(doc: Mapping[str, Any], w: Words) -> Section:
-    """The conclusions of a suite's report: the code's risk index per limit state on the
+def suite_conclusions_section(
+    doc: Mapping[str, Any], w: Words, verification: Any = None
+) -> Section:
+    """The conclusions of a suite's report: the verification on the model's own spectra when
+    it has one (rockcli.document.verification), the code's risk index per limit state on the
     suite's target, the suite's time histories by the code's rule (NTC 2018 §7.3.5), the
-    classification and what to do next."""
+    classification and what to do next (an intervention when the verification or the suite
+    fails)."""
+    from rockcli.document.verification import verification_blocks
+
     n = w.number
     kin, suite = doc["kinematic"], doc["suite"]
     blocks: list[Block] = []
+    verification_fails = False
+    if verification is not None:
+        own, verification_fails = verification_blocks(verification, w)
+        blocks += own
+        blocks.append(Paragraph(w("suite.concl_intro", suite=doc["suite_name"]), "subheading"))
     code, failing = code_blocks(kin, w)
     blocks += code
     blocks.append(Paragraph(w(f"concl.suite_{suite['verdict']}", n=suite["n"],
@@ -172,9 +183,14 @@ def suite_conclusions_section(doc: Mapping[str, Any], w: Words) -> Section:
                               limit=n(suite["limit_ratio"], "{:.3g}"),
                               overturned=suite["overturned_records"])))  # fmt: skip
     blocks.append(Paragraph(w(f"class.{doc['classification']}"), "verdict"))
-    blocks.append(Paragraph(w(f"concl.paper_{doc['classification']}")))
-    unsafe = bool(failing) or suite["verdict"] != "passes"
-    blocks.append(Paragraph(w("concl.next_unsafe" if unsafe else "concl.next_safe")))
+    if not kin.get("mechanisms") or len(kin["mechanisms"]) == 1:  # the paper's single block
+        blocks.append(Paragraph(w(f"concl.paper_{doc['classification']}")))
+    if verification is not None:
+        unsafe = verification_fails or suite["verdict"] != "passes"
+        blocks.append(Paragraph(w("verify.next_unsafe" if unsafe else "verify.next_safe")))
+    else:
+        unsafe = bool(failing) or suite["verdict"] != "passes"
+        blocks.append(Paragraph(w("concl.next_unsafe" if unsafe else "concl.next_safe")))
     return Section("conclusions", w("section.conclusions"), tuple(blocks))
 
 

@@ -99,7 +99,8 @@ def write_report(
     parts = []
     for path, model in zip(model_paths, models, strict=True):
         mechanisms = catalogue(model)  # derived once: the verification and the scenario
-        verification = verification_of(model, comparison, mechanisms)
+        verification = verification_of(model, comparison.analyses.edition,
+                                       comparison.grid_file, mechanisms)  # fmt: skip
         step()
         out, doc, others = (None, None, ()) if record is None else wall_comparisons(
             model, record, path, comparison, choices.shown, mechanisms)  # fmt: skip
@@ -148,7 +149,9 @@ def check_verifiable(model: Any, path: str, record: Record | None) -> None:
         )
 
 
-def verification_of(model: Any, choices: ComparisonChoices, mechanisms: Any) -> Any:
+def verification_of(
+    model: Any, edition: str | None, grid_file: str | None, mechanisms: Any = None
+) -> Any:
     """The code check of every mechanism on the model's own spectra (its site on the hazard
     grid, or its [ntc.demand]): the report's verification; None when the model sets none."""
     from rockcli.analyses.compare import code_sets_demand
@@ -161,12 +164,17 @@ def verification_of(model: Any, choices: ComparisonChoices, mechanisms: Any) -> 
 
     if not code_sets_demand(model):
         return None
-    result = kinematic_model(model, edition=choices.analyses.edition,
-                             grid_file=choices.grid_file, mechanisms=mechanisms)  # fmt: skip
+    if mechanisms is None:
+        from rockcli.model.catalogue import catalogue
+
+        mechanisms = catalogue(model)
+    result = kinematic_model(model, edition=edition, grid_file=grid_file,
+                             mechanisms=mechanisms)  # fmt: skip
     doc = kinematic_document(model.name, result, model_warnings(model))
     use_class = ntc_settings(model).use_class
-    return Verification(result, doc, demand_kind(model), use_class,
-                        required_limit_states(use_class), mechanisms)  # fmt: skip
+    required = required_limit_states(use_class, result.edition)
+    return Verification(result, doc, demand_kind(model), use_class, required,
+                        mechanisms)  # fmt: skip
 
 
 def part_verdict(part: Any) -> str:
@@ -306,7 +314,9 @@ def write_suite_report(
         files += [("record", str(entry.path)) for entry in loaded.settings.entries]
         files += [("hazard_grid", grid_file)] if grid_file else []
         inputs = Inputs(path, loaded.model, None, tuple(files), command, report_date(), **front)
-        parts.append(SuitePart(inputs, doc, suite_document(loaded.check), runs, kin))
+        verification = verification_of(loaded.model, analyses.edition, grid_file)
+        parts.append(SuitePart(inputs, doc, suite_document(loaded.check), runs, kin,
+                               verification))  # fmt: skip
     document = build_suite_document(parts, lang)
     verdict = ", ".join(str(part.doc["classification"]) for part in parts)
     return write_document(document, html_path, pdf_path, verdict, docx_path)

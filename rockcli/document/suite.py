@@ -49,6 +49,14 @@ class SuitePart:
     check: Mapping[str, Any]
     records: Sequence[tuple[AssessmentOutput, Mapping[str, Any], Record]]
     kinematic: KinematicResult
+    #: The code check on the model's own spectra (rockcli.document.verification), the
+    #: report's verification; None when the model sets no code spectrum.
+    verification: Any = None
+
+    @property
+    def name(self) -> str:
+        """The model's name."""
+        return str(self.inputs.model.name)
 
 
 def build_suite_document(parts: Sequence[SuitePart], lang: str) -> Document:
@@ -71,24 +79,73 @@ def build_suite_document(parts: Sequence[SuitePart], lang: str) -> Document:
     suite = parts[0].doc["suite_name"]
     subtitle = (w("report.subtitle_suite_many", n=len(parts), suite=suite) if many
                 else w("report.subtitle_suite", model=names[0], suite=suite))  # fmt: skip
-    return assemble(inputs, w, subtitle, names, (*summary, *body))
+    document = assemble(inputs, w, subtitle, names, (*summary, *body))
+    return replace(document, data=suite_data(parts))
+
+
+def suite_data(parts: Sequence[SuitePart]) -> str:
+    """The report's data (rockcli.document.data): each model's verification on its own
+    spectra, its mechanisms, and the suite's comparison in place of a record's scenario."""
+    import json
+
+    from rockcli.document.data import mechanism_data
+    from rockcli.document.verification import verification_data, zeta_by_state
+
+    walls = []
+    for part in parts:
+        ver, doc = part.verification, part.doc
+        kin = ver.doc if ver is not None else doc["kinematic"]
+        walls.append({
+            "model": part.name,
+            "verification": None if ver is None else verification_data(ver),
+            "mechanisms": [mechanism_data(m) for m in kin.get("mechanisms", ())],
+            "scenario": None,
+            "suite": {"name": doc["suite_name"], "code_demand": doc.get("code_demand"),
+                      "zeta_E": zeta_by_state(doc["kinematic"]),
+                      "rule": {k: doc["suite"][k] for k in ("n", "measure", "limit_ratio",
+                                                            "verdict")},
+                      "classification": doc["classification"]},
+        })  # fmt: skip
+    data: dict[str, Any] = walls[0] if len(walls) == 1 else {"walls": walls}
+    return json.dumps(data, allow_nan=False).replace("</", "<\\/")
 
 
 def suite_sections(part: SuitePart, w: Words) -> list[Section]:
-    """One model's sections: the model, the suite and its demand, the code check on the
-    target, every record's time history, the comparison, the conclusions."""
+    """One model's sections: the model; with a code spectrum of its own, the verification
+    on it (the site's action, the code check, α0 by virtual work); the suite and its demand,
+    the code check on the target, every record's time history by the code's rule (NTC 2018
+    §7.3.5), the comparison; the conclusions."""
+    from rockcli.document.build import wall_description
     from rockcli.document.conclusions import suite_conclusions_section
+    from rockcli.document.verification import verification_sections
 
     inputs, doc, records = part.inputs, part.doc, part.records
     first = records[0][1]
+    verified: list[Section] = []
+    if part.verification is not None:
+        verified = [*wall_description(part, w),
+                    model_section(inputs, first["model"], w, first.get("mechanism")),
+                    *verification_sections(inputs.model, part.verification, w)]  # fmt: skip
+    else:
+        verified = [model_section(inputs, first["model"], w, first.get("mechanism"))]
     return [
-        model_section(inputs, first["model"], w, first.get("mechanism")),
-        suite_demand_section(inputs, doc, part.check, w, first, part.kinematic),
-        kinematic_section(part.kinematic, doc["kinematic"], w),
+        *verified,
+        rekeyed_once(suite_demand_section(inputs, doc, part.check, w, first, part.kinematic), part),
+        rekeyed_once(kinematic_section(part.kinematic, doc["kinematic"], w), part),
         suite_rocking_section(doc, records, w),
         suite_comparison_section(doc, w, named(doc, records)),
-        suite_conclusions_section(doc, w),
+        suite_conclusions_section(doc, w, part.verification),
     ]
+
+
+def rekeyed_once(section: Section, part: SuitePart) -> Section:
+    """A section of the suite's (its demand, the code check on its target), keyed apart from
+    the verification's own ("suite-demand", "suite-kinematic") when the report has one."""
+    if part.verification is None:
+        return section
+    from rockcli.document.walls import rekeyed
+
+    return rekeyed(section, "suite")
 
 
 def suite_summary_section(parts: Sequence[SuitePart], w: Words) -> Section:

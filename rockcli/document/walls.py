@@ -62,11 +62,12 @@ def summary_section(parts: Sequence[Part], w: Words) -> Section:
     else:
         rows = tuple(row[:-3] for row in rows)
     verified = any(part.verification is not None for part in parts)
-    caption = "summary.caption" if verified else "summary.caption_record"
-    grid = Grid(w(caption), headers[0 if many else 1 :], rows, numeric[0 if many else 1 :])
-    intro = w("summary.intro_many" if many else "summary.intro")
-    if not verified:
-        intro = w("summary.intro_record_many" if many else "summary.intro_record")
+    # What the table holds: the verification alone, with a record's scenario, or (no code
+    # spectrum) the record's comparison alone.
+    kind = ("verify" if not scenario else "both") if verified else "record"
+    grid = Grid(w(f"summary.caption_{kind}"), headers[0 if many else 1 :], rows,
+                numeric[0 if many else 1 :])  # fmt: skip
+    intro = w(f"summary.intro_{kind}_many" if many else f"summary.intro_{kind}")
     return Section("summary", w("section.summary"), (Paragraph(intro), grid))
 
 
@@ -79,7 +80,7 @@ def zeta_pair(kin: Mapping[str, Any]) -> tuple[float | None, float | None]:
     return zeta.get("SLD", zeta.get("DLS")), (min(uls) if uls else None)
 
 
-def kinematic_of(part: Part) -> Mapping[str, Any]:
+def kinematic_of(part: Any) -> Mapping[str, Any]:
     """The code check a wall's summary reads: the verification's, else (the model sets no
     code spectrum) the record's comparison's."""
     if part.verification is not None:

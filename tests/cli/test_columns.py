@@ -66,10 +66,10 @@ def _compare(doc: dict[str, Any]) -> list[str]:
 
 
 def _retrofit(doc: dict[str, Any]) -> list[str]:
-    """Each candidate's K [kN/m] ({:.0f}), code ζ ({:.3f}) and, standing, max θ/α ({:.4f})."""
+    """Each candidate's strength [kN] ({:.4g}) and, standing, max θ/α ({:.4f}) (one row per
+    diameter; K and the code's ζ are in --details)."""
     rows = doc["candidates"]
-    out = [format_value(r["K"] / 1000, "{:.0f}") for r in rows]
-    out += [format_value(r["code_zeta"], "{:.3f}") for r in rows if r["code_zeta"] is not None]
+    out = [format_value(r["strength"] / 1000, "{:.4g}") for r in rows]
     return out + [format_value(r["max_ratio"], "{:.4f}") for r in rows if not r["overturned"]]
 
 

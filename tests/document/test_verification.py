@@ -173,6 +173,9 @@ def test_the_required_limit_states_of_each_use_class() -> None:
     assert required_limit_states("III") == ("SLV",)
     assert required_limit_states("IV") == ("SLD", "SLV")
     assert required_limit_states(None) == ("SLV",)
+    # The 2009 edition's check names them DLS and ULS (Circolare 617/2009 §C8A.4).
+    assert required_limit_states("IV", "2009") == ("DLS", "ULS")
+    assert required_limit_states("II", "2009") == ("ULS",)
 
 
 @pytest.mark.parametrize(
@@ -224,3 +227,16 @@ def test_the_wall_is_in_its_report(filed: tuple[str, str]) -> None:
     ties = table_rows(page, "Vincoli (catene, collegamenti) della parete")
     assert [t[0] for t in ties] == ["tie-rod"] and ties[0][2] == "7,500"
     assert 'id="figure-wall"' in page  # the section drawn with every mechanism
+
+
+def test_a_2009_check_is_verified_at_its_ultimate_limit_state(tmp_path: Path) -> None:
+    # The altar (Circolare 617/2009, class II by its CU 1): its check names the limit states
+    # DLS and ULS; §8.3 requires the ULS, which it fails on its [ntc.demand] (ζ_E < 1).
+    altar = ROOT / "examples" / "altar.toml"
+    page = tmp_path / "altar.html"
+    result = run("report", str(altar), "-o", str(page), "--casebook", "none")
+    assert result.exit_code == 0, result.output
+    assert "verification not satisfied" in result.output
+    ver = data_of(page.read_text(encoding="utf-8"))["verification"]
+    assert ver["required"] == ["ULS"] and set(ver["zeta_E"]) == {"DLS", "ULS"}
+    assert ver["zeta_E"]["ULS"] < 1 and ver["verdict"]["ULS"] is False
