@@ -148,12 +148,13 @@ class Restrainer:
 
 @dataclass(frozen=True)
 class WorkItem:
-    """A body, load or thrust of a mechanism at rest, with its virtual displacement per unit
-    rotation about the hinge (the code check's virtual-work table, codecheck.kinematic).
+    """A body, load, thrust or restrainer of a mechanism at rest, with its virtual
+    displacement per unit rotation about the hinge (the code check's virtual-work table,
+    codecheck.kinematic).
 
     Attributes:
-        name: its label. kind: "body", "load" or "thrust". force: its weight, or a thrust's
-        force [N]. x, z: its point [m]. dx, dy: its virtual displacement outward and up [m/rad].
+        name: its label. kind: "body", "load", "thrust" or "restrainer". force: its weight,
+        or a thrust's or restrainer's horizontal force [N]. x, z: its point [m]. dx, dy: its virtual displacement outward and up [m/rad].
         bears: its weight rests on the mechanism. moves: its mass follows it horizontally.
         opens: a thrust's direction, +1 pushing the mechanism open, −1 shut (0: a weight).
     """

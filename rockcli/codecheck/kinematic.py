@@ -20,7 +20,7 @@ from dataclasses import dataclass, replace
 
 from rockcli.codecheck.free import branch_acceleration, branch_end
 from rockcli.codecheck.result import WorkTerm
-from rockcli.mechanics import Restrainer
+from rockcli.mechanics import Restrainer, WorkItem
 from rockcli.mechanisms.block import BlockSide, Polar, polar_of
 from rockcli.mechanisms.side import ChainPoint, ChainSide
 
@@ -132,8 +132,7 @@ def activation_work(mech: Mechanism) -> tuple[WorkTerm, ...]:
         else:
             resisting = it.force * it.dy if it.bears else 0.0
             overturning = it.force * it.dx if it.moves else 0.0
-        terms.append(WorkTerm(it.name, it.kind, it.force, it.x, it.z, it.dx, it.dy,
-                              resisting + 0.0, overturning))  # fmt: skip
+        terms.append(WorkTerm(it, resisting + 0.0, overturning))
     for i, sp in enumerate(mech.restrainers):
         place = mech.placement(i)
         if can_be_lost(sp, mech.side) and 0.0 > loss_rotation(sp, mech.side, place):
@@ -141,8 +140,8 @@ def activation_work(mech: Mechanism) -> tuple[WorkTerm, ...]:
         arm = place.moment(1.0, 0.0)  # δx of its point per unit rotation
         moment = restrainer_moment(sp, mech.side, 0.0, place)
         x, z = mech.view.anchor(i)
-        terms.append(WorkTerm(sp.name, "restrainer", moment / arm if arm else 0.0, x, z, arm,
-                              0.0, moment, 0.0))  # fmt: skip
+        rod = WorkItem(sp.name, "restrainer", moment / arm if arm else 0.0, x, z, arm, 0.0)
+        terms.append(WorkTerm(rod, moment, 0.0))
     return tuple(terms)
 
 

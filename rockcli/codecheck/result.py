@@ -8,6 +8,7 @@ from typing import TYPE_CHECKING, Any
 
 if TYPE_CHECKING:
     from rockcli.codecheck.position import Position
+    from rockcli.mechanics import WorkItem
 
 
 class Method(StrEnum):
@@ -30,11 +31,10 @@ class WorkTerm:
     Eq. C8.7.1.1; Circ. 617/2009 §C8A.4.1), per unit virtual rotation about the hinge.
 
     Attributes:
-        item: its name. kind: "body", "load", "thrust" or "restrainer".
-        force: its weight P, a thrust's or a restrainer's horizontal force F [N].
-        x, z: its point: inward from the hinge and above it [m] (a catalogue mechanism's
-            side frame).
-        dx, dy: its virtual displacement, outward and upward [m per rad].
+        item: what it is and where (rockcli.mechanics.WorkItem: its name, kind — "body",
+            "load", "thrust" or "restrainer" —, its weight P or horizontal force F [N], its
+            point x inward from the hinge and z above it [m], its virtual displacement δx
+            outward and δy upward [m/rad]).
         resisting: its term of α0's numerator [N·m]: P·δy of a weight that bears, −F·δx of
             a thrust pushing the mechanism open (+ when it pushes it shut), F·δx of a
             restrainer.
@@ -42,13 +42,7 @@ class WorkTerm:
     α0 = Σ resisting / Σ overturning.
     """
 
-    item: str
-    kind: str
-    force: float
-    x: float
-    z: float
-    dx: float
-    dy: float
+    item: WorkItem
     resisting: float
     overturning: float
 

@@ -98,8 +98,9 @@ def catalogue_entry(m: Any) -> dict[str, Any]:
 def work_document(t: WorkTerm) -> dict[str, Any]:
     """One item of α0's virtual work (codecheck.result.WorkTerm) in kN, m and kN·m: α0 =
     Σ resisting_kNm / Σ overturning_kNm over the items of a side."""
-    return {"item": str(t.item), "kind": t.kind, "weight_kN": t.force / 1e3, "x": t.x, "z": t.z,
-            "dx": t.dx, "dy": t.dy, "resisting_kNm": t.resisting / 1e3,
+    it = t.item
+    return {"item": str(it.name), "kind": it.kind, "weight_kN": it.force / 1e3, "x": it.x,
+            "z": it.z, "dx": it.dx, "dy": it.dy, "resisting_kNm": t.resisting / 1e3,
             "overturning_kNm": t.overturning / 1e3}  # fmt: skip
 
 

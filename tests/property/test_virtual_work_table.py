@@ -50,12 +50,13 @@ def check_tables(data: dict[str, Any]) -> int:
             a0 = alpha0(check)
             assert math.isclose(up / down, a0, rel_tol=REL, abs_tol=1e-15), (mech.name, side)
             for t in table:
-                if t.kind in ("body", "load"):
-                    assert t.resisting in (0.0, t.force * t.dy)
-                    assert t.overturning in (0.0, t.force * t.dx)
+                it = t.item
+                if it.kind in ("body", "load"):
+                    assert t.resisting in (0.0, it.force * it.dy)
+                    assert t.overturning in (0.0, it.force * it.dx)
                 else:  # a thrust or a restrainer: a horizontal force, F·δx
                     assert t.overturning == 0.0
-                    assert math.isclose(abs(t.resisting), abs(t.force * t.dx), rel_tol=1e-12,
+                    assert math.isclose(abs(t.resisting), abs(it.force * it.dx), rel_tol=1e-12,
                                         abs_tol=1e-9)  # fmt: skip
             checked += 1
     return checked
