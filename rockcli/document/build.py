@@ -423,8 +423,13 @@ def demand_section(
     ))  # fmt: skip
     if pos.at_height:
         shaking = out.rocking.shaking  # the floor motion rocked; None: the record (--ground)
-        blocks.append(floor_figure(code, pos, kin["edition"], shaking, record.name,
-                                   rocking["model"]["g"], marks, w))  # fmt: skip
+        # The floor spectra the check read: made from the record's spectrum when it is the
+        # demand (the code's at-height rule applied to it), else from the code's.
+        ground = ([(state, record_spectrum) for state in kin["demand"]]
+                  if doc["code_demand"] == "record" else code)  # fmt: skip
+        blocks.append(floor_figure(ground, pos, kin["edition"], shaking, record.name,
+                                   rocking["model"]["g"], marks, w,
+                                   of_record=doc["code_demand"] == "record"))  # fmt: skip
     return Section("demand", w("section.demand"), tuple(blocks))
 
 

@@ -50,11 +50,14 @@ def risk_indices(kin: Mapping[str, Any]) -> list[tuple[str, float | None, bool |
 def floor_figure(
     code: Sequence[tuple[str, Any]], pos: Position, edition: str, shaking: Record | None,
     record_name: str, g: float, marks: Mapping[str, float], w: Words, rocked: str = "",
+    of_record: bool = False,
 ) -> Figure:  # fmt: skip
     """The spectra at the mechanism's height (figures.floor_spectra): the code's demand there
     per limit state, and the response spectrum of the floor motion ``shaking`` the rocking
     analysis used (None: it used the record itself, --ground, whose spectrum is at the ground;
-    ``rocked``: the caption's key for what was rocked, when the caller says it instead)."""
+    ``rocked``: the caption's key for what was rocked, when the caller says it instead;
+    ``of_record``: the ground spectra are a record's, to which the check applied the code's
+    at-height rule)."""
     from rockcli.codecheck import rules2019
     from rockcli.codecheck.response import RecordSpectrum
     from rockcli.document.figures import floor_spectra
@@ -62,7 +65,8 @@ def floor_figure(
     n = w.number
     motion = None if shaking is None else RecordSpectrum.from_record(shaking, g=g)
     damping = ", ".join(f"{n(xi, '{:g}')} % {ls}" for ls, xi in rules2019.DAMPING.items())
-    where = w(f"figure.floor_caption_{edition}", Z=n(pos.Z, "{:g}"), T1=n(pos.T1, "{:.3g}"),
+    key = f"figure.floor_caption_{edition}" if not of_record else "figure.floor_caption_record"
+    where = w(key, Z=n(pos.Z, "{:g}"), T1=n(pos.T1, "{:.3g}"),
               psi=n(pos.psi, "{:.3g}"), gamma=n(pos.gamma, "{:.3g}"),
               xi_k=n(100.0 * pos.damping, "{:g}"), damping=damping)  # fmt: skip
     rocked = rocked or (

@@ -240,3 +240,40 @@ def test_a_2009_check_is_verified_at_its_ultimate_limit_state(tmp_path: Path) ->
     ver = data_of(page.read_text(encoding="utf-8"))["verification"]
     assert ver["required"] == ["ULS"] and set(ver["zeta_E"]) == {"DLS", "ULS"}
     assert ver["zeta_E"]["ULS"] < 1 and ver["verdict"]["ULS"] is False
+
+
+def test_the_scenarios_floor_spectra_are_the_ones_its_check_read(tmp_path: Path) -> None:
+    # The top-storey wall at Z = 3.5 m under the Ricker pulse: the scenario's code check reads
+    # the floor spectrum the code's rule makes from the record's spectrum (Circ. 7/2019
+    # §C7.2.3); the report draws that curve (figures.floor_curve) and says so. At each
+    # non-linear check's period and damping, the curve's Se·g·T²/4π² is the check's demand.
+    import math
+
+    import numpy as np
+
+    from rockcli.analyses.compare import compare_model_output
+    from rockcli.codecheck.response import RecordSpectrum
+    from rockcli.document.figures import floor_curve
+    from rockcli.model.load import load_model
+    from rockcli.records.files import read_record
+
+    model = load_model(str(ROOT / "examples" / "top-storey-wall.toml"))
+    record = read_record(str(PULSE))
+    kin = compare_model_output(model, record).kinematic
+    assert kin.position is not None and kin.position.at_height
+    spectrum = RecordSpectrum.from_record(record, g=model.analysis.g)
+    checked = [c for c in kin.checks if c.spectral is not None]
+    assert {c.limit_state for c in checked} == {"SLV", "SLC"}
+    for c in checked:
+        assert c.spectral is not None
+        T = c.spectral.period
+        _, se = floor_curve(spectrum, c.limit_state, kin.position, "2019", np.array([T]))
+        drawn = float(se[0]) * model.analysis.g * T**2 / (4 * math.pi**2)
+        assert drawn == pytest.approx(c.spectral.value, rel=1e-12)
+    page = tmp_path / "wall.html"
+    result = run("report", str(ROOT / "examples" / "top-storey-wall.toml"), "--record",
+                 str(PULSE), "-o", str(page), "--casebook", "none")  # fmt: skip
+    assert result.exit_code == 0, result.output
+    assert "applicata, come nella verifica, allo spettro di risposta dell&#39;accelerogramma" in (
+        page.read_text(encoding="utf-8")
+    )
