@@ -180,7 +180,9 @@ def wall_description(part: Any, w: Words) -> list[Section]:
         return []
     kin = kinematic_of(part)
     blocks: list[Block] = [Paragraph(w("wall.intro", file=part.inputs.model_path))]
-    blocks += wall_grids(walls[0], kin, w)
+    from rockcli.model.derive_ntc import ntc_settings
+
+    blocks += wall_grids(walls[0], kin, w, ntc_settings(part.inputs.model).FC_rule)
     blocks.append(
         figure(
             "wall",

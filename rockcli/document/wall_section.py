@@ -30,9 +30,10 @@ PANELS_PER_ROW = 4
 TITLE_WIDTH = 26
 
 
-def wall_grids(wall: Wall, kin: Mapping[str, Any], w: Words) -> list[Block]:
+def wall_grids(wall: Wall, kin: Mapping[str, Any], w: Words, fc_rule: Any = None) -> list[Block]:
     """The wall's geometry and materials, then its loads, thrusts and restrainers (only the
-    tables it has)."""
+    tables it has); ``fc_rule``: why FC is what it is (a note, in the report's language;
+    default the check's text)."""
     n = w.number
     rows: list[tuple[str, str, str]] = [(w("wall.width"), n(wall.width, "{:.3f}"), "m")]
     bases = wall.storey_bases()
@@ -47,7 +48,8 @@ def wall_grids(wall: Wall, kin: Mapping[str, Any], w: Words) -> list[Block]:
         rows.append((w("wall.return_walls"), n(wall.return_wall_thickness, "{:.3f}"), "m"))
     rows.append((w("wall.f_m"), "—" if wall.f_m is None else n(wall.f_m / 1e6, "{:.3g}"), "MPa"))
     rows.append((w("wall.E"), "—" if wall.E is None else n(wall.E / 1e6, "{:.4g}"), "MPa"))
-    rows.append((w("wall.FC"), f"{n(kin['FC'], '{:.2f}')} ({w.note(kin['FC_rule'])})", ""))
+    rule = w.note(fc_rule if fc_rule is not None else kin["FC_rule"])
+    rows.append((w("wall.FC"), f"{n(kin['FC'], '{:.2f}')} ({rule})", ""))
     grids: list[Block] = [Grid(w("wall.caption"), (w("col.quantity"), w("col.value"),
                                                    w("col.unit")), tuple(rows),
                                (False, True, False))]  # fmt: skip

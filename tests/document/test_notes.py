@@ -116,8 +116,10 @@ def text_of(page: str, model: dict[str, Any]) -> list[str]:
     for own in sorted(user_strings(model), key=len, reverse=True):
         text = text.replace(own, " ")
     skip = ("Bibliografia", "rock report")
+    reference = re.compile(r"^\s*\[\d+\] ")  # an entry of the bibliography: its title
     return [line for line in text.splitlines()
-            if line.strip() and not any(s in line for s in skip)]  # fmt: skip
+            if line.strip() and not any(s in line for s in skip)
+            and not reference.match(line)]  # fmt: skip
 
 
 def user_strings(value: Any) -> set[str]:
