@@ -15,6 +15,7 @@ from rockcli.cli.options import (
     exit_if_non_finite,
     force_option,
     ground_option,
+    hazard_grid,
     jobs_option,
     load_record,
     output_format,
@@ -80,6 +81,10 @@ EXIT_NONE = 1
     help="The code check's demand: record, the record's response spectrum (one earthquake on "
     "both sides), or model, the model's own code spectra (the report's verification).",
 )
+@hazard_grid(
+    "NTC Allegato B grid file, for a model whose spectra come from its site ([ntc.site]) with "
+    "--code-demand model (default: $ROCK_HAZARD_GRID)."
+)
 @click.option(
     "--details",
     is_flag=True,
@@ -92,8 +97,8 @@ EXIT_NONE = 1
 @force_option
 @output_format
 def retrofit(model_path, record_path, record_format, dt, units, scale, pga, name, at, length,
-             diameters, grade, count, jobs, progress, fail_if_none, code_demand, details,
-             edition, engine, ground, plot_path, force, output):  # fmt: skip
+             diameters, grade, count, jobs, progress, fail_if_none, code_demand, grid_file,
+             details, edition, engine, ground, plot_path, force, output):  # fmt: skip
     """Size a tie-rod of MODEL: for each diameter, the code's ULS check of every mechanism and
     the time history of each one the rod is on, under the record; the smallest diameter that
     makes safe every mechanism the rod restrains, its force held. A mechanism the rod does not
@@ -118,7 +123,7 @@ def retrofit(model_path, record_path, record_format, dt, units, scale, pga, name
     analyses = Analyses(engine, edition, ground)
     jobs = worker_count(jobs, len(plan.diameters_mm))
     with local_executor(jobs) as lanes, progress_bar(progress) as bar:
-        rows = run_retrofit(plan, record, lanes, analyses, bar, code_demand)
+        rows = run_retrofit(plan, record, lanes, analyses, bar, code_demand, grid_file)
     chosen, reason = choose(rows)
     doc = retrofit_document(
         plan, model, record, rows, chosen, reason, ground=ground, code_demand=code_demand

@@ -46,3 +46,8 @@ def required_limit_states(use_class: str | None, edition: str = "2019") -> tuple
     if edition == "2009":
         return tuple(EDITION_2009_NAMES[s] for s in states)
     return states
+
+
+def ultimate_states(edition: str = "2019") -> tuple[str, ...]:
+    """The ultimate limit state §8.3 requires of every class, named as the edition names it."""
+    return (EDITION_2009_NAMES[ULTIMATE],) if edition == "2009" else (ULTIMATE,)

@@ -10,7 +10,7 @@ the classification and the restrainers' checks are the comparison's.
 
 from __future__ import annotations
 
-from collections.abc import Mapping
+from collections.abc import Mapping, Sequence
 from typing import Any
 
 from rockcli.document.code_check import risk_indices
@@ -66,15 +66,19 @@ def overturning_mechanisms(doc: Mapping[str, Any]) -> list[Mapping[str, Any]]:
             if m.get("rocking") and m["rocking"]["verdict"] == "overturns"]  # fmt: skip
 
 
-def asks_intervention(verification: Any, doc: Mapping[str, Any] | None) -> bool:
-    """Whether the report asks for an intervention: a limit state NTC 2018 §8.3 requires fails
-    the verification on the site's spectra; without a verification (the model sets no code
+def asks_intervention(
+    verification: Any, doc: Mapping[str, Any] | None, states: Sequence[str] | None = None
+) -> bool:
+    """Whether the report asks for an intervention: a mechanism fails a limit state NTC 2018
+    §8.3 requires (``states``: of those, these only) in the verification on the site's
+    spectra; without a verification (the model sets no code
     spectrum), the record's comparison fails at the ULS or overturns (:func:`needs_retrofit`;
     the ULS alone, as §8.3 requires of every class but IV). A record's scenario never
     overrules the verification."""
     if verification is not None:
-        verdicts = {state: passed for state, _, passed in risk_indices(verification.doc)}
-        return any(verdicts.get(state) is False for state in verification.required)
+        from rockcli.document.verification import outcome
+
+        return outcome(verification, states) == "fails"
     return doc is not None and needs_retrofit(doc)
 
 
@@ -95,12 +99,21 @@ def conclusions_section(part: Any, w: Words) -> Section:
         key = "scenario.concl_intro" if part.verification is not None else "scenario.concl_only"
         blocks.append(Paragraph(w(key, record=record), "subheading"))
         blocks += scenario_blocks(part.doc, w, single=not part.doc.get("mechanisms"))
-    unsafe = asks_intervention(part.verification, part.doc)
-    prefix = "verify" if part.verification is not None else "concl"
-    blocks.append(Paragraph(w(f"{prefix}.next_unsafe" if unsafe else f"{prefix}.next_safe")))
+    blocks.append(Paragraph(next_sentence(part.verification, part.doc, w)))
     if part.sizing is not None:
         blocks.append(sizing_paragraph(part.sizing, w))
     return Section("conclusions", w("section.conclusions"), tuple(blocks))
+
+
+def next_sentence(verification: Any, doc: Mapping[str, Any] | None, w: Words) -> str:
+    """What follows: an intervention, the use continuing, or (a required limit state not
+    evaluated) an outcome still to be completed."""
+    if verification is None:
+        return w("concl.next_unsafe" if asks_intervention(None, doc) else "concl.next_safe")
+    from rockcli.document.verification import outcome
+
+    key = {"fails": "unsafe", "passes": "safe"}.get(outcome(verification), "unknown")
+    return w(f"verify.next_{key}")
 
 
 def scenario_blocks(doc: Mapping[str, Any], w: Words, single: bool) -> list[Block]:
@@ -171,9 +184,9 @@ def suite_conclusions_section(
     n = w.number
     kin, suite = doc["kinematic"], doc["suite"]
     blocks: list[Block] = []
-    verification_fails = False
+    verified = "passes"
     if verification is not None:
-        own, verification_fails = verification_blocks(verification, w)
+        own, verified = verification_blocks(verification, w)
         blocks += own
         blocks.append(Paragraph(w("suite.concl_intro", suite=doc["suite_name"]), "subheading"))
     code, failing = code_blocks(kin, w)
@@ -186,8 +199,9 @@ def suite_conclusions_section(
     if not kin.get("mechanisms") or len(kin["mechanisms"]) == 1:  # the paper's single block
         blocks.append(Paragraph(w(f"concl.paper_{doc['classification']}")))
     if verification is not None:
-        unsafe = verification_fails or suite["verdict"] != "passes"
-        blocks.append(Paragraph(w("verify.next_unsafe" if unsafe else "verify.next_safe")))
+        key = ("unsafe" if verified == "fails" or suite["verdict"] != "passes"
+               else "unknown" if verified == "unknown" else "safe")  # fmt: skip
+        blocks.append(Paragraph(w(f"verify.next_{key}")))
     else:
         unsafe = bool(failing) or suite["verdict"] != "passes"
         blocks.append(Paragraph(w("concl.next_unsafe" if unsafe else "concl.next_safe")))

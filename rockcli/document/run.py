@@ -89,7 +89,7 @@ def write_report(
     comparison = choices.comparison
     models = [load_model(path) for path in model_paths]
     for path, model in zip(model_paths, models, strict=True):
-        check_verifiable(model, path, record)
+        check_verifiable(model, path, record, comparison.grid_file)
         if record is not None:
             check_code_demand(model, comparison.code_demand, file=path)
     outputs = 1 + (pdf_path is not None) + (docx_path is not None)
@@ -110,7 +110,9 @@ def write_report(
                         **front)  # fmt: skip
         sizing = None
         if choices.retrofit and record is not None:
-            sizing = wall_sizing(path, record, verification, doc, comparison.analyses)
+            sizing = wall_sizing(
+                path, record, verification, doc, comparison.analyses, comparison.grid_file
+            )
         parts.append(Part(inputs, out, doc, others, sizing, verification))
         step()
     document = build_document(parts, lang)
@@ -133,12 +135,18 @@ class Steps:
             self.progress(self.done, self.total)
 
 
-def check_verifiable(model: Any, path: str, record: Record | None) -> None:
+def check_verifiable(
+    model: Any, path: str, record: Record | None, grid_file: str | None = None
+) -> None:
     """Without a record, the model must give the code's spectra the report verifies on
     (InputError naming the file and what to give)."""
     from rockcli.analyses.compare import code_sets_demand
     from rockcli.errors import InputError
 
+    if model.ntc is not None and model.ntc.site is not None and model.ntc.demand is None:
+        from rockcli.codecheck.hazard import grid_path
+
+        grid_path(grid_file)  # the verification needs the grid: InputError before any run
     if record is None and not code_sets_demand(model):
         raise InputError(
             "sets no code spectrum for the verification",
@@ -180,12 +188,17 @@ def verification_of(
 def part_verdict(part: Any) -> str:
     """What the "wrote" line says of a wall: the verification's outcome, and the scenario's
     classification when there is one."""
-    from rockcli.document.conclusions import asks_intervention
+
+    from rockcli.document.verification import outcome
 
     said = []
     if part.verification is not None:
-        failing = asks_intervention(part.verification, None)
-        said.append("verification " + ("not satisfied" if failing else "satisfied"))
+        said.append(
+            "verification "
+            + {"fails": "not satisfied", "passes": "satisfied"}.get(
+                outcome(part.verification), "without an outcome at a required limit state"
+            )
+        )
     if part.doc is not None:
         said.append(f"scenario {part.doc['classification']}")
     return ", ".join(said)
@@ -219,17 +232,27 @@ def wall_comparisons(
 
 
 def wall_sizing(
-    path: str, record: Record, verification: Any, doc: dict[str, Any] | None, analyses: Analyses
+    path: str,
+    record: Record,
+    verification: Any,
+    doc: dict[str, Any] | None,
+    analyses: Analyses,
+    grid_file: str | None = None,
 ) -> Any:
     """What rock retrofit finds for the model's tie-rod when the report asks for an
     intervention (rockcli.document.conclusions.asks_intervention; "not needed" otherwise)."""
+    from rockcli.codecheck.existing import ultimate_states
     from rockcli.document.conclusions import asks_intervention
     from rockcli.studies.retrofit.run import size_rod
 
-    if not asks_intervention(verification, doc):
+    # A tie-rod is sized for the ultimate limit state (its candidates are checked at the ULS).
+    uls = None if verification is None else ultimate_states(verification.result.edition)
+    if not asks_intervention(verification, doc, uls):
         return "not needed"
     # The code check of each diameter on the spectra of the verification, when there is one.
-    return size_rod(path, record, analyses, "record" if verification is None else "model")
+    return size_rod(
+        path, record, analyses, "record" if verification is None else "model", grid_file
+    )
 
 
 def comparison_document(out: Any, record: Record) -> dict[str, Any]:

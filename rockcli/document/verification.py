@@ -146,10 +146,31 @@ def work_grid(m: Mapping[str, Any], w: Words) -> Grid:
     return Grid(caption, headers, tuple(rows), (False, False, *([True] * 7)))
 
 
-def verification_blocks(ver: Verification, w: Words) -> tuple[list[Block], bool]:
+def state_outcome(ver: Verification, state: str) -> tuple[bool | None, list[str]]:
+    """A limit state over every mechanism of the catalogue: False with the mechanisms that
+    fail it, None (not evaluated for one, none failing), or True."""
+    mechanisms = ver.doc.get("mechanisms") or [ver.doc]
+    verdicts = [(m.get("name") or "", m["verdict"].get(state)) for m in mechanisms]
+    failing = [name for name, passed in verdicts if passed is False]
+    if failing:
+        return False, failing
+    return (None if any(passed is None for _, passed in verdicts) else True), []
+
+
+def outcome(ver: Verification, states: Sequence[str] | None = None) -> str:
+    """The verification over the limit states required (``states``: those only): "fails"
+    when a mechanism fails one, "unknown" when one is not evaluated for a mechanism, else
+    "passes"."""
+    results = [state_outcome(ver, s)[0] for s in (ver.required if states is None else states)]
+    if False in results:
+        return "fails"
+    return "unknown" if None in results else "passes"
+
+
+def verification_blocks(ver: Verification, w: Words) -> tuple[list[Block], str]:
     """The conclusions of the verification: the governing mechanism, ζ_E per limit state on
-    the site's spectra with what §8.3 requires for the use class, what follows; and whether
-    the assessment asks for an intervention (a required limit state fails)."""
+    the site's spectra (the governing mechanism's) with what §8.3 requires for the use class,
+    the verdict over every mechanism of the catalogue; and the outcome (:func:`outcome`)."""
     kin = ver.doc
     n = w.number
     blocks: list[Block] = []
@@ -166,20 +187,24 @@ def verification_blocks(ver: Verification, w: Words) -> tuple[list[Block], bool]
                        (w("concl.state"), "ζ_E", w("concl.verdict"), w("verify.required")),
                        rows, (False, True, False, False)))  # fmt: skip
     blocks.append(Paragraph(required_sentence(ver, w)))
-    failing = [s for s in ver.required if verdicts.get(s) is False]
-    unknown = [s for s in ver.required if verdicts.get(s) is None]
-    others = [s for s, passed in verdicts.items() if passed is False and s not in ver.required]
+    others = [s for s in zeta if s not in ver.required and state_outcome(ver, s)[0] is False]
     if others:
         blocks.append(Paragraph(w("verify.not_required_fails",
                                   states=", ".join(w(f"ls.{s}") for s in others))))  # fmt: skip
-    if failing:
-        states = ", ".join(f"{w(f'ls.{s}')} (ζ_E = {n(zeta.get(s), '{:.3f}')})" for s in failing)
-        blocks.append(Paragraph(w("verify.fails", states=states), "verdict"))
-    elif unknown:
+    result = outcome(ver)
+    if result == "fails":
+        said = []
+        for s in ver.required:
+            passed, names = state_outcome(ver, s)
+            if passed is False:
+                listed = ", ".join(f"'{w.note(name)}'" for name in names)
+                said.append(f"{w(f'ls.{s}')} ({listed})")
+        blocks.append(Paragraph(w("verify.fails", states="; ".join(said)), "verdict"))
+    elif result == "unknown":
         blocks.append(Paragraph(w("verify.unknown"), "warning"))
     else:
         blocks.append(Paragraph(w("verify.passes"), "verdict"))
-    return blocks, bool(failing)
+    return blocks, result
 
 
 def _indices(kin: Mapping[str, Any]) -> Sequence[tuple[str, float | None, bool | None]]:

@@ -277,3 +277,23 @@ def test_the_scenarios_floor_spectra_are_the_ones_its_check_read(tmp_path: Path)
     assert "applicata, come nella verifica, allo spettro di risposta dell&#39;accelerogramma" in (
         page.read_text(encoding="utf-8")
     )
+
+
+def test_every_mechanism_decides_the_verification() -> None:
+    # A class IV building: the governing mechanism (lowest ULS ζ) passes the SLD, another one
+    # fails it — the verification fails, naming it; a state not evaluated for one mechanism
+    # leaves the outcome open rather than satisfied.
+    from rockcli.document.verification import Verification, outcome, state_outcome
+
+    def verification(second: dict[str, bool | None]) -> Verification:
+        doc = {"mechanisms": [
+            {"name": "governing", "verdict": {"SLD": True, "SLV": True}},
+            {"name": "gable", "verdict": second},
+        ]}  # fmt: skip
+        return Verification(None, doc, "model", "IV", ("SLD", "SLV"))  # type: ignore[arg-type]
+
+    failing = verification({"SLD": False, "SLV": True})
+    assert state_outcome(failing, "SLD") == (False, ["gable"])
+    assert outcome(failing) == "fails" and outcome(failing, ("SLV",)) == "passes"
+    assert outcome(verification({"SLD": True, "SLV": None})) == "unknown"
+    assert outcome(verification({"SLD": True, "SLV": True})) == "passes"

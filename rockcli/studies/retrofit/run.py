@@ -55,6 +55,8 @@ class RetrofitChunk:
     cases: tuple[Candidate, ...]
     #: The code check's demand: "record" (its spectrum) or "model" (the model's spectra).
     code_demand: str = "record"
+    #: The hazard grid for a model's site (code_demand "model"; None: $ROCK_HAZARD_GRID).
+    grid_file: str | None = None
 
 
 def run_retrofit_chunk(chunk: RetrofitChunk) -> list[dict[str, Any]]:
@@ -63,7 +65,12 @@ def run_retrofit_chunk(chunk: RetrofitChunk) -> list[dict[str, Any]]:
         {
             "case": c.id,
             **run_candidate(
-                chunk.plan, c.diameter_mm, chunk.record, chunk.analyses, chunk.code_demand
+                chunk.plan,
+                c.diameter_mm,
+                chunk.record,
+                chunk.analyses,
+                chunk.code_demand,
+                chunk.grid_file,
             ),
         }
         for c in chunk.cases
@@ -101,7 +108,7 @@ def shared_spectrum(record: Record, g: float) -> RecordSpectrum:
 
 def run_candidate(
     plan: RetrofitPlan, diameter_mm: float, record: Record, analyses: Analyses,
-    code_demand: str = "record",
+    code_demand: str = "record", grid_file: str | None = None,
 ) -> dict[str, Any]:  # fmt: skip
     """Both analyses of the model with the rod of this diameter, mechanism by mechanism: the
     code check of the whole catalogue on the record's spectrum (one earthquake on both sides,
@@ -118,7 +125,8 @@ def run_candidate(
     spectrum = shared_spectrum(record, model.analysis.g) if own else None
     mechanisms = catalogue(model)
     kin = kinematic_model(model, edition=analyses.edition, record=record if own else None,
-                          spectrum=spectrum, mechanisms=mechanisms)  # fmt: skip
+                          spectrum=spectrum, grid_file=grid_file,
+                          mechanisms=mechanisms)  # fmt: skip
     rows = mechanism_rows(model, kin, mechanisms, plan, record, analyses)
     first = rows[0]
     return {
@@ -168,17 +176,23 @@ def rocked_columns(
 ) -> dict[str, Any]:  # fmt: skip
     """The time history of a mechanism the rod is on (as ``rock compare`` rocks it), with the
     rod's checks; not run (every column None, nothing failing) where the rod is not on it."""
+    not_rocked: dict[str, Any] = {"input": None, "rocking": None, "max_ratio": None,
+                                  "overturned": False,
+                  "broken_runs": [], "max_force": None, "utilisation": None, "ductility": None,
+                  "anchor": None, "ruptured": False}  # fmt: skip
     if not on_it:
-        return {"input": None, "rocking": None, "max_ratio": None, "overturned": False,
-                "broken_runs": [], "max_force": None, "utilisation": None, "ductility": None,
-                "anchor": None, "ruptured": False}  # fmt: skip
+        return not_rocked
     from rockcli.analyses.assess import assess_model_output
+    from rockcli.errors import InputError
 
-    out = assess_model_output(
-        model, record, analyses.engine, ground=analyses.ground, file=plan.file,
-        tolerance_check=False,  # assess, compare and report check it; the sizing does not
-        mechanism=name, mechanisms=mechanisms,
-    )  # fmt: skip
+    try:
+        out = assess_model_output(
+            model, record, analyses.engine, ground=analyses.ground, file=plan.file,
+            tolerance_check=False,  # assess, compare and report check it; the sizing does not
+            mechanism=name, mechanisms=mechanisms,
+        )  # fmt: skip
+    except InputError as exc:  # a mechanism the time history does not rock: why, and go on
+        return {**not_rocked, "not_rocked": exc.render().removeprefix("error: ")}
     return {"input": "ground" if out.floor is None else "floor",
             **rocking_columns(out, member_index(out, plan.name))}  # fmt: skip
 
@@ -261,6 +275,7 @@ def run_retrofit(
     analyses: Analyses,
     progress: Callable[[int, int], None] | None = None,
     code_demand: str = "record",
+    grid_file: str | None = None,
 ) -> list[dict[str, Any]]:
     """Every candidate's row, ascending in diameter, each diameter a chunk on the lanes
     (``code_demand``: the code check's, :func:`run_candidate`).
@@ -270,7 +285,7 @@ def run_retrofit(
     from rockcli.studies.parallel.chunks import run_chunks
 
     cases = [Candidate(i, d) for i, d in enumerate(plan.diameters_mm)]
-    chunks = [RetrofitChunk(plan, record, analyses, (c,), code_demand) for c in cases]
+    chunks = [RetrofitChunk(plan, record, analyses, (c,), code_demand, grid_file) for c in cases]
     rows: dict[int, dict[str, Any]] = {}
     if progress:
         progress(0, len(cases))
@@ -306,7 +321,11 @@ class Sizing:
 
 
 def size_rod(
-    model_path: str, record: Record, analyses: Analyses, code_demand: str = "record"
+    model_path: str,
+    record: Record,
+    analyses: Analyses,
+    code_demand: str = "record",
+    grid_file: str | None = None,
 ) -> Sizing:
     """`rock retrofit MODEL --record R` with its defaults (the model's one tie-rod, the default
     diameters, its steel), in this process: the smallest diameter that makes safe every
@@ -330,7 +349,9 @@ def size_rod(
         )  # fmt: skip
     plan = make_plan(table, model, file=model_path, diameters_mm=DEFAULT_DIAMETERS_MM)
     with local_executor(1) as lanes:
-        rows = run_retrofit(plan, record, lanes, analyses, code_demand=code_demand)
+        rows = run_retrofit(
+            plan, record, lanes, analyses, code_demand=code_demand, grid_file=grid_file
+        )
     chosen, reason = choose(rows)
     installed = model.restrainers[rods[0]].diameter
     shown = chosen or (rows[-1] if rows else {})
