@@ -97,6 +97,31 @@ def test_the_pdf_has_the_reports_pages_and_text(facade: tuple[str, bytes]) -> No
     assert page.getextrema()[0] < 100
 
 
+def blank_stretch(page: object) -> float:
+    """The longest run of blank lines between the header and the footer of a rendered page, as
+    a fraction of that height."""
+    import numpy as np
+
+    gray = np.asarray(page.render(scale=0.5).to_pil().convert("L"))  # type: ignore[attr-defined]
+    body = gray[int(gray.shape[0] * 0.06) : int(gray.shape[0] * 0.93)]
+    longest = run = 0
+    for inked in (body < 230).any(axis=1):
+        run = 0 if inked else run + 1
+        longest = max(longest, run)
+    return longest / body.shape[0]
+
+
+def test_no_page_is_left_half_empty(facade: tuple[str, bytes]) -> None:
+    # A figure that does not fit floats to the next page's top while the text fills this one;
+    # only the page before the annex (a new page by rule) and the last may end early.
+    pdfium = pytest.importorskip("pypdfium2", reason="pypdfium2 (test extra) is not installed")
+    pdf = pdfium.PdfDocument(facade[1])
+    texts = [pdf[i].get_textpage().get_text_range() for i in range(len(pdf))]
+    annex = next(i for i, t in enumerate(texts) if i > 0 and "Allegato A." in t)  # not the index
+    gaps = {i + 1: round(blank_stretch(pdf[i]), 2) for i in range(len(pdf) - 1) if i != annex - 1}
+    assert max(gaps.values()) < 0.3, gaps
+
+
 def test_the_english_report(tmp_path: Path) -> None:
     html = tmp_path / "altar.html"
     code, _, err = run(str(ALTAR), "--record", str(PULSE), "-o", str(html), "--lang", "en")
