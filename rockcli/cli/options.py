@@ -189,8 +189,10 @@ def jobs_option(help_text: str):
     )
 
 
-def record_options(required: bool) -> list:
-    """The options that name a record and transform it."""
+def record_options(required: bool, optional_help: str | None = None) -> list:
+    """The options that name a record and transform it (``optional_help``: what an optional
+    record does, by default that its spectrum becomes the demand)."""
+    optional_help = optional_help or " (its response spectrum becomes the demand)."
     return [
         click.option(
             "--record",
@@ -198,7 +200,7 @@ def record_options(required: bool) -> list:
             required=required,
             type=InputPath(),
             help="Accelerogram: PEER AT2, ESM ASCII, ITACA cor.acc or plain text"
-            + ("." if required else " (its response spectrum becomes the demand)."),
+            + ("." if required else optional_help),
         ),
         record_format,
         plain_dt,
@@ -212,11 +214,11 @@ def record_options(required: bool) -> list:
     ]
 
 
-def with_record_options(required: bool = True):
+def with_record_options(required: bool = True, optional_help: str | None = None):
     """Decorate a command with the record options."""
 
     def decorate(func):
-        for option in reversed(record_options(required)):
+        for option in reversed(record_options(required, optional_help)):
             func = option(func)
         return func
 

@@ -122,8 +122,10 @@ EXTRA = install_hint("report")
 @click.option(
     "--retrofit",
     is_flag=True,
-    help="Where an element needs an intervention, size its tie-rod as rock retrofit does "
-    "(its defaults, the same record) and give the smallest diameter in the conclusions.",
+    help="Where the verification (or the record's scenario) asks for an intervention, size "
+    "the model's tie-rod as rock retrofit does (its defaults): each diameter's code check on "
+    "the verification's spectra, and with --record its time history under the record; the "
+    "smallest diameter in the conclusions.",
 )
 @click.option(
     "--mechanisms",
@@ -186,12 +188,10 @@ def report(
         if mechanism_name is not None:
             raise InputError("not with --suite yet", where="--mechanism", value=mechanism_name,
                              allowed="--mechanism with --record")  # fmt: skip
-        if retrofit:
-            raise InputError("not with --suite yet", where="--retrofit",
-                             allowed="--retrofit with --record")  # fmt: skip
         written = write_suite_report(
             model_paths, suite_path, target, grid_file, **common, allow_outside=allow_outside,
             analyses=Analyses(engine, edition, ground), code_demand=code_demand,
+            retrofit=retrofit,
         )  # fmt: skip
         for path, detail in written:
             announce_written(path, detail)
@@ -209,15 +209,6 @@ def report(
             raise InputError("applies only to a folder of records given as the suite",
                              where="--target", value=target,
                              allowed="--suite DIR --target KEY=VALUE,…")  # fmt: skip
-        if retrofit:
-            # rock retrofit checks each diameter under a record (the code and the time history).
-            raise InputError("sizes the rod under a record", where="--retrofit",
-                             allowed="--retrofit with --record FILE")  # fmt: skip
-    if retrofit and code_demand != "record":
-        # rock retrofit checks each diameter on the record's spectrum (one earthquake).
-        raise InputError("sizes the rod on the record's spectrum", where="--retrofit",
-                         value=f"--code-demand {code_demand}",
-                         allowed="--retrofit with --code-demand record (the default)")  # fmt: skip
     record = None if alone else load_record(record_path, record_format, dt, units, scale, pga)
     from rockcli.terminal.sweep import progress_bar
 

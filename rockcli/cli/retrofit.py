@@ -1,4 +1,5 @@
-"""`rock retrofit MODEL --record FILE`: size a tie-rod by the code check and the time history."""
+"""`rock retrofit MODEL [--record FILE]`: size a tie-rod by the code check and the time history
+(without a record, by the code check on the model's own spectra alone)."""
 
 from __future__ import annotations
 
@@ -10,6 +11,7 @@ from rockcli.cli.options import (
     AsciiIntRange,
     announce_written,
     check_outputs,
+    check_record_options,
     edition_option,
     engine_option,
     exit_if_non_finite,
@@ -31,7 +33,10 @@ EXIT_NONE = 1
     cls=RockCommand, short_help="Size a tie-rod of MODEL by the code check and the time history."
 )
 @click.argument("model_path", metavar="MODEL", type=InputPath())
-@with_record_options()
+@with_record_options(
+    required=False,
+    optional_help=" (none: the code check alone, on the model's own spectra; no time history).",
+)
 @click.option("--name", default=None, help="The model's tie-rod to size, when it has several.")
 @click.option(
     "--at",
@@ -76,10 +81,10 @@ EXIT_NONE = 1
 @click.option(
     "--code-demand",
     type=click.Choice(("record", "model")),
-    default="record",
-    show_default=True,
+    default=None,
     help="The code check's demand: record, the record's response spectrum (one earthquake on "
-    "both sides), or model, the model's own code spectra (the report's verification).",
+    "both sides), or model, the model's own code spectra (the report's verification) "
+    "[default: record with --record, else model].",
 )
 @hazard_grid(
     "NTC Allegato B grid file, for a model whose spectra come from its site ([ntc.site]) with "
@@ -103,7 +108,8 @@ def retrofit(model_path, record_path, record_format, dt, units, scale, pga, name
     the time history of each one the rod is on, under the record; the smallest diameter that
     makes safe every mechanism the rod restrains, its force held. A mechanism the rod does not
     restrain (not on it, or slack on the side it fails on) and that fails needs another
-    intervention: it is named, and it does not fail the rod."""
+    intervention: it is named, and it does not fail the rod. Without --record, the code check
+    alone on the model's own spectra (a site or [ntc.demand]): no time history."""
     from rockcli.analyses.choices import Analyses
     from rockcli.cli.sweep import worker_count
     from rockcli.studies.parallel.executor import local_executor
@@ -113,18 +119,22 @@ def retrofit(model_path, record_path, record_format, dt, units, scale, pga, name
     from rockcli.terminal.sweep import progress_bar
     from rockcli.terminal.table import show
 
+    check_record_options(record_path, record_format, dt, units, scale, pga)
+    code_demand = demand_without_record(record_path, code_demand)
     plan, model = retrofit_plan(model_path, name, at, length, diameters, grade, count)
     if code_demand == "model":
         from rockcli.analyses.compare import check_code_demand
 
         check_code_demand(model, code_demand, file=model_path)
     check_outputs(force, plot=plot_path)
-    record = load_record(record_path, record_format, dt, units, scale, pga)
+    record = None
+    if record_path is not None:
+        record = load_record(record_path, record_format, dt, units, scale, pga)
     analyses = Analyses(engine, edition, ground)
     jobs = worker_count(jobs, len(plan.diameters_mm))
     with local_executor(jobs) as lanes, progress_bar(progress) as bar:
         rows = run_retrofit(plan, record, lanes, analyses, bar, code_demand, grid_file)
-    chosen, reason = choose(rows)
+    chosen, reason = choose(rows, rocked=record is not None)
     doc = retrofit_document(
         plan, model, record, rows, chosen, reason, ground=ground, code_demand=code_demand
     )
@@ -192,3 +202,18 @@ def _check_rod_options(length: float | None, count: int | None) -> None:
             value=count,
             allowed=f"1 to {MAX_BARS} bars, as a tie-rod's count",
         )
+
+
+def demand_without_record(record_path: str | None, code_demand: str | None) -> str:
+    """The code check's demand: the record's spectrum by default with a record, the model's own
+    spectra without one (a record's spectrum without a record is refused: InputError)."""
+    if code_demand is None:
+        return "record" if record_path is not None else "model"
+    if code_demand == "record" and record_path is None:
+        from rockcli.errors import InputError
+
+        raise InputError("reads the spectrum of a record, and none is given",
+                         where="--code-demand", value=code_demand,
+                         allowed="--record FILE, or --code-demand model (the model's own "
+                         "spectra; the default without a record)")  # fmt: skip
+    return code_demand

@@ -120,7 +120,7 @@ def scenario_blocks(doc: Mapping[str, Any], w: Words, single: bool) -> list[Bloc
     """What the record's comparison says: the code check on the record's spectrum (ζ_E per
     limit state), the rocking, the classification, the restrainers in the time history, the
     mechanisms that fail or overturn; the reference paper's systemic finding only for a
-    single block (``single``), the case the paper's systematic analyses cover."""
+    single block (``single``) of the paper's range (:func:`in_papers_range`)."""
     n = w.number
     rocking = doc["rocking"]
     blocks: list[Block] = []
@@ -130,7 +130,7 @@ def scenario_blocks(doc: Mapping[str, Any], w: Words, single: bool) -> list[Bloc
     blocks.append(Paragraph(w(f"concl.rocking_{rocking['verdict']}",
                               ratio=n(rocking["max_ratio"], "{:.3f}"))))  # fmt: skip
     blocks.append(Paragraph(w(f"class.{doc['classification']}"), "verdict"))
-    if single:
+    if single and in_papers_range(rocking["model"]):
         blocks.append(Paragraph(w(f"concl.paper_{doc['classification']}")))
     blocks += [restrainer_sentence(c, w) for c in rocking.get("restrainer_checks", ())]
     others = unsafe_mechanisms(doc)
@@ -144,8 +144,31 @@ def scenario_blocks(doc: Mapping[str, Any], w: Words, single: bool) -> list[Bloc
     return blocks
 
 
-def sizing_paragraph(sizing: Any, w: Words) -> Paragraph:
-    """What rock retrofit found for the model's tie-rod, in a sentence."""
+#: The blocks of the reference paper's systemic study (§3.3, Fig. 8): semi-diagonal R and
+#: slenderness α, to 1 % (the altar of its §3.2, R = 1.499 m, is the paper's own case).
+PAPER_R_M = (1.5, 10.0)
+PAPER_ALPHA_RAD = (0.05, 0.25)
+PAPER_TOLERANCE = 0.01
+
+
+def in_papers_range(model: Mapping[str, Any]) -> bool:
+    """Whether a rocked model (the rocking JSON's ``model``) is a block the paper's systemic
+    study covers: one free-standing rectangular block (no chain, load, thrust or restrainer)
+    with R and α within the study's range, so its 100 cases speak for it."""
+    if model.get("chain") or model.get("loads") or model.get("thrusts") or model.get("restrainers"):
+        return False
+
+    def within(value: float, bounds: tuple[float, float]) -> bool:
+        lo, hi = bounds
+        return lo * (1 - PAPER_TOLERANCE) <= value <= hi * (1 + PAPER_TOLERANCE)
+
+    return within(model["R"], PAPER_R_M) and within(model["alpha"], PAPER_ALPHA_RAD)
+
+
+def sizing_paragraph(sizing: Any, w: Words, suite: bool = False) -> Paragraph:
+    """What rock retrofit found for the model's tie-rod, in a sentence: under the record, or
+    by the code check alone (no record; ``suite``: a suite's report, whose time histories are
+    to be run again with the rod)."""
     if sizing == "not needed":
         return Paragraph(w("concl.retrofit_not_needed"))
     if not sizing.diameters_mm:
@@ -157,14 +180,16 @@ def sizing_paragraph(sizing: Any, w: Words) -> Paragraph:
         "concl.retrofit_installed", d=w.number(sizing.installed_mm, "{:g}"))  # fmt: skip
     if sizing.chosen is None:  # the failures of the largest diameter
         why = getattr(sizing.reason, "values", {}).get("why", sizing.reason)
-        text = w("concl.retrofit_none", reason=w.note(why), **values)
+        key = "concl.retrofit_none" if sizing.rocked else "concl.retrofit_none_code"
+        text = w(key, reason=w.note(why), **values)
         return Paragraph(text + installed, "warning")
-    text = w(
-        "concl.retrofit_found",
-        d=w.number(sizing.chosen["diameter_mm"], "{:g}"),
-        demand=w(f"concl.retrofit_demand_{sizing.code_demand}"),
-        **values,
-    )
+    d = w.number(sizing.chosen["diameter_mm"], "{:g}")
+    if sizing.rocked:
+        demand = w(f"concl.retrofit_demand_{sizing.code_demand}")
+        text = w("concl.retrofit_found", d=d, demand=demand, **values)
+    else:
+        again = w("concl.retrofit_found_code_suite") if suite else ""
+        text = w("concl.retrofit_found_code", d=d, suite=again, **values)
     if sizing.others:
         names = ", ".join(f"'{w.note(name)}'" for name in sizing.others)
         text += " " + w("concl.retrofit_others", names=names)
@@ -172,13 +197,16 @@ def sizing_paragraph(sizing: Any, w: Words) -> Paragraph:
 
 
 def suite_conclusions_section(
-    doc: Mapping[str, Any], w: Words, verification: Any = None
-) -> Section:
+    doc: Mapping[str, Any], w: Words, verification: Any = None,
+    rocked: Mapping[str, Any] | None = None, sizing: Any = None,
+) -> Section:  # fmt: skip
     """The conclusions of a suite's report: the verification on the model's own spectra when
     it has one (rockcli.document.verification), the code's risk index per limit state on the
     suite's target, the suite's time histories by the code's rule (NTC 2018 §7.3.5), the
-    classification and what to do next (an intervention when the verification or the suite
-    fails)."""
+    classification, the reference paper's finding for a block of its range (``rocked``: the
+    rocked model, as `rock assess` writes it) and what to do next (an intervention when the
+    verification or the suite fails), and the tie-rod's sizing when asked (``sizing``: "not
+    needed", a Sizing, or None)."""
     from rockcli.document.verification import verification_blocks
 
     n = w.number
@@ -196,7 +224,8 @@ def suite_conclusions_section(
                               limit=n(suite["limit_ratio"], "{:.3g}"),
                               overturned=suite["overturned_records"])))  # fmt: skip
     blocks.append(Paragraph(w(f"class.{doc['classification']}"), "verdict"))
-    if not kin.get("mechanisms") or len(kin["mechanisms"]) == 1:  # the paper's single block
+    single = not kin.get("mechanisms") or len(kin["mechanisms"]) == 1
+    if single and rocked is not None and in_papers_range(rocked):
         blocks.append(Paragraph(w(f"concl.paper_{doc['classification']}")))
     if verification is not None:
         key = ("unsafe" if verified == "fails" or suite["verdict"] != "passes"
@@ -205,6 +234,8 @@ def suite_conclusions_section(
     else:
         unsafe = bool(failing) or suite["verdict"] != "passes"
         blocks.append(Paragraph(w("concl.next_unsafe" if unsafe else "concl.next_safe")))
+    if sizing is not None:
+        blocks.append(sizing_paragraph(sizing, w, suite=True))
     return Section("conclusions", w("section.conclusions"), tuple(blocks))
 
 

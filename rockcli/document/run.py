@@ -109,7 +109,7 @@ def write_report(
         inputs = Inputs(path, model, record, (("model", path), *files), command, report_date(),
                         **front)  # fmt: skip
         sizing = None
-        if choices.retrofit and record is not None:
+        if choices.retrofit:
             sizing = wall_sizing(
                 path, record, verification, doc, comparison.analyses, comparison.grid_file
             )
@@ -233,14 +233,17 @@ def wall_comparisons(
 
 def wall_sizing(
     path: str,
-    record: Record,
+    record: Record | None,
     verification: Any,
     doc: dict[str, Any] | None,
     analyses: Analyses,
     grid_file: str | None = None,
 ) -> Any:
     """What rock retrofit finds for the model's tie-rod when the report asks for an
-    intervention (rockcli.document.conclusions.asks_intervention; "not needed" otherwise)."""
+    intervention (rockcli.document.conclusions.asks_intervention; "not needed" otherwise):
+    each diameter's code check on the verification's spectra (on the record's without a
+    verification), and its time history under the record (none without one: the code check
+    alone)."""
     from rockcli.codecheck.existing import ultimate_states
     from rockcli.document.conclusions import asks_intervention
     from rockcli.studies.retrofit.run import size_rod
@@ -253,6 +256,31 @@ def wall_sizing(
     return size_rod(
         path, record, analyses, "record" if verification is None else "model", grid_file
     )
+
+
+def suite_sizing(
+    path: str, verification: Any, doc: dict[str, Any], analyses: Analyses, grid_file: str | None
+) -> Any:
+    """The tie-rod of a suite's report: sized by the code check alone on the verification's
+    spectra where the verification asks for an intervention; where only the suite's time
+    histories fail, not sized (the suite's records are not run again with each diameter: the
+    reason says so); "not needed" when neither fails."""
+    from rockcli.codecheck.existing import ultimate_states
+    from rockcli.document.conclusions import asks_intervention
+    from rockcli.notes import Note
+    from rockcli.studies.retrofit.run import Sizing, size_rod
+
+    if verification is None:
+        return Sizing(Note("retro_no_spectra", "the model sets no code spectrum of its own "
+                           "([ntc.site] or [ntc.demand]) to size the rod on"))  # fmt: skip
+    uls = ultimate_states(verification.result.edition)
+    if asks_intervention(verification, None, uls):
+        return size_rod(path, None, analyses, "model", grid_file)
+    if doc["suite"]["verdict"] != "passes":
+        return Sizing(Note("retro_suite_only", "the verification on the site's spectrum needs "
+                           "no tie-rod, and the suite's time histories, which fail, are not "
+                           "run again with each diameter: the rod is not sized"))  # fmt: skip
+    return "not needed"
 
 
 def comparison_document(out: Any, record: Record) -> dict[str, Any]:
@@ -315,11 +343,13 @@ def write_suite_report(
     allow_outside: bool = False,
     front: dict[str, Any] | None = None,
     docx_path: str | None = None,
+    retrofit: bool = False,
 ) -> list[tuple[str, str]]:
     """Compare each model under the suite (as `rock compare --suite`), keep each record's
     history for the figures, write one report; what was written (allow_outside: the suite's
-    records may lie outside its folder, --allow-outside). Every model and the suite are read
-    and checked before any analysis runs."""
+    records may lie outside its folder, --allow-outside; ``retrofit``: size each model's
+    tie-rod, :func:`suite_sizing`). Every model and the suite are read and checked before any
+    analysis runs."""
     from rockcli.document.build import Inputs
     from rockcli.document.suite import SuitePart, build_suite_document
     from rockcli.studies.suite_run.assess import load_suite_and_model
@@ -338,8 +368,9 @@ def write_suite_report(
         files += [("hazard_grid", grid_file)] if grid_file else []
         inputs = Inputs(path, loaded.model, None, tuple(files), command, report_date(), **front)
         verification = verification_of(loaded.model, analyses.edition, grid_file)
+        sizing = suite_sizing(path, verification, doc, analyses, grid_file) if retrofit else None
         parts.append(SuitePart(inputs, doc, suite_document(loaded.check), runs, kin,
-                               verification))  # fmt: skip
+                               verification, sizing))  # fmt: skip
     document = build_suite_document(parts, lang)
     verdict = ", ".join(str(part.doc["classification"]) for part in parts)
     return write_document(document, html_path, pdf_path, verdict, docx_path)

@@ -52,6 +52,9 @@ class SuitePart:
     #: The code check on the model's own spectra (rockcli.document.verification), the
     #: report's verification; None when the model sets no code spectrum.
     verification: Any = None
+    #: The tie-rod's sizing (rockcli.document.run.suite_sizing): "not needed", a Sizing, or
+    #: None when not asked.
+    sizing: Any = None
 
     @property
     def name(self) -> str:
@@ -134,7 +137,7 @@ def suite_sections(part: SuitePart, w: Words) -> list[Section]:
         rekeyed_once(kinematic_section(part.kinematic, doc["kinematic"], w), part),
         suite_rocking_section(doc, records, w),
         suite_comparison_section(doc, w, named(doc, records)),
-        suite_conclusions_section(doc, w, part.verification),
+        suite_conclusions_section(doc, w, part.verification, first["model"], part.sizing),
     ]
 
 

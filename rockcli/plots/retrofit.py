@@ -42,7 +42,11 @@ def plot_retrofit(doc: Mapping[str, Any], path: str | Path) -> None:
     rocking.set_xticks([r["diameter_mm"] for r in rows])
     rocking.tick_params(axis="x", labelsize="small")
     rocking.set_xlabel("rod diameter d [mm]")
-    code.set_title(f"{doc['model']['name']} under {doc['record']['name']}", fontsize="medium")
+    record = doc["record"]
+    under = (
+        "on the model's code spectra (no record)" if record is None else f"under {record['name']}"
+    )
+    code.set_title(f"{doc['model']['name']} {under}", fontsize="medium")
     save(fig, path)
 
 
@@ -57,8 +61,12 @@ def _draw_code(ax: Axes, rows: Sequence[Mapping[str, Any]]) -> None:
 
 
 def _draw_rocking(ax: Axes, rows: Sequence[Mapping[str, Any]]) -> None:
-    """max θ/α of the candidates that stand; × where the block overturns."""
-    standing = [(r["diameter_mm"], r["max_ratio"]) for r in rows if not r["overturned"]]
+    """max θ/α of the candidates that stand; × where the block overturns (a note when none
+    was rocked: no record, or the rod on no mechanism)."""
+    standing = [(r["diameter_mm"], r["max_ratio"]) for r in rows
+                if not r["overturned"] and r["max_ratio"] is not None]  # fmt: skip
+    if not standing and not any(r["overturned"] for r in rows):
+        ax.text(0.5, 0.5, "no time history", transform=ax.transAxes, ha="center")
     if standing:
         ax.plot(*zip(*standing, strict=True), "o-", color="tab:orange", label="max θ/α")
     fallen = [r["diameter_mm"] for r in rows if r["overturned"]]

@@ -30,7 +30,7 @@ OVERTURNED = "overturned"
 def retrofit_document(
     plan: RetrofitPlan,
     model: Model,
-    record: Record,
+    record: Record | None,
     rows: Sequence[dict[str, Any]],
     chosen: dict[str, Any] | None,
     reason: str,
@@ -39,7 +39,8 @@ def retrofit_document(
     code_demand: str = "record",
 ) -> dict[str, Any]:
     """The `rock retrofit --format json` document: every candidate, the choice and why, and
-    the warnings on the model and the record (magnitudes that look like unit slips)."""
+    the warnings on the model and the record (magnitudes that look like unit slips); without a
+    record (the code check alone) ``record`` is null."""
     from rockcli.analyses.floor import model_floor
     from rockcli.model.plausible import model_warnings
     from rockcli.studies.retrofit.choose import others
@@ -51,11 +52,9 @@ def retrofit_document(
         "schema": SCHEMA,
         "rock_version": __version__,
         "model": {"name": model.name},
-        "record": {
-            "name": record.name,
-            "pga_g": record.pga,
-            "input": "floor" if floor else "ground",
-        },
+        "record": None
+        if record is None
+        else {"name": record.name, "pga_g": record.pga, "input": "floor" if floor else "ground"},
         "rod": {
             "name": plan.name,
             "placed": None
@@ -73,7 +72,7 @@ def retrofit_document(
         "chosen": chosen,
         "reason": reason,
         "another_intervention": others(chosen or (rows[-1] if rows else {})),
-        "warnings": [*model_warnings(model), *record.warnings],
+        "warnings": [*model_warnings(model), *(() if record is None else record.warnings)],
     }
 
 
@@ -99,6 +98,12 @@ DETAIL_COLUMNS = (
     Column("utilisation", "utilisation", "", "{:.3f}", short="use"),
     Column("elongation", "elongation / can take", "mm", short="elong."),
     Column("status", "status", align="left"),
+)
+
+#: The same without a record: the code check alone (no time history, no force, no θ/α).
+CODE_COLUMNS = tuple(c for c in COLUMNS if c.key not in ("max_ratio", "max_force", "utilisation"))
+CODE_DETAIL_COLUMNS = tuple(
+    c for c in DETAIL_COLUMNS if c.key not in ("max_ratio", "utilisation", "elongation")
 )
 
 
@@ -201,21 +206,31 @@ def retrofit_report(doc: dict[str, Any], details: bool = False) -> Report:
         f" m from the pivot, {rod['placed']['length']:g} m long"
     )
     chosen = doc["chosen"]
-    tables = [Table(f"'{rod['name']}': {where}", COLUMNS, rows)]
+    record = doc["record"]
+    columns = COLUMNS if record is not None else CODE_COLUMNS
+    tables = [Table(f"'{rod['name']}': {where}", columns, rows)]
     if details:
         each = tuple(d for r in doc["candidates"] for d in detail_rows(r))
-        tables.append(Table("each mechanism with each diameter", DETAIL_COLUMNS, each))
-    notes = [
-        f"{doc['count']} bar(s) of {doc['grade']} per diameter; each mechanism's code ULS on "
-        f"{CODE_DEMANDS[doc.get('code_demand', 'record')]}; the time history (both "
-        "polarities) of each mechanism the rod is on; peak force and utilisation: the largest "
-        "over the mechanisms the rod is on; restrained: on it, and not slack on the side its "
-        "code check governs; the rod's elongation against ε_u·L/γ_ε, and "
-        "γov·A·fy, the force its anchorage must exceed (capacity design, NTC 2018 §7.5.1)",
-        INPUTS[doc["record"]["input"]],
-    ]
-    shown = chosen or (doc["candidates"][-1] if doc["candidates"] else {})
-    names = others(shown)
+        shown = DETAIL_COLUMNS if record is not None else CODE_DETAIL_COLUMNS
+        tables.append(Table("each mechanism with each diameter", shown, each))
+    demand = CODE_DEMANDS[doc.get("code_demand", "record")]
+    if record is None:
+        notes = [f"{doc['count']} bar(s) of {doc['grade']} per diameter; the code check alone "
+                 f"(no --record, no time history): each mechanism's code ULS on {demand}, the "
+                 "rod acting with its design strength; restrained: on it, and not slack on the "
+                 "side its code check governs"]  # fmt: skip
+    else:
+        notes = [
+            f"{doc['count']} bar(s) of {doc['grade']} per diameter; each mechanism's code ULS "
+            f"on {demand}; the time history (both polarities) of each mechanism the rod is "
+            "on; peak force and utilisation: the largest over the mechanisms the rod is on; "
+            "restrained: on it, and not slack on the side its code check governs; the rod's "
+            "elongation against ε_u·L/γ_ε, and γov·A·fy, the force its anchorage must exceed "
+            "(capacity design, NTC 2018 §7.5.1)",
+            INPUTS[record["input"]],
+        ]
+    shown_row = chosen or (doc["candidates"][-1] if doc["candidates"] else {})
+    names = others(shown_row)
     if names:
         notes.append("need another intervention (the rod is not on them, or goes slack on the "
                      "side they fail on): " + ", ".join(f"'{n}'" for n in names))  # fmt: skip
@@ -226,9 +241,12 @@ def retrofit_report(doc: dict[str, Any], details: bool = False) -> Report:
         if chosen is not None
         else doc["reason"]
     )
+    title = f"rock retrofit — {doc['model']['name']} " + (
+        f"on {demand} (no record)" if record is None
+        else f"under {record['name']} (PGA {record['pga_g']:.3f} g)"
+    )  # fmt: skip
     return Report(
-        title=f"rock retrofit — {doc['model']['name']} under {doc['record']['name']} "
-        f"(PGA {doc['record']['pga_g']:.3f} g)",
+        title=title,
         tables=tuple(tables),
         notes=tuple(notes),
         warnings=tuple(doc["warnings"]),

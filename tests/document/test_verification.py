@@ -183,7 +183,7 @@ def test_the_required_limit_states_of_each_use_class() -> None:
     [
         ([str(BLOCK)], "ntc: sets no code spectrum for the verification"),
         ([str(FACADE), "--code-demand", "model"], "--code-demand: chooses the demand"),
-        ([str(FACADE), "--retrofit"], "--retrofit: sizes the rod under a record"),
+        ([str(BLOCK), "--retrofit"], "ntc: sets no code spectrum for the verification"),
     ],
 )
 def test_bad_input_without_a_record(tmp_path: Path, args: list[str], words: str) -> None:

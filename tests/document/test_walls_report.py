@@ -177,13 +177,6 @@ def test_several_models_under_a_suite_make_one_report(tmp_path: Path) -> None:
         assert f'<section id="{prefix}-conclusions"' in page
 
 
-def test_retrofit_is_refused_with_a_suite(tmp_path: Path) -> None:
-    suite = ROOT / "examples" / "suites" / "laquila-slv.toml"
-    code, _, err = run("report", str(ALTAR), "--suite", str(suite), "--retrofit",
-                       "-o", str(tmp_path / "r.html"))  # fmt: skip
-    assert code == 2 and "--retrofit" in err, err
-
-
 def test_each_mechanisms_section_shows_its_own_activation_multiplier(wall_page: str) -> None:
     # The virtual-work table of every mechanism's section is the catalogue's own mechanism
     # (a vertical flexure's two blocks, not the block it rocks as): the summary's α0 is that
@@ -214,14 +207,3 @@ def test_the_conclusions_name_another_mechanism_that_overturns(tmp_path: Path) -
     # decides what follows, and the scenario's overturning is said beside it.
     assert "The safety verification is satisfied" in conclusions.group(0)
     assert "(not the safety verification)" in conclusions.group(0)
-
-
-def test_retrofit_is_refused_with_another_code_demand(tmp_path: Path) -> None:
-    # rock retrofit checks each diameter on the record's spectrum: with the model's own
-    # spectrum the report's code check and the sizing would see different earthquakes.
-    code, _, err = run("report", str(FACADE), "--record", str(RICKER), "--retrofit",
-                       "--code-demand", "model", "-o", str(tmp_path / "r.html"))  # fmt: skip
-    assert code == 2 and err.count("\n") == 1, err
-    assert "--retrofit: sizes the rod on the record's spectrum" in err
-    assert "--code-demand model" in err and "--code-demand record" in err
-    assert not (tmp_path / "r.html").exists()

@@ -114,33 +114,58 @@ def others(row: dict[str, Any]) -> list[str]:
     return [m["name"] for m in row.get("mechanisms", ()) if m["status"] == ANOTHER]
 
 
-def choose(rows: Sequence[dict[str, Any]]) -> tuple[dict[str, Any] | None, Note]:
-    """(the chosen candidate or None, the reason) over rows ascending in diameter."""
+def choose(
+    rows: Sequence[dict[str, Any]], rocked: bool = True
+) -> tuple[dict[str, Any] | None, Note]:
+    """(the chosen candidate or None, the reason) over rows ascending in diameter;
+    ``rocked`` False: the candidates had the code check alone (no record, no time history)."""
     if not rows:
         return None, Note("retro_none_tried", "no diameter tried")
     restrained = any(m["restrained"] for r in rows for m in r.get("mechanisms", ()))
     if rows[0].get("mechanisms") is not None and not restrained:
+        names = [f"'{n}'" for n in others(rows[-1])]
+        if not names:
+            return None, Note("retro_restrains_none_safe", "the rod restrains none of the "
+                              "mechanisms, and none needs it")  # fmt: skip
         return None, Note("retro_restrains_none", "the rod restrains none of the mechanisms "
                           "(each needs another intervention where it fails: {names})",
-                          names=Items([f"'{n}'" for n in others(rows[-1])] or ["—"],
-                                      ", "))  # fmt: skip
+                          names=Items(names, ", "))  # fmt: skip
     for row in rows:
         if not candidate_failures(row):
-            names = others(row)
-            if not names:
-                return row, Note(
-                    "retro_chosen", "Ø{d:g} mm is the smallest diameter for which the code "
-                    "ULS passes, the block survives and the rod neither ruptures nor exceeds "
-                    "its strength, its ductility or its anchor's capacity",
-                    d=float(row["diameter_mm"]),
-                )  # fmt: skip
-            return row, Note(
-                "retro_chosen_others", "Ø{d:g} mm is the smallest diameter that makes safe "
-                "every mechanism the rod restrains (the code ULS passes, it survives, the rod "
-                "holds); another intervention is needed for: {names}",
-                d=float(row["diameter_mm"]), names=Items([f"'{n}'" for n in names], ", "),
-            )  # fmt: skip
+            return row, chosen_note(row, rocked)
     largest = rows[-1]
     why = Items(candidate_failures(largest), "; ")
     return None, Note("retro_none", "none in the range: at the largest, {d:g} mm, {why}",
                       d=float(largest["diameter_mm"]), why=why)  # fmt: skip
+
+
+def chosen_note(row: dict[str, Any], rocked: bool) -> Note:
+    """Why this diameter is chosen: what it satisfies (a block's or every mechanism's
+    criteria; the code check's alone without a record) and the mechanisms it leaves to
+    another intervention."""
+    d = float(row["diameter_mm"])
+    names = others(row)
+    wall = any(m.get("mechanism") for m in row.get("mechanisms", ()))
+    if not rocked:
+        if names:
+            return Note("retro_chosen_code_others", "Ø{d:g} mm is the smallest diameter for "
+                        "which the code ULS of every mechanism the rod restrains passes (the "
+                        "code check alone: no record, no time history); another intervention "
+                        "is needed for: {names}", d=d,
+                        names=Items([f"'{n}'" for n in names], ", "))  # fmt: skip
+        return Note("retro_chosen_code", "Ø{d:g} mm is the smallest diameter for which the "
+                    "code ULS of every mechanism passes (the code check alone: no record, no "
+                    "time history)", d=d)  # fmt: skip
+    if names:
+        return Note("retro_chosen_others", "Ø{d:g} mm is the smallest diameter that makes safe "
+                    "every mechanism the rod restrains (the code ULS passes, it survives, the "
+                    "rod holds); another intervention is needed for: {names}", d=d,
+                    names=Items([f"'{n}'" for n in names], ", "))  # fmt: skip
+    if wall:
+        return Note("retro_chosen_wall", "Ø{d:g} mm is the smallest diameter for which every "
+                    "mechanism passes the code ULS and survives the time history, and the rod "
+                    "neither ruptures nor exceeds its strength, its ductility or its anchor's "
+                    "capacity", d=d)  # fmt: skip
+    return Note("retro_chosen", "Ø{d:g} mm is the smallest diameter for which the code ULS "
+                "passes, the block survives and the rod neither ruptures nor exceeds its "
+                "strength, its ductility or its anchor's capacity", d=d)  # fmt: skip

@@ -50,7 +50,8 @@ class RetrofitChunk:
     """Candidates sent to a worker together, with what they share."""
 
     plan: RetrofitPlan
-    record: Record
+    #: None: the code check alone, on the model's own spectra (no time history).
+    record: Record | None
     analyses: Analyses
     cases: tuple[Candidate, ...]
     #: The code check's demand: "record" (its spectrum) or "model" (the model's spectra).
@@ -107,7 +108,7 @@ def shared_spectrum(record: Record, g: float) -> RecordSpectrum:
 
 
 def run_candidate(
-    plan: RetrofitPlan, diameter_mm: float, record: Record, analyses: Analyses,
+    plan: RetrofitPlan, diameter_mm: float, record: Record | None, analyses: Analyses,
     code_demand: str = "record", grid_file: str | None = None,
 ) -> dict[str, Any]:  # fmt: skip
     """Both analyses of the model with the rod of this diameter, mechanism by mechanism: the
@@ -116,13 +117,14 @@ def run_candidate(
     verification), and the time history of both polarities of every mechanism the rod is on
     (:func:`mechanism_rows`). The candidate's own columns are those of the governing
     mechanism of that check (with this rod: a stronger rod can hand the governing role to
-    another); ``mechanisms`` has every one, with its status (studies.retrofit.choose)."""
+    another); ``mechanisms`` has every one, with its status (studies.retrofit.choose).
+    Without a record (None) the code check alone, on the model's own spectra."""
     from rockcli.analyses.kinematic import kinematic_model
     from rockcli.model.catalogue import catalogue
 
     model = build_candidate(plan, diameter_mm)
-    own = code_demand == "record"
-    spectrum = shared_spectrum(record, model.analysis.g) if own else None
+    own = code_demand == "record" and record is not None
+    spectrum = shared_spectrum(record, model.analysis.g) if own and record is not None else None
     mechanisms = catalogue(model)
     kin = kinematic_model(model, edition=analyses.edition, record=record if own else None,
                           spectrum=spectrum, grid_file=grid_file,
@@ -138,7 +140,7 @@ def run_candidate(
 
 
 def mechanism_rows(
-    model: Any, kin: KinematicResult, mechanisms: Any, plan: RetrofitPlan, record: Record,
+    model: Any, kin: KinematicResult, mechanisms: Any, plan: RetrofitPlan, record: Record | None,
     analyses: Analyses,
 ) -> list[dict[str, Any]]:  # fmt: skip
     """Every mechanism of the catalogue with the rod, the governing one first: its code ULS
@@ -171,16 +173,17 @@ def mechanism_rows(
 
 
 def rocked_columns(
-    model: Any, record: Record, analyses: Analyses, plan: RetrofitPlan, name: str,
+    model: Any, record: Record | None, analyses: Analyses, plan: RetrofitPlan, name: str,
     mechanisms: Any, on_it: bool,
 ) -> dict[str, Any]:  # fmt: skip
     """The time history of a mechanism the rod is on (as ``rock compare`` rocks it), with the
-    rod's checks; not run (every column None, nothing failing) where the rod is not on it."""
+    rod's checks; not run (every column None, nothing failing) where the rod is not on it or
+    without a record (the code check alone)."""
     not_rocked: dict[str, Any] = {"input": None, "rocking": None, "max_ratio": None,
                                   "overturned": False,
                   "broken_runs": [], "max_force": None, "utilisation": None, "ductility": None,
                   "anchor": None, "ruptured": False}  # fmt: skip
-    if not on_it:
+    if not on_it or record is None:
         return not_rocked
     from rockcli.analyses.assess import assess_model_output
     from rockcli.errors import InputError
@@ -270,7 +273,7 @@ def _finite(value: float) -> float | None:
 
 def run_retrofit(
     plan: RetrofitPlan,
-    record: Record,
+    record: Record | None,
     lanes: MutableSequence[Lane],
     analyses: Analyses,
     progress: Callable[[int, int], None] | None = None,
@@ -301,9 +304,10 @@ def run_retrofit(
 
 @dataclass(frozen=True)
 class Sizing:
-    """What `rock retrofit` finds for a model's tie-rod under a record: the rod, its steel and
-    bars, the diameters tried [mm], the chosen row (None: none passes) and why; or, when the
-    model has no single tie-rod to size, only why not (``reason``)."""
+    """What `rock retrofit` finds for a model's tie-rod (under a record, or by the code check
+    alone): the rod, its steel and bars, the diameters tried [mm], the chosen row (None: none
+    passes) and why; or, when the model has no single tie-rod to size, only why not
+    (``reason``)."""
 
     reason: Note
     rod: str = ""
@@ -318,11 +322,13 @@ class Sizing:
     others: tuple[str, ...] = ()
     #: What the code check of each diameter read: "record" or "model" (its own spectra).
     code_demand: str = "record"
+    #: Whether each diameter was rocked under a record (False: the code check alone).
+    rocked: bool = True
 
 
 def size_rod(
     model_path: str,
-    record: Record,
+    record: Record | None,
     analyses: Analyses,
     code_demand: str = "record",
     grid_file: str | None = None,
@@ -330,7 +336,8 @@ def size_rod(
     """`rock retrofit MODEL --record R` with its defaults (the model's one tie-rod, the default
     diameters, its steel), in this process: the smallest diameter that makes safe every
     mechanism the rod restrains (rockcli.studies.retrofit.choose); ``code_demand`` "model":
-    the code check on the model's own spectra (a report's verification)."""
+    the code check on the model's own spectra (a report's verification); without a record
+    (None) that check alone."""
     from rockcli.model.load import read_toml, validate_model
     from rockcli.studies.parallel.executor import local_executor
     from rockcli.studies.retrofit.candidates import DEFAULT_DIAMETERS_MM, make_plan, tie_rods
@@ -357,4 +364,4 @@ def size_rod(
     shown = chosen or (rows[-1] if rows else {})
     return Sizing(reason, plan.name, plan.grade, plan.count, plan.diameters_mm, chosen,
                   None if installed is None else 1e3 * float(installed),
-                  tuple(others(shown)), code_demand)  # fmt: skip
+                  tuple(others(shown)), code_demand, record is not None)  # fmt: skip
