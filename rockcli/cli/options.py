@@ -252,6 +252,29 @@ def check_record_options(record_path, record_format, dt, units, scale, pga) -> N
         )
 
 
+#: The options that act on a time history only: they need a record (or a suite).
+ROCKING_ONLY = {"engine": "--engine", "ground": "--ground", "mechanism_name": "--mechanism"}
+
+
+def check_rocking_options(*params: str) -> None:
+    """Refuse, without a record, an option given on the command line that only a time history
+    uses (``params``: their parameter names, keys of ROCKING_ONLY; InputError)."""
+    from click.core import ParameterSource
+
+    from rockcli.errors import InputError
+
+    ctx = click.get_current_context()
+    for param in params:
+        if ctx.get_parameter_source(param) is ParameterSource.COMMANDLINE:
+            option = ROCKING_ONLY[param]
+            raise InputError(
+                "acts on a time history, and without a record there is none",
+                where=option,
+                value=None if isinstance(ctx.params[param], bool) else ctx.params[param],
+                allowed=f"--record FILE with {option}, or no {option}",
+            )
+
+
 def check_hazard_grid(grid_file, model_path, *, demand_from: str | None) -> None:
     """Refuse --hazard-grid when no site sets the demand (InputError).
 

@@ -15,6 +15,7 @@ from rockcli.cli.options import (
     check_allow_outside,
     check_outputs,
     check_record_options,
+    check_rocking_options,
     edition_option,
     engine_option,
     force_option,
@@ -205,6 +206,7 @@ def report(
                          value=mechanism_name, allowed="--mechanism with one model")  # fmt: skip
     if alone:
         check_record_options(None, record_format, dt, units, scale, pga)
+        check_rocking_options("engine", "ground", "mechanism_name")
         if target is not None:
             raise InputError("applies only to a folder of records given as the suite",
                              where="--target", value=target,

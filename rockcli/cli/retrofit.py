@@ -12,6 +12,7 @@ from rockcli.cli.options import (
     announce_written,
     check_outputs,
     check_record_options,
+    check_rocking_options,
     edition_option,
     engine_option,
     exit_if_non_finite,
@@ -120,6 +121,8 @@ def retrofit(model_path, record_path, record_format, dt, units, scale, pga, name
     from rockcli.terminal.table import show
 
     check_record_options(record_path, record_format, dt, units, scale, pga)
+    if record_path is None:
+        check_rocking_options("engine", "ground")
     code_demand = demand_without_record(record_path, code_demand)
     plan, model = retrofit_plan(model_path, name, at, length, diameters, grade, count)
     if code_demand == "model":

@@ -182,7 +182,9 @@ def wall_description(part: Any, w: Words) -> list[Section]:
     blocks: list[Block] = [Paragraph(w("wall.intro", file=part.inputs.model_path))]
     from rockcli.model.derive_ntc import ntc_settings
 
-    blocks += wall_grids(walls[0], kin, w, ntc_settings(part.inputs.model).FC_rule)
+    # FC's rule as the check applied it (its edition: the model's, or --edition's).
+    rule = ntc_settings(part.inputs.model, kin.get("edition")).FC_rule
+    blocks += wall_grids(walls[0], kin, w, rule)
     blocks.append(
         figure(
             "wall",

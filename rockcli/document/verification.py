@@ -12,6 +12,7 @@ from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
+from rockcli.document.code_check import risk_indices
 from rockcli.document.content import Block, Grid, Paragraph, Section
 from rockcli.document.words import Words
 
@@ -48,9 +49,7 @@ def demand_kind(model: Model) -> str:
 
 
 def zeta_by_state(kin: Mapping[str, Any]) -> dict[str, float | None]:
-    """ζ_E of each limit state the check evaluated (rockcli.document.conclusions.risk_indices)."""
-    from rockcli.document.code_check import risk_indices
-
+    """ζ_E of each limit state the check evaluated (rockcli.document.code_check.risk_indices)."""
     return {state: ratio for state, ratio, _ in risk_indices(kin)}
 
 
@@ -177,7 +176,7 @@ def verification_blocks(ver: Verification, w: Words) -> tuple[list[Block], str]:
     if kin.get("governing"):
         blocks.append(Paragraph(w("verify.governing", name=w.note(kin["governing"]))))
     zeta = zeta_by_state(kin)
-    verdicts = {state: passed for state, _, passed in _indices(kin)}
+    verdicts = {state: passed for state, _, passed in risk_indices(kin)}
     rows = tuple(
         (w(f"ls.{state}"), n(ratio, "{:.3f}"), w.passed(verdicts.get(state)),
          w.yes_no(state in ver.required))
@@ -207,12 +206,6 @@ def verification_blocks(ver: Verification, w: Words) -> tuple[list[Block], str]:
     return blocks, result
 
 
-def _indices(kin: Mapping[str, Any]) -> Sequence[tuple[str, float | None, bool | None]]:
-    from rockcli.document.code_check import risk_indices
-
-    return risk_indices(kin)
-
-
 def required_sentence(ver: Verification, w: Words) -> str:
     """What §8.3 requires of an existing building of the model's use class, in a sentence."""
     states = ", ".join(w(f"ls.{s}") for s in ver.required)
@@ -229,5 +222,5 @@ def verification_data(ver: Verification) -> dict[str, Any]:
         "zeta_E": zeta_by_state(ver.doc),
         "use_class": ver.use_class,
         "required": list(ver.required),
-        "verdict": {state: passed for state, _, passed in _indices(ver.doc)},
+        "verdict": {state: passed for state, _, passed in risk_indices(ver.doc)},
     }

@@ -75,6 +75,8 @@ def test_the_terminal_table_has_no_time_history_columns(strong: Path) -> None:
     [
         (["--code-demand", "record"], "--code-demand: reads the spectrum of a record"),
         (["--scale", "2"], "--scale: applies only to a record"),
+        (["--ground"], "--ground: acts on a time history"),
+        (["--engine", "reference"], "--engine: acts on a time history"),
     ],
 )
 def test_bad_input_without_a_record(strong: Path, args: list[str], words: str) -> None:

@@ -184,6 +184,9 @@ def test_the_required_limit_states_of_each_use_class() -> None:
         ([str(BLOCK)], "ntc: sets no code spectrum for the verification"),
         ([str(FACADE), "--code-demand", "model"], "--code-demand: chooses the demand"),
         ([str(BLOCK), "--retrofit"], "ntc: sets no code spectrum for the verification"),
+        ([str(FACADE), "--engine", "reference"], "--engine: acts on a time history"),
+        ([str(FACADE), "--ground"], "--ground: acts on a time history"),
+        ([str(FACADE), "--mechanism", "gable"], "--mechanism: acts on a time history"),
     ],
 )
 def test_bad_input_without_a_record(tmp_path: Path, args: list[str], words: str) -> None:
