@@ -252,11 +252,14 @@ def add_figure(word, figure: Figure, caption: str) -> None:
 
 
 def signature(word, lines: tuple[str, ...]) -> None:
-    """The signature block, right-aligned, with room for the stamp."""
+    """The signature block, right-aligned, with room for the stamp, kept on one page (each
+    paragraph kept with the next: a page never holds its last line alone)."""
     from docx.enum.text import WD_ALIGN_PARAGRAPH
 
-    word.add_paragraph()
+    block = [word.add_paragraph()]
     for line in lines:
-        word.add_paragraph(line).alignment = WD_ALIGN_PARAGRAPH.RIGHT
-    for _ in range(4):
-        word.add_paragraph()
+        block.append(word.add_paragraph(line))
+        block[-1].alignment = WD_ALIGN_PARAGRAPH.RIGHT
+    block += [word.add_paragraph() for _ in range(4)]
+    for paragraph in block[:-1]:
+        paragraph.paragraph_format.keep_with_next = True

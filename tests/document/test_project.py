@@ -186,6 +186,12 @@ def test_the_word_copy_holds_the_same_report(tmp_path: Path) -> None:
 
     ratio = re.search(r"<td class=\"num\">(0,\d{4})</td>", text)
     assert ratio is not None and ratio.group(1) in cells
+    # The signature block stays on one page: each of its paragraphs kept with the next, from
+    # the blank line before the place and date to the room for the stamp.
+    texts = [p.text for p in word.paragraphs]
+    first = next(i for i, t in enumerate(texts) if "Ing. Maria Rossi" in t) - 3
+    block = word.paragraphs[first : first + 8]
+    assert all(p.paragraph_format.keep_with_next for p in block[:-1]), [p.text for p in block]
 
 
 @pytest.mark.skipif(not (ROOT.parent / "shared" / "ntc" / "AllegatoB.txt").is_file(),
