@@ -126,8 +126,15 @@ def retrofit(model_path, record_path, record_format, dt, units, scale, pga, name
     code_demand = demand_without_record(record_path, code_demand)
     plan, model = retrofit_plan(model_path, name, at, length, diameters, grade, count)
     if code_demand == "model":
-        from rockcli.analyses.compare import check_code_demand
+        from rockcli.analyses.compare import check_code_demand, code_sets_demand
 
+        if record_path is None and not code_sets_demand(model):
+            from rockcli.errors import InputError
+
+            raise InputError("the model sets no code spectrum ([ntc.demand] or [ntc.site]) to "
+                             "size the rod on", file=model_path, where="ntc",
+                             allowed="[ntc.demand.SLD/SLV/SLC] or [ntc.site] in the model, or "
+                             "--record FILE")  # fmt: skip
         check_code_demand(model, code_demand, file=model_path)
     check_outputs(force, plot=plot_path)
     record = None

@@ -130,7 +130,7 @@ def scenario_blocks(doc: Mapping[str, Any], w: Words, single: bool) -> list[Bloc
     blocks.append(Paragraph(w(f"concl.rocking_{rocking['verdict']}",
                               ratio=n(rocking["max_ratio"], "{:.3f}"))))  # fmt: skip
     blocks.append(Paragraph(w(f"class.{doc['classification']}"), "verdict"))
-    if single and in_papers_range(rocking["model"]):
+    if single and in_papers_range(rocking):
         blocks.append(Paragraph(w(f"concl.paper_{doc['classification']}")))
     blocks += [restrainer_sentence(c, w) for c in rocking.get("restrainer_checks", ())]
     others = unsafe_mechanisms(doc)
@@ -151,10 +151,14 @@ PAPER_ALPHA_RAD = (0.05, 0.25)
 PAPER_TOLERANCE = 0.01
 
 
-def in_papers_range(model: Mapping[str, Any]) -> bool:
-    """Whether a rocked model (the rocking JSON's ``model``) is a block the paper's systemic
-    study covers: one free-standing rectangular block (no chain, load, thrust or restrainer)
-    with R and α within the study's range, so its 100 cases speak for it."""
+def in_papers_range(rocking: Mapping[str, Any]) -> bool:
+    """Whether a rocked element (a `rock assess` document: its ``model`` and ``mechanism``) is
+    a block the paper's systemic study covers: a block file's one free-standing rectangular
+    block rocking on both sides (not a wall's mechanism; no chain, load, thrust or
+    restrainer) with R and α within the study's range, so its 100 cases speak for it."""
+    model = rocking["model"]
+    if rocking.get("mechanism") is not None or model.get("sides") != "two":
+        return False
     if model.get("chain") or model.get("loads") or model.get("thrusts") or model.get("restrainers"):
         return False
 
@@ -203,8 +207,8 @@ def suite_conclusions_section(
     """The conclusions of a suite's report: the verification on the model's own spectra when
     it has one (rockcli.document.verification), the code's risk index per limit state on the
     suite's target, the suite's time histories by the code's rule (NTC 2018 §7.3.5), the
-    classification, the reference paper's finding for a block of its range (``rocked``: the
-    rocked model, as `rock assess` writes it) and what to do next (an intervention when the
+    classification, the reference paper's finding for a block of its range (``rocked``: a
+    record's `rock assess` document) and what to do next (an intervention when the
     verification or the suite fails), and the tie-rod's sizing when asked (``sizing``: "not
     needed", a Sizing, or None)."""
     from rockcli.document.verification import verification_blocks

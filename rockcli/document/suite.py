@@ -137,7 +137,7 @@ def suite_sections(part: SuitePart, w: Words) -> list[Section]:
         rekeyed_once(kinematic_section(part.kinematic, doc["kinematic"], w), part),
         suite_rocking_section(doc, records, w),
         suite_comparison_section(doc, w, named(doc, records)),
-        suite_conclusions_section(doc, w, part.verification, first["model"], part.sizing),
+        suite_conclusions_section(doc, w, part.verification, first, part.sizing),
     ]
 
 

@@ -217,8 +217,9 @@ def retrofit_report(doc: dict[str, Any], details: bool = False) -> Report:
     if record is None:
         notes = [f"{doc['count']} bar(s) of {doc['grade']} per diameter; the code check alone "
                  f"(no --record, no time history): each mechanism's code ULS on {demand}, the "
-                 "rod acting with its design strength; restrained: on it, and not slack on the "
-                 "side its code check governs"]  # fmt: skip
+                 "rod acting as the code check takes it (a tie-rod: its design strength), its "
+                 "anchor checked (γov·A·fy, NTC 2018 §7.5.1); restrained: on it, and not slack "
+                 "on the side its code check governs"]  # fmt: skip
     else:
         notes = [
             f"{doc['count']} bar(s) of {doc['grade']} per diameter; each mechanism's code ULS "

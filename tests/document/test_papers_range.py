@@ -15,7 +15,8 @@ from rockcli.document.conclusions import in_papers_range
 
 ROOT = Path(__file__).resolve().parents[2]
 PULSE = ROOT / "records" / "ricker_Tp0.5s_0.5g.txt"
-FREE = {"R": 3.5, "alpha": 0.10, "chain": None, "loads": [], "thrusts": [], "restrainers": []}
+FREE = {"R": 3.5, "alpha": 0.10, "sides": "two", "chain": None, "loads": [], "thrusts": [],
+        "restrainers": []}  # fmt: skip
 
 
 @pytest.mark.parametrize(
@@ -31,10 +32,18 @@ FREE = {"R": 3.5, "alpha": 0.10, "chain": None, "loads": [], "thrusts": [], "res
         ({"restrainers": [{"name": "tie-rod"}]}, False),  # not free-standing
         ({"loads": [{"name": "floor"}]}, False),
         ({"chain": {"bodies": 2}}, False),  # a chain of bodies is not the paper's block
+        ({"sides": "one"}, False),  # one-sided (a façade against its return walls)
     ],
 )
 def test_the_papers_range(change: dict, covered: bool) -> None:
-    assert in_papers_range({**FREE, **change}) is covered
+    assert in_papers_range({"model": {**FREE, **change}, "mechanism": None}) is covered
+
+
+def test_a_walls_mechanism_is_not_the_papers_block() -> None:
+    # A wall's overturning mechanism rocks as one body whose R and α may fall in the range;
+    # its section is the wall's (stepped storeys), not the study's rectangle.
+    rocked = {"model": FREE, "mechanism": {"name": "overturning", "type": "overturning"}}
+    assert not in_papers_range(rocked)
 
 
 def conclusions(model: Path, tmp_path: Path) -> str:

@@ -122,6 +122,58 @@ def test_no_page_is_left_half_empty(facade: tuple[str, bytes]) -> None:
     assert max(gaps.values()) < 0.3, gaps
 
 
+def places(pdf: object, text: str) -> list[tuple[int, float]]:
+    """(page, minus the top of its first character) of every occurrence of the text, in
+    reading order (a later page, or lower on the page, sorts after)."""
+    found = []
+    for number in range(len(pdf)):  # type: ignore[arg-type]
+        page = pdf[number].get_textpage()  # type: ignore[index]
+        search = page.search(text)
+        while (hit := search.get_next()) is not None:
+            found.append((number, -page.get_charbox(hit[0])[3]))
+    assert found, f"not in the PDF: {text}"
+    return sorted(found)
+
+
+@pytest.fixture(scope="module")
+def strong_wall(tmp_path_factory: pytest.TempPathFactory) -> tuple[str, bytes]:
+    """The two-storey façade with every ag doubled (its verification fails), HTML and PDF:
+    pages where a figure placed at a page's top rose above its section's heading."""
+    pytest.importorskip("typst", reason="the report extra (typst) is not installed")
+    folder = tmp_path_factory.mktemp("strong")
+    text = (ROOT / "examples" / "two-storey-facade.toml").read_text(encoding="utf-8")
+    for ag in ("0.06", "0.15", "0.19"):
+        text = text.replace(f"ag = {ag}", f"ag = {2 * float(ag):g}")
+    model = folder / "strong.toml"
+    model.write_text(text, encoding="utf-8")
+    html, pdf = folder / "r.html", folder / "r.pdf"
+    code, _, err = run(str(model), "-o", str(html), "--pdf", str(pdf), "--casebook", "none")
+    assert code == 0, err
+    return html.read_text(encoding="utf-8"), pdf.read_bytes()
+
+
+@pytest.mark.parametrize("which", ["facade", "strong_wall"])
+def test_no_figure_rises_above_its_sections_heading(
+    which: str, request: pytest.FixtureRequest
+) -> None:
+    # Figures float to the bottom of a page: each caption comes after its section's heading
+    # (a later page, or lower on the same page), never above it.
+    pdfium = pytest.importorskip("pypdfium2", reason="pypdfium2 (test extra) is not installed")
+    html, data = request.getfixturevalue(which)
+    pdf = pdfium.PdfDocument(data)
+    checked = 0
+    for section in re.findall(r"<section id=.*?</section>", html, flags=re.S):
+        heading = re.search(r"<h2[^>]*>(\d+)\. ([^<]{1,30})", section)
+        if heading is None:
+            continue
+        # The heading's last occurrence: the index on the first page lists it too.
+        where = places(pdf, f"{heading.group(1)}. {heading.group(2)}")[-1]
+        for number in re.findall(r"<figcaption>Figura (\d+)\.", section):
+            assert places(pdf, f"Figura {number}:")[0] > where, (number, heading.group(0))
+            checked += 1
+    assert checked >= len(FIGURES)
+
+
 def test_the_english_report(tmp_path: Path) -> None:
     html = tmp_path / "altar.html"
     code, _, err = run(str(ALTAR), "--record", str(PULSE), "-o", str(html), "--lang", "en")

@@ -70,6 +70,39 @@ def test_the_terminal_table_has_no_time_history_columns(strong: Path) -> None:
     assert "θ/α" not in out and "peak force" not in out
 
 
+def test_the_plot_and_the_details_without_a_record(strong: Path, tmp_path: Path) -> None:
+    pytest.importorskip("matplotlib", reason="the plot extra (matplotlib) is not installed")
+    png = tmp_path / "r.png"
+    code, out, err = run("retrofit", str(strong), "--details", "--plot", str(png))
+    assert code == 0, err
+    assert png.stat().st_size > 0 and "each mechanism with each diameter" in out
+    assert "elongation" not in out and "θ/α" not in out
+
+
+def test_the_anchor_is_checked_without_a_record(strong: Path, tmp_path: Path) -> None:
+    # γov·A·fy needs no time history: an anchor of 90 kN takes a Ø20 S275 bar (γov·A·fy =
+    # 1.25 × 314.16 mm² × 275 MPa = 108.0 kN) no more, with or without a record.
+    model = tmp_path / "anchored.toml"
+    text = strong.read_text(encoding="utf-8")
+    text = text.replace('kind = "tie-rod"\n', 'kind = "tie-rod"\nanchor_capacity = 90e3\n')
+    assert "anchor_capacity" in text
+    model.write_text(text, encoding="utf-8")
+    code, out, err = run("retrofit", str(model), "--diameters", "16,20", "--format", "json")
+    assert code == 0, err
+    rows = {r["diameter_mm"]: r for r in json.loads(out)["candidates"]}
+    held = [m for m in rows[20.0]["mechanisms"] if m["on_mechanism"]]
+    assert held and all(m["anchor"]["passed"] is False for m in held)
+    assert all(m["status"] == "fails" for m in held)
+    assert 1.25 * 3.14159265 * 0.010**2 * 275e6 == pytest.approx(108.0e3, rel=1e-3)
+    assert all(m["anchor"]["demand"] == pytest.approx(108.0e3, rel=1e-3) for m in held)
+
+
+def test_a_model_without_spectra_needs_a_record() -> None:
+    code, _, err = run("retrofit", str(ROOT / "examples" / "facade.toml"))
+    assert code == 2 and err.count("\n") == 1, err
+    assert "sets no code spectrum" in err and "--record FILE" in err
+
+
 @pytest.mark.parametrize(
     ("args", "words"),
     [
@@ -101,7 +134,9 @@ def test_the_filing_report_sizes_the_rod_on_the_sites_spectra(
     found = re.search(r"by the code check alone[^<]*?is Ø(\d+) mm", text)
     assert found is not None, text
     assert float(found.group(1)) == sized["chosen"]["diameter_mm"]
-    assert "time histor" not in text.split("by the code check alone")[1].split(".")[0][:40]
+    # The code check alone: nothing said of a time history the sizing did not run.
+    sentence = text[text.index("Intervention (sizing") :]
+    assert "does not overturn" not in sentence and "under the same record" not in sentence
 
 
 def test_a_suites_report_sizes_the_rod_on_the_verifications_spectra(
@@ -121,3 +156,13 @@ def test_a_suites_report_sizes_the_rod_on_the_verifications_spectra(
     assert found is not None, text
     assert float(found.group(1)) == sized["chosen"]["diameter_mm"]
     assert "and with it the suite" in text  # its time histories to run again
+
+
+def test_a_suites_report_without_own_spectra_says_why_no_rod(tmp_path: Path) -> None:
+    # rockcli.document.run.suite_sizing: no verification (the model sets no code spectrum):
+    # the rod is not sized, and the reason says so (no analysis needed to find that).
+    from rockcli.analyses.choices import Analyses
+    from rockcli.document.run import suite_sizing
+
+    sizing = suite_sizing(str(ROOT / "examples" / "facade.toml"), None, {}, Analyses(), None)
+    assert not sizing.diameters_mm and sizing.reason.key == "retro_no_spectra"

@@ -75,3 +75,28 @@ def test_none_in_the_range_names_what_fails_at_the_largest() -> None:
 
 def test_no_candidate() -> None:
     assert choose([]) == (None, "no diameter tried")
+
+
+def mechanism(**changes: Any) -> dict[str, Any]:
+    """A wall's mechanism row that the rod does not restrain and that passes."""
+    base = {"name": "gable", "mechanism": "gable", "on_mechanism": False, "restrained": False,
+            "code_uls_passed": True, "code_zeta": 1.2, "rocking": None, "max_ratio": None,
+            "overturned": False, "ruptured": False, "utilisation": None,
+            "status": "safe"}  # fmt: skip
+    return {**base, **changes}
+
+
+def test_a_rod_on_nothing_where_nothing_fails_is_not_needed() -> None:
+    # Every diameter passes (nothing fails): the smallest is chosen, the rod not needed, and
+    # --fail-if-none has nothing to fail on.
+    rows = [row(10, mechanisms=[mechanism()]), row(12, mechanisms=[mechanism()])]
+    chosen, reason = choose(rows)
+    assert chosen is rows[0]
+    assert "no mechanism fails and the rod restrains none" in reason
+
+
+def test_code_alone_says_so() -> None:
+    rows = [row(10, mechanisms=[mechanism(on_mechanism=True, restrained=True)])]
+    chosen, reason = choose(rows, rocked=False)
+    assert chosen is rows[0] and "the code check alone: no record" in reason
+    assert "survives" not in reason

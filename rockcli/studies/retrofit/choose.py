@@ -124,9 +124,11 @@ def choose(
     restrained = any(m["restrained"] for r in rows for m in r.get("mechanisms", ()))
     if rows[0].get("mechanisms") is not None and not restrained:
         names = [f"'{n}'" for n in others(rows[-1])]
-        if not names:
-            return None, Note("retro_restrains_none_safe", "the rod restrains none of the "
-                              "mechanisms, and none needs it")  # fmt: skip
+        if not names:  # nothing fails: any diameter does, the smallest first
+            return rows[0], Note("retro_restrains_none_safe", "no mechanism fails and the rod "
+                                 "restrains none: the smallest diameter tried, Ø{d:g} mm, is "
+                                 "as good as any (the rod is not needed)",
+                                 d=float(rows[0]["diameter_mm"]))  # fmt: skip
         return None, Note("retro_restrains_none", "the rod restrains none of the mechanisms "
                           "(each needs another intervention where it fails: {names})",
                           names=Items(names, ", "))  # fmt: skip
@@ -149,13 +151,14 @@ def chosen_note(row: dict[str, Any], rocked: bool) -> Note:
     if not rocked:
         if names:
             return Note("retro_chosen_code_others", "Ø{d:g} mm is the smallest diameter for "
-                        "which the code ULS of every mechanism the rod restrains passes (the "
-                        "code check alone: no record, no time history); another intervention "
+                        "which the code ULS of every mechanism the rod restrains passes and "
+                        "its anchor holds (the code check alone: no record, no time history); "
+                        "another intervention "
                         "is needed for: {names}", d=d,
                         names=Items([f"'{n}'" for n in names], ", "))  # fmt: skip
         return Note("retro_chosen_code", "Ø{d:g} mm is the smallest diameter for which the "
-                    "code ULS of every mechanism passes (the code check alone: no record, no "
-                    "time history)", d=d)  # fmt: skip
+                    "code ULS of every mechanism passes and the rod's anchor holds (the code "
+                    "check alone: no record, no time history)", d=d)  # fmt: skip
     if names:
         return Note("retro_chosen_others", "Ø{d:g} mm is the smallest diameter that makes safe "
                     "every mechanism the rod restrains (the code ULS passes, it survives, the "
@@ -163,9 +166,9 @@ def chosen_note(row: dict[str, Any], rocked: bool) -> Note:
                     names=Items([f"'{n}'" for n in names], ", "))  # fmt: skip
     if wall:
         return Note("retro_chosen_wall", "Ø{d:g} mm is the smallest diameter for which every "
-                    "mechanism passes the code ULS and survives the time history, and the rod "
-                    "neither ruptures nor exceeds its strength, its ductility or its anchor's "
-                    "capacity", d=d)  # fmt: skip
+                    "mechanism passes the code ULS, every one the rod is on survives the time "
+                    "history, and the rod neither ruptures nor exceeds its strength, its "
+                    "ductility or its anchor's capacity", d=d)  # fmt: skip
     return Note("retro_chosen", "Ø{d:g} mm is the smallest diameter for which the code ULS "
                 "passes, the block survives and the rod neither ruptures nor exceeds its "
                 "strength, its ductility or its anchor's capacity", d=d)  # fmt: skip

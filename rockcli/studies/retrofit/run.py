@@ -183,8 +183,10 @@ def rocked_columns(
                                   "overturned": False,
                   "broken_runs": [], "max_force": None, "utilisation": None, "ductility": None,
                   "anchor": None, "ruptured": False}  # fmt: skip
-    if not on_it or record is None:
+    if not on_it:
         return not_rocked
+    if record is None:  # the code check alone: the rod's anchorage needs no time history
+        return {**not_rocked, "anchor": static_anchor(model, plan.index)}
     from rockcli.analyses.assess import assess_model_output
     from rockcli.errors import InputError
 
@@ -198,6 +200,20 @@ def rocked_columns(
         return {**not_rocked, "not_rocked": exc.render().removeprefix("error: ")}
     return {"input": "ground" if out.floor is None else "floor",
             **rocking_columns(out, member_index(out, plan.name))}  # fmt: skip
+
+
+def static_anchor(model: Any, index: int) -> dict[str, Any] | None:
+    """The rod's anchorage check (capacity design, γov·A·fy against the anchor's capacity:
+    rockcli.codecheck.tie.anchorage), which no time history decides; None when the rod is not
+    a bar of known steel."""
+    from rockcli.analyses.strength import verification_document
+    from rockcli.codecheck.tie import anchorage
+    from rockcli.model.derive import to_restrainer
+
+    rod = to_restrainer(model, index)
+    if rod.overstrength <= 0:
+        return None
+    return verification_document(anchorage(rod.overstrength, rod.anchor_capacity))
 
 
 def member_index(out: AssessmentOutput, name: str) -> int | None:
@@ -359,7 +375,7 @@ def size_rod(
         rows = run_retrofit(
             plan, record, lanes, analyses, code_demand=code_demand, grid_file=grid_file
         )
-    chosen, reason = choose(rows)
+    chosen, reason = choose(rows, rocked=record is not None)
     installed = model.restrainers[rods[0]].diameter
     shown = chosen or (rows[-1] if rows else {})
     return Sizing(reason, plan.name, plan.grade, plan.count, plan.diameters_mm, chosen,
