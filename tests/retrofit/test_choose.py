@@ -100,3 +100,10 @@ def test_code_alone_says_so() -> None:
     chosen, reason = choose(rows, rocked=False)
     assert chosen is rows[0] and "the code check alone: no record" in reason
     assert "survives" not in reason
+
+
+def test_a_rod_that_restrains_nothing_where_something_fails_is_no_choice() -> None:
+    # The rod on the mechanism but slack on the side it fails on, overturning: no diameter.
+    failing = mechanism(on_mechanism=True, overturned=True, rocking="overturns", status="fails")
+    chosen, reason = choose([row(10, mechanisms=[failing])])
+    assert chosen is None and "'gable'" in reason

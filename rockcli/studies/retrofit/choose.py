@@ -123,7 +123,7 @@ def choose(
         return None, Note("retro_none_tried", "no diameter tried")
     restrained = any(m["restrained"] for r in rows for m in r.get("mechanisms", ()))
     if rows[0].get("mechanisms") is not None and not restrained:
-        names = [f"'{n}'" for n in others(rows[-1])]
+        names = [f"'{m['name']}'" for m in rows[-1]["mechanisms"] if m["status"] != SAFE]
         if not names:  # nothing fails: any diameter does, the smallest first
             return rows[0], Note("retro_restrains_none_safe", "no mechanism fails and the rod "
                                  "restrains none: the smallest diameter tried, Ø{d:g} mm, is "
