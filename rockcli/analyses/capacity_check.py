@@ -13,7 +13,7 @@ from typing import Any
 
 from rockcli.codecheck import rules2009, rules2019
 from rockcli.codecheck.demand import LimitStateDemand
-from rockcli.codecheck.kinematic import Capacity, curve_points
+from rockcli.codecheck.kinematic import Capacity, CapacityCurve
 from rockcli.codecheck.position import Position
 from rockcli.codecheck.restrainer_check import nonlinear_displacement_demand, restrainer_actions
 from rockcli.codecheck.result import Check, KinematicResult, Location
@@ -167,7 +167,7 @@ def analyse_capacity(
         linear_curve=cap.linear,
         quantities=values,
         checks=tuple(checks),
-        curve=tuple(curve_points(cap)),
+        curve=CapacityCurve(cap),
         demand={
             ls: with_spectral_values(demand_numbers(d), d, pos, values, ls, checks)
             for ls, d in dem.items()

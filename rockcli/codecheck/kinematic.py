@@ -16,7 +16,9 @@ Pure and silent: only :mod:`math` and :mod:`rockcli.mechanics`.
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 from dataclasses import dataclass, replace
+from functools import cached_property
 
 from rockcli.codecheck.free import branch_acceleration, branch_end
 from rockcli.codecheck.result import WorkTerm
@@ -81,6 +83,16 @@ class Mechanism:
     def placement(self, index: int) -> Polar | ChainPoint:
         """Restrainer ``index``'s point: its elongation and moment along the rotation."""
         return self.view.placement(index)
+
+    @cached_property
+    def loss_rotations(self) -> tuple[float, ...]:
+        """Each restrainer's :func:`loss_rotation` on this side [rad] (inf: never lost), found
+        once: the capacity curve asks for it at every rotation it evaluates."""
+        return tuple(
+            loss_rotation(sp, self.side, self.placement(i)) if can_be_lost(sp, self.side)
+            else math.inf
+            for i, sp in enumerate(self.restrainers)
+        )  # fmt: skip
 
 
 def alpha0(mech: Mechanism) -> float:
@@ -312,7 +324,8 @@ def _spring_moments(mech: Mechanism, theta: float, sure_only: bool, intact: bool
         if sure_only and lost:
             continue
         place = mech.placement(i)
-        if lost and not intact and theta > loss_rotation(sp, mech.side, place):
+        # A loss rotation is ≥ 0: at rest (α0) no member is lost, and none is sought.
+        if lost and not intact and theta > 0.0 and theta > mech.loss_rotations[i]:
             continue
         total += restrainer_moment(sp, mech.side, theta, place)
     return total
@@ -500,6 +513,36 @@ def elastic_rows(cap: Capacity) -> list[dict[str, float]]:
         return []
     return [{"theta": 0.0, "d_k": 0.0, "d_star": 0.0, "alpha": 0.0, "alpha_sure": 0.0,
              "a_star": 0.0}]  # fmt: skip
+
+
+class CapacityCurve(Sequence[dict[str, float]]):
+    """The capacity curve's rows (:func:`curve_points`), computed when first read: a study's
+    row, a retrofit's candidate and the verdicts read none of them, and each costs a dozen
+    inversions of the chain's motion."""
+
+    def __init__(self, cap: Capacity) -> None:
+        self._cap = cap
+        self._rows: tuple[dict[str, float], ...] | None = None
+
+    def rows(self) -> tuple[dict[str, float], ...]:
+        """Every row, computed once."""
+        if self._rows is None:
+            self._rows = tuple(curve_points(self._cap))
+        return self._rows
+
+    def __getitem__(self, index):
+        return self.rows()[index]
+
+    def __len__(self) -> int:
+        return len(self.rows())
+
+    def __eq__(self, other: object) -> bool:
+        return isinstance(other, Sequence) and tuple(self) == tuple(other)
+
+    __hash__ = None  # type: ignore[assignment]
+
+    def __repr__(self) -> str:
+        return f"CapacityCurve({'not computed' if self._rows is None else len(self._rows)})"
 
 
 def curve_points(cap: Capacity, n: int = 11) -> list[dict[str, float]]:

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from dataclasses import dataclass, field
 from enum import StrEnum
 from typing import TYPE_CHECKING, Any
@@ -154,7 +155,8 @@ class KinematicResult:
     linear_curve: bool
     quantities: dict[str, float | None]
     checks: tuple[Check, ...]
-    curve: tuple[dict[str, float], ...]
+    #: A sequence of rows (a codecheck.kinematic.CapacityCurve computes them when read).
+    curve: Sequence[dict[str, float]]
     demand: dict[str, object]
     notes: tuple[str, ...] = field(default_factory=tuple)
     alpha0_by_side: dict[str, float] = field(default_factory=dict)

@@ -325,17 +325,24 @@ HINGE_REFINE = 60
 
 def optimal_hinge(lo: float, hi: float, alpha0: Callable[[float], float]) -> float:
     """The hinge height in [lo, hi] that minimises ``alpha0``: the lowest of a uniform scan,
-    refined by golden-section search between its neighbours."""
+    refined by golden-section search between its neighbours (each step evaluates one new
+    point: the other is the previous step's, kept)."""
     zs = [lo + (hi - lo) * k / (HINGE_SCAN - 1) for k in range(HINGE_SCAN)]
     values = [alpha0(z) for z in zs]
     k = min(range(HINGE_SCAN), key=values.__getitem__)
     a, b = zs[max(k - 1, 0)], zs[min(k + 1, HINGE_SCAN - 1)]
     ratio = (math.sqrt(5.0) - 1.0) / 2.0
-    for _ in range(HINGE_REFINE):
-        c, d = b - ratio * (b - a), a + ratio * (b - a)
-        if alpha0(c) <= alpha0(d):
-            b = d
-        else:
-            a = c
+    c, d = b - ratio * (b - a), a + ratio * (b - a)
+    fc, fd = alpha0(c), alpha0(d)
+    for _ in range(HINGE_REFINE - 1):
+        if fc <= fd:  # the minimum in [a, d]: d becomes c's place, c is new
+            b, d, fd = d, c, fc
+            c = b - ratio * (b - a)
+            fc = alpha0(c)
+        else:  # in [c, b]
+            a, c, fc = c, d, fd
+            d = a + ratio * (b - a)
+            fd = alpha0(d)
+    b, a = (d, a) if fc <= fd else (b, c)
     best = 0.5 * (a + b)
     return best if alpha0(best) <= values[k] else zs[k]
