@@ -15,6 +15,7 @@ import math
 import re
 import weakref
 from collections.abc import Callable, Mapping, Sequence
+from contextvars import ContextVar
 from typing import TYPE_CHECKING, Any
 
 from rockcli.document.words import Words
@@ -70,17 +71,22 @@ def decimal_ticks(fig: MplFigure) -> None:
 
 #: Resolution of a figure's PNG (the Word copy) [dots per inch].
 PNG_DPI = 200
+#: Whether the report being built needs each figure as PNG (its Word copy): a report without
+#: --docx does not draw them (a second rendering of every figure). Set by
+#: rockcli.document.run for the report it builds.
+PNG_WANTED: ContextVar[bool] = ContextVar("png_wanted", default=True)
 
 
 def rendered(fig: MplFigure) -> tuple[str, bytes]:
-    """The figure as inline SVG (:func:`svg_markup`) and as PNG (PNG_DPI), the figure then
-    cleared."""
+    """The figure as inline SVG (:func:`svg_markup`) and as PNG (PNG_DPI; empty when the
+    report has no Word copy, PNG_WANTED), the figure then cleared."""
     from rockcli.plots.files import clean_texts
 
     clean_texts(fig)
     decimal_ticks(fig)
     buffer = io.BytesIO()
-    fig.savefig(buffer, format="png", dpi=PNG_DPI, metadata={"Software": None})
+    if PNG_WANTED.get():
+        fig.savefig(buffer, format="png", dpi=PNG_DPI, metadata={"Software": None})
     return svg_markup(fig), buffer.getvalue()
 
 

@@ -115,9 +115,21 @@ def write_report(
             )
         parts.append(Part(inputs, out, doc, others, sizing, verification))
         step()
-    document = build_document(parts, lang)
+    document = built(lambda: build_document(parts, lang), docx_path is not None)
     verdict = ", ".join(part_verdict(part) for part in parts)
     return write_document(document, html_path, pdf_path, verdict, docx_path, step)
+
+
+def built(build: Callable[[], Any], word: bool) -> Any:
+    """``build()``'s document, its figures drawn as PNG too only for a Word copy (``word``:
+    rockcli.document.figures.PNG_WANTED)."""
+    from rockcli.document.figures import PNG_WANTED
+
+    token = PNG_WANTED.set(word)
+    try:
+        return build()
+    finally:
+        PNG_WANTED.reset(token)
 
 
 class Steps:
@@ -371,7 +383,7 @@ def write_suite_report(
         sizing = suite_sizing(path, verification, doc, analyses, grid_file) if retrofit else None
         parts.append(SuitePart(inputs, doc, suite_document(loaded.check), runs, kin,
                                verification, sizing))  # fmt: skip
-    document = build_suite_document(parts, lang)
+    document = built(lambda: build_suite_document(parts, lang), docx_path is not None)
     verdict = ", ".join(str(part.doc["classification"]) for part in parts)
     return write_document(document, html_path, pdf_path, verdict, docx_path)
 

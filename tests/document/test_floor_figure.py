@@ -180,3 +180,24 @@ def test_a_suites_report_at_height_has_the_floor_spectra(tmp_path: Path) -> None
     page = out.read_text(encoding="utf-8")
     assert 'id="figure-floor_spectra"' in page
     assert "each record&#39;s floor motion at Z" in page
+
+
+def test_a_figure_is_drawn_as_png_only_for_a_word_copy() -> None:
+    # rockcli.document.run.built: a report without --docx does not render its figures twice.
+    pytest.importorskip("matplotlib", reason="the report extra (matplotlib) is not installed")
+    from rockcli.document.figures import PNG_WANTED, new_figure, rendered
+    from rockcli.document.words import Words
+
+    def drawn() -> tuple[str, bytes]:
+        fig = new_figure(3.0, 2.0, Words("en"))
+        fig.subplots().plot([0, 1], [0, 1])
+        return rendered(fig)
+
+    token = PNG_WANTED.set(False)
+    try:
+        svg, png = drawn()
+    finally:
+        PNG_WANTED.reset(token)
+    assert svg.startswith("<svg") and png == b""
+    svg, png = drawn()  # the default: a Word copy may want it
+    assert png.startswith(b"\x89PNG")
