@@ -26,13 +26,13 @@ UTILISATION_LIMIT = 1.0
 
 def failures(row: dict[str, Any]) -> list[Note]:
     """Why a candidate does not pass (empty: it passes), one phrase per criterion: the code's
-    (:func:`code_failures`), the rod not on the governing mechanism, the time history's and
+    (:func:`code_failures`), the rod not on the mechanism, the time history's and
     the rod's (:func:`history_failures`)."""
     why = code_failures(row)
     mechanism = row.get("mechanism")
     if mechanism and not row.get("on_mechanism", True):
-        why.append(Note("retro_not_on", "the rod is not on the governing mechanism "
-                        "'{mechanism}'", mechanism=mechanism))  # fmt: skip
+        why.append(Note("retro_not_on", "the rod is not on the mechanism '{mechanism}'",
+                        mechanism=mechanism))  # fmt: skip
     return why + history_failures(row)
 
 
