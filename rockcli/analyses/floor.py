@@ -10,7 +10,11 @@ check uses (:func:`rockcli.codecheck.position.position`).
 
 from __future__ import annotations
 
+import threading
+from collections import OrderedDict
 from dataclasses import dataclass, replace
+
+import numpy as np
 
 from rockcli.codecheck.floor import floor_motion
 from rockcli.codecheck.position import position
@@ -65,11 +69,32 @@ def model_floor(model: Model) -> Floor | None:
     return Floor(Z=b.Z, T1=pos.T1, psi=pos.psi, gamma=pos.gamma, xi=b.damping, notes=pos.notes)
 
 
+#: Floor motions a process keeps (:func:`floor_record`): a study's cases, a retrofit's
+#: diameters and a report's mechanisms at one height filter the same record the same way.
+FLOORS_KEPT = 8
+_floors: OrderedDict[tuple[int, float, float, float, float], tuple[Record, np.ndarray]] = (
+    OrderedDict()
+)
+_floors_lock = threading.Lock()
+
+
 def floor_record(rec: Record, floor: Floor) -> Record:
-    """The record's floor motion as a Record whose name and notes say how it was made."""
-    accel = floor_motion(
-        rec.time, rec.accel, T1=floor.T1, psi=floor.psi, gamma=floor.gamma, xi=floor.xi
-    )
+    """The record's floor motion as a Record whose name and notes say how it was made (the
+    motion filtered once per record object and floor in a process, kept read-only)."""
+    key = (id(rec), floor.T1, floor.psi, floor.gamma, floor.xi)
+    with _floors_lock:
+        kept = _floors.get(key)
+    if kept is not None and kept[0] is rec:
+        accel = kept[1]
+    else:
+        accel = floor_motion(
+            rec.time, rec.accel, T1=floor.T1, psi=floor.psi, gamma=floor.gamma, xi=floor.xi
+        )
+        accel.setflags(write=False)
+        with _floors_lock:
+            _floors[key] = (rec, accel)  # the record kept alive: its id stays its own
+            while len(_floors) > FLOORS_KEPT:
+                _floors.popitem(last=False)
     note = Note("floor_from", "{floor}, from the ground record {record}", floor=floor.label,
                 record=rec.name)  # fmt: skip
     name = f"{rec.name} floor" if floor.Z is None else f"{rec.name} at Z = {floor.Z:g} m"
