@@ -84,6 +84,8 @@ def floor_record(rec: Record, floor: Floor) -> Record:
     key = (id(rec), floor.T1, floor.psi, floor.gamma, floor.xi)
     with _floors_lock:
         kept = _floors.get(key)
+        if kept is not None:
+            _floors.move_to_end(key)  # the least recently used dropped first
     if kept is not None and kept[0] is rec:
         accel = kept[1]
     else:

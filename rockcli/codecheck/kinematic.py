@@ -324,11 +324,20 @@ def _spring_moments(mech: Mechanism, theta: float, sure_only: bool, intact: bool
         if sure_only and lost:
             continue
         place = mech.placement(i)
-        # A loss rotation is ≥ 0: at rest (α0) no member is lost, and none is sought.
-        if lost and not intact and theta > 0.0 and theta > mech.loss_rotations[i]:
+        if lost and not intact and lost_at(mech, i, place, theta):
             continue
         total += restrainer_moment(sp, mech.side, theta, place)
     return total
+
+
+def lost_at(mech: Mechanism, index: int, place: Polar | ChainPoint, theta: float) -> bool:
+    """Whether restrainer ``index`` is lost at rotation θ: past its loss rotation. A chain's
+    loss rotation is never negative (ChainSide.invert gives 0 for an elongation ≤ 0), so at
+    rest or before it none is sought (each costs an inversion of the chain's motion); a
+    block's can be (a bar already broken by its pretension), and is always compared."""
+    if theta <= 0.0 and isinstance(place, ChainPoint):
+        return False
+    return theta > mech.loss_rotations[index]
 
 
 def load_multiplier(
