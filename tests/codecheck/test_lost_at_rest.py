@@ -10,8 +10,10 @@ from pathlib import Path
 from click.testing import CliRunner
 
 from rockcli.cli.main import cli
+from tests.demand import SOIL_A_FLAT
 
-MODEL = """\
+MODEL = (
+    """\
 name = "lost at rest"
 kind = "wall"
 [geometry]
@@ -36,19 +38,9 @@ code_action = "spring"
 edition = "2009"
 FC = 1.0
 soil = "A"
-[ntc.demand.SLD]
-ag = 0.05
-F0 = 2.5
-Tc_star = 0.3
-[ntc.demand.SLV]
-ag = 0.15
-F0 = 2.5
-Tc_star = 0.3
-[ntc.demand.SLC]
-ag = 0.2
-F0 = 2.5
-Tc_star = 0.3
 """
+    + SOIL_A_FLAT
+)
 
 
 def test_a_member_lost_at_rest_is_not_in_alpha0(tmp_path: Path) -> None:
