@@ -10,7 +10,7 @@ that side by construction when no restrainer enters as a force. A restrainer ent
 ``code_action`` says: a constant stabilising force (a tie-rod's design strength) or a spring
 with its pretension, capped at its strength; either until it is lost.
 
-Pure and silent: only :mod:`math` and :mod:`rockcli.mechanics`.
+Pure and silent: only :mod:`math`, :mod:`rockcli.mechanics` and :mod:`rockcli.searches`.
 """
 
 from __future__ import annotations
@@ -25,13 +25,12 @@ from rockcli.codecheck.result import WorkTerm
 from rockcli.mechanics import Restrainer, WorkItem
 from rockcli.mechanisms.block import BlockSide, Polar, polar_of
 from rockcli.mechanisms.side import ChainPoint, ChainSide
+from rockcli.searches import brent_root
 
 #: Rotation searched for the zero of the capacity curve [rad]: beyond π/2 the block is flat.
 THETA_MAX = math.pi / 2
-#: Points used to bracket sign changes of α(θ) before bisection.
+#: Points used to bracket sign changes of α(θ) before Brent's search (rockcli.searches).
 BRACKET_POINTS = 400
-#: Bisection iterations (θ resolved to π/2·2⁻⁶⁰, far below any printed digit).
-BISECTION_STEPS = 60
 #: Share of the capacity a restrainer failure must remove to end the mechanism in the 2019
 #: rules (Circolare 7/2019 §C8.7.1.2.1: "riduzione della capacità superiore al 50%").
 FAILURE_DROP = 0.5
@@ -358,17 +357,6 @@ def load_multiplier(
     return (g - t + _spring_moments(mech, theta, sure_only, intact)) / h
 
 
-def _bisect(f, lo: float, hi: float) -> float:
-    """Root of f in [lo, hi] given f(lo) > 0 ≥ f(hi)."""
-    for _ in range(BISECTION_STEPS):
-        mid = 0.5 * (lo + hi)
-        if f(mid) > 0.0:
-            lo = mid
-        else:
-            hi = mid
-    return 0.5 * (lo + hi)
-
-
 def zero_rotation(mech: Mechanism) -> float | None:
     """θ0 where the capacity curve first reaches α = 0, or None (positive stiffness).
 
@@ -383,13 +371,13 @@ def zero_rotation(mech: Mechanism) -> float | None:
     def f(t: float) -> float:
         return load_multiplier(mech, t)
 
-    prev = 0.0
+    prev, f_prev = 0.0, math.inf
     limit = mech.view.limit
     for k in range(1, BRACKET_POINTS + 1):
         t = limit * k / BRACKET_POINTS
-        if f(t) <= 0.0:
-            return _bisect(f, prev, t)
-        prev = t
+        if (f_t := f(t)) <= 0.0:
+            return brent_root(f, prev, t, f_prev, f_t)
+        prev, f_prev = t, f_t
     return None
 
 

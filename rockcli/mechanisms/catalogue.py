@@ -21,7 +21,7 @@ A load, thrust or restrainer exactly at a hinge's height belongs to the part bel
 masonry strength f_m each hinge moves inward from its edge by half the depth a = N/(f_m·width)
 of the stress block that carries the weight N above it (*arretramento della cerniera*).
 
-Pure and silent: only :mod:`math` and the package's own modules.
+Pure and silent: only :mod:`math`, the package's own modules and :mod:`rockcli.searches`.
 """
 
 from __future__ import annotations
@@ -34,6 +34,7 @@ from rockcli.mechanisms.bodies import Body, gable, prism, triangle
 from rockcli.mechanisms.links import Rotation, TwoBlock
 from rockcli.mechanisms.side import Attached, ChainSide, SideLoad, SideThrust
 from rockcli.mechanisms.wall import MechanismSpec, MechanismType, Wall
+from rockcli.searches import brent_minimum
 
 #: Relative tolerance of "at a hinge's height" (heights typed in the file and sums of storey
 #: heights agree to far better than this).
@@ -317,32 +318,20 @@ def flexure_range(wall: Wall, storey: int) -> tuple[float, float]:
     return base + margin, base + s.height - margin
 
 
-#: Points of the scan of the optimal hinge (then golden-section refinement).
-HINGE_SCAN = 101
-#: Golden-section iterations of the refinement (the bracket shrinks by 0.618 each).
-HINGE_REFINE = 60
+#: Points of the scan of the optimal hinge (then Brent's refinement between the best one's
+#: neighbours).
+HINGE_SCAN = 41
+#: The hinge height's resolution beyond √ε·z, as a share of the range searched.
+HINGE_RESOLUTION = 1e-10
 
 
 def optimal_hinge(lo: float, hi: float, alpha0: Callable[[float], float]) -> float:
     """The hinge height in [lo, hi] that minimises ``alpha0``: the lowest of a uniform scan,
-    refined by golden-section search between its neighbours (each step evaluates one new
-    point: the other is the previous step's, kept)."""
+    refined by Brent's parabolic search between its neighbours (rockcli.searches; kept only
+    if lower)."""
     zs = [lo + (hi - lo) * k / (HINGE_SCAN - 1) for k in range(HINGE_SCAN)]
     values = [alpha0(z) for z in zs]
     k = min(range(HINGE_SCAN), key=values.__getitem__)
     a, b = zs[max(k - 1, 0)], zs[min(k + 1, HINGE_SCAN - 1)]
-    ratio = (math.sqrt(5.0) - 1.0) / 2.0
-    c, d = b - ratio * (b - a), a + ratio * (b - a)
-    fc, fd = alpha0(c), alpha0(d)
-    for _ in range(HINGE_REFINE - 1):
-        if fc <= fd:  # the minimum in [a, d]: d becomes c's place, c is new
-            b, d, fd = d, c, fc
-            c = b - ratio * (b - a)
-            fc = alpha0(c)
-        else:  # in [c, b]
-            a, c, fc = c, d, fd
-            d = a + ratio * (b - a)
-            fd = alpha0(d)
-    b, a = (d, a) if fc <= fd else (b, c)
-    best = 0.5 * (a + b)
-    return best if alpha0(best) <= values[k] else zs[k]
+    best, value = brent_minimum(alpha0, a, b, HINGE_RESOLUTION * (hi - lo))
+    return best if value <= values[k] else zs[k]

@@ -12,7 +12,7 @@ from tests.unit.test_import_cycles import ROOT, module_graph, package_of
 #: packages may import one another.
 LAYERS = (
     ("version", "interrupts", "process", "numbers", "notes", "errors", "jitcache", "inside",
-     "outfile", "textfile", "units"),
+     "outfile", "textfile", "units", "searches"),
     ("mechanics", "mechanisms"),
     ("dynamics", "codecheck", "records", "kernels"),
     ("model",),
