@@ -10,8 +10,9 @@ Measures in this process (one core, no worker start-up), each the median of REPE
   study's own chunk runner (rockcli.studies.sweep.worker.run_chunk), and the same cases'
   parts on their own: the model built and validated, its catalogue derived (the optimal
   flexure hinges searched), the catalogue's code check (rockcli.analyses.kinematic
-  .kinematic_model: every mechanism's α0, capacity curve, M*, e* and checks), the governing
-  mechanism rocked (both polarities).
+  .kinematic_model on the record's own spectrum, as the study's default --code-demand: every
+  mechanism's α0, capacity curve, M*, e* and checks), the governing mechanism rocked (both
+  polarities).
 
 Prints the time a case of each, the wall's ratio to the block (the issue's target: ≤ 5) and
 the catalogue check's time a case (the target: ≤ 1 ms with --jobs 2, so ≤ 2 ms on one core).
@@ -98,7 +99,13 @@ def wall_parts(plan: Any, ids: range) -> dict[str, float]:
     from rockcli.analyses.kinematic import kinematic_model
     from rockcli.model.catalogue import catalogue
     from rockcli.studies.sweep.cases import Cases, build_model
-    from rockcli.studies.sweep.worker import Chunk, case_mechanism, read_source, run_chunk
+    from rockcli.studies.sweep.worker import (
+        Chunk,
+        case_mechanism,
+        read_source,
+        run_chunk,
+        spectrum_of,
+    )
 
     every = Cases(plan)
     cases = [every[k] for k in ids]
@@ -108,7 +115,13 @@ def wall_parts(plan: Any, ids: range) -> dict[str, float]:
     assert not any(r.get("error") for r in rows), rows[0]
     models = [build_model(plan, c) for c in cases]
     catalogues = [catalogue(m) for m in models]
-    checks = [kinematic_model(m, mechanisms=c) for m, c in zip(models, catalogues, strict=True)]
+    spectrum = spectrum_of(plan.records[0], models[0].analysis.g)
+
+    def code_check(model: Any, mechanisms: Any) -> Any:
+        """As a study's case checks it: on the record's own spectrum (--code-demand record)."""
+        return kinematic_model(model, record=record, spectrum=spectrum, mechanisms=mechanisms)
+
+    checks = [code_check(m, c) for m, c in zip(models, catalogues, strict=True)]
     names = [case_mechanism(k)[0] for k in checks]
 
     def build() -> int:
@@ -123,7 +136,7 @@ def wall_parts(plan: Any, ids: range) -> dict[str, float]:
 
     def check() -> int:
         for m, c in zip(models, catalogues, strict=True):
-            kinematic_model(m, mechanisms=c)
+            code_check(m, c)
         return len(models)
 
     def rock() -> int:

@@ -200,8 +200,7 @@ def governing_demand(
         demand = nonlinear_displacement_demand(checks)
         ultimate, name = values.get("du_star"), "du*"
     else:
-        t0 = cap.T0 if cap.T0 is not None else rules2019.T0_RIGID
-        demand = rules2019.slv_displacement_demand(values, dem["SLV"], pos, cap.mech.g, t0)
+        demand = rules2019.slv_displacement_demand(checks)
         ultimate, name = values.get("d_SLV"), "d_SLV"
     if demand is not None:
         return demand, f"SLV displacement demand d* = {demand:.4g} m"

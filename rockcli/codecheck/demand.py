@@ -13,6 +13,8 @@ from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Protocol
 
+import numpy as np
+
 from rockcli.searches import brent_root
 
 #: Root search bounds on ag [g] for the 2019 capacities (beyond, the capacity is reported as
@@ -46,6 +48,10 @@ class ScaledSpectrum:
         """SDe of the base times the factor [m]."""
         return self.factor * self.base.SDe(T, xi)
 
+    def SDe_grid(self, first: int, last: int, step: float, xi: float) -> np.ndarray:  # noqa: N802
+        """SDe of the base at the periods k·step, k = first … last, times the factor [m]."""
+        return self.factor * grid_SDe(self.base, first, last, xi, step)
+
     @property
     def pga_ground(self) -> float:
         """PGA of the base times the factor [g]."""
@@ -69,6 +75,13 @@ class MeanSpectrum:
     def SDe(self, T: float, xi: float = 5.0) -> float:  # noqa: N802
         """The mean of the spectra's SDe at T [m]."""
         return sum(s.SDe(T, xi) for s in self.spectra) / len(self.spectra)
+
+    def SDe_grid(self, first: int, last: int, step: float, xi: float) -> np.ndarray:  # noqa: N802
+        """The mean of the spectra's SDe at the periods k·step, k = first … last [m]."""
+        total = np.zeros(max(last + 1 - first, 0))
+        for s in self.spectra:  # in SDe's order of summation
+            total = total + grid_SDe(s, first, last, xi, step)
+        return total / len(self.spectra)
 
     @property
     def pga_ground(self) -> float:
@@ -132,15 +145,24 @@ RANGE_TOLERANCE = 1e-5
 GOLDEN = 0.6180339887498949
 
 
+def grid_range(lo: float, hi: float, step: float = RANGE_STEP) -> tuple[int, int]:
+    """(first, last): the k of the periods k·step inside (lo, hi) (none when first > last)."""
+    return math.floor(lo / step) + 1, math.ceil(hi / step) - 1
+
+
 def period_grid(lo: float, hi: float, step: float = RANGE_STEP) -> list[float]:
     """The periods k·step inside (lo, hi), with hi itself (and lo when > 0) [s]."""
-    first = math.floor(lo / step) + 1
-    last = math.ceil(hi / step) - 1
+    first, last = grid_range(lo, hi, step)
     inner = [k * step for k in range(first, last + 1)]
     return sorted({*([lo] if lo > 0.0 else []), *inner, hi})
 
 
-def range_maximum(f: Callable[[float], float], lo: float, hi: float) -> tuple[float, float]:
+def range_maximum(
+    f: Callable[[float], float],
+    lo: float,
+    hi: float,
+    on_grid: Callable[[int, int], np.ndarray] | None = None,
+) -> tuple[float, float]:
     """(T*, f(T*)): the largest value of f over the periods [lo, hi] [s].
 
     Circolare 7/2019 §C8.7.1.2.1.8: with site records (or a site response analysis) the
@@ -148,13 +170,35 @@ def range_maximum(f: Callable[[float], float], lo: float, hi: float) -> tuple[fl
     nell'intervallo di periodi [T0, T_SLV]". A record's spectrum has peaks: f is sampled on a
     grid of RANGE_STEP (:func:`period_grid`), then the best grid point's two neighbouring
     intervals are narrowed by golden-section search to RANGE_TOLERANCE; the largest value seen
-    wins (never less than the grid's maximum).
+    wins (never less than the grid's maximum). ``on_grid(first, last)``: f at the grid's
+    periods k·RANGE_STEP, k = first … last, at once (a record's cached ordinates, one array
+    operation), in place of f at each.
     """
-    grid = period_grid(lo, hi)
-    values = [f(T) for T in grid]
-    k = max(range(len(grid)), key=values.__getitem__)
+    grid, values = grid_values(f, lo, hi, on_grid)
+    k = int(np.argmax(values))
     a, b = grid[max(k - 1, 0)], grid[min(k + 1, len(grid) - 1)]
     return max((grid[k], values[k]), golden_maximum(f, a, b), key=lambda tv: tv[1])
+
+
+def grid_values(
+    f: Callable[[float], float],
+    lo: float,
+    hi: float,
+    on_grid: Callable[[int, int], np.ndarray] | None,
+) -> tuple[list[float], list[float]]:
+    """(periods, f there) of :func:`period_grid`, the inner ones from ``on_grid`` if given."""
+    if on_grid is None:
+        grid = period_grid(lo, hi)
+        return grid, [f(T) for T in grid]
+    first, last = grid_range(lo, hi)
+    inner = np.arange(first, last + 1) * RANGE_STEP
+    inner_values = on_grid(first, last) if last >= first else np.empty(0)
+    ends = sorted({lo, hi} if lo > 0.0 else {hi})
+    keep = (inner != lo) & (inner != hi)
+    periods = np.concatenate((inner[keep], ends))
+    values = np.concatenate((inner_values[keep], [f(T) for T in ends]))
+    order = np.argsort(periods, kind="stable")
+    return periods[order].tolist(), values[order].tolist()
 
 
 def golden_maximum(f: Callable[[float], float], a: float, b: float) -> tuple[float, float]:
@@ -172,6 +216,17 @@ def golden_maximum(f: Callable[[float], float], a: float, b: float) -> tuple[flo
             d = a + GOLDEN * (b - a)
             fd = f(d)
     return (c, fc) if fc >= fd else (d, fd)
+
+
+def grid_SDe(
+    spec: Spectrum, first: int, last: int, xi: float, step: float = RANGE_STEP
+) -> np.ndarray:  # noqa: N802 (the code's symbol)
+    """SDe(k·step, ξ) for k = first … last [m]: at once where the spectrum keeps its grid
+    (``SDe_grid``: a record's, a scaled record's, a suite's mean), else period by period."""
+    on_grid = getattr(spec, "SDe_grid", None)
+    if on_grid is not None:
+        return on_grid(first, last, step, xi)
+    return np.array([spec.SDe(k * step, xi) for k in range(first, last + 1)])
 
 
 def bound_note(ag: float | None) -> str:

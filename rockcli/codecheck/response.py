@@ -341,6 +341,9 @@ class RecordSpectrum:
     _cache: dict[tuple[float, float], tuple[float, float]] = field(
         default_factory=dict, init=False, repr=False
     )
+    _grids: dict[tuple[float, float], np.ndarray] = field(
+        default_factory=dict, init=False, repr=False
+    )
 
     def __post_init__(self) -> None:
         t, a = _check_record(self.time, self.accel)
@@ -379,6 +382,19 @@ class RecordSpectrum:
             return cached
         Sa, Sd = self._values(np.array([T]), xi)
         return float(Sa[0]), float(Sd[0])
+
+    def SDe_grid(self, first: int, last: int, step: float, xi: float = 5.0) -> np.ndarray:  # noqa: N802
+        """Sd [m] at the periods k·step, k = first … last (first ≥ 1), damping ξ [%]: the
+        values :meth:`SDe` gives there, kept as an array by grid index, so that a check's
+        range of periods (rockcli.codecheck.demand.range_maximum) is read in one slice."""
+        table = self._grids.get((step, float(xi)), np.empty(0))
+        if len(table) <= last:
+            table = np.concatenate((table, np.full(last + 1 - len(table), np.nan)))
+            self._grids[(step, float(xi))] = table
+        unknown = first + np.flatnonzero(np.isnan(table[first : last + 1]))
+        if len(unknown):
+            table[unknown] = self._values(unknown * step, xi)[1]
+        return table[first : last + 1].copy()
 
     def curve(self, periods: ArrayLike, xi: float = 5.0) -> tuple[np.ndarray, np.ndarray]:
         """Sa [g] and Sd [m] at an array of periods [s], damping ξ [%] (one vectorised pass)."""

@@ -11,19 +11,27 @@ from __future__ import annotations
 import math
 from collections.abc import Callable
 from dataclasses import replace
+from typing import TypeVar
+
+import numpy as np
 
 from rockcli.codecheck import spectra
 from rockcli.codecheck.demand import (
+    RANGE_STEP,
     LimitStateDemand,
     Spectrum,
     bound_note,
     capacity_ag,
+    grid_SDe,
     range_maximum,
 )
 from rockcli.codecheck.kinematic import FAILURE_DROP, Capacity, failure_rotations
 from rockcli.codecheck.position import Position
 from rockcli.codecheck.result import Check, Location, Method, SpectralDemand
 from rockcli.notes import Note
+
+#: A period [s] or an array of them (the floor spectrum's formulas take either).
+Periods = TypeVar("Periods", float, np.ndarray)
 
 CLAUSE = "§C8.7.1.2.1"
 #: The clause of the displacement demand of a record or a site response: the maximum of the
@@ -74,19 +82,31 @@ def floor_plateau(xi_mechanism: float, xi_building: float = BUILDING_DAMPING) ->
 
 
 def floor_spectrum(
-    T: float, a_z: float, T1: float, xi_mechanism: float, xi_building: float = BUILDING_DAMPING
-) -> float:
-    """S_eZ(T) [g]: the floor spectrum at height for a mechanism of period T (§C7.2.3).
+    T: Periods, a_z: float, T1: float, xi_mechanism: float, xi_building: float = BUILDING_DAMPING
+) -> Periods:
+    """S_eZ(T) [g]: the floor spectrum at height for a mechanism of period T (§C7.2.3); T a
+    period or an array of them [s].
 
     a_z·A on the plateau a·T1 ≤ T < b·T1 (A = floor_plateau), a_z·A/{1 + (A − 1)(1 − T/(a T1))^1.6}
-    below it, a_z·A/{1 + (A − 1)(T/(b T1) − 1)^1.2} above it.
+    below it, a_z·A/{1 + (A − 1)(T/(b T1) − 1)^1.2} above it: one expression, each branch's
+    term zero outside it.
     """
     amp = floor_plateau(xi_mechanism, xi_building)
-    if T < PLATEAU_A * T1:
-        return a_z * amp / (1.0 + (amp - 1.0) * (1.0 - T / (PLATEAU_A * T1)) ** 1.6)
-    if T < PLATEAU_B * T1:
-        return a_z * amp
-    return a_z * amp / (1.0 + (amp - 1.0) * (T / (PLATEAU_B * T1) - 1.0) ** 1.2)
+    below = _positive_part(1.0 - T / (PLATEAU_A * T1)) ** 1.6
+    above = _positive_part(T / (PLATEAU_B * T1) - 1.0) ** 1.2
+    return a_z * amp / (1.0 + (amp - 1.0) * (below + above))
+
+
+def _positive_part(x: Periods) -> Periods:
+    """max(x, 0), exactly, for a number or an array: (x + |x|)/2."""
+    return 0.5 * (x + abs(x))
+
+
+def _bounded_above(T: Periods, limit: float, value: Periods, bound: Periods) -> Periods:
+    """``value``, not below ``bound`` where T > limit (T a period or an array of them)."""
+    if isinstance(T, np.ndarray):
+        return np.where(T > limit, np.maximum(value, bound), value)
+    return max(value, bound) if T > limit else value
 
 
 def bounded_floor_spectrum(spec: Spectrum, T: float, pos: Position, xi_mechanism: float) -> float:
@@ -107,26 +127,24 @@ def bounded_floor_spectrum(spec: Spectrum, T: float, pos: Position, xi_mechanism
 
 
 def floor_displacement(
-    T: float,
+    T: Periods,
     a_z: float,
     T1: float,
     xi_mechanism: float,
     g: float,
     xi_building: float = BUILDING_DAMPING,
-) -> float:
+) -> Periods:
     """S_eZ(T)·T²/4π² [m] of the first mode's floor spectrum, not less than
     S_eZ(T1)·(b T1)²/4π² for T > b·T1 (§C8.7.1.2.1; the ground bound of Eq. C7.2.5 is
-    :func:`bounded_floor_displacement`'s)."""
+    :func:`bounded_floor_displacement`'s); T a period or an array of them [s]."""
     d = floor_spectrum(T, a_z, T1, xi_mechanism, xi_building) * g * T**2 / (4.0 * math.pi**2)
-    if T > PLATEAU_B * T1:
-        floor = (
-            floor_spectrum(T1, a_z, T1, xi_mechanism, xi_building)
-            * g
-            * (PLATEAU_B * T1) ** 2
-            / (4.0 * math.pi**2)
-        )
-        d = max(d, floor)
-    return d
+    floor = (
+        floor_spectrum(T1, a_z, T1, xi_mechanism, xi_building)
+        * g
+        * (PLATEAU_B * T1) ** 2
+        / (4.0 * math.pi**2)
+    )
+    return _bounded_above(T, PLATEAU_B * T1, d, floor)
 
 
 def limit_displacements(
@@ -238,11 +256,31 @@ def bounded_floor_displacement(
     not below the ground spectrum's SDe(T, ξ) for T > T1 (Circolare 7/2019 §C7.2.3,
     Eq. C7.2.5, the bound of :func:`bounded_floor_spectrum` read as a displacement,
     SDe = S_e·T²/4π² on the branches the secant periods reach)."""
+    return bounded_floor_displacements(T, spec.SDe(T, xi_mechanism), spec, pos, xi_mechanism, g)
+
+
+def bounded_floor_displacements(
+    T: Periods, ground: Periods, spec: Spectrum, pos: Position, xi_mechanism: float, g: float
+) -> Periods:
+    """:func:`bounded_floor_displacement` at a period or an array of them, given the ground
+    spectrum's SDe(T, ξ) there (``ground``)."""
     assert pos.T1 is not None
     d = floor_displacement(
         T, floor_acceleration(spec, pos), pos.T1, xi_mechanism, g, 100.0 * pos.damping
     )
-    return max(d, spec.SDe(T, xi_mechanism)) if T > pos.T1 else d
+    return _bounded_above(T, pos.T1, d, ground)
+
+
+def grid_displacements(
+    first: int, last: int, xi: float, pos: Position, g: float, spec: Spectrum
+) -> np.ndarray:
+    """:func:`displacement_measure` at the periods k·RANGE_STEP, k = first … last, at once [m]
+    (the grid of :func:`rockcli.codecheck.demand.range_maximum`)."""
+    ground = grid_SDe(spec, first, last, xi)
+    if not pos.at_height:
+        return ground
+    periods = np.arange(first, last + 1) * RANGE_STEP
+    return bounded_floor_displacements(periods, ground, spec, pos, xi, g)
 
 
 def spectral_demand(
@@ -265,33 +303,31 @@ def spectral_demand(
     def at(period: float) -> float:
         return displacement_measure(period, xi, pos, g)(dem.spectrum)
 
+    def on_grid(first: int, last: int) -> np.ndarray:
+        return grid_displacements(first, last, xi, pos, g, dem.spectrum)
+
     at_secant = at(T)
     name = f"T_{ls}"
     if dem.record is None:
         rule = f"SDe({name}) of the code spectrum ({CLAUSE_RANGE})"
         return SpectralDemand(xi, T, at_secant, None, rule, at_secant)
     lo = min(t0, T)
-    T_max, value = range_maximum(at, lo, T)
+    T_max, value = range_maximum(at, lo, T, on_grid)
     rule = f"max Sd over [T0, {name}] = [{lo:.4g}, {T:.4g}] s ({CLAUSE_RANGE})"
     return SpectralDemand(xi, T_max, value, (lo, T), rule, at_secant)
 
 
-def slv_displacement_demand(
-    values: dict[str, float | None],
-    slv: LimitStateDemand,
-    pos: Position,
-    g: float,
-    t0: float = T0_RIGID,
-) -> float | None:
+def slv_displacement_demand(checks: list[Check] | tuple[Check, ...]) -> float | None:
     """The SLV displacement demand d* [m] at the site's ag (None: no T_SLV).
 
-    The demand side of the SLV non-linear check (§C8.7.1.2.1), whose capacity is d_SLV: at
-    T_SLV, or the maximum over [T0, T_SLV] of a record's spectrum (:func:`spectral_demand`).
+    The demand side of the SLV non-linear check (§C8.7.1.2.1), whose capacity is d_SLV, as
+    that check read it (:func:`displacement_check`): at T_SLV, or the maximum over
+    [T0, T_SLV] of a record's spectrum (:func:`spectral_demand`).
     """
-    T = values.get("T_SLV")
-    if T is None:
-        return None
-    return spectral_demand("SLV", T, slv, pos, g, t0).value
+    for c in checks:
+        if c.limit_state == "SLV" and c.method is Method.NONLINEAR and c.spectral is not None:
+            return c.spectral.value
+    return None
 
 
 def displacement_check(

@@ -148,14 +148,16 @@ def test_governing_demand_falls_back_on_du_then_none() -> None:
 def test_slv_displacement_demand_2019_at_the_ground() -> None:
     # Circolare 7/2019 §C8.7.1.2.1: at the ground the SLV displacement demand is SDe(T_SLV)
     # with the mechanism's 8 % damping, of the limit state's own spectrum (NTC 2018
-    # §3.2.3.2.2); the same spectrum object read twice (exact).
+    # §3.2.3.2.2); the same spectrum object read twice (exact). The spring is read where the
+    # SLV non-linear check read the spectrum.
     spectrum = ElasticSpectrum(
         ag=0.15, F0=2.5, Tc_star=0.3, soil=Soil("A"), topography=Topography("T1"), g=G
     )
     slv = LimitStateDemand("SLV", 0.15, lambda a: spectrum, "test")
-    d = rules2019.slv_displacement_demand({"T_SLV": 1.7}, slv, Position(), G)
-    assert d == spectrum.SDe(1.7, 8.0)
-    assert rules2019.slv_displacement_demand({"T_SLV": None}, slv, Position(), G) is None
+    check = rules2019.displacement_check("SLV", 0.05, 1.7, slv, Position(), G, None)
+    assert rules2019.slv_displacement_demand([check]) == spectrum.SDe(1.7, 8.0)
+    unchecked = rules2019.displacement_check("SLV", None, None, slv, Position(), G, None)
+    assert rules2019.slv_displacement_demand([unchecked]) is None
 
 
 def test_lost_force_makes_the_curve_not_the_straight_line() -> None:
