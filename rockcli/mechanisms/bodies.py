@@ -45,6 +45,10 @@ class Body:
     var_z: float
     mass: float
 
+    def moved(self, x: float, z: float) -> Body:
+        """The same body with its centroid at (x, z) [m] (another frame's coordinates)."""
+        return Body(self.name, self.weight, x, z, self.inertia, self.var_x, self.var_z, self.mass)
+
 
 def prism(
     name: str,

@@ -55,8 +55,10 @@ def same_height(a: float, b: float) -> bool:
 
 
 def above(z: float, hinge: float) -> bool:
-    """True when a point at height z is above the hinge (one at the hinge is below it)."""
-    return z > hinge and not same_height(z, hinge)
+    """True when a point at height z is above the hinge (one at the hinge is below it): z > hinge
+    and not :func:`same_height` — written out, as the catalogue asks it of every load at every
+    hinge it tries."""
+    return z - hinge > SAME_HEIGHT * max(abs(z), abs(hinge), 1.0)
 
 
 def storey_bodies(wall: Wall, from_storey: int) -> list[Body]:
@@ -108,9 +110,7 @@ class Frame:
 
     def body(self, b: Body) -> Body:
         """A body in the side frame."""
-        from dataclasses import replace
-
-        return replace(b, x=self.x(b.x), z=self.z(b.z))
+        return b.moved(self.x(b.x), self.z(b.z))
 
 
 def stress_block(wall: Wall, weight: float) -> float:
@@ -205,38 +205,48 @@ def gable_mechanism(wall: Wall, side: int, name: str) -> ChainSide:
 def flexure(wall: Wall, storey: int, hinge: float, side: int, name: str) -> ChainSide:
     """Vertical flexure of ``storey`` (1 = ground) with the intermediate hinge at ``hinge``
     [m above the wall's base]: two blocks between the storey's base and its held top."""
+    return flexure_at(wall, storey, side, name)(hinge)
+
+
+def flexure_at(wall: Wall, storey: int, side: int, name: str) -> Callable[[float], ChainSide]:
+    """:func:`flexure` as a function of the hinge's height, what does not depend on it found
+    once (the search for the optimal hinge tries some hundred heights)."""
     base = wall.storey_bases()[storey - 1]
     s = wall.storeys[storey - 1]
     top = base + s.height
-    lower = prism("lower block", 0.0, s.thickness, base, hinge, wall.width, wall.unit_weight,
-                  wall.g)  # fmt: skip
-    upper = prism("upper block", 0.0, s.thickness, hinge, top, wall.width, wall.unit_weight,
-                  wall.g)  # fmt: skip
     w_above, x_above = overburden_above(wall, storey)
-    on_upper = bearing(wall, hinge, top) + w_above
-    on_lower = bearing(wall, base, hinge)
     a_top = half_block(wall, bearing(wall, top, top, at_top=True) + w_above, s.thickness, name)
-    a_mid = half_block(wall, upper.weight + on_upper, s.thickness, name)
-    a_base = half_block(wall, lower.weight + upper.weight + on_upper + on_lower, s.thickness,
-                        name)  # fmt: skip
     outer = side > 0
-    frame = Frame(a_base if outer else s.thickness - a_base, base, side)
-    mid_x = s.thickness - a_mid if outer else a_mid
     top_x = a_top if outer else s.thickness - a_top
-    motion = TwoBlock(frame.x(mid_x), frame.z(hinge), frame.x(top_x), frame.z(top))
 
-    def link_of(z: float) -> int | None:
-        if not above(z, base) or above(z, top):
-            return None
-        return 1 if above(z, hinge) else 0
+    def at(hinge: float) -> ChainSide:
+        lower = prism("lower block", 0.0, s.thickness, base, hinge, wall.width,
+                      wall.unit_weight, wall.g)  # fmt: skip
+        upper = prism("upper block", 0.0, s.thickness, hinge, top, wall.width,
+                      wall.unit_weight, wall.g)  # fmt: skip
+        on_upper = bearing(wall, hinge, top) + w_above
+        on_lower = bearing(wall, base, hinge)
+        a_mid = half_block(wall, upper.weight + on_upper, s.thickness, name)
+        a_base = half_block(wall, lower.weight + upper.weight + on_upper + on_lower,
+                            s.thickness, name)  # fmt: skip
+        frame = Frame(a_base if outer else s.thickness - a_base, base, side)
+        mid_x = s.thickness - a_mid if outer else a_mid
+        motion = TwoBlock(frame.x(mid_x), frame.z(hinge), frame.x(top_x), frame.z(top))
 
-    side_view = attach(wall, frame, motion, [(0, frame.body(lower)), (1, frame.body(upper))],
-                       link_of)  # fmt: skip
-    if w_above <= 0.0:
-        return side_view
-    at = Attached(1, frame.x(x_above), frame.z(top))
-    load = SideLoad(ABOVE, w_above, at, bears=True, moves=False)
-    return replace(side_view, loads=(*side_view.loads, load))
+        def link_of(z: float) -> int | None:
+            if not above(z, base) or above(z, top):
+                return None
+            return 1 if above(z, hinge) else 0
+
+        side_view = attach(wall, frame, motion,
+                           [(0, frame.body(lower)), (1, frame.body(upper))], link_of)  # fmt: skip
+        if w_above <= 0.0:
+            return side_view
+        load = SideLoad(ABOVE, w_above, Attached(1, frame.x(x_above), frame.z(top)), bears=True,
+                        moves=False)  # fmt: skip
+        return replace(side_view, loads=(*side_view.loads, load))
+
+    return at
 
 
 #: The name of a vertical flexure's overburden from the wall above.

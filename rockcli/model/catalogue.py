@@ -17,8 +17,10 @@ Pure: the model, the mechanisms and the code check's α0.
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass, replace
-from functools import cached_property
+from functools import cached_property, partial
+from typing import TypeVar
 
 from rockcli.codecheck.free import KAPPA_CANTILEVER, KAPPA_FLEXURE
 from rockcli.codecheck.kinematic import Mechanism as SideCheck
@@ -29,6 +31,7 @@ from rockcli.mechanisms.block import BlockSide
 from rockcli.mechanisms.catalogue import (
     CrushingError,
     build,
+    flexure_at,
     flexure_range,
     hinge_of,
     optimal_hinge,
@@ -40,6 +43,8 @@ from rockcli.mechanisms.side import ChainSide
 from rockcli.mechanisms.wall import OPTIMAL, WHOLE_WALL, MechanismSpec, MechanismType, Wall
 from rockcli.model.schema import Model
 from rockcli.notes import Note
+
+T = TypeVar("T")
 
 #: Unit mass given to a block without a [mass] table: the kinematic ratios (α0, e*, a0*, d0*)
 #: of a block alone do not depend on its mass [kg].
@@ -324,8 +329,14 @@ def wall_mechanism(model: Model, wall: Wall, spec: MechanismSpec, free: int | No
 def placed(wall: Wall, spec: MechanismSpec, side: int) -> ChainSide:
     """The mechanism's bodies about its hinge on ``side`` (InputError when the wall crushes
     first: the stress block deeper than the section)."""
+    return uncrushed(wall, lambda: build(wall, spec, side))
+
+
+def uncrushed(wall: Wall, make: Callable[[], T]) -> T:
+    """``make()``, its CrushingError (a stress block deeper than the section) said as the
+    wall's bad input."""
     try:
-        return build(wall, spec, side)
+        return make()
     except CrushingError as exc:
         raise InputError(
             f"the wall crushes before it rocks: at a hinge of '{exc.hinge}' the stress block "
@@ -345,9 +356,11 @@ def resolved(wall: Wall, spec: MechanismSpec, sides: tuple[int, ...]):
     assert spec.storey is not None
     lo, hi = flexure_range(wall, spec.storey)
 
+    families = [uncrushed(wall, partial(flexure_at, wall, spec.storey, s, spec.name))
+                for s in sides]  # fmt: skip
+
     def smallest(z: float) -> float:
-        at = replace(spec, hinge_height=z)
-        return min(alpha0(SideCheck(placed(wall, at, s))) for s in sides)
+        return min(alpha0(SideCheck(uncrushed(wall, partial(f, z)))) for f in families)
 
     z = optimal_hinge(lo, hi, smallest)
     found = ("optimal hinge at {z:.3f} m (the lowest α0 between {lo:.3f} and {hi:.3f} m: the "
