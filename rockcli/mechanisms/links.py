@@ -32,6 +32,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from functools import cached_property
 
 from rockcli.mechanics import versine
 
@@ -106,16 +107,18 @@ class TwoBlock:
     top_z: float
     links: int = 2
 
-    @property
+    @cached_property
     def chord(self) -> tuple[float, float]:
-        """(L, δ): length and direction of the upper link's rest chord from H to T."""
+        """(L, δ): length and direction of the upper link's rest chord from H to T (found
+        once: every position of the chain reads it)."""
         a, c = self.top_x - self.hinge_x, self.top_z - self.hinge_z
         return math.hypot(a, c), math.atan2(c, a)
 
-    @property
+    @cached_property
     def limit(self) -> float:
         """The rotation at which the upper link's chord lies flat (the chain cannot follow
-        further with its top held): the lower link's hinge then is L from the top's line."""
+        further with its top held): the lower link's hinge then is L from the top's line
+        (found once, by bisection: the capacity curve and the table read it at every step)."""
         length, _ = self.chord
         lo, hi = 0.0, math.pi / 2
         for _ in range(80):

@@ -18,6 +18,7 @@ Pure and silent: only :mod:`math` and the package's own modules.
 from __future__ import annotations
 
 import math
+from dataclasses import replace
 from functools import lru_cache
 
 from rockcli.mechanics import CH_HEAD, PA_COLS, PA_HEAD, ChainTable
@@ -146,10 +147,22 @@ def end_of(plus: ChainSide, minus: ChainSide) -> float:
     return END_SHARE * min(plus.limit, minus.limit)
 
 
-@lru_cache(maxsize=64)
 def tabulate(plus: ChainSide, minus: ChainSide) -> ChainTable:
     """The chain whose side +1 is ``plus`` and side −1 ``minus`` (the same bodies and loads,
-    seen from each pivot) as the engine reads it."""
+    seen from each pivot) as the engine reads it: its bodies, loads and thrusts, whatever its
+    restrainers (which enter the equation by their own paths, :func:`member_path`), so that
+    a chain tabulated once serves every rod a retrofit tries on it."""
+    return tabulate_weights(without_members(plus), without_members(minus))
+
+
+def without_members(side: ChainSide) -> ChainSide:
+    """The side without its restrainers (what the table does not read)."""
+    return replace(side, restrainers=(), anchors=())
+
+
+@lru_cache(maxsize=64)
+def tabulate_weights(plus: ChainSide, minus: ChainSide) -> ChainTable:
+    """:func:`tabulate` of sides without restrainers (cached by them)."""
     end = end_of(plus, minus)
     step = end / (NODES - 1)
     g0, h0, _, m0, _ = terms(plus, 0.0)
