@@ -93,6 +93,29 @@ def wall_plan(folder: Path) -> Any:
     return load_study(str(folder / "study.toml"))
 
 
+def integration_per_case(rock: Callable[[], int]) -> float:
+    """The time a case spends in the compiled integration itself (rockcli.dynamics.kernel
+    .integrate, both polarities) when ``rock`` runs its cases [s]: the physics' own cost,
+    which no batching removes (a wall's mechanism that rocks through the whole record costs
+    as much as a block that does)."""
+    from rockcli.dynamics import kernel
+
+    compiled = kernel.integrate
+    spent = [0.0]
+
+    def timed(*args: Any) -> None:
+        start = time.perf_counter()
+        compiled(*args)
+        spent[0] += time.perf_counter() - start
+
+    kernel.integrate = timed
+    try:
+        n = rock()
+    finally:
+        kernel.integrate = compiled
+    return spent[0] / n
+
+
 def wall_parts(plan: Any, ids: range) -> dict[str, float]:
     """The wall's study a case, whole and by part [s]."""
     from rockcli.analyses.assess import assess_model_output
@@ -147,6 +170,7 @@ def wall_parts(plan: Any, ids: range) -> dict[str, float]:
         return len(models)
 
     return {
+        "integration": integration_per_case(rock),
         "study": median_per_case(lambda: len(run_chunk(chunk))),
         "build": median_per_case(build),
         "catalogue": median_per_case(derive),
@@ -173,6 +197,7 @@ def main(cases: int) -> None:
     print(f"    catalogue derived (optimal hinges)       {ms * parts['catalogue']:9.3f} ms")
     print(f"    catalogue's code check                   {ms * parts['check']:9.3f} ms")
     print(f"    governing mechanism rocked               {ms * parts['rocking']:9.3f} ms")
+    print(f"      of which the compiled integration      {ms * parts['integration']:9.3f} ms")
     ratio = parts["study"] / block
     print(
         f"  wall / block                               {ratio:9.1f}   (target ≤ {TARGET_RATIO:g})"

@@ -3,9 +3,11 @@
 from __future__ import annotations
 
 import os
-from collections.abc import Callable, Sequence
+from collections.abc import Callable, Iterator, Sequence
+from contextlib import contextmanager
 from dataclasses import dataclass
 from datetime import UTC, datetime
+from functools import partial
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
@@ -54,9 +56,53 @@ def report_front(front: dict[str, Any] | None, grid_file: str | None) -> dict[st
     "casebook" ("annex", "inline" or "none": the casebook is then not run)."""
     front = front or {}
     place = front.get("casebook", "annex")
-    casebook = None if place == "none" else casebook_document(grid_file)
+    return front_with(front, None if place == "none" else casebook_document(grid_file))
+
+
+def front_with(front: dict[str, Any], casebook: dict[str, Any] | None) -> dict[str, Any]:
+    """:func:`report_front` given the casebook's document."""
+    place = front.get("casebook", "annex")
     return {"project": front.get("project"), "casebook": casebook,
             "casebook_place": "inline" if place == "none" else place}  # fmt: skip
+
+
+#: Cores below which the casebook runs in the report's own process, after its analyses.
+CORES_BESIDE = 2
+
+
+@contextmanager
+def casebook_beside(
+    front: dict[str, Any] | None, grid_file: str | None
+) -> Iterator[Callable[[], dict[str, Any]]]:
+    """:func:`report_front` run beside the report's analyses and figures: the casebook (one to
+    two seconds) in a worker process started now, where the machine has a second core
+    (rockcli.studies.parallel.executor.process_executor: a fork of the studies' warm fork
+    server), its result taken when the document is built; here, when asked, on one core or
+    when the worker process could not run it. The worker stops with the report."""
+    front = front or {}
+    if front.get("casebook", "annex") == "none" or (os.cpu_count() or 1) < CORES_BESIDE:
+        yield partial(report_front, front, grid_file)
+        return
+    from concurrent.futures.process import BrokenProcessPool
+
+    from rockcli.studies.parallel.executor import process_executor, stop
+
+    pool = process_executor(1)
+    future = pool.submit(casebook_document, grid_file)
+
+    def result() -> dict[str, Any]:
+        try:
+            casebook = future.result()
+        except BrokenProcessPool:  # the worker died (killed, out of memory): run it here
+            return report_front(front, grid_file)
+        return front_with(front, casebook)
+
+    try:
+        yield result
+    except BaseException:
+        stop(pool)
+        raise
+    pool.shutdown(wait=True, cancel_futures=True)
 
 
 def write_report(
@@ -81,9 +127,7 @@ def write_report(
 
     Every model is read and checked before any analysis runs."""
     from rockcli.analyses.compare import check_code_demand
-    from rockcli.document.build import Inputs, build_document
-    from rockcli.document.walls import Part
-    from rockcli.model.catalogue import catalogue
+    from rockcli.document.build import build_document
     from rockcli.model.load import load_model
 
     comparison = choices.comparison
@@ -94,8 +138,29 @@ def write_report(
             check_code_demand(model, comparison.code_demand, file=path)
     outputs = 1 + (pdf_path is not None) + (docx_path is not None)
     step = Steps(len(models) * (2 if record is None else 3) + 1 + outputs, progress)
-    front = report_front(front, comparison.grid_file)
-    step()
+    with casebook_beside(front, comparison.grid_file) as front_of:
+        parts = wall_parts(model_paths, models, record, command, files, choices, step)
+        step()
+        document = built(lambda: build_document(parts, lang, front_of), docx_path is not None)
+    verdict = ", ".join(part_verdict(part) for part in parts)
+    return write_document(document, html_path, pdf_path, verdict, docx_path, step)
+
+
+def wall_parts(
+    model_paths: Sequence[str],
+    models: Sequence[Any],
+    record: Record | None,
+    command: str,
+    files: Sequence[tuple[str, str]],
+    choices: ReportChoices,
+    step: Callable[[], None],
+) -> list[Any]:
+    """Each model's part of the report (without the casebook: :func:`with_casebook`)."""
+    from rockcli.document.build import Inputs
+    from rockcli.document.walls import Part
+    from rockcli.model.catalogue import catalogue
+
+    comparison = choices.comparison
     parts = []
     for path, model in zip(model_paths, models, strict=True):
         mechanisms = catalogue(model)  # derived once: the verification and the scenario
@@ -106,8 +171,7 @@ def write_report(
             model, record, path, comparison, choices.shown, mechanisms)  # fmt: skip
         if record is not None:
             step()
-        inputs = Inputs(path, model, record, (("model", path), *files), command, report_date(),
-                        **front)  # fmt: skip
+        inputs = Inputs(path, model, record, (("model", path), *files), command, report_date())
         sizing = None
         if choices.retrofit:
             sizing = wall_sizing(
@@ -115,9 +179,7 @@ def write_report(
             )
         parts.append(Part(inputs, out, doc, others, sizing, verification))
         step()
-    document = built(lambda: build_document(parts, lang), docx_path is not None)
-    verdict = ", ".join(part_verdict(part) for part in parts)
-    return write_document(document, html_path, pdf_path, verdict, docx_path, step)
+    return parts
 
 
 def built(build: Callable[[], Any], word: bool) -> Any:
@@ -369,21 +431,23 @@ def write_suite_report(
 
     loads = [load_suite_and_model(path, suite_path, grid_file, target, allow_outside)
              for path in model_paths]  # fmt: skip
-    front = report_front(front, grid_file)
-    parts = []
-    for path, loaded in zip(model_paths, loads, strict=True):
-        doc, runs, kin = suite_comparison(loaded, path, grid_file, analyses, code_demand)
-        files = [("model", path)]
-        if Path(suite_path).is_file():
-            files.append(("suite", suite_path))
-        files += [("record", str(entry.path)) for entry in loaded.settings.entries]
-        files += [("hazard_grid", grid_file)] if grid_file else []
-        inputs = Inputs(path, loaded.model, None, tuple(files), command, report_date(), **front)
-        verification = verification_of(loaded.model, analyses.edition, grid_file)
-        sizing = suite_sizing(path, verification, doc, analyses, grid_file) if retrofit else None
-        parts.append(SuitePart(inputs, doc, suite_document(loaded.check), runs, kin,
-                               verification, sizing))  # fmt: skip
-    document = built(lambda: build_suite_document(parts, lang), docx_path is not None)
+    with casebook_beside(front, grid_file) as front_of:
+        parts = []
+        for path, loaded in zip(model_paths, loads, strict=True):
+            doc, runs, kin = suite_comparison(loaded, path, grid_file, analyses, code_demand)
+            files = [("model", path)]
+            if Path(suite_path).is_file():
+                files.append(("suite", suite_path))
+            files += [("record", str(entry.path)) for entry in loaded.settings.entries]
+            files += [("hazard_grid", grid_file)] if grid_file else []
+            inputs = Inputs(path, loaded.model, None, tuple(files), command, report_date())
+            verification = verification_of(loaded.model, analyses.edition, grid_file)
+            sizing = (suite_sizing(path, verification, doc, analyses, grid_file) if retrofit
+                      else None)  # fmt: skip
+            parts.append(SuitePart(inputs, doc, suite_document(loaded.check), runs, kin,
+                                   verification, sizing))  # fmt: skip
+        document = built(lambda: build_suite_document(parts, lang, front_of),
+                         docx_path is not None)  # fmt: skip
     verdict = ", ".join(str(part.doc["classification"]) for part in parts)
     return write_document(document, html_path, pdf_path, verdict, docx_path)
 

@@ -128,8 +128,15 @@ class ChainSide:
         return self.motion.limit
 
     def states(self, theta: float) -> tuple[LinkState, ...]:
-        """Every link at θ."""
-        return self.motion.states(theta)
+        """Every link at θ (the last rotation's kept: the curve's α(θ) asks for the links'
+        places once for the weights and again for each restrainer's force and arm)."""
+        key = (theta, math.copysign(1.0, theta))
+        last = self.__dict__.get("_last_states")
+        if last is not None and last[0] == key:
+            return last[1]
+        links = self.motion.states(theta)
+        self.__dict__["_last_states"] = (key, links)  # not a field: eq, hash, replace ignore it
+        return links
 
     def place(self, at: Attached, theta: float) -> tuple[float, float, float, float]:
         """(X, Z, dX/dθ, dZ/dθ) of a point at θ."""
