@@ -65,8 +65,12 @@ def main() -> None:
     record = SHARED / "ELC180.AT2"
     with tempfile.TemporaryDirectory() as tmp:
         folder = Path(tmp)
-        subprocess.run([sys.executable, "-m", "rockcli", "kinematic", str(BLOCK)], cwd=folder,
-                       capture_output=True, check=False)  # fmt: skip  (kernels loaded once)
+        subprocess.run(
+            [sys.executable, "-m", "rockcli", "kinematic", str(BLOCK)],
+            cwd=folder,
+            capture_output=True,
+            check=False,
+        )  # fmt: skip  (kernels loaded once)
         reports = {name: report_time(model, folder) for name, model in
                    (("block", BLOCK), ("wall", WALL))}  # fmt: skip
         retrofits = {}
