@@ -5,11 +5,11 @@ the median of REPEATS runs:
 
 - ``rock report MODEL -o r.html --pdf r.pdf --docx r.docx`` (the verification on the
   model's spectra, the casebook in the annex, every figure, the three documents) of the
-  block (examples/facade.toml) and of the two-storey wall (examples/two-storey-facade.toml):
+  block (examples/altar.toml) and of the two-storey wall (examples/two-storey-facade.toml):
   the issue's target is a wall's report in ≤ 3 s;
-- ``rock retrofit MODEL --record ELC180.AT2`` of the same two models, over the rod's
-  default diameters: the time a diameter (each the code check with the rod, and the time
-  history of every mechanism the rod is on).
+- ``rock retrofit MODEL --record ELC180.AT2`` of the tied block (examples/facade.toml) and
+  of the wall, over the rod's default diameters: the time a diameter (each the code check
+  with the rod, and the time history of every mechanism the rod is on).
 
     python benchmarks/report.py        # needs ../shared/records; PDF and DOCX: '.[report]'
 """
@@ -28,7 +28,9 @@ SHARED = ROOT.parent / "shared" / "records"
 REPEATS = 3
 #: The issue's target for a wall's report, figures, PDF and DOCX included [s].
 TARGET_REPORT = 3.0
-BLOCK = ROOT / "examples" / "facade.toml"
+BLOCK = ROOT / "examples" / "altar.toml"
+#: The block with a tie-rod (the altar has none) for the retrofit.
+TIED_BLOCK = ROOT / "examples" / "facade.toml"
 WALL = ROOT / "examples" / "two-storey-facade.toml"
 
 
@@ -37,8 +39,10 @@ def median_run(args: list[str], cwd: Path) -> float:
     times = []
     for _ in range(REPEATS):
         start = time.perf_counter()
-        subprocess.run([sys.executable, "-m", "rockcli", *args], cwd=cwd, check=True,
-                       capture_output=True)  # fmt: skip
+        done = subprocess.run([sys.executable, "-m", "rockcli", *args], cwd=cwd,
+                              capture_output=True)  # fmt: skip
+        if done.returncode not in (0, 1):  # 1: a verdict (no diameter found), not a failure
+            sys.exit(f"rock {' '.join(args)}: exit {done.returncode}\n{done.stderr.decode()}")
         times.append(time.perf_counter() - start)
     return statistics.median(times)
 
@@ -74,11 +78,11 @@ def main() -> None:
         reports = {name: report_time(model, folder) for name, model in
                    (("block", BLOCK), ("wall", WALL))}  # fmt: skip
         retrofits = {}
-        for name, model in (("block", BLOCK), ("wall", WALL)):
+        for name, model in (("block", TIED_BLOCK), ("wall", WALL)):
             took = median_run(["retrofit", str(model), "--record", str(record)], folder)
             retrofits[name] = (took, diameters(model, record, folder))
     print(f"median of {REPEATS} runs, each a fresh `rock` process")
-    print(f"  rock report, HTML + PDF + DOCX, block (facade.toml)        {reports['block']:6.2f} s")
+    print(f"  rock report, HTML + PDF + DOCX, block (altar.toml)         {reports['block']:6.2f} s")
     print(f"  rock report, HTML + PDF + DOCX, wall (two-storey-facade)   {reports['wall']:6.2f} s"
           f"   (target ≤ {TARGET_REPORT:g} s)")  # fmt: skip
     for name in ("block", "wall"):
