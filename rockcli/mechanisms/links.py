@@ -25,7 +25,8 @@ positions and derivatives.
   (the two-block chain of Sorrentino, Masiani & Griffith 2008, Struct. Eng. Mech. 29:433–453,
   and of Doherty et al. 2002, EESD 31:833–850).
 
-Pure and silent: only :mod:`math` and :mod:`rockcli.mechanics`.
+Pure and silent: :mod:`math` (numpy for an array of rotations: the chain's table) and
+:mod:`rockcli.mechanics`.
 """
 
 from __future__ import annotations
@@ -33,8 +34,35 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 from functools import cached_property
+from typing import Any
 
-from rockcli.mechanics import versine
+import numpy as np
+
+from rockcli.mechanics import VERSINE_SERIES_BELOW, versine
+
+#: A rotation [rad], or an array of rotations (the chain's table evaluates its grid at once):
+#: the links' arithmetic is numpy's duck typing, so a state's fields are arrays then.
+Angle = Any
+
+
+def cos(a: Angle) -> Angle:
+    """cos a: math's for a number, numpy's for an array."""
+    return np.cos(a) if isinstance(a, np.ndarray) else math.cos(a)
+
+
+def sin(a: Angle) -> Angle:
+    """sin a: math's for a number, numpy's for an array."""
+    return np.sin(a) if isinstance(a, np.ndarray) else math.sin(a)
+
+
+def versines(a: Angle, cos_a: Angle) -> Angle:
+    """mechanics.versine (1 − cos a by its series below VERSINE_SERIES_BELOW) of a number, or
+    of every element of an array."""
+    if not isinstance(a, np.ndarray) and not isinstance(cos_a, np.ndarray):
+        return versine(a, cos_a)
+    a2 = a * a
+    series = a2 * (0.5 - a2 * (1.0 / 24.0 - a2 * (1.0 / 720.0)))
+    return np.where(np.abs(a) < VERSINE_SERIES_BELOW, series, 1.0 - cos_a)
 
 
 @dataclass(frozen=True)
@@ -59,12 +87,13 @@ class LinkState:
         rotation: c − p plus (Rot(φ) − I)(p − p0) with 1 − cos φ from mechanics.versine (the
         difference of the positions loses every digit below ε·|p|)."""
         vx, vz = x - self.px, z - self.pz
-        s, vers = math.sin(self.phi), versine(self.phi, math.cos(self.phi))
+        s, vers = sin(self.phi), versines(self.phi, cos(self.phi))
         return self.ux - vx * vers - vz * s, self.uz + vx * s - vz * vers
 
     def place(self, x: float, z: float) -> tuple[float, float, float, float]:
-        """(X, Z, dX/dθ, dZ/dθ) of the link's point (x, z) at rest."""
-        c, s = math.cos(self.phi), math.sin(self.phi)
+        """(X, Z, dX/dθ, dZ/dθ) of the link's point (x, z) at rest (each an array for a
+        state of an array of rotations)."""
+        c, s = cos(self.phi), sin(self.phi)
         vx = (x - self.px) * c - (z - self.pz) * s
         vz = (x - self.px) * s + (z - self.pz) * c
         return (
@@ -86,8 +115,8 @@ class Rotation:
         """The largest rotation the motion is defined for [rad]."""
         return math.pi / 2
 
-    def states(self, theta: float) -> tuple[LinkState, ...]:
-        """The link at θ."""
+    def states(self, theta: Angle) -> tuple[LinkState, ...]:
+        """The link at θ (a rotation, or an array of them)."""
         return (LinkState(0.0, 0.0, 0.0, 0.0, theta, 0.0, 0.0, 1.0),)
 
 
@@ -144,19 +173,46 @@ class TwoBlock:
             psi = 2.0 * math.asin(arg)
         return psi
 
-    def states(self, theta: float) -> tuple[LinkState, LinkState]:
-        """The two links at θ."""
-        c, s = math.cos(theta), math.sin(theta)
+    def upper_rotations(self, shift: np.ndarray, length: float, delta: float) -> np.ndarray:
+        """:meth:`upper_rotation` of every element of an array of shifts (an element whose
+        step leaves [−1, 1] keeps its last ψ, as the loop's break does)."""
+        q = np.clip(math.cos(delta) + shift / length, -1.0, 1.0)
+        psi = delta - np.arccos(q)
+        live = np.ones(psi.shape, dtype=bool)
+        for _ in range(UPPER_ROTATION_STEPS):
+            with np.errstate(divide="ignore", invalid="ignore"):
+                arg = shift / (2.0 * length * np.sin(delta - 0.5 * psi))
+            live &= (arg >= -1.0) & (arg <= 1.0)
+            psi = np.where(live, 2.0 * np.arcsin(np.where(live, arg, 0.0)), psi)
+        return psi
+
+    def upper_motion(
+        self, shift: Angle, dhx: Angle, length: float, delta: float
+    ) -> tuple[Angle, Angle]:
+        """(ψ, ψ′) of the upper link for the hinge's inward shift and its x-velocity
+        dx_H/dθ = ``dhx`` (ψ′ = dx_H/dθ / (L sin(ψ − δ)), inf where the chord is flat)."""
+        if isinstance(shift, np.ndarray):
+            psi_all = self.upper_rotations(shift, length, delta)
+            denom_all = length * np.sin(psi_all - delta)
+            with np.errstate(divide="ignore"):
+                ratio = dhx / np.where(denom_all != 0.0, denom_all, 1.0)
+            return psi_all, np.where(denom_all != 0.0, ratio, np.inf)
+        assert not isinstance(dhx, np.ndarray)
+        psi = self.upper_rotation(shift, length, delta)
+        denom = length * math.sin(psi - delta)
+        return psi, (dhx / denom if denom != 0.0 else math.inf)
+
+    def states(self, theta: Angle) -> tuple[LinkState, LinkState]:
+        """The two links at θ (a rotation, or an array of them: each field an array)."""
+        c, s = cos(theta), sin(theta)
         hx = self.hinge_x * c - self.hinge_z * s
         hz = self.hinge_x * s + self.hinge_z * c
         dhx, dhz = -hz, hx
         length, delta = self.chord
-        vers = versine(theta, c)
+        vers = versines(theta, c)
         ux = -self.hinge_x * vers - self.hinge_z * s
         uz = self.hinge_x * s - self.hinge_z * vers
-        psi = self.upper_rotation(-ux, length, delta)
-        denom = length * math.sin(psi - delta)
-        dpsi = dhx / denom if denom != 0.0 else math.inf
+        psi, dpsi = self.upper_motion(-ux, dhx, length, delta)
         lower = LinkState(0.0, 0.0, 0.0, 0.0, theta, 0.0, 0.0, 1.0)
         upper = LinkState(self.hinge_x, self.hinge_z, hx, hz, -psi, dhx, dhz, -dpsi, ux, uz)
         return lower, upper

@@ -28,13 +28,16 @@ with
 The thrusts (T of work_terms, opening) and the restrainers (minus the virtual work F·δx of
 their forces, ChainPoint.moment) are external generalised forces, not in V.
 
-Pure and silent: only :mod:`math` and the package's own modules.
+Pure and silent: :mod:`math`, numpy (a grid of rotations at once) and the package's own
+modules.
 """
 
 from __future__ import annotations
 
 import math
 from collections.abc import Iterator
+
+import numpy as np
 
 from rockcli.mechanisms.links import LinkState
 from rockcli.mechanisms.side import ChainSide
@@ -112,6 +115,13 @@ def mass_slope(side: ChainSide, theta: float) -> float:
     h = :data:`MASS_STEP` (error O(h²)); within h of the motion's limit, the one-sided
     [3M(θ) − 4M(θ − h) + M(θ − 2h)]/(2h), of the same order (Press et al., §5.7)."""
     h = MASS_STEP
+    if isinstance(theta, np.ndarray):  # a grid of rotations: each by its own formula
+        with np.errstate(invalid="ignore", divide="ignore"):
+            central = (generalised_mass(side, theta + h) - generalised_mass(side, theta - h)) / (
+                2 * h
+            )
+            m0, m1, m2 = (generalised_mass(side, theta - k * h) for k in range(3))
+        return np.where(theta + h <= side.limit, central, (3.0 * m0 - 4.0 * m1 + m2) / (2.0 * h))
     if theta + h <= side.limit:
         return (generalised_mass(side, theta + h) - generalised_mass(side, theta - h)) / (2 * h)
     m0, m1, m2 = (generalised_mass(side, theta - k * h) for k in range(3))

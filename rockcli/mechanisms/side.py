@@ -17,13 +17,16 @@ From the one configuration function (the motion's link states) come, at any rota
 - the control point's displacement d_k(θ) (the bodies' centre of mass) for d*;
 - the equation of motion's M(θ), V(θ), Γ(θ) (rockcli.mechanisms.motion).
 
-Pure and silent: only :mod:`math` and the package's own modules.
+Pure and silent: :mod:`math`, numpy (a grid of rotations at once) and the package's own
+modules.
 """
 
 from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
+
+import numpy as np
 
 from rockcli.mechanics import Restrainer, WorkItem
 from rockcli.mechanisms.bodies import Body
@@ -130,6 +133,8 @@ class ChainSide:
     def states(self, theta: float) -> tuple[LinkState, ...]:
         """Every link at θ (the last rotation's kept: the curve's α(θ) asks for the links'
         places once for the weights and again for each restrainer's force and arm)."""
+        if isinstance(theta, np.ndarray):  # a grid of rotations (the chain's table)
+            return self.motion.states(theta)
         key = (theta, math.copysign(1.0, theta))
         last = self.__dict__.get("_last_states")
         if last is not None and last[0] == key:

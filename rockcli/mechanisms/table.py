@@ -12,7 +12,8 @@ G, H, T and M to about 1e-11 of their size, M′ to 1e-7 of M per radian near th
 reference engine reads the configuration function itself (ChainTable.exact), so the agreement of
 the two engines measures the table's error too.
 
-Pure and silent: only :mod:`math` and the package's own modules.
+Pure and silent: :mod:`math`, numpy (the grid's nodes at once) and the package's own
+modules.
 """
 
 from __future__ import annotations
@@ -21,7 +22,10 @@ import math
 from dataclasses import replace
 from functools import lru_cache
 
+import numpy as np
+
 from rockcli.mechanics import CH_HEAD, PA_COLS, PA_HEAD, ChainTable
+from rockcli.mechanisms.links import Angle
 from rockcli.mechanisms.motion import (
     MASS_STEP,
     generalised_mass,
@@ -63,28 +67,37 @@ def slopes(side: ChainSide, a: float, mp: float) -> tuple[float, float, float, f
     return (g1 - g0) / (2 * hs), (h1 - h0) / (2 * hs), (t1 - t0) / (2 * hs), mp, curvature
 
 
+def nodes(end: float) -> Angle:
+    """The NODES rotations of the table's grid on [0, end] [rad] (an array, which the chain's
+    functions take in place of one rotation: rockcli.mechanisms.links.Angle)."""
+    return end * np.arange(NODES) / (NODES - 1)
+
+
+def columns(*values: float | np.ndarray) -> tuple[float, ...]:
+    """Columns of values at the nodes (a number: the same at every node) as the table's
+    rows, node after node."""
+    grid = np.column_stack(np.broadcast_arrays(*values, np.empty(NODES)))[:, : len(values)]
+    return tuple(grid.ravel().tolist())
+
+
 def rows(side: ChainSide, end: float) -> tuple[float, ...]:
-    """The side's NODES rows of the table on [0, end]."""
-    out: list[float] = []
-    for k in range(NODES):
-        a = end * k / (NODES - 1)
-        values = terms(side, a)
-        out += [*values, *slopes(side, a, values[4])]
-    return tuple(out)
+    """The side's NODES rows of the table on [0, end], every node at once (the configuration
+    function of an array of rotations: numpy's sin and cos, which may differ from math's in
+    the last bit, far below the interpolation's error)."""
+    a = nodes(end)
+    values = terms(side, a)
+    return columns(*values, *slopes(side, a, values[4]))
 
 
-def path_rows(side: ChainSide, index: int, end: float) -> list[float]:
+def path_rows(side: ChainSide, index: int, end: float) -> tuple[float, ...]:
     """(u, u′, u″) of restrainer ``index``'s point on ``side`` at the NODES nodes of [0, end]:
     its displacement away from the wall, its virtual displacement δx per unit rotation (both
     from the configuration function, to a few ulps) and δx's central difference."""
     point = side.placement(index)
-    out: list[float] = []
-    for k in range(NODES):
-        a = end * k / (NODES - 1)
-        slope = point.moment(1.0, a)  # F·δx for F = 1: δx
-        ahead, behind = point.moment(1.0, a + SLOPE_STEP), point.moment(1.0, a - SLOPE_STEP)
-        out += [point.elongation(a), slope, (ahead - behind) / (2.0 * SLOPE_STEP)]
-    return out
+    a = nodes(end)
+    slope = point.moment(1.0, a)  # F·δx for F = 1: δx
+    ahead, behind = point.moment(1.0, a + SLOPE_STEP), point.moment(1.0, a - SLOPE_STEP)
+    return columns(point.elongation(a), slope, (ahead - behind) / (2.0 * SLOPE_STEP))
 
 
 @lru_cache(maxsize=256)
@@ -93,12 +106,11 @@ def shrinks_at(plus: ChainSide, minus: ChainSide, index: int) -> tuple[int, floa
     ``index``'s elongation stops growing (δx ≤ 0: its point turns back towards its anchor);
     None when it grows over the whole table on both sides."""
     end = end_of(plus, minus)
+    a = nodes(end)
     for s, side in ((1, plus), (-1, minus)):
-        point = side.placement(index)
-        for k in range(NODES):
-            a = end * k / (NODES - 1)
-            if point.moment(1.0, a) <= 0.0:
-                return s, a
+        turned = np.flatnonzero(side.placement(index).moment(1.0, a) <= 0.0)
+        if len(turned):
+            return s, float(a[turned[0]])
     return None
 
 
