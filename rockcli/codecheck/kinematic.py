@@ -10,20 +10,24 @@ that side by construction when no restrainer enters as a force. A restrainer ent
 ``code_action`` says: a constant stabilising force (a tie-rod's design strength) or a spring
 with its pretension, capped at its strength; either until it is lost.
 
-Pure and silent: only :mod:`math`, :mod:`rockcli.mechanics` and :mod:`rockcli.searches`.
+Pure and silent: :mod:`math`, numpy (a chain's curve over a grid of rotations),
+:mod:`rockcli.mechanics` and :mod:`rockcli.searches`.
 """
 
 from __future__ import annotations
 
 import math
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass, replace
 from functools import cached_property
+
+import numpy as np
 
 from rockcli.codecheck.free import branch_acceleration, branch_end
 from rockcli.codecheck.result import WorkTerm
 from rockcli.mechanics import Restrainer, WorkItem
 from rockcli.mechanisms.block import BlockSide, Polar, polar_of
+from rockcli.mechanisms.links import Angle
 from rockcli.mechanisms.side import ChainPoint, ChainSide
 from rockcli.searches import brent_root
 
@@ -249,6 +253,8 @@ def force_at(
     if sp.code_action == FORCE:
         return sp.code_force
     u = (place or polar_of(sp, s)).elongation(theta)
+    if isinstance(u, np.ndarray):  # a grid of rotations (zero_rotation's scan)
+        return np.minimum(sp.pretension + k * u, force_cap(sp, s))
     return min(sp.pretension + k * u, force_cap(sp, s))
 
 
@@ -323,10 +329,24 @@ def _spring_moments(mech: Mechanism, theta: float, sure_only: bool, intact: bool
         if sure_only and lost:
             continue
         place = mech.placement(i)
+        if isinstance(theta, np.ndarray):  # a grid: each rotation with the member or not
+            moment = restrainer_moment(sp, mech.side, theta, place)
+            if lost and not intact:
+                moment = np.where(lost_at_each(mech, i, place, theta), 0.0, moment)
+            total = total + moment
+            continue
         if lost and not intact and lost_at(mech, i, place, theta):
             continue
         total += restrainer_moment(sp, mech.side, theta, place)
     return total
+
+
+def lost_at_each(
+    mech: Mechanism, index: int, place: Polar | ChainPoint, theta: np.ndarray
+) -> np.ndarray:
+    """:func:`lost_at` at each rotation of an array."""
+    past = theta > mech.loss_rotations[index]
+    return past & (theta > 0.0) if isinstance(place, ChainPoint) else past
 
 
 def lost_at(mech: Mechanism, index: int, place: Polar | ChainPoint, theta: float) -> bool:
@@ -371,6 +391,8 @@ def zero_rotation(mech: Mechanism) -> float | None:
     def f(t: float) -> float:
         return load_multiplier(mech, t)
 
+    if isinstance(mech.view, ChainSide):
+        return chain_zero_rotation(mech, f)
     prev, f_prev = 0.0, math.inf
     limit = mech.view.limit
     for k in range(1, BRACKET_POINTS + 1):
@@ -378,6 +400,32 @@ def zero_rotation(mech: Mechanism) -> float | None:
         if (f_t := f(t)) <= 0.0:
             return brent_root(f, prev, t, f_prev, f_t)
         prev, f_prev = t, f_t
+    return None
+
+
+#: Points of the bracket scan a chain's curve evaluates at once (most zeros lie among the
+#: first: a chunk at a time, so that the scan stops near where the point-by-point one did).
+SCAN_CHUNK = 40
+
+
+def chain_zero_rotation(mech: Mechanism, f: Callable[[float], float]) -> float | None:
+    """:func:`zero_rotation` of a catalogue mechanism: the same scan of BRACKET_POINTS
+    rotations, SCAN_CHUNK of them at a time through the chain's functions of an array of
+    rotations (rockcli.mechanisms.links.Angle), then Brent's search in the first bracket."""
+    limit = mech.view.limit
+    prev, f_prev = 0.0, math.inf
+    for start in range(1, BRACKET_POINTS + 1, SCAN_CHUNK):
+        ks = np.arange(start, min(start + SCAN_CHUNK, BRACKET_POINTS + 1))
+        ts: Angle = limit * ks / BRACKET_POINTS
+        with np.errstate(all="ignore"):  # at the chain's limit its chord lies flat (inf, nan)
+            values: Angle = load_multiplier(mech, ts)
+        hit = np.flatnonzero(values <= 0.0)
+        if len(hit):
+            k = int(hit[0])
+            if k > 0:
+                prev, f_prev = float(ts[k - 1]), float(values[k - 1])
+            return brent_root(f, prev, float(ts[k]), f_prev, float(values[k]))
+        prev, f_prev = float(ts[-1]), float(values[-1])
     return None
 
 
