@@ -153,9 +153,7 @@ def analyse_capacity(
                               "(the elastic branch of Circ. 7/2019 §C8.7.1.2.1.3, Eqs. "
                               "C8.7.1.6–7, is for elements free to vibrate: [[mechanisms]] "
                               "free = true)"))  # fmt: skip
-    actions = restrainer_actions(
-        cap, *governing_demand(cap, settings.edition, values, checks, dem, pos)
-    )
+    actions = restrainer_actions(cap, *governing_demand(settings.edition, values, checks))
     return KinematicResult(
         edition=settings.edition,
         side=cap.mech.side,
@@ -182,12 +180,7 @@ def analyse_capacity(
 
 
 def governing_demand(
-    cap: Capacity,
-    edition: str,
-    values: dict[str, float | None],
-    checks: list[Check],
-    dem: dict[str, LimitStateDemand],
-    pos: Position,
+    edition: str, values: dict[str, float | None], checks: list[Check]
 ) -> tuple[float | None, str]:
     """(d* [m], what it is) at which a spring's force is verified against its strength.
 

@@ -98,8 +98,8 @@ def floor_spectrum(
 
 
 def _positive_part(x: Periods) -> Periods:
-    """max(x, 0), exactly, for a number or an array: (x + |x|)/2."""
-    return 0.5 * (x + abs(x))
+    """max(x, 0) of a number or of each element of an array."""
+    return np.maximum(x, 0.0) if isinstance(x, np.ndarray) else max(x, 0.0)
 
 
 def _bounded_above(T: Periods, limit: float, value: Periods, bound: Periods) -> Periods:

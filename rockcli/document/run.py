@@ -70,6 +70,12 @@ def front_with(front: dict[str, Any], casebook: dict[str, Any] | None) -> dict[s
 CORES_BESIDE = 2
 
 
+def usable_cores() -> int:
+    """The cores this process may run on (its affinity; the machine's count elsewhere)."""
+    affinity = getattr(os, "sched_getaffinity", None)
+    return len(affinity(0)) if affinity is not None else (os.cpu_count() or 1)
+
+
 @contextmanager
 def casebook_beside(
     front: dict[str, Any] | None, grid_file: str | None
@@ -80,21 +86,27 @@ def casebook_beside(
     server), its result taken when the document is built; here, when asked, on one core or
     when the worker process could not run it. The worker stops with the report."""
     front = front or {}
-    if front.get("casebook", "annex") == "none" or (os.cpu_count() or 1) < CORES_BESIDE:
-        yield partial(report_front, front, grid_file)
+    here = partial(report_front, front, grid_file)
+    if front.get("casebook", "annex") == "none" or usable_cores() < CORES_BESIDE:
+        yield here
         return
     from concurrent.futures.process import BrokenProcessPool
 
     from rockcli.studies.parallel.executor import process_executor, stop
 
-    pool = process_executor(1)
-    future = pool.submit(casebook_document, grid_file)
+    try:
+        pool = process_executor(1)
+        future = pool.submit(casebook_document, grid_file)
+    except (OSError, RuntimeError, NotImplementedError, AssertionError):
+        # no worker process here (a sandbox without semaphores, a daemonic process)
+        yield here
+        return
 
     def result() -> dict[str, Any]:
         try:
             casebook = future.result()
         except BrokenProcessPool:  # the worker died (killed, out of memory): run it here
-            return report_front(front, grid_file)
+            return here()
         return front_with(front, casebook)
 
     try:
@@ -155,7 +167,8 @@ def wall_parts(
     choices: ReportChoices,
     step: Callable[[], None],
 ) -> list[Any]:
-    """Each model's part of the report (without the casebook: :func:`with_casebook`)."""
+    """Each model's part of the report (its inputs without the casebook, which the document's
+    build asks :func:`casebook_beside` for)."""
     from rockcli.document.build import Inputs
     from rockcli.document.walls import Part
     from rockcli.model.catalogue import catalogue

@@ -27,7 +27,7 @@ Pure and silent: only :mod:`math`, the package's own modules and :mod:`rockcli.s
 from __future__ import annotations
 
 import math
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass, replace
 
 from rockcli.mechanisms.bodies import Body, gable, prism, triangle
@@ -328,20 +328,25 @@ def flexure_range(wall: Wall, storey: int) -> tuple[float, float]:
     return base + margin, base + s.height - margin
 
 
-#: Points of the scan of the optimal hinge (then Brent's refinement between the best one's
-#: neighbours).
-HINGE_SCAN = 41
+#: Points of the uniform scan of the optimal hinge (then Brent's refinement between the best
+#: one's neighbours).
+HINGE_SCAN = 101
 #: The hinge height's resolution beyond √ε·z, as a share of the range searched.
 HINGE_RESOLUTION = 1e-10
 
 
-def optimal_hinge(lo: float, hi: float, alpha0: Callable[[float], float]) -> float:
-    """The hinge height in [lo, hi] that minimises ``alpha0``: the lowest of a uniform scan,
-    refined by Brent's parabolic search between its neighbours (rockcli.searches; kept only
-    if lower)."""
-    zs = [lo + (hi - lo) * k / (HINGE_SCAN - 1) for k in range(HINGE_SCAN)]
+def optimal_hinge(
+    lo: float, hi: float, alpha0: Callable[[float], float], breaks: Sequence[float] = ()
+) -> float:
+    """The hinge height in [lo, hi] that minimises ``alpha0``: the lowest of a uniform scan
+    and of the heights ``breaks`` inside the range (where a load, thrust or restrainer
+    changes block as the hinge passes it, α0 jumps: a dip narrower than the scan's step can
+    lie there), refined by Brent's parabolic search between its neighbours
+    (rockcli.searches; kept only if lower)."""
+    uniform = [lo + (hi - lo) * k / (HINGE_SCAN - 1) for k in range(HINGE_SCAN)]
+    zs = sorted({*uniform, *(z for z in breaks if lo < z < hi)})
     values = [alpha0(z) for z in zs]
-    k = min(range(HINGE_SCAN), key=values.__getitem__)
-    a, b = zs[max(k - 1, 0)], zs[min(k + 1, HINGE_SCAN - 1)]
+    k = min(range(len(zs)), key=values.__getitem__)
+    a, b = zs[max(k - 1, 0)], zs[min(k + 1, len(zs) - 1)]
     best, value = brent_minimum(alpha0, a, b, HINGE_RESOLUTION * (hi - lo))
     return best if value <= values[k] else zs[k]

@@ -264,7 +264,7 @@ class ChainSide:
 
     def rotation_at(self, d_k: float) -> float:
         """The rotation at which the control point has moved d_k [m] (inverse of
-        :meth:`control_displacement`, by bisection within the motion's range)."""
+        :meth:`control_displacement`, by :meth:`invert` within the motion's range)."""
         return self.invert(self.control_displacement, d_k, clamp=True)
 
     def invert(self, f, value: float, clamp: bool = False) -> float:
@@ -277,4 +277,4 @@ class ChainSide:
         short_hi = value - f(hi)
         if short_hi > 0.0:
             return hi if clamp else math.inf
-        return brent_root(lambda theta: value - f(theta), 0.0, hi, math.inf, short_hi)
+        return brent_root(lambda theta: value - f(theta), 0.0, hi, value, short_hi)

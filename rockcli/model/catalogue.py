@@ -362,7 +362,9 @@ def resolved(wall: Wall, spec: MechanismSpec, sides: tuple[int, ...]):
     def smallest(z: float) -> float:
         return min(alpha0(SideCheck(uncrushed(wall, partial(f, z)))) for f in families)
 
-    z = optimal_hinge(lo, hi, smallest)
+    attached = [*(ld.z for ld in wall.loads), *(th.z for th in wall.thrusts),
+                *(rs.z for rs in wall.restrainers)]  # fmt: skip
+    z = optimal_hinge(lo, hi, smallest, attached)
     found = ("optimal hinge at {z:.3f} m (the lowest α0 between {lo:.3f} and {hi:.3f} m: the "
              "storey less max(thickness, a tenth of its height) at each end)")  # fmt: skip
     values = {"z": z, "lo": lo, "hi": hi}

@@ -136,12 +136,12 @@ def test_governing_demand_falls_back_on_du_then_none() -> None:
     # façade's vault: a number no check asks for).
     cap = cap_of(member("spring"))
     values: dict[str, float | None] = {"du_star": 0.04}
-    assert governing_demand(cap, "2009", values, [], {}, Position()) == (0.04, "du* = 0.04 m")
-    d, at = governing_demand(cap, "2009", {"du_star": None}, [], {}, Position())
+    assert governing_demand("2009", values, []) == (0.04, "du* = 0.04 m")
+    d, at = governing_demand("2009", {"du_star": None}, [])
     assert d is None and at == "the check reaches no displacement (no du*)"
     [a] = restrainer_actions(cap, None, at)
     assert (a.demand, a.utilisation, a.passed, a.lost) == (None, None, None, False)
-    d, at = governing_demand(cap, "2009", values, [_check(0.02)], {}, Position())
+    d, at = governing_demand("2009", values, [_check(0.02)])
     assert (d, at) == (0.02, "SLV displacement demand d* = 0.02 m")
 
 

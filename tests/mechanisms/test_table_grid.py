@@ -73,3 +73,25 @@ def test_the_tables_rows_are_the_configuration_function_node_by_node() -> None:
             for col, want in enumerate(node):
                 tol = 1e-8 if col == 9 else 1e-11
                 assert math.isclose(table[k, col], want, rel_tol=tol, abs_tol=1e-9), (k, col)
+
+
+def test_one_table_serves_every_rod() -> None:
+    """A chain's table reads its weights, not its restrainers: sides that differ only by a
+    member's stiffness (a retrofit's diameters) share one table."""
+    from dataclasses import replace
+
+    from rockcli.mechanisms.table import tabulate
+    from rockcli.model.catalogue import catalogue, named
+    from rockcli.model.load import load_model
+
+    mech = named(catalogue(load_model(EXAMPLE)), "vertical flexure, storey 2")
+    plus, minus = mech.views
+    assert plus.restrainers, "the example's tie-rod is on the flexure of storey 2"
+
+    def stiffer(side):
+        return replace(side, restrainers=tuple(replace(r, k_pos=2 * r.k_pos, k_neg=2 * r.k_neg)
+                                               for r in side.restrainers))  # fmt: skip
+
+    other_plus, other_minus = stiffer(plus), stiffer(minus)
+    assert other_plus != plus
+    assert tabulate(other_plus, other_minus) is tabulate(plus, minus)

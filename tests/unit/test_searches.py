@@ -69,7 +69,7 @@ def test_root_of_a_drop_is_the_jump(jump: float) -> None:
 
 
 def test_root_at_the_bracket_end_and_bounded_on_noise() -> None:
-    assert brent_root(lambda x: -x, -1.0, 0.0, 1.0, 0.0) == 0.0
+    assert abs(brent_root(lambda x: -x, -1.0, 0.0, 1.0, 0.0)) < 1e-15
     noisy = Counted(lambda x: math.sin(1e6 * x) - 2.0 * (x - 0.5))
     root = brent_root(noisy, 0.0, 1.0, noisy(0.0), noisy(1.0))
     assert 0.0 <= root <= 1.0 and noisy.calls <= MAX_EVALUATIONS + 2
@@ -95,3 +95,20 @@ def test_minimum_of_a_kink_and_of_a_slope() -> None:
     assert abs(x - 0.3) < 1e-7 and kink.calls < 100
     x, _ = brent_minimum(lambda x: -x, 0.0, 1.0, 1e-12)
     assert 1.0 - x < 1e-7
+
+
+def test_root_at_the_start_of_a_zero_plateau_as_bisection() -> None:
+    """f positive, then zero over an interval: the root is where it stops being positive (a
+    bisection keeping lo where f > 0 finds the same), not the bracket's end."""
+    f = Counted(lambda x: 5.0 - x if x < 0.3 else 0.0)
+    root = brent_root(f, 0.0, 1.0, f(0.0), f(1.0))
+    assert abs(root - 0.3) <= 8 * math.ulp(0.3)
+    assert abs(root - bisection(f.f, 0.0, 1.0)) <= 8 * math.ulp(0.3)
+
+
+@given(st.floats(1e-9, 1.0 - 1e-9))
+def test_root_of_a_drop_anywhere_in_the_bracket(jump: float) -> None:
+    f = Counted(lambda x: 2.0 - x if x < jump else -0.5)
+    root = brent_root(f, 0.0, 1.0, 2.0, -0.5)
+    assert abs(root - jump) <= 8 * math.ulp(jump) + 2 * math.ulp(0.0)
+    assert f.calls <= MAX_EVALUATIONS
