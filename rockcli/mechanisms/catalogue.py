@@ -328,9 +328,12 @@ def flexure_range(wall: Wall, storey: int) -> tuple[float, float]:
     return base + margin, base + s.height - margin
 
 
-#: Points of the uniform scan of the optimal hinge (then Brent's refinement between the best
-#: one's neighbours).
-HINGE_SCAN = 101
+#: Points of the uniform scan of the optimal hinge, beside the heights where something is
+#: attached (then Brent's refinement between the best one's neighbours). Measured: on 314
+#: flexures of the two-storey façade with one to three loads at random heights, weights and
+#: levers inside its storeys and random thicknesses, the scan of 41 points and those heights
+#: finds the lowest α0 of a 4001-point scan every time (to 2e-16; benchmarks/hinge_scan.py).
+HINGE_SCAN = 41
 #: The hinge height's resolution beyond √ε·z, as a share of the range searched.
 HINGE_RESOLUTION = 1e-10
 
