@@ -10,7 +10,7 @@ section (NTC 2018 §10.2: theory, field of use, the validation casebook of this 
 from __future__ import annotations
 
 import hashlib
-from collections.abc import Callable, Mapping, Sequence
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, replace
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
@@ -64,14 +64,10 @@ class Inputs:
     casebook_place: str = "annex"
 
 
-def build_document(
-    parts: Sequence[Part], lang: str, front: Callable[[], Mapping[str, Any]] | None = None
-) -> Document:
+def build_document(parts: Sequence[Part], lang: str) -> Document:
     """The report of one wall or several (``parts``: each its inputs, its verification on the
     site's spectra, and with a record its comparison, JSON document and other mechanisms in
-    full) in language ``lang``; ``front()``: the inputs' casebook (and project), asked for
-    once the walls' sections are drawn (the casebook runs meanwhile:
-    rockcli.document.run.casebook_beside)."""
+    full) in language ``lang``."""
     from rockcli.document.data import report_data
     from rockcli.document.walls import summary_section
 
@@ -89,8 +85,6 @@ def build_document(
     names = [part.name for part in parts]
     record = None if inputs.record is None else inputs.record.name
     subtitle = report_subtitle(names, record, w)
-    if front is not None:
-        inputs = replace(inputs, **front())
     document = assemble(inputs, w, subtitle, names, (*summary, *body))
     return replace(document, data=report_data(parts))
 

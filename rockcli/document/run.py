@@ -3,11 +3,9 @@
 from __future__ import annotations
 
 import os
-from collections.abc import Callable, Iterator, Sequence
-from contextlib import contextmanager
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from datetime import UTC, datetime
-from functools import partial
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
@@ -56,65 +54,9 @@ def report_front(front: dict[str, Any] | None, grid_file: str | None) -> dict[st
     "casebook" ("annex", "inline" or "none": the casebook is then not run)."""
     front = front or {}
     place = front.get("casebook", "annex")
-    return front_with(front, None if place == "none" else casebook_document(grid_file))
-
-
-def front_with(front: dict[str, Any], casebook: dict[str, Any] | None) -> dict[str, Any]:
-    """:func:`report_front` given the casebook's document."""
-    place = front.get("casebook", "annex")
+    casebook = None if place == "none" else casebook_document(grid_file)
     return {"project": front.get("project"), "casebook": casebook,
             "casebook_place": "inline" if place == "none" else place}  # fmt: skip
-
-
-#: Cores below which the casebook runs in the report's own process, after its analyses.
-CORES_BESIDE = 2
-
-
-def usable_cores() -> int:
-    """The cores this process may run on (its affinity; the machine's count elsewhere)."""
-    affinity = getattr(os, "sched_getaffinity", None)
-    return len(affinity(0)) if affinity is not None else (os.cpu_count() or 1)
-
-
-@contextmanager
-def casebook_beside(
-    front: dict[str, Any] | None, grid_file: str | None
-) -> Iterator[Callable[[], dict[str, Any]]]:
-    """:func:`report_front` run beside the report's analyses and figures: the casebook (one to
-    two seconds) in a worker process started now, where the machine has a second core
-    (rockcli.studies.parallel.executor.process_executor: a fork of the studies' warm fork
-    server), its result taken when the document is built; here, when asked, on one core or
-    when the worker process could not run it. The worker stops with the report."""
-    front = front or {}
-    here = partial(report_front, front, grid_file)
-    if front.get("casebook", "annex") == "none" or usable_cores() < CORES_BESIDE:
-        yield here
-        return
-    from concurrent.futures.process import BrokenProcessPool
-
-    from rockcli.studies.parallel.executor import process_executor, stop
-
-    try:
-        pool = process_executor(1)
-        future = pool.submit(casebook_document, grid_file)
-    except (OSError, RuntimeError, NotImplementedError, AssertionError):
-        # no worker process here (a sandbox without semaphores, a daemonic process)
-        yield here
-        return
-
-    def result() -> dict[str, Any]:
-        try:
-            casebook = future.result()
-        except BrokenProcessPool:  # the worker died (killed, out of memory): run it here
-            return here()
-        return front_with(front, casebook)
-
-    try:
-        yield result
-    except BaseException:
-        stop(pool)
-        raise
-    pool.shutdown(wait=True, cancel_futures=True)
 
 
 def write_report(
@@ -139,7 +81,9 @@ def write_report(
 
     Every model is read and checked before any analysis runs."""
     from rockcli.analyses.compare import check_code_demand
-    from rockcli.document.build import build_document
+    from rockcli.document.build import Inputs, build_document
+    from rockcli.document.walls import Part
+    from rockcli.model.catalogue import catalogue
     from rockcli.model.load import load_model
 
     comparison = choices.comparison
@@ -150,30 +94,8 @@ def write_report(
             check_code_demand(model, comparison.code_demand, file=path)
     outputs = 1 + (pdf_path is not None) + (docx_path is not None)
     step = Steps(len(models) * (2 if record is None else 3) + 1 + outputs, progress)
-    with casebook_beside(front, comparison.grid_file) as front_of:
-        parts = wall_parts(model_paths, models, record, command, files, choices, step)
-        step()
-        document = built(lambda: build_document(parts, lang, front_of), docx_path is not None)
-    verdict = ", ".join(part_verdict(part) for part in parts)
-    return write_document(document, html_path, pdf_path, verdict, docx_path, step)
-
-
-def wall_parts(
-    model_paths: Sequence[str],
-    models: Sequence[Any],
-    record: Record | None,
-    command: str,
-    files: Sequence[tuple[str, str]],
-    choices: ReportChoices,
-    step: Callable[[], None],
-) -> list[Any]:
-    """Each model's part of the report (its inputs without the casebook, which the document's
-    build asks :func:`casebook_beside` for)."""
-    from rockcli.document.build import Inputs
-    from rockcli.document.walls import Part
-    from rockcli.model.catalogue import catalogue
-
-    comparison = choices.comparison
+    front = report_front(front, comparison.grid_file)
+    step()
     parts = []
     for path, model in zip(model_paths, models, strict=True):
         mechanisms = catalogue(model)  # derived once: the verification and the scenario
@@ -184,7 +106,8 @@ def wall_parts(
             model, record, path, comparison, choices.shown, mechanisms)  # fmt: skip
         if record is not None:
             step()
-        inputs = Inputs(path, model, record, (("model", path), *files), command, report_date())
+        inputs = Inputs(path, model, record, (("model", path), *files), command, report_date(),
+                        **front)  # fmt: skip
         sizing = None
         if choices.retrofit:
             sizing = wall_sizing(
@@ -192,7 +115,9 @@ def wall_parts(
             )
         parts.append(Part(inputs, out, doc, others, sizing, verification))
         step()
-    return parts
+    document = built(lambda: build_document(parts, lang), docx_path is not None)
+    verdict = ", ".join(part_verdict(part) for part in parts)
+    return write_document(document, html_path, pdf_path, verdict, docx_path, step)
 
 
 def built(build: Callable[[], Any], word: bool) -> Any:
@@ -444,23 +369,21 @@ def write_suite_report(
 
     loads = [load_suite_and_model(path, suite_path, grid_file, target, allow_outside)
              for path in model_paths]  # fmt: skip
-    with casebook_beside(front, grid_file) as front_of:
-        parts = []
-        for path, loaded in zip(model_paths, loads, strict=True):
-            doc, runs, kin = suite_comparison(loaded, path, grid_file, analyses, code_demand)
-            files = [("model", path)]
-            if Path(suite_path).is_file():
-                files.append(("suite", suite_path))
-            files += [("record", str(entry.path)) for entry in loaded.settings.entries]
-            files += [("hazard_grid", grid_file)] if grid_file else []
-            inputs = Inputs(path, loaded.model, None, tuple(files), command, report_date())
-            verification = verification_of(loaded.model, analyses.edition, grid_file)
-            sizing = (suite_sizing(path, verification, doc, analyses, grid_file) if retrofit
-                      else None)  # fmt: skip
-            parts.append(SuitePart(inputs, doc, suite_document(loaded.check), runs, kin,
-                                   verification, sizing))  # fmt: skip
-        document = built(lambda: build_suite_document(parts, lang, front_of),
-                         docx_path is not None)  # fmt: skip
+    front = report_front(front, grid_file)
+    parts = []
+    for path, loaded in zip(model_paths, loads, strict=True):
+        doc, runs, kin = suite_comparison(loaded, path, grid_file, analyses, code_demand)
+        files = [("model", path)]
+        if Path(suite_path).is_file():
+            files.append(("suite", suite_path))
+        files += [("record", str(entry.path)) for entry in loaded.settings.entries]
+        files += [("hazard_grid", grid_file)] if grid_file else []
+        inputs = Inputs(path, loaded.model, None, tuple(files), command, report_date(), **front)
+        verification = verification_of(loaded.model, analyses.edition, grid_file)
+        sizing = suite_sizing(path, verification, doc, analyses, grid_file) if retrofit else None
+        parts.append(SuitePart(inputs, doc, suite_document(loaded.check), runs, kin,
+                               verification, sizing))  # fmt: skip
+    document = built(lambda: build_suite_document(parts, lang), docx_path is not None)
     verdict = ", ".join(str(part.doc["classification"]) for part in parts)
     return write_document(document, html_path, pdf_path, verdict, docx_path)
 

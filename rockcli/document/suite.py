@@ -8,7 +8,7 @@ kept (the same function, the same numbers).
 
 from __future__ import annotations
 
-from collections.abc import Callable, Mapping, Sequence
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, replace
 from typing import TYPE_CHECKING, Any
 
@@ -62,12 +62,9 @@ class SuitePart:
         return str(self.inputs.model.name)
 
 
-def build_suite_document(
-    parts: Sequence[SuitePart], lang: str, front: Callable[[], Mapping[str, Any]] | None = None
-) -> Document:
+def build_suite_document(parts: Sequence[SuitePart], lang: str) -> Document:
     """The report of a suite comparison of one model or several (a building's walls: one
-    summary over them, then each model's sections titled with its name); ``front()``: the
-    inputs' casebook, asked for once the sections are drawn (as build.build_document)."""
+    summary over them, then each model's sections titled with its name)."""
     from rockcli.document.walls import merged_files, rekeyed
 
     w = Words(lang)
@@ -85,8 +82,6 @@ def build_suite_document(
     suite = parts[0].doc["suite_name"]
     subtitle = (w("report.subtitle_suite_many", n=len(parts), suite=suite) if many
                 else w("report.subtitle_suite", model=names[0], suite=suite))  # fmt: skip
-    if front is not None:
-        inputs = replace(inputs, **front())
     document = assemble(inputs, w, subtitle, names, (*summary, *body))
     return replace(document, data=suite_data(parts))
 
