@@ -57,7 +57,9 @@ def sin(a: Angle) -> Angle:
 
 def versines(a: Angle, cos_a: Angle) -> Angle:
     """mechanics.versine (1 − cos a by its series below VERSINE_SERIES_BELOW) of a number, or
-    of every element of an array."""
+    of every element of an array: the same series, written again with numpy because the
+    engine compiles mechanics.versine for numbers only (tests/mechanisms/test_table_grid.py
+    checks the two agree bit for bit)."""
     if not isinstance(a, np.ndarray) and not isinstance(cos_a, np.ndarray):
         return versine(a, cos_a)
     a2 = a * a

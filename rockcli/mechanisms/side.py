@@ -17,7 +17,7 @@ From the one configuration function (the motion's link states) come, at any rota
 - the control point's displacement d_k(θ) (the bodies' centre of mass) for d*;
 - the equation of motion's M(θ), V(θ), Γ(θ) (rockcli.mechanisms.motion).
 
-Pure and silent: :mod:`math`, numpy (a grid of rotations at once), the package's own
+Pure and silent: :mod:`math` (the links take an array of rotations too), the package's own
 modules and :mod:`rockcli.searches`.
 """
 
@@ -25,8 +25,6 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
-
-import numpy as np
 
 from rockcli.mechanics import Restrainer, WorkItem
 from rockcli.mechanisms.bodies import Body
@@ -129,17 +127,8 @@ class ChainSide:
         return self.motion.limit
 
     def states(self, theta: float) -> tuple[LinkState, ...]:
-        """Every link at θ (the last rotation's kept: the curve's α(θ) asks for the links'
-        places once for the weights and again for each restrainer's force and arm)."""
-        if isinstance(theta, np.ndarray):  # a grid of rotations (the chain's table)
-            return self.motion.states(theta)
-        key = (theta, math.copysign(1.0, theta))
-        last = self.__dict__.get("_last_states")
-        if last is not None and last[0] == key:
-            return last[1]
-        links = self.motion.states(theta)
-        self.__dict__["_last_states"] = (key, links)  # not a field: eq, hash, replace ignore it
-        return links
+        """Every link at θ (a rotation, or an array of them: rockcli.mechanisms.links.Angle)."""
+        return self.motion.states(theta)
 
     def place(self, at: Attached, theta: float) -> tuple[float, float, float, float]:
         """(X, Z, dX/dθ, dZ/dθ) of a point at θ."""
