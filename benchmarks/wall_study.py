@@ -14,8 +14,11 @@ Measures in this process (one core, no worker start-up), each the median of REPE
   mechanism's α0, capacity curve, M*, e* and checks), the governing mechanism rocked (both
   polarities).
 
-Prints the time a case of each, the wall's ratio to the block (the issue's target: ≤ 5) and
-the catalogue check's time a case (the target: ≤ 1 ms with --jobs 2, so ≤ 2 ms on one core).
+Prints the time a case of each, the wall's ratio to the block (the issue's target: ≤ 5), the
+integration steps a case of each and the time a step (like with like: a case of the wall rocks
+through the whole record and its tail, most of the block study's cases overturn early or stay
+at rest), and the catalogue check's time a case (the target: ≤ 1 ms with --jobs 2, so ≤ 2 ms
+on one core).
 
     python benchmarks/wall_study.py [CASES]    # default 12; needs ../shared/records
 """
@@ -69,16 +72,34 @@ def median_per_case(fn: Callable[[], int]) -> float:
     return statistics.median(times)
 
 
-def block_per_case(folder: Path) -> float:
-    """A batched block study's time a case: the §4.4 scale study's first 2000 cases."""
+def block_per_case(folder: Path) -> tuple[float, float]:
+    """A batched block study's (time a case, integration steps a case, both polarities): the
+    §4.4 scale study's first 2000 cases."""
     from benchmarks.sweep import scale_study
+    from rockcli.dynamics import batch
+    from rockcli.dynamics import layout as L
     from rockcli.studies.sweep.study import load_study
     from rockcli.studies.sweep.worker import Chunk, run_chunk
 
     plan = load_study(str(scale_study(folder, shrink=10)))
     chunk = Chunk(plan, 0, range(2000))
     run_chunk(Chunk(plan, 0, range(2)))  # the record read, the kernels loaded
-    return median_per_case(lambda: len(run_chunk(chunk)))
+    per_case = median_per_case(lambda: len(run_chunk(chunk)))
+    run_blocks, steps = batch.run_blocks, [0]
+
+    def counted(*args: Any) -> Any:
+        runs = run_blocks(*args)
+        integrated = ~runs.mirrored
+        steps[0] += int(runs.out_i[:, 0, L.I_STEPS].sum())
+        steps[0] += int(runs.out_i[integrated, 1, L.I_STEPS].sum())
+        return runs
+
+    batch.run_blocks = counted
+    try:
+        n = len(run_chunk(chunk))
+    finally:
+        batch.run_blocks = run_blocks
+    return per_case, steps[0] / n
 
 
 def wall_plan(folder: Path) -> Any:
@@ -169,8 +190,19 @@ def wall_parts(plan: Any, ids: range) -> dict[str, float]:
             )  # as a study's case (no --check-tolerance)
         return len(models)
 
+    def steps() -> float:
+        """Integration steps a case, both polarities (a mirrored run is not integrated)."""
+        total = 0
+        for m, c, name in zip(models, catalogues, names, strict=True):
+            out = assess_model_output(
+                m, record, "fast", mechanism=name, mechanisms=c, tolerance_check=False
+            )
+            total += sum(r.steps for r in out.result.runs if r.mirror_of is None)
+        return total / len(models)
+
     return {
         "integration": integration_per_case(rock),
+        "steps": steps(),
         "study": median_per_case(lambda: len(run_chunk(chunk))),
         "build": median_per_case(build),
         "catalogue": median_per_case(derive),
@@ -186,7 +218,7 @@ def main(cases: int) -> None:
         sys.exit(f"{SHARED} is not there: both studies need ELC180.AT2 from ../shared")
     warm()
     with tempfile.TemporaryDirectory() as a, tempfile.TemporaryDirectory() as b:
-        block = block_per_case(Path(a))
+        block, block_steps = block_per_case(Path(a))
         plan = wall_plan(Path(b))
         parts = wall_parts(plan, range(min(cases, 12)))
     ms = 1e3
@@ -202,6 +234,11 @@ def main(cases: int) -> None:
     print(
         f"  wall / block                               {ratio:9.1f}   (target ≤ {TARGET_RATIO:g})"
     )
+    us = 1e6
+    print(f"  integration steps a case: block {block_steps:8.0f}, wall {parts['steps']:8.0f}")
+    per_step = parts["integration"] / parts["steps"]
+    print(f"  per step: block batched (whole case) {us * block / block_steps:6.3f} µs, "
+          f"wall's compiled integration {us * per_step:6.3f} µs")  # fmt: skip
     check = parts["catalogue"] + parts["check"]
     print(f"  catalogue + code check, --jobs 2           {ms * check / 2:9.3f} ms   "
           f"(target ≤ {ms * TARGET_CHECK:g} ms)")  # fmt: skip
