@@ -153,8 +153,9 @@ class WorkItem:
     codecheck.kinematic).
 
     Attributes:
-        name: its label. kind: "body", "load", "thrust" or "restrainer". force: its weight,
-        or a thrust's or restrainer's horizontal force [N]. x, z: its point [m]. dx, dy: its
+        name: its label. kind: "body", "load", "thrust", "friction" (the toothed return
+        walls', its resultant) or "restrainer". force: its weight, or a thrust's, friction's
+        or restrainer's horizontal force [N]. x, z: its point [m]. dx, dy: its
         virtual displacement outward and up [m/rad].
         bears: its weight rests on the mechanism. moves: its mass follows it horizontally.
         opens: a thrust's direction, +1 pushing the mechanism open, −1 shut (0: a weight).

@@ -44,6 +44,44 @@ def named_result(kin: KinematicResult, name: str) -> MechanismResult:
 
 
 @dataclass(frozen=True)
+class Friction:
+    """The toothed return walls' friction on a mechanism (Circolare 7/2019 Eq. C8.7.1.2).
+
+    Attributes:
+        force: F of one return wall [N]. walls: how many resist (1 or 2). lever: its point
+        above the hinge, h/3 [m]. height: h, the toothed height above the hinge [m].
+        courses: n = h/h_b.
+    """
+
+    force: float
+    walls: int
+    lever: float
+    height: float
+    courses: float
+
+
+def friction_of(mech: CatalogueMechanism) -> Friction | None:
+    """The friction a mechanism's placement carries (None: none)."""
+    view = mech.view(mech.sides[0])
+    toothing = None if mech.wall is None else mech.wall.toothing
+    frictions = getattr(view, "frictions", ())
+    if not frictions or toothing is None:
+        return None
+    f = frictions[0]
+    return Friction(f.force / toothing.walls, toothing.walls, f.lever, f.height,
+                    f.height / toothing.course_height)  # fmt: skip
+
+
+def friction_note(friction: Friction) -> Note:
+    """The friction in a sentence, with the clause."""
+    return Note("friction", "friction of {walls} toothed return wall(s): F = {F:.3f} kN each "
+                "at h/3 = {lever:.3f} m above the hinge (Circolare 7/2019 Eq. C8.7.1.2: "
+                "h = {h:.3f} m, n = {n:.4g} courses); the time history does not carry it",
+                walls=friction.walls, F=friction.force / 1e3, lever=friction.lever,
+                h=friction.height, n=friction.courses)  # fmt: skip
+
+
+@dataclass(frozen=True)
 class MechanismResult:
     """One mechanism of the catalogue and its code check.
 
@@ -54,6 +92,7 @@ class MechanismResult:
         storey: vertical flexure's storey (1 = ground), else None.
         M_star: participating mass [kg].
         result: the code check, as for today's block.
+        friction: the toothed return walls' friction on it (None: none).
     """
 
     name: str
@@ -62,6 +101,7 @@ class MechanismResult:
     storey: int | None
     M_star: float
     result: KinematicResult
+    friction: Friction | None = None
 
     def zeta(self, states: tuple[str, ...]) -> float | None:
         """ζ_E of these limit states: the lowest capacity/demand of the deciding checks
@@ -194,7 +234,9 @@ def analyse_mechanism(
         refuse_unstable(mech.name, c)
     cap = min(caps, key=lambda c: (c.d0_star is None, c.d0_star or 0.0, -c.mech.side))
     by_side = {str(s): alpha0(side_check(mech, s, settings)) for s in mech.reported}
-    notes = (*mech.notes, *free_notes, *mech.strength_notes)
+    friction = friction_of(mech)
+    notes = (*mech.notes, *free_notes, *mech.strength_notes,
+             *(() if friction is None else (friction_note(friction),)))  # fmt: skip
     pos = mechanism_position(mech, settings.building)
     from rockcli.codecheck.kinematic import activation_terms, activation_work, participating_mass
 
@@ -206,7 +248,7 @@ def analyse_mechanism(
 
     return MechanismResult(mech.name, mech.type.value, mech.hinge_height, mech.storey,
                            participating_mass(cap.mech),
-                           replace(result, mechanism=mech.name))  # fmt: skip
+                           replace(result, mechanism=mech.name), friction)  # fmt: skip
 
 
 def analyse_catalogue(

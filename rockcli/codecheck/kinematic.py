@@ -142,7 +142,7 @@ def activation_work(mech: Mechanism) -> tuple[WorkTerm, ...]:
     §C8.7.1.2.1.1, Eq. C8.7.1.1; Circolare 617/2009 §C8A.4.1)."""
     terms = []
     for it in mech.view.work_items():
-        if it.kind == "thrust":
+        if it.kind in ("thrust", "friction"):
             resisting, overturning = -it.opens * it.force * it.dx, 0.0
         else:
             resisting = it.force * it.dy if it.bears else 0.0

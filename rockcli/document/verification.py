@@ -108,13 +108,14 @@ def virtual_work_section(kin: Mapping[str, Any], w: Words) -> Section:
 BODY_NAMES = {"gable": "body.gable", "wedge (both return walls)": "body.wedge_both",
               "wedge (one return wall)": "body.wedge_one", "lower block": "body.lower",
               "upper block": "body.upper", "block": "body.block",
-              "the wall above": "body.above"}  # fmt: skip
+              "the wall above": "body.above",
+              "friction of the return walls": "body.friction"}  # fmt: skip
 
 
 def item_name(t: Mapping[str, Any], w: Words) -> str:
     """An item of the virtual-work table as the report's language names it."""
     name = str(t["item"])
-    if t["kind"] not in ("body", "load"):
+    if t["kind"] not in ("body", "load", "friction"):
         return name
     if t["kind"] == "body" and name.startswith("storey ") and name[7:].isdigit():
         return w("body.storey", n=name[7:])

@@ -32,8 +32,8 @@ from dataclasses import dataclass, replace
 
 from rockcli.mechanisms.bodies import Body, gable, prism, triangle
 from rockcli.mechanisms.links import Rotation, TwoBlock
-from rockcli.mechanisms.side import Attached, ChainSide, SideLoad, SideThrust
-from rockcli.mechanisms.wall import MechanismSpec, MechanismType, Wall
+from rockcli.mechanisms.side import Attached, ChainSide, SideFriction, SideLoad, SideThrust
+from rockcli.mechanisms.wall import MechanismSpec, MechanismType, Toothing, Wall
 from rockcli.searches import brent_minimum
 
 #: Relative tolerance of "at a hinge's height" (heights typed in the file and sums of storey
@@ -130,16 +130,41 @@ def set_back(wall: Wall, bodies: list[Body], hinge: float, thickness: float, nam
 
 
 def rigid(wall: Wall, bodies: list[Body], hinge: float, thickness: float, side: int,
-          name: str) -> ChainSide:  # fmt: skip
+          name: str, friction: bool = False) -> ChainSide:  # fmt: skip
     """One rigid body (``bodies`` together) about the edge of a hinge section at ``hinge`` of
-    ``thickness``, with everything above the hinge on it."""
+    ``thickness``, with everything above the hinge on it (and, with ``friction``, the toothed
+    return walls' friction over the storeys above the hinge)."""
     a = set_back(wall, bodies, hinge, thickness, name)
     frame = Frame(a if side > 0 else thickness - a, hinge, side)
 
     def on(z: float) -> int | None:
         return 0 if above(z, hinge) else None
 
-    return attach(wall, frame, Rotation(), [(0, frame.body(b)) for b in bodies], on)
+    placed = attach(wall, frame, Rotation(), [(0, frame.body(b)) for b in bodies], on)
+    if not friction or wall.toothing is None:
+        return placed
+    height = wall.height - hinge
+    force = friction_force(wall.toothing, height) * wall.toothing.walls
+    rub = SideFriction(FRICTION, force, 0, frame.x(0.5 * thickness), frame.z(hinge), height,
+                       wall.toothing.overlap)  # fmt: skip
+    return replace(placed, frictions=(rub,))
+
+
+#: The name of the toothed return walls' friction on a mechanism.
+FRICTION = "friction of the return walls"
+
+
+def friction_force(toothing: Toothing, height: float) -> float:
+    """F = 0.4·n(n+1)·Φ·μ·l²·t_s·W of one return wall toothed over ``height`` h [N]
+    (Circolare 7/2019 §C8.7.1.2.1.1, Eq. C8.7.1.2): n = h/h_b the courses the vertical
+    crack crosses, Φ = h_b/l the toothing coefficient, l the overlap, μ the friction
+    coefficient, t_s the return wall's thickness, W the masonry's unit weight. Applied at
+    h/3 (the same clause). n is h/h_b as the text writes it, not rounded to whole courses
+    (docs/interpretations.md)."""
+    n = height / toothing.course_height
+    phi = toothing.course_height / toothing.overlap
+    return (0.4 * n * (n + 1.0) * phi * toothing.mu * toothing.overlap**2
+            * toothing.thickness * toothing.unit_weight)  # fmt: skip
 
 
 def attach(wall: Wall, frame: Frame, motion, bodies, link_of: Callable[[float], int | None]):
@@ -168,6 +193,30 @@ def storey_at(wall: Wall, hinge: float) -> int:
     return next(i for i, b in enumerate(wall.storey_bases()) if same_height(b, hinge))
 
 
+def storey_of(wall: Wall, z: float) -> int:
+    """The index (0-based) of the storey a section at height ``z`` cuts (at a storey's base,
+    the storey above it; at the top or above, the last)."""
+    bases = wall.storey_bases()
+    return max(i for i, b in enumerate(bases) if i == 0 or not above(b, z))
+
+
+def parts_above(wall: Wall, hinge: float) -> list[Body]:
+    """The wall above a section at ``hinge`` [m]: each storey's part above it (whole above a
+    storey's base) and the gable, in the wall frame."""
+    bases = wall.storey_bases()
+    out = []
+    for i, s in enumerate(wall.storeys):
+        top = bases[i] + s.height
+        if not above(top, hinge):
+            continue
+        bottom = bases[i] if not above(hinge, bases[i]) else hinge
+        out.append(prism(f"storey {i + 1}", 0.0, s.thickness, bottom, top, wall.width,
+                         wall.unit_weight, wall.g))  # fmt: skip
+    if wall.gable_height is not None:
+        out.append(gable_body(wall))
+    return out
+
+
 def rigid_parts(wall: Wall, spec: MechanismSpec) -> tuple[list[Body], float, float]:
     """(bodies, hinge height [m], thickness of the hinge section [m]) of a mechanism of one
     rigid body: the storeys above the hinge and the gable (overturning), the whole wall and
@@ -179,14 +228,16 @@ def rigid_parts(wall: Wall, spec: MechanismSpec) -> tuple[list[Body], float, flo
         assert spec.angle is not None and spec.sides is not None
         bodies = [*storey_bodies(wall, 0), wedge_body(wall, spec.angle, spec.sides)]
         return bodies, hinge, wall.storeys[0].thickness
-    k = storey_at(wall, hinge)
-    return storey_bodies(wall, k), hinge, wall.storeys[k].thickness
+    return parts_above(wall, hinge), hinge, wall.storeys[storey_of(wall, hinge)].thickness
 
 
-def overturning(wall: Wall, hinge: float, side: int, name: str) -> ChainSide:
-    """The part of the wall above a storey's base at ``hinge`` [m], about that section."""
+def overturning(wall: Wall, hinge: float, side: int, name: str, friction: bool = False
+                ) -> ChainSide:  # fmt: skip
+    """The part of the wall above a section at ``hinge`` [m] (a storey's base, or any height
+    an optimal hinge is searched at), about that section; with ``friction``, resisted by the
+    toothed return walls over its height."""
     spec = MechanismSpec(name, MechanismType.OVERTURNING, hinge)
-    return rigid(wall, *rigid_parts(wall, spec), side, name)
+    return rigid(wall, *rigid_parts(wall, spec), side, name, friction)
 
 
 def wedge(wall: Wall, angle: float, sides: int, name: str, side: int = 1) -> ChainSide:
@@ -307,7 +358,7 @@ def hinge_of(spec: MechanismSpec, wall: Wall) -> float:
 def build(wall: Wall, spec: MechanismSpec, side: int) -> ChainSide:
     """The mechanism ``spec`` of the wall opening to ``side`` (flexure: hinge height resolved)."""
     if spec.type is MechanismType.OVERTURNING:
-        return overturning(wall, hinge_of(spec, wall), side, spec.name)
+        return overturning(wall, hinge_of(spec, wall), side, spec.name, spec.friction)
     if spec.type is MechanismType.WEDGE:
         assert spec.angle is not None and spec.sides is not None
         return wedge(wall, spec.angle, spec.sides, spec.name, side)

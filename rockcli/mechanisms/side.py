@@ -26,6 +26,8 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 
+import numpy as np
+
 from rockcli.mechanics import Restrainer, WorkItem
 from rockcli.mechanisms.bodies import Body
 from rockcli.mechanisms.links import LinkState, Motion
@@ -72,6 +74,71 @@ class SideThrust:
     at: Attached
 
 
+#: Gauss–Legendre points of two-point quadrature on [0, 1] (exact for the friction's
+#: integrand: a linear distribution times the affine virtual displacement of a rigid link).
+_GAUSS = (0.5 - 0.5 / math.sqrt(3.0), 0.5 + 0.5 / math.sqrt(3.0))
+
+
+@dataclass(frozen=True)
+class SideFriction:
+    """The friction of toothed return walls on a link, resisting the mechanism's motion.
+
+    Circolare 7/2019 §C8.7.1.2.1.1, Eq. C8.7.1.2: the return walls' courses interlocked with
+    the wall over the height h above the hinge resist its overturning with a horizontal force
+    F (all walls together) applied at h/3. Taken here as the continuous form of the text's
+    courses: the force per unit height grows linearly down from the top, as the weight
+    pressing each course does, q(z) = 2F·(h − z)/h² (its resultant F at h/3, the Circolare's
+    point). A course stays engaged while its horizontal slide is at most the overlap l; past
+    it the course has left its tooth and no longer resists (the capacity curve's friction
+    falls as the joints slide, docs/mechanisms/friction.md).
+
+    Attributes:
+        name: label. force: F of all the walls [N]. link: the link it acts on (a rigid
+        one). x: the interface's x in the side frame [m]. z0: the toothing's bottom, the
+        hinge, in the side frame [m]. height: h, the toothed height [m]. overlap: l [m].
+    """
+
+    name: str
+    force: float
+    link: int
+    x: float
+    z0: float
+    height: float
+    overlap: float
+
+    def engaged(self, state: LinkState, theta):
+        """(u, v): the part of the toothed height whose slide is at most the overlap, as
+        fractions of h from the bottom (u = v: none), at the link's ``state``."""
+        bottom = -state.displacement(self.x, self.z0)[0]
+        top = -state.displacement(self.x, self.z0 + self.height)[0]
+        slope = top - bottom
+        lo, hi = -self.overlap - bottom, self.overlap - bottom
+        flat = np.abs(slope) <= 1e-300
+        safe = np.where(flat, 1.0, slope)
+        a, b = lo / safe, hi / safe
+        u = np.where(flat, np.where(np.abs(bottom) <= self.overlap, 0.0, 1.0), np.minimum(a, b))
+        v = np.where(flat, 1.0, np.maximum(a, b))
+        u = np.clip(u, 0.0, 1.0)
+        return u, np.maximum(np.clip(v, 0.0, 1.0), u)
+
+    def work(self, state: LinkState, theta) -> float:
+        """∫ q·dX/dθ dz over the engaged courses [N·m per unit rotation] (negative when the
+        mechanism opens: the friction resists), exact by two-point quadrature."""
+        u, v = self.engaged(state, theta)
+        total = 0.0
+        for g in _GAUSS:
+            f = u + (v - u) * g
+            dx = state.place(self.x, self.z0 + f * self.height)[2]
+            total = total + 2.0 * self.force * (1.0 - f) * dx
+        out = 0.5 * (v - u) * total
+        return float(out) if np.ndim(out) == 0 else out
+
+    @property
+    def lever(self) -> float:
+        """The resultant's height above the toothing's bottom, h/3 [m]."""
+        return self.height / 3.0
+
+
 @dataclass(frozen=True)
 class ChainPoint:
     """A restrainer's attachment point on a link of a mechanism: elongation, moment and the
@@ -110,6 +177,8 @@ class ChainSide:
         restrainers: the members, in the model's order; ``anchors`` their points.
         g: gravity [m/s²].
         side: the side it opens to (+1: θ > 0; −1: θ < 0), which the frame's x was turned to.
+        frictions: the toothed return walls' friction on its links (the code check's; the
+            equation of motion does not carry it, docs/mechanisms/friction.md).
     """
 
     motion: Motion
@@ -120,6 +189,7 @@ class ChainSide:
     restrainers: tuple[Restrainer, ...] = ()
     anchors: tuple[Attached, ...] = field(default_factory=tuple)
     side: int = 1
+    frictions: tuple[SideFriction, ...] = ()
 
     @property
     def limit(self) -> float:
@@ -155,6 +225,8 @@ class ChainSide:
         for th in self.thrusts:
             dx = states[th.at.link].place(th.at.x, th.at.z)[2]
             t -= th.opens * th.force * dx
+        for fr in self.frictions:
+            t += fr.work(states[fr.link], theta)  # it pushes shut: opens = −1
         return g, t, h
 
     def work_items(self) -> tuple[WorkItem, ...]:
@@ -173,6 +245,10 @@ class ChainSide:
             _, _, dx, dz = states[th.at.link].place(th.at.x, th.at.z)
             items.append(WorkItem(th.name, "thrust", th.force, th.at.x, th.at.z, -dx, dz,
                                   opens=th.opens))  # fmt: skip
+        for fr in self.frictions:  # its resultant at h/3, every course engaged at rest
+            z = fr.z0 + fr.lever
+            _, _, dx, dz = states[fr.link].place(fr.x, z)
+            items.append(WorkItem(fr.name, "friction", fr.force, fr.x, z, -dx, dz, opens=-1))
         return tuple(items)
 
     def anchor(self, index: int) -> tuple[float, float]:

@@ -94,6 +94,29 @@ class WallRestrainer:
     z: float
 
 
+@dataclass(frozen=True)
+class Toothing:
+    """The return walls toothed into the wall (Circolare 7/2019 §C8.7.1.2.1.1, Eq. C8.7.1.2):
+    what resists an overturning by friction on their interlocked courses.
+
+    Attributes:
+        mu: the friction coefficient μ of the masonry's joints [-].
+        course_height: h_b, the height of a course [m].
+        overlap: l, how far a course of the return wall runs into the wall (the toothing's
+            overlap) [m].
+        walls: the return walls toothed, 1 or 2.
+        thickness: t_s, the return walls' thickness [m].
+        unit_weight: their unit weight W [N/m³] (the wall's masonry).
+    """
+
+    mu: float
+    course_height: float
+    overlap: float
+    walls: int
+    thickness: float
+    unit_weight: float
+
+
 class MechanismType(StrEnum):
     """The mechanisms of the catalogue (Circolare 7/2019 §C8.7.1; Circolare 617/2009 §C8A.4)."""
 
@@ -124,6 +147,8 @@ class MechanismSpec:
         sides: wedge: 1 or 2 return walls dragged; else None.
         free: free to vibrate before it activates (Circolare 7/2019 §C8.7.1.2.1.3): its
             capacity curve starts with an elastic branch.
+        friction: overturning: the toothed return walls resist it by friction (Circolare
+            7/2019 Eq. C8.7.1.2; the wall's ``toothing``).
     """
 
     name: str
@@ -133,6 +158,7 @@ class MechanismSpec:
     angle: float | None = None
     sides: int | None = None
     free: bool = False
+    friction: bool = False
 
 
 @dataclass(frozen=True)
@@ -154,6 +180,8 @@ class Wall:
         mechanisms: the mechanisms to check; empty: the whole wall overturning about its base.
         E: the masonry's Young's modulus for the period of elements free to vibrate [Pa]
             (None: not given; no mechanism is free).
+        toothing: the return walls toothed into the wall, for the friction of an overturning
+            (None: not toothed, or no return walls).
     """
 
     storeys: tuple[Storey, ...]
@@ -168,6 +196,7 @@ class Wall:
     restrainers: tuple[WallRestrainer, ...] = field(default_factory=tuple)
     mechanisms: tuple[MechanismSpec, ...] = field(default_factory=tuple)
     E: float | None = None
+    toothing: Toothing | None = None
 
     @property
     def height(self) -> float:

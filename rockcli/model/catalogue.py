@@ -36,8 +36,9 @@ from rockcli.mechanisms.catalogue import (
     hinge_of,
     optimal_hinge,
     overburden_above,
+    overturning,
     sides_of,
-    storey_at,
+    storey_of,
 )
 from rockcli.mechanisms.side import ChainSide
 from rockcli.mechanisms.wall import OPTIMAL, WHOLE_WALL, MechanismSpec, MechanismType, Wall
@@ -349,32 +350,56 @@ def uncrushed(wall: Wall, make: Callable[[], T]) -> T:
 
 
 def resolved(wall: Wall, spec: MechanismSpec, sides: tuple[int, ...]):
-    """The spec with an optimal flexure hinge found: the height that minimises the smaller
-    α0 of its sides (rockcli.mechanisms.catalogue.optimal_hinge), and its note."""
-    if spec.type is not MechanismType.VERTICAL_FLEXURE or spec.hinge_height != OPTIMAL:
+    """The spec with an optimal hinge found: the height that minimises the smaller α0 of its
+    sides (rockcli.mechanisms.catalogue.optimal_hinge), and its note. A vertical flexure's
+    intermediate hinge inside its storey; an overturning's base hinge anywhere up the wall
+    (Circolare 7/2019 §C8.7.1.2.1.1: the hinge's position, and the height h of a toothing's
+    friction, "dovrebbe derivare ... da un processo di minimizzazione")."""
+    if spec.hinge_height != OPTIMAL:
         return spec, ()
-    assert spec.storey is not None
-    lo, hi = flexure_range(wall, spec.storey)
-
-    families = [uncrushed(wall, partial(flexure_at, wall, spec.storey, s, spec.name))
-                for s in sides]  # fmt: skip
+    flexure = spec.type is MechanismType.VERTICAL_FLEXURE
+    if flexure:
+        assert spec.storey is not None
+        lo, hi = flexure_range(wall, spec.storey)
+        families = [uncrushed(wall, partial(flexure_at, wall, spec.storey, s, spec.name))
+                    for s in sides]  # fmt: skip
+        found = ("optimal hinge at {z:.3f} m (the lowest α0 between {lo:.3f} and {hi:.3f} m: "
+                 "the storey less max(thickness, a tenth of its height) at each end)")  # fmt: skip
+    else:
+        lo, hi = overturning_range(wall)
+        families = [partial(_overturning_at, wall, spec, s) for s in sides]
+        found = ("optimal hinge at {z:.3f} m (the lowest α0 between {lo:.3f} and {hi:.3f} m: "
+                 "the wall's base up to its top less max(the top storey's thickness, a tenth "
+                 "of the wall's height))")  # fmt: skip
 
     def smallest(z: float) -> float:
         return min(alpha0(SideCheck(uncrushed(wall, partial(f, z)))) for f in families)
 
     attached = [*(ld.z for ld in wall.loads), *(th.z for th in wall.thrusts),
-                *(rs.z for rs in wall.restrainers)]  # fmt: skip
+                *(rs.z for rs in wall.restrainers), *wall.storey_bases()]  # fmt: skip
     z = optimal_hinge(lo, hi, smallest, attached)
-    found = ("optimal hinge at {z:.3f} m (the lowest α0 between {lo:.3f} and {hi:.3f} m: the "
-             "storey less max(thickness, a tenth of its height) at each end)")  # fmt: skip
     values = {"z": z, "lo": lo, "hi": hi}
+    suffix = "" if flexure else "_overturning"
     if min(z - lo, hi - z) <= RANGE_END * (hi - lo):
-        note = Note("hinge_at_end", found + "; the optimum lies at the end of the range, which "
-                    "decides it (α0 keeps falling towards it): give hinge_height where a crack "
-                    "shows the hinge", **values)  # fmt: skip
+        note = Note("hinge_at_end" + suffix, found + "; the optimum lies at the end of the "
+                    "range, which decides it (α0 keeps falling towards it): give hinge_height "
+                    "where a crack shows the hinge", **values)  # fmt: skip
     else:
-        note = Note("hinge_optimal", found, **values)
+        note = Note("hinge_optimal" + suffix, found, **values)
     return replace(spec, hinge_height=z), (note,)
+
+
+def _overturning_at(wall: Wall, spec: MechanismSpec, side: int, hinge: float) -> ChainSide:
+    """The overturning of ``spec`` about a section at ``hinge`` [m], opening to ``side``."""
+    return overturning(wall, hinge, side, spec.name, spec.friction)
+
+
+def overturning_range(wall: Wall) -> tuple[float, float]:
+    """Where an overturning's optimal hinge is searched [m above the wall's base]: from the
+    base up to the top less the larger of the top storey's thickness and a tenth of the
+    wall's height (a part squatter than the wall is thick is no overturning block)."""
+    margin = max(wall.storeys[-1].thickness, 0.1 * wall.height)
+    return 0.0, wall.height - margin
 
 
 def spec_base(wall: Wall, spec: MechanismSpec) -> float:
@@ -409,7 +434,7 @@ def free_member(wall: Wall, spec: MechanismSpec) -> FreeMember:
         kappa, length, thickness = KAPPA_FLEXURE, storey.height, storey.thickness
     else:
         hinge = hinge_of(spec, wall)
-        k = storey_at(wall, hinge)
+        k = storey_of(wall, hinge)
         kappa, length = KAPPA_CANTILEVER, wall.height - hinge + gable
         thickness = wall.storeys[k].thickness
     return FreeMember(kappa, length, thickness, wall.unit_weight, wall.E, wall.g)

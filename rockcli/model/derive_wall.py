@@ -19,6 +19,7 @@ from rockcli.mechanisms.wall import (
     MechanismSpec,
     MechanismType,
     Storey,
+    Toothing,
     Wall,
     WallLoad,
     WallRestrainer,
@@ -48,6 +49,7 @@ def to_wall(model: Model) -> Wall:
     )
     from dataclasses import replace
 
+    wall = replace(wall, toothing=toothing(model, wall))
     wall = replace(
         wall,
         loads=tuple(wall_load(model, wall, i) for i in range(len(model.loads))),
@@ -55,6 +57,16 @@ def to_wall(model: Model) -> Wall:
         restrainers=tuple(wall_restrainer(model, wall, i) for i in range(len(model.restrainers))),
     )
     return replace(wall, mechanisms=mechanism_specs(model, wall))
+
+
+def toothing(model: Model, wall: Wall) -> Toothing | None:
+    """The return walls' toothing, for the friction of an overturning (None: not toothed)."""
+    walls = model.return_walls
+    if walls is None or not walls.toothed:
+        return None
+    assert walls.course_height is not None and walls.overlap is not None  # the schema's rule
+    return Toothing(walls.friction, walls.course_height, walls.overlap, walls.sides or 2,
+                    walls.thickness, wall.unit_weight)  # fmt: skip
 
 
 def masonry_modulus(model: Model) -> float | None:
@@ -145,10 +157,15 @@ def expand(entry: MechanismEntry, wall: Wall) -> list[MechanismSpec]:
     """One entry as mechanism specs (several for "each-floor")."""
     kind = MechanismType(entry.type.value)
     if kind is MechanismType.OVERTURNING:
+        friction = wall.toothing is not None if entry.friction is None else entry.friction
         hinge = 0.0 if entry.hinge_height is None else entry.hinge_height
+        if hinge == OPTIMAL:
+            name = entry.name or Note("name_optimal_overturning", "overturning, optimal hinge")
+            return [MechanismSpec(name, kind, OPTIMAL, free=entry.is_free, friction=friction)]
         heights = list(wall.storey_bases()) if hinge == EACH_FLOOR else [float(hinge)]
         return [MechanismSpec(entry.name if entry.name and len(heights) == 1 else
-                              overturning_name(wall, z), kind, z, free=entry.is_free)
+                              overturning_name(wall, z), kind, z, free=entry.is_free,
+                              friction=friction)
                 for z in heights]  # fmt: skip
     if kind is MechanismType.WEDGE:
         sides = entry.sides or 1

@@ -53,12 +53,73 @@ class Storey(Table):
     )
 
 
+#: The friction coefficient's bounds: above 0, at most 1.5 (masonry joints: the Circolare's
+#: reference value is 0.577, §C8.7.1.2.1.1; above 1.5 no joint slides).
+MAX_FRICTION = 1.5
+#: Circolare 7/2019 §C8.7.1.2.1.1: "un valore di riferimento è 0,577".
+REFERENCE_FRICTION = 0.577
+#: The toothing's keys, given only with toothed = true.
+TOOTHING_KEYS = ("mu", "course_height", "overlap", "sides")
+
+
 class ReturnWalls(Table):
-    """The walls at right angles to the façade at its ends, where a wedge can form."""
+    """The walls at right angles to the façade at its ends, where a wedge can form, and
+    whose toothing into it resists an overturning by friction (Circolare 7/2019
+    §C8.7.1.2.1.1, Eq. C8.7.1.2)."""
 
     thickness: float = number(
         "Thickness of the return walls [m]", ..., ge=MIN_LENGTH, le=MAX_LENGTH
     )
+    toothed: bool = Field(
+        False,
+        strict=True,
+        description="The return walls' courses are toothed into the wall (no evident "
+        "detachment): an overturning is resisted by their friction, Circolare 7/2019 Eq. "
+        "C8.7.1.2",
+    )
+    mu: float | None = number(
+        "toothed: the friction coefficient μ of the joints [-] (default 0.577, the "
+        "Circolare's reference value)",
+        gt=0.0,
+        le=MAX_FRICTION,
+    )
+    course_height: float | None = number(
+        "toothed: h_b, the mean height of a course [m]", ge=MIN_LENGTH, le=MAX_LENGTH
+    )
+    overlap: float | None = number(
+        "toothed: l, the overlap of a course of the return wall into the wall (the length of "
+        "one friction joint) [m]",
+        ge=MIN_LENGTH,
+        le=MAX_LENGTH,
+    )
+    sides: int | None = Field(
+        None,
+        strict=True,
+        ge=1,
+        le=2,
+        description="toothed: the return walls toothed into the wall, 1 or 2 (default 2)",
+    )
+
+    @model_validator(mode="after")
+    def _toothing(self) -> ReturnWalls:
+        """The toothing's keys with toothed = true, and its course and overlap."""
+        if not self.toothed:
+            for key in TOOTHING_KEYS:
+                if getattr(self, key) is not None:
+                    raise rule_error(key, "a key of toothed return walls",
+                                     "toothed = true with it, or no " + key,
+                                     getattr(self, key))  # fmt: skip
+            return self
+        for key in ("course_height", "overlap"):
+            if getattr(self, key) is None:
+                allowed = f"a number >= {MIN_LENGTH:g} and <= {MAX_LENGTH:g} [m]"
+                raise rule_error(key, "required with toothed = true", allowed)
+        return self
+
+    @property
+    def friction(self) -> float:
+        """μ as given, else the Circolare's reference value."""
+        return REFERENCE_FRICTION if self.mu is None else self.mu
 
 
 class Masonry(Table):
@@ -98,8 +159,8 @@ class MechanismEntry(Table):
     hinge_height: float | str | None = Field(
         None,
         description="overturning: a storey base's height above the wall's base [m] (default "
-        "0), or 'each-floor'; vertical-flexure: the intermediate hinge's height [m] or "
-        "'optimal' (default)",
+        "0), 'each-floor', or 'optimal' (the height of the lowest α0); vertical-flexure: the "
+        "intermediate hinge's height [m] or 'optimal' (default)",
     )
     storey: int | None = Field(
         None,
@@ -116,6 +177,12 @@ class MechanismEntry(Table):
     sides: int | None = Field(
         None, strict=True, ge=1, le=2, description="wedge: return walls dragged, 1 or 2"
     )
+    friction: bool | None = Field(
+        None,
+        strict=True,
+        description="overturning: resisted by the friction of the toothed return walls "
+        "(Circolare 7/2019 Eq. C8.7.1.2); default true where [return_walls] toothed = true",
+    )
     free: bool | None = Field(
         None,
         strict=True,
@@ -129,12 +196,12 @@ class MechanismEntry(Table):
     def _keys_of_type(self) -> MechanismEntry:
         """Each type's keys and no other's."""
         own = {
-            MechanismKind.OVERTURNING: {"hinge_height"},
+            MechanismKind.OVERTURNING: {"hinge_height", "friction"},
             MechanismKind.WEDGE: {"angle", "sides"},
             MechanismKind.VERTICAL_FLEXURE: {"hinge_height", "storey"},
             MechanismKind.GABLE: set(),
         }[self.type]
-        for key in ("hinge_height", "storey", "angle", "sides"):
+        for key in ("hinge_height", "storey", "angle", "sides", "friction"):
             if key not in own and getattr(self, key) is not None:
                 raise rule_error(
                     key, f"not a key of a {self.type.value} mechanism", _allowed(self.type),
@@ -157,8 +224,8 @@ class MechanismEntry(Table):
 
     def _check_hinge(self) -> None:
         value = self.hinge_height
-        word = EACH_FLOOR if self.type is MechanismKind.OVERTURNING else OPTIMAL
-        if isinstance(value, str) and value != word:
+        words = (EACH_FLOOR, OPTIMAL) if self.type is MechanismKind.OVERTURNING else (OPTIMAL,)
+        if isinstance(value, str) and value not in words:
             raise rule_error("hinge_height", "not a hinge height", _allowed(self.type), value)
         if isinstance(value, bool) or (
             isinstance(value, float) and not (math.isfinite(value) and 0 <= value <= MAX_LENGTH)
@@ -169,7 +236,8 @@ class MechanismEntry(Table):
 def _allowed(kind: MechanismKind) -> str:
     """What each type accepts."""
     return {
-        MechanismKind.OVERTURNING: "hinge_height = a storey base's height [m] or 'each-floor'",
+        MechanismKind.OVERTURNING: "hinge_height = a storey base's height [m], 'each-floor' or "
+        "'optimal'; friction = true or false",
         MechanismKind.WEDGE: "angle (0–60 degrees from the vertical), sides = 1 or 2",
         MechanismKind.VERTICAL_FLEXURE: "storey (1 = ground), hinge_height [m] or 'optimal'",
         MechanismKind.GABLE: "no other key (the gable is geometry.gable_height)",
@@ -199,12 +267,19 @@ def check_mechanisms(model: Any) -> None:
     check_set_backs(storeys)
     if model.geometry.storeys is not None or model.mechanisms:
         check_wall_points(model, storeys)
+        _check_toothing(model, storeys)
     for i, entry in enumerate(model.mechanisms):
         where = ("mechanisms", i)
         if entry.type is MechanismKind.WEDGE and model.return_walls is None:
             raise rule_error(
                 (*where, "type"), "a wedge needs the return walls", "a [return_walls] table "
                 "with thickness [m]", entry.type.value,
+            )  # fmt: skip
+        toothed = model.return_walls is not None and model.return_walls.toothed
+        if entry.friction and not toothed:
+            raise rule_error(
+                (*where, "friction"), "no toothed return walls to resist by friction",
+                "[return_walls] with toothed = true, course_height and overlap", entry.friction,
             )  # fmt: skip
         if entry.type is MechanismKind.GABLE and model.geometry.gable_height is None:
             raise rule_error((*where, "type"), "no gable to overturn",
@@ -213,6 +288,22 @@ def check_mechanisms(model: Any) -> None:
             _check_floor(entry, storeys, where)
         if entry.type is MechanismKind.VERTICAL_FLEXURE:
             _check_flexure(model, entry, storeys, where)
+
+
+def _check_toothing(model: Any, storeys: tuple[Storey, ...]) -> None:
+    """A toothing's course within the wall's height and its overlap within its width."""
+    walls = model.return_walls
+    if walls is None or not walls.toothed:
+        return
+    height, width = sum(s.height for s in storeys), model.geometry.width
+    if walls.course_height > height:
+        raise rule_error(("return_walls", "course_height"), "higher than the wall",
+                         f"a course height up to the wall's height, {height:g} m",
+                         walls.course_height)  # fmt: skip
+    if width is not None and walls.overlap > width:
+        raise rule_error(("return_walls", "overlap"), "longer than the wall is wide",
+                         f"an overlap up to the wall's width, {width:g} m",
+                         walls.overlap)  # fmt: skip
 
 
 def _check_floor(entry: MechanismEntry, storeys: tuple[Storey, ...], where: tuple) -> None:
@@ -224,7 +315,8 @@ def _check_floor(entry: MechanismEntry, storeys: tuple[Storey, ...], where: tupl
     if not any(math.isclose(value, b, rel_tol=1e-9, abs_tol=1e-9) for b in bases):
         raise rule_error(
             (*where, "hinge_height"), "not at a storey's base",
-            "one of " + ", ".join(f"{b:g}" for b in bases) + " [m], or 'each-floor'", value,
+            "one of " + ", ".join(f"{b:g}" for b in bases) + " [m], 'each-floor' or 'optimal'",
+            value,
         )  # fmt: skip
 
 

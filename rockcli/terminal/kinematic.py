@@ -92,7 +92,17 @@ def catalogue_entry(m: Any) -> dict[str, Any]:
         "checks": [check_document(c, r.edition) for c in r.checks],
         "verdict": r.verdict(),
         "notes": list(r.notes),
+        "friction": friction_document(m.friction),
     }
+
+
+def friction_document(friction: Any) -> dict[str, Any] | None:
+    """The toothed return walls' friction on a mechanism: F of one wall [kN], its lever above
+    the hinge (h/3) [m], the walls, the toothed height h [m] and its courses n."""
+    if friction is None:
+        return None
+    return {"F_kN": friction.force / 1e3, "lever": friction.lever, "walls": friction.walls,
+            "height": friction.height, "n": friction.courses}  # fmt: skip
 
 
 def work_document(t: WorkTerm) -> dict[str, Any]:
