@@ -349,6 +349,17 @@ def uncrushed(wall: Wall, make: Callable[[], T]) -> T:
         ) from None
 
 
+#: The optimal hinge's note: where it was found, and why its range.
+FLEXURE_FOUND = ("optimal hinge at {z:.3f} m (the lowest α0 between {lo:.3f} and {hi:.3f} m: "
+                 "the storey less max(thickness, a tenth of its height) at each end)")  # fmt: skip
+OVERTURNING_FOUND = ("optimal hinge at {z:.3f} m (the lowest α0 between {lo:.3f} and {hi:.3f} "
+                     "m: the wall's base up to its top less max(the top storey's thickness, a "
+                     "tenth of the wall's height))")  # fmt: skip
+#: ... and when it lies at an end of its range.
+AT_END = ("; the optimum lies at the end of the range, which decides it (α0 keeps falling "
+          "towards it): give hinge_height where a crack shows the hinge")  # fmt: skip
+
+
 def resolved(wall: Wall, spec: MechanismSpec, sides: tuple[int, ...]):
     """The spec with an optimal hinge found: the height that minimises the smaller α0 of its
     sides (rockcli.mechanisms.catalogue.optimal_hinge), and its note. A vertical flexure's
@@ -363,14 +374,9 @@ def resolved(wall: Wall, spec: MechanismSpec, sides: tuple[int, ...]):
         lo, hi = flexure_range(wall, spec.storey)
         families = [uncrushed(wall, partial(flexure_at, wall, spec.storey, s, spec.name))
                     for s in sides]  # fmt: skip
-        found = ("optimal hinge at {z:.3f} m (the lowest α0 between {lo:.3f} and {hi:.3f} m: "
-                 "the storey less max(thickness, a tenth of its height) at each end)")  # fmt: skip
     else:
         lo, hi = overturning_range(wall)
         families = [partial(_overturning_at, wall, spec, s) for s in sides]
-        found = ("optimal hinge at {z:.3f} m (the lowest α0 between {lo:.3f} and {hi:.3f} m: "
-                 "the wall's base up to its top less max(the top storey's thickness, a tenth "
-                 "of the wall's height))")  # fmt: skip
 
     def smallest(z: float) -> float:
         return min(alpha0(SideCheck(uncrushed(wall, partial(f, z)))) for f in families)
@@ -378,15 +384,20 @@ def resolved(wall: Wall, spec: MechanismSpec, sides: tuple[int, ...]):
     attached = [*(ld.z for ld in wall.loads), *(th.z for th in wall.thrusts),
                 *(rs.z for rs in wall.restrainers), *wall.storey_bases()]  # fmt: skip
     z = optimal_hinge(lo, hi, smallest, attached)
+    return replace(spec, hinge_height=z), (hinge_note(flexure, z, lo, hi),)
+
+
+def hinge_note(flexure: bool, z: float, lo: float, hi: float) -> Note:
+    """Where the optimal hinge was found in its range [lo, hi], and whether at an end."""
     values = {"z": z, "lo": lo, "hi": hi}
-    suffix = "" if flexure else "_overturning"
-    if min(z - lo, hi - z) <= RANGE_END * (hi - lo):
-        note = Note("hinge_at_end" + suffix, found + "; the optimum lies at the end of the "
-                    "range, which decides it (α0 keeps falling towards it): give hinge_height "
-                    "where a crack shows the hinge", **values)  # fmt: skip
-    else:
-        note = Note("hinge_optimal" + suffix, found, **values)
-    return replace(spec, hinge_height=z), (note,)
+    at_end = min(z - lo, hi - z) <= RANGE_END * (hi - lo)
+    if flexure:
+        if at_end:
+            return Note("hinge_at_end", FLEXURE_FOUND + AT_END, **values)
+        return Note("hinge_optimal", FLEXURE_FOUND, **values)
+    if at_end:
+        return Note("hinge_at_end_overturning", OVERTURNING_FOUND + AT_END, **values)
+    return Note("hinge_optimal_overturning", OVERTURNING_FOUND, **values)
 
 
 def _overturning_at(wall: Wall, spec: MechanismSpec, side: int, hinge: float) -> ChainSide:
