@@ -234,9 +234,12 @@ def analyse_mechanism(
         refuse_unstable(mech.name, c)
     cap = min(caps, key=lambda c: (c.d0_star is None, c.d0_star or 0.0, -c.mech.side))
     by_side = {str(s): alpha0(side_check(mech, s, settings)) for s in mech.reported}
+    from rockcli.analyses.sliding import alpha0_of, sliding_note
+
     friction = friction_of(mech)
     notes = (*mech.notes, *free_notes, *mech.strength_notes,
-             *(() if friction is None else (friction_note(friction),)))  # fmt: skip
+             *(() if friction is None else (friction_note(friction),)),
+             *sliding_note(mech, alpha0_of(mech)))  # fmt: skip
     pos = mechanism_position(mech, settings.building)
     from rockcli.codecheck.kinematic import activation_terms, activation_work, participating_mass
 

@@ -106,10 +106,13 @@ WITHOUT_FRICTION = (
 
 
 def mechanism_notes(mech: CatalogueMechanism) -> tuple[Note, ...]:
-    """What the reader needs to know of a mechanism as the time history rocks it: the
-    toothed return walls' friction left out; a member on a vertical flexure's upper block
+    """What the reader needs to know of a mechanism as the time history rocks it: that it
+    slides on its base before it lifts (rockcli.analyses.sliding); the toothed return walls'
+    friction left out; a member on a vertical flexure's upper block
     taken as at its held top (rockcli.mechanisms.flexure.held_at_top)."""
-    return (*friction_left_out(mech), *held_members(mech))
+    from rockcli.analyses.sliding import sliding_note, uplift_of
+
+    return (*sliding_note(mech, uplift_of(mech)), *friction_left_out(mech), *held_members(mech))
 
 
 def friction_left_out(mech: CatalogueMechanism) -> tuple[Note, ...]:

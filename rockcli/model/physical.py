@@ -144,6 +144,24 @@ class Thrust(Table):
         return self
 
 
+#: The base's friction coefficient: above 0, at most 1.5 (masonry on masonry or stone is
+#: about 0.4–0.8; above 1.5 nothing slides).
+MAX_BASE_FRICTION = 1.5
+
+
+class Base(Table):
+    """What the element stands on: the friction of its base joint, for whether it slides
+    before it rocks."""
+
+    mu: float = number(
+        "Friction coefficient of the base joint: the element slides first where μ·g is below "
+        "the acceleration that lifts it [-]",
+        ...,
+        gt=0.0,
+        le=MAX_BASE_FRICTION,
+    )
+
+
 class Building(Table):
     """Where the element stands in the building: a property of the element, not of a code."""
 

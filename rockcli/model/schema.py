@@ -43,7 +43,15 @@ from rockcli.model.bounds import (
     PRETENSION_ALLOWED,
 )
 from rockcli.model.ntc import Ntc
-from rockcli.model.physical import Building, Load, Position, Thrust, check_mass, check_points
+from rockcli.model.physical import (
+    Base,
+    Building,
+    Load,
+    Position,
+    Thrust,
+    check_mass,
+    check_points,
+)
 from rockcli.model.schema_base import Table
 from rockcli.model.table_rules import choose_group, forbid, number, rule_error
 from rockcli.model.wall_tables import Masonry, MechanismEntry, ReturnWalls, Storey, check_mechanisms
@@ -724,6 +732,9 @@ class Model(Table):
     )
     building: Building = Field(
         Building.model_validate({}), description="Where the element stands in the building"
+    )
+    base: Base | None = Field(
+        None, description="The base joint's friction: whether it slides before it rocks"
     )
     ntc: Ntc | None = Field(None, description="Settings of the NTC kinematic check")
     return_walls: ReturnWalls | None = Field(

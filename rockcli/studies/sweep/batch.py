@@ -94,7 +94,11 @@ class Form:
 def batch_form(plan: StudyPlan) -> Form | None:
     """The study's form when it is batched (module docstring), else None. InputError when
     the study's first case is not a valid model (its message)."""
+    from rockcli.studies.sweep.output import has_sliding_column
+
     if plan.analyses != ("rocking",) or plan.engine != "fast" or plan.check_tolerance:
+        return None
+    if has_sliding_column(plan):  # the slides column is the catalogue's: case by case
         return None
     if not plan.records:
         return None

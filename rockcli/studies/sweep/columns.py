@@ -40,3 +40,21 @@ def plain_number(value: float | None) -> float | None:
 
 def _pass_fail(value: bool | None) -> str | None:
     return None if value is None else ("pass" if value else "fail")
+
+
+def sliding_columns(plan: Any, mechanisms: Any, name: str | None) -> dict[str, Any]:
+    """``slides`` of a study with a ``[base]``: whether the case's mechanism (the one named,
+    else the catalogue's first) slides on its base before it lifts — against the engines'
+    uplift when the study rocks it, else the code check's α0 (None: not at the base)."""
+    from rockcli.analyses.sliding import alpha0_of, at_the_base, slides_first, uplift_of
+    from rockcli.model.catalogue import named
+    from rockcli.studies.sweep.output import has_sliding_column
+
+    if not has_sliding_column(plan):
+        return {}
+    mech = mechanisms[0] if name is None else named(mechanisms, name)
+    base = mech.model.base
+    if base is None or not at_the_base(mech):
+        return {"slides": None}
+    lifts = uplift_of(mech) if "rocking" in plan.analyses else alpha0_of(mech)
+    return {"slides": slides_first(mech, base.mu, lifts) is not None}

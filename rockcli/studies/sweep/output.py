@@ -84,6 +84,18 @@ TOLERANCE_COLUMNS: dict[str, type] = {"sensitive": bool}
 #: it always did).
 MECHANISM_COLUMNS: dict[str, type] = {"mechanism": str}
 
+#: Result columns of a study whose base model has a ``[base]`` table (or an axis on it),
+#: after the others: whether the case's mechanism slides on its base before it lifts
+#: (rockcli.analyses.sliding; empty for a mechanism not at the base).
+SLIDING_COLUMNS: dict[str, type] = {"slides": bool}
+
+
+def has_sliding_column(plan: StudyPlan) -> bool:
+    """True when the study's base model has a ``[base]`` table or an axis sets one."""
+    return "base" in plan.base or any(
+        path[0] == "base" for axis in plan.axes for path in axis.paths
+    )
+
 
 def has_mechanism_column(plan: StudyPlan) -> bool:
     """True when the study's base model is a wall of storeys or lists mechanisms (its cases
@@ -98,6 +110,7 @@ def columns(plan: StudyPlan) -> list[str]:
     extra = {
         **(TOLERANCE_COLUMNS if plan.check_tolerance else {}),
         **(MECHANISM_COLUMNS if has_mechanism_column(plan) else {}),
+        **(SLIDING_COLUMNS if has_sliding_column(plan) else {}),
     }
     return ["case", "record", *(a.name for a in plan.axes), *RESULT_COLUMNS, *extra]
 
@@ -105,7 +118,7 @@ def columns(plan: StudyPlan) -> list[str]:
 def result_kinds(header: Sequence[str]) -> dict[str, type]:
     """The result columns of a header and their types (RESULT_COLUMNS, and the tolerance
     check's and the mechanism's when the header has them)."""
-    optional = {**TOLERANCE_COLUMNS, **MECHANISM_COLUMNS}
+    optional = {**TOLERANCE_COLUMNS, **MECHANISM_COLUMNS, **SLIDING_COLUMNS}
     extra = {k: v for k, v in optional.items() if k in header}
     return {**RESULT_COLUMNS, **extra}
 

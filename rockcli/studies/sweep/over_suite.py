@@ -168,6 +168,10 @@ def run_suite_case(plan: StudyPlan, model: Model, suite: SuiteInput) -> dict[str
         code_fails = None if passed is None else not passed
     if "rocking" in plan.analyses and "kinematic" in plan.analyses:
         row["classification"] = str(classify(code_fails, rocking_fails))
+    from rockcli.model.catalogue import catalogue
+    from rockcli.studies.sweep.columns import sliding_columns
+
+    row.update(sliding_columns(plan, catalogue(model), row.get("mechanism")))
     return row
 
 

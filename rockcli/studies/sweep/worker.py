@@ -19,7 +19,7 @@ from typing import TYPE_CHECKING, Any
 
 from rockcli.errors import InputError
 from rockcli.studies.sweep.cases import Case, Cases, build_model, case_error, case_labels
-from rockcli.studies.sweep.columns import kinematic_columns, plain_number
+from rockcli.studies.sweep.columns import kinematic_columns, plain_number, sliding_columns
 from rockcli.studies.sweep.study import RecordSource, StudyPlan
 
 if TYPE_CHECKING:
@@ -225,6 +225,7 @@ def run_case(
         row["mechanism"] = mechanism
     if roc is not None and kin is not None:
         row["classification"] = str(classify(code_collapse(kin), rocking_collapse(roc)))
+    row.update(sliding_columns(plan, mechanisms, mechanism))
     return row
 
 
