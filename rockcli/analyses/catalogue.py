@@ -21,21 +21,23 @@ from rockcli.codecheck.kinematic import Capacity, Mechanism, alpha0, capacity
 from rockcli.codecheck.position import Position, position
 from rockcli.codecheck.result import KinematicResult, deciding
 from rockcli.errors import InputError
-from rockcli.mechanisms.wall import MechanismSpec, MechanismType, Wall
+from rockcli.mechanisms.wall import NOT_ROCKED, MechanismSpec, MechanismType, Wall
+from rockcli.model.catalogue import Arch, arch_of, named, placed
 from rockcli.model.catalogue import Mechanism as CatalogueMechanism
-from rockcli.model.catalogue import named, placed
 from rockcli.model.derive_ntc import BuildingSettings, NtcSettings
 from rockcli.notes import Note
 
 
 def main_mechanism(kin: KinematicResult, name: str | None = None) -> MechanismResult | None:
-    """The mechanism a wall's comparison shows in full: the one named, else the governing one;
-    None for a model of one block (or a wall with one mechanism, and no name)."""
+    """The mechanism a wall's comparison shows in full: the one named, else the governing one
+    of those the time history rocks (a horizontal flexure is the code check's alone); None
+    for a model of one block (or a wall with one mechanism, and no name)."""
     if name is not None:
         return named_result(kin, name)
     if len(kin.catalogue) < 2:
         return None
-    return kin.catalogue[0]
+    rocks = [m for m in kin.catalogue if MechanismType(m.type) not in NOT_ROCKED]
+    return rocks[0] if rocks else kin.catalogue[0]
 
 
 def named_result(kin: KinematicResult, name: str) -> MechanismResult:
@@ -93,6 +95,7 @@ class MechanismResult:
         M_star: participating mass [kg].
         result: the code check, as for today's block.
         friction: the toothed return walls' friction on it (None: none).
+        arch: a horizontal flexure's arch: its thrust and stress block (None: another type).
     """
 
     name: str
@@ -102,6 +105,7 @@ class MechanismResult:
     M_star: float
     result: KinematicResult
     friction: Friction | None = None
+    arch: Arch | None = None
 
     def zeta(self, states: tuple[str, ...]) -> float | None:
         """ζ_E of these limit states: the lowest capacity/demand of the deciding checks
@@ -249,9 +253,12 @@ def analyse_mechanism(
     result = analyse_capacity(cap, settings, dem, pos, by_side, notes, terms)
     result = replace(result, work_by_side={key: activation_work(c) for key, c in checks.items()})
 
+    arch = None
+    if mech.type is MechanismType.HORIZONTAL_FLEXURE and mech.wall and mech.spec:
+        arch = arch_of(mech.wall, mech.spec)
     return MechanismResult(mech.name, mech.type.value, mech.hinge_height, mech.storey,
                            participating_mass(cap.mech),
-                           replace(result, mechanism=mech.name), friction)  # fmt: skip
+                           replace(result, mechanism=mech.name), friction, arch)  # fmt: skip
 
 
 def analyse_catalogue(

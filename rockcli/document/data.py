@@ -67,6 +67,7 @@ def governing_body(part: Part) -> tuple[dict[str, Any], dict[str, str] | None]:
     """The body of the verification's governing mechanism as the model section describes it
     (the document `rock assess` gives of what it rocks), and its (name, type) for a wall."""
     from rockcli.analyses.assess import restitution_rule
+    from rockcli.analyses.catalogue import main_mechanism
     from rockcli.model.catalogue import named
     from rockcli.model.derive import describe
     from rockcli.terminal.assess import model_document
@@ -74,7 +75,8 @@ def governing_body(part: Part) -> tuple[dict[str, Any], dict[str, str] | None]:
     ver = part.verification
     assert ver is not None
     model = part.inputs.model
-    mech = named(ver.mechanisms, ver.result.governing or "")
+    main = main_mechanism(ver.result)  # a horizontal flexure has no body the engines rock
+    mech = named(ver.mechanisms, main.name if main is not None else ver.result.governing or "")
     rocked = None if mech.wall is None else (mech.name, mech.type.value)
     rule = restitution_rule(describe(model).e_rule, mech.rocker, rocked)
     body = model_document(model.name, str(model.kind), mech.rocker, rule)

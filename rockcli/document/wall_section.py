@@ -120,6 +120,9 @@ def moving_parts(wall: Wall, m: Mapping[str, Any]) -> list[tuple[list[Any], str]
     top = wall.height + (wall.gable_height or 0.0)
     if m["type"] == "gable":
         return [(clipped(parts, wall.height, top), MOVING)]
+    if m["type"] == "horizontal-flexure":  # the strip, bending in plan
+        return [(clipped(parts, m["hinge_height"], m["hinge_height"] + m["strip_height"]),
+                 MOVING)]  # fmt: skip
     if m["type"] == "vertical-flexure":
         base = wall.storey_bases()[m["storey"] - 1]
         end = base + wall.storeys[m["storey"] - 1].height

@@ -34,6 +34,9 @@ class Body:
         var_x, var_z: ∫(x − x_G)² dm / m and ∫(z − z_G)² dm / m [m²] (the mass spread over
             the section, for M* and e* of a distributed mass).
         mass: its mass [kg].
+        bears: its weight acts against the mechanism's motion (False: a body of a mechanism
+            in plan, whose weight is normal to its motion and does no work: a horizontal
+            flexure's strip).
     """
 
     name: str
@@ -44,10 +47,12 @@ class Body:
     var_x: float
     var_z: float
     mass: float
+    bears: bool = True
 
     def moved(self, x: float, z: float) -> Body:
         """The same body with its centroid at (x, z) [m] (another frame's coordinates)."""
-        return Body(self.name, self.weight, x, z, self.inertia, self.var_x, self.var_z, self.mass)
+        return Body(self.name, self.weight, x, z, self.inertia, self.var_x, self.var_z, self.mass,
+                    self.bears)  # fmt: skip
 
 
 def prism(

@@ -15,7 +15,11 @@ base) each ``[[mechanisms]]`` entry becomes, for each side it can open to, a
   outer edge of the storey's base, an intermediate hinge on the inner face, the upper about
   the outer face at the top, which is held horizontally and free to rise (side −1 mirrors it)
   (Doherty et al. 2002, EESD 31:833–850; Sorrentino, Masiani & Griffith 2008);
-- **gable** ("ribaltamento del timpano"): the triangular gable about its base.
+- **gable** ("ribaltamento del timpano"): the triangular gable about its base;
+- **horizontal flexure** ("flessione orizzontale", the arch effect in plan): a strip of the
+  wall between the return walls as a three-hinge flat arch, each half turning about its
+  abutment's hinge on one face towards the mid-span hinge on the other, held by the arch's
+  thrust H (see :func:`horizontal_flexure`).
 
 A load, thrust or restrainer exactly at a hinge's height belongs to the part below it. With a
 masonry strength f_m each hinge moves inward from its edge by half the depth a = N/(f_m·width)
@@ -351,6 +355,9 @@ def hinge_of(spec: MechanismSpec, wall: Wall) -> float:
         return wall.height
     if spec.type is MechanismType.WEDGE:
         return 0.0
+    if spec.type is MechanismType.HORIZONTAL_FLEXURE:
+        assert spec.level is not None
+        return spec.level
     assert isinstance(spec.hinge_height, float)
     return spec.hinge_height
 
@@ -364,8 +371,56 @@ def build(wall: Wall, spec: MechanismSpec, side: int) -> ChainSide:
         return wedge(wall, spec.angle, spec.sides, spec.name, side)
     if spec.type is MechanismType.GABLE:
         return gable_mechanism(wall, side, spec.name)
+    if spec.type is MechanismType.HORIZONTAL_FLEXURE:
+        return horizontal_flexure(wall, spec, side)
     assert spec.storey is not None and isinstance(spec.hinge_height, float)
     return flexure(wall, spec.storey, spec.hinge_height, side, spec.name)
+
+
+#: The name of the arch's thrust on each half of a horizontal flexure.
+ARCH_THRUST = "arch thrust"
+
+
+def arch_thrust(f_m: float, strip: float, thickness: float, limit: float | None) -> float:
+    """The thrust H of a horizontal flexure's arch [N]: the one of the largest moment
+    H·(s − a), a = H/(f_m·b) the stress block's depth, H* = f_m·b·s/2 (rigid abutments: the
+    masonry's crushing limits it), or the abutments' limit (a tie, a ring beam) when lower."""
+    best = 0.5 * f_m * strip * thickness
+    return best if limit is None else min(best, limit)
+
+
+def horizontal_flexure(wall: Wall, spec: MechanismSpec, side: int) -> ChainSide:
+    """A strip of the wall of height b at ``level`` between the return walls, of span L, as a
+    three-hinge flat arch in plan (the arch effect of "flessione orizzontale", the horizontal
+    bending of a wall held by its return walls; hinges set back by their stress blocks as in
+    the vertical mechanisms).
+
+    In plan, x through the wall's thickness s from the face the abutment hinge sits on
+    (side 1: the outer face, the strip bulging outward), "z" along the span from the
+    abutment: each half (L/2 long, weight γ·s·b·L/2) turns by θ about its abutment hinge,
+    set back a/2 from its face, towards the mid-span hinge, set back a/2 from the other face.
+    The arch's thrust H pushes each half back along the span at the mid-span hinge, a lever
+    (s − a)·cos θ − (L/2)·sin θ about the abutment: with the half's inertia α·P at its
+    centroid, α = 8·H·(s − a − δ)/(γ·s·b·L²), δ = (L/2)·sin θ the mid-span's outward
+    displacement, and at rest α0 = 8·H·(s − a)/(γ·s·b·L²) (2·f_m·s/(γ·L²) with rigid
+    abutments). The two halves are one link: by symmetry each point of the other half
+    moves as its mirror. H and a stay as at rest along the curve (the catalogue's hinges are
+    fixed, as a stress block's set-back is for every mechanism), so the lever closes at
+    δ ≈ s − a. As a chain: H is a weight bearing at the mid-span hinge that does not move
+    (it does the work H·dZ/dθ), the halves two bodies of the link."""
+    assert wall.f_m is not None and spec.level is not None
+    assert spec.strip_height is not None and spec.span is not None
+    s = wall.storeys[storey_of(wall, spec.level)].thickness
+    b, span = spec.strip_height, spec.span
+    thrust = arch_thrust(wall.f_m, b, s, spec.thrust_limit)
+    a = thrust / (wall.f_m * b)
+    frame = Frame(0.5 * a if side > 0 else s - 0.5 * a, 0.0, side)
+    mid = frame.x(s - 0.5 * a if side > 0 else 0.5 * a)
+    half = replace(prism("half strip", 0.0, s, 0.0, 0.5 * span, b, wall.unit_weight, wall.g),
+                   bears=False)  # in plan: its weight does no work  # fmt: skip
+    halves = ((0, frame.body(half)), (0, frame.body(replace(half, name="other half strip"))))
+    push = SideLoad(ARCH_THRUST, thrust, Attached(0, mid, 0.5 * span), bears=True, moves=False)
+    return ChainSide(Rotation(), halves, wall.g, loads=(push, push), side=side)
 
 
 def flexure_range(wall: Wall, storey: int) -> tuple[float, float]:

@@ -214,7 +214,8 @@ class ChainSide:
         g = h = t = 0.0
         for link, body in self.bodies:
             _, _, dx, dz = states[link].place(body.x, body.z)
-            g += body.weight * dz
+            if body.bears:
+                g += body.weight * dz
             h -= body.weight * dx
         for ld in self.loads:
             _, _, dx, dz = states[ld.at.link].place(ld.at.x, ld.at.z)
@@ -236,7 +237,8 @@ class ChainSide:
         items = []
         for link, body in self.bodies:
             _, _, dx, dz = states[link].place(body.x, body.z)
-            items.append(WorkItem(body.name, "body", body.weight, body.x, body.z, -dx, dz))
+            items.append(WorkItem(body.name, "body", body.weight, body.x, body.z, -dx, dz,
+                                  body.bears))  # fmt: skip
         for ld in self.loads:
             _, _, dx, dz = states[ld.at.link].place(ld.at.x, ld.at.z)
             items.append(WorkItem(ld.name, "load", ld.weight, ld.at.x, ld.at.z, -dx, dz,

@@ -124,6 +124,12 @@ class MechanismType(StrEnum):
     WEDGE = "wedge"
     VERTICAL_FLEXURE = "vertical-flexure"
     GABLE = "gable"
+    HORIZONTAL_FLEXURE = "horizontal-flexure"
+
+
+#: The mechanisms the time history cannot rock: not a gravity rocking mechanism (the
+#: horizontal flexure's strip is held by the arch's thrust, not by its weight).
+NOT_ROCKED = (MechanismType.HORIZONTAL_FLEXURE,)
 
 
 #: ``hinge_height`` of a vertical flexure whose hinge the code finds (the lowest α0).
@@ -149,6 +155,11 @@ class MechanismSpec:
             capacity curve starts with an elastic branch.
         friction: overturning: the toothed return walls resist it by friction (Circolare
             7/2019 Eq. C8.7.1.2; the wall's ``toothing``).
+        level, strip_height, span: horizontal flexure: the strip's base above the wall's
+            base, its height and its span between the return walls [m].
+        thrust_limit: horizontal flexure: the largest thrust the abutments (a tie, a ring
+            beam) take [N]; None: rigid abutments (the masonry's crushing limits it).
+        limit_by: what sets ``thrust_limit`` (a tie's name, or "thrust_limit").
     """
 
     name: str
@@ -159,6 +170,11 @@ class MechanismSpec:
     sides: int | None = None
     free: bool = False
     friction: bool = False
+    level: float | None = None
+    strip_height: float | None = None
+    span: float | None = None
+    thrust_limit: float | None = None
+    limit_by: str | None = None
 
 
 @dataclass(frozen=True)

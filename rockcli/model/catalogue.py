@@ -30,6 +30,7 @@ from rockcli.mechanics import Block, Rocker
 from rockcli.mechanisms.block import BlockSide
 from rockcli.mechanisms.catalogue import (
     CrushingError,
+    arch_thrust,
     build,
     flexure_at,
     flexure_range,
@@ -41,7 +42,14 @@ from rockcli.mechanisms.catalogue import (
     storey_of,
 )
 from rockcli.mechanisms.side import ChainSide
-from rockcli.mechanisms.wall import OPTIMAL, WHOLE_WALL, MechanismSpec, MechanismType, Wall
+from rockcli.mechanisms.wall import (
+    NOT_ROCKED,
+    OPTIMAL,
+    WHOLE_WALL,
+    MechanismSpec,
+    MechanismType,
+    Wall,
+)
 from rockcli.model.schema import Model
 from rockcli.notes import Note
 
@@ -184,6 +192,15 @@ class Mechanism:
 
         if self.block is not None:
             return self.block
+        if self.type in NOT_ROCKED:
+            raise InputError(
+                "the time history does not apply to a horizontal flexure: the strip is held "
+                "by the arch's thrust between the return walls, not by its weight (a gravity "
+                "rocking mechanism); the code check keeps it",
+                where="--mechanism",
+                value=self.name,
+                allowed="a mechanism that rocks (overturning, wedge, vertical flexure, gable)",
+            )
         block = derive_block(self.model)
         plus, minus = self.views
         assert isinstance(plus, ChainSide) and isinstance(minus, ChainSide)
@@ -303,7 +320,7 @@ def wall_mechanism(model: Model, wall: Wall, spec: MechanismSpec, free: int | No
     sides = sides_of(spec, free)
     spec, hinge_notes = resolved(wall, spec, sides)
     strength: tuple[Note, ...] = ()
-    if wall.f_m is not None:
+    if wall.f_m is not None and spec.type is not MechanismType.HORIZONTAL_FLEXURE:
         strength = (Note("set_back", "hinges set back by half the stress block "
                          "a = N/(f_m·width), f_m = {f_m:g} MPa", f_m=wall.f_m / 1e6),)  # fmt: skip
     hinge = spec.hinge_height if isinstance(spec.hinge_height, float) else hinge_of(spec, wall)
@@ -319,7 +336,7 @@ def wall_mechanism(model: Model, wall: Wall, spec: MechanismSpec, free: int | No
         wall_height=wall.height,
         storey_count=len(wall.storeys),
         free=free_member(wall, spec) if spec.free else None,
-        notes=(*hinge_notes, *flexure_notes(wall, spec)),
+        notes=(*hinge_notes, *flexure_notes(wall, spec), *arch_notes(wall, spec)),
         strength_notes=strength,
         model=model,
         wall=wall,
@@ -427,6 +444,9 @@ def spec_base(wall: Wall, spec: MechanismSpec) -> float:
         assert spec.storey is not None
         storey = wall.storeys[spec.storey - 1]
         return wall.storey_bases()[spec.storey - 1] + 0.5 * storey.height
+    if spec.type is MechanismType.HORIZONTAL_FLEXURE:  # the strip's middle
+        assert spec.level is not None and spec.strip_height is not None
+        return spec.level + 0.5 * spec.strip_height
     return hinge_of(spec, wall)
 
 
@@ -449,6 +469,52 @@ def free_member(wall: Wall, spec: MechanismSpec) -> FreeMember:
         kappa, length = KAPPA_CANTILEVER, wall.height - hinge + gable
         thickness = wall.storeys[k].thickness
     return FreeMember(kappa, length, thickness, wall.unit_weight, wall.E, wall.g)
+
+
+def arch_notes(wall: Wall, spec: MechanismSpec) -> tuple[Note, ...]:
+    """A horizontal flexure's arch in a sentence: its thrust, stress block and what limits
+    the thrust (none for other types)."""
+    if spec.type is not MechanismType.HORIZONTAL_FLEXURE:
+        return ()
+    arch = arch_of(wall, spec)
+    if spec.thrust_limit is not None and arch.thrust < arch.best:
+        return (Note("arch_limited", "horizontal flexure: a three-hinge arch in plan of span "
+                     "{span:g} m on a strip {b:g} m high and {s:g} m thick, its thrust "
+                     "H = {H:.4g} kN limited by {by} (below the masonry's H* = f_m·b·s/2 = "
+                     "{best:.4g} kN), stress blocks a = H/(f_m·b) = {a:.4g} m deep, lever "
+                     "s − a = {lever:.4g} m", span=arch.span, b=arch.strip, s=arch.thickness,
+                     H=arch.thrust / 1e3, by=str(spec.limit_by), best=arch.best / 1e3,
+                     a=arch.depth, lever=arch.thickness - arch.depth),)  # fmt: skip
+    return (Note("arch_rigid", "horizontal flexure: a three-hinge arch in plan of span {span:g} "
+                 "m on a strip {b:g} m high and {s:g} m thick between rigid abutments, its "
+                 "thrust H* = f_m·b·s/2 = {H:.4g} kN (the largest moment H·(s − a)), stress "
+                 "blocks a = H/(f_m·b) = {a:.4g} m deep, lever s − a = {lever:.4g} m",
+                 span=arch.span, b=arch.strip, s=arch.thickness, H=arch.thrust / 1e3,
+                 a=arch.depth, lever=arch.thickness - arch.depth),)  # fmt: skip
+
+
+@dataclass(frozen=True)
+class Arch:
+    """A horizontal flexure's arch: span, strip height, thickness [m], its thrust and the
+    masonry's best thrust f_m·b·s/2 [N], the stress block's depth a [m]."""
+
+    span: float
+    strip: float
+    thickness: float
+    thrust: float
+    best: float
+    depth: float
+
+
+def arch_of(wall: Wall, spec: MechanismSpec) -> Arch:
+    """The arch of a horizontal flexure (rockcli.mechanisms.catalogue.horizontal_flexure)."""
+    assert wall.f_m is not None and spec.level is not None
+    assert spec.strip_height is not None and spec.span is not None
+    s = wall.storeys[storey_of(wall, spec.level)].thickness
+    b = spec.strip_height
+    thrust = arch_thrust(wall.f_m, b, s, spec.thrust_limit)
+    best = arch_thrust(wall.f_m, b, s, None)
+    return Arch(spec.span, b, s, thrust, best, thrust / (wall.f_m * b))
 
 
 def flexure_notes(wall: Wall, spec: MechanismSpec) -> tuple[Note, ...]:

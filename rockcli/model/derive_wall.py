@@ -179,12 +179,32 @@ def expand(entry: MechanismEntry, wall: Wall) -> list[MechanismSpec]:
     if kind is MechanismType.GABLE:
         return [MechanismSpec(entry.name or Note("name_gable", "gable"), kind,
                               free=entry.is_free)]  # fmt: skip
+    if kind is MechanismType.HORIZONTAL_FLEXURE:
+        return [strip_spec(entry, wall)]
     hinge = OPTIMAL if entry.hinge_height is None else entry.hinge_height
     name = entry.name or Note(
         "name_flexure", "vertical flexure, storey {storey}", storey=entry.storey
     )
     value = hinge if hinge == OPTIMAL else float(hinge)
     return [MechanismSpec(name, kind, value, storey=entry.storey, free=entry.is_free)]
+
+
+def strip_spec(entry: MechanismEntry, wall: Wall) -> MechanismSpec:
+    """A horizontal flexure's spec: its strip, span (default the wall's width) and the thrust
+    its abutments take (a thrust_limit in kN, or its tie's strength; None: rigid)."""
+    assert entry.level is not None and entry.strip_height is not None
+    limit, by = None, None
+    if entry.thrust_limit is not None:
+        limit, by = entry.thrust_limit * NEWTONS_PER_KILONEWTON, "thrust_limit"
+    elif entry.tie is not None:
+        member = next(r for r in wall.restrainers if r.member.name == entry.tie).member
+        limit, by = member.strength, entry.tie
+    name = entry.name or Note("name_horizontal_flexure", "horizontal flexure at {level:g} m",
+                              level=float(entry.level))  # fmt: skip
+    span = wall.width if entry.span is None else entry.span
+    return MechanismSpec(name, MechanismType.HORIZONTAL_FLEXURE, level=entry.level,
+                         strip_height=entry.strip_height, span=span, thrust_limit=limit,
+                         limit_by=by)  # fmt: skip
 
 
 def overturning_name(wall: Wall, hinge: float) -> str:

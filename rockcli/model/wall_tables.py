@@ -58,6 +58,9 @@ class Storey(Table):
 MAX_FRICTION = 1.5
 #: Circolare 7/2019 §C8.7.1.2.1.1: "un valore di riferimento è 0,577".
 REFERENCE_FRICTION = 0.577
+#: A horizontal flexure's thrust limit [kN]: from 0.1 kN to 10⁵ kN (a ring beam's or a
+#: tie's strength; below, a slip of units).
+MIN_THRUST_LIMIT, MAX_THRUST_LIMIT = 0.1, 1e5
 #: The toothing's keys, given only with toothed = true.
 TOOTHING_KEYS = ("mu", "course_height", "overlap", "sides")
 
@@ -154,7 +157,8 @@ class MechanismEntry(Table):
         None, min_length=1, description="Label; default from the type and the hinge"
     )
     type: MechanismKind = Field(
-        ..., description="'overturning', 'wedge', 'vertical-flexure' or 'gable'"
+        ...,
+        description="'overturning', 'wedge', 'vertical-flexure', 'gable' or 'horizontal-flexure'",
     )
     hinge_height: float | str | None = Field(
         None,
@@ -176,6 +180,29 @@ class MechanismEntry(Table):
     )
     sides: int | None = Field(
         None, strict=True, ge=1, le=2, description="wedge: return walls dragged, 1 or 2"
+    )
+    level: float | None = number(
+        "horizontal-flexure: the strip's base above the wall's base [m]", ge=0.0, le=MAX_LENGTH
+    )
+    strip_height: float | None = number(
+        "horizontal-flexure: the strip's height b [m]", ge=MIN_LENGTH, le=MAX_LENGTH
+    )
+    span: float | None = number(
+        "horizontal-flexure: the span L between the return walls [m] (default the wall's width)",
+        ge=MIN_LENGTH,
+        le=MAX_LENGTH,
+    )
+    thrust_limit: float | None = number(
+        "horizontal-flexure: the largest thrust the abutments take (a ring beam, a tie) [kN]; "
+        "default rigid abutments",
+        ge=MIN_THRUST_LIMIT,
+        le=MAX_THRUST_LIMIT,
+    )
+    tie: str | None = Field(
+        None,
+        min_length=1,
+        description="horizontal-flexure: the restrainer whose strength limits the thrust (its "
+        "name)",
     )
     friction: bool | None = Field(
         None,
@@ -200,8 +227,11 @@ class MechanismEntry(Table):
             MechanismKind.WEDGE: {"angle", "sides"},
             MechanismKind.VERTICAL_FLEXURE: {"hinge_height", "storey"},
             MechanismKind.GABLE: set(),
-        }[self.type]
-        for key in ("hinge_height", "storey", "angle", "sides", "friction"):
+            MechanismKind.HORIZONTAL_FLEXURE: {"level", "strip_height", "span",
+                                               "thrust_limit", "tie"},
+        }[self.type]  # fmt: skip
+        for key in ("hinge_height", "storey", "angle", "sides", "friction", "level",
+                    "strip_height", "span", "thrust_limit", "tie"):  # fmt: skip
             if key not in own and getattr(self, key) is not None:
                 raise rule_error(
                     key, f"not a key of a {self.type.value} mechanism", _allowed(self.type),
@@ -210,6 +240,19 @@ class MechanismEntry(Table):
         self._check_hinge()
         if self.type is MechanismKind.WEDGE and self.angle is None:
             raise rule_error("angle", "required with type = 'wedge'", _allowed(self.type))
+        if self.type is MechanismKind.HORIZONTAL_FLEXURE:
+            for key in ("level", "strip_height"):
+                if getattr(self, key) is None:
+                    raise rule_error(key, "required with type = 'horizontal-flexure'",
+                                     _allowed(self.type))  # fmt: skip
+            if self.thrust_limit is not None and self.tie is not None:
+                allowed = "thrust_limit [kN] or tie = a restrainer's name"
+                raise rule_error("tie", "not allowed together with thrust_limit", allowed,
+                                 self.tie)  # fmt: skip
+            if self.free:
+                raise rule_error("free", "a horizontal flexure is not free to vibrate: its "
+                                 "strip is held by the return walls",
+                                 "free = false, or no free key", self.free)  # fmt: skip
         if self.type is MechanismKind.WEDGE and self.free:
             raise rule_error(
                 "free", "a wedge cannot stand free: it is bonded to its return walls, whose "
@@ -241,6 +284,8 @@ def _allowed(kind: MechanismKind) -> str:
         MechanismKind.WEDGE: "angle (0–60 degrees from the vertical), sides = 1 or 2",
         MechanismKind.VERTICAL_FLEXURE: "storey (1 = ground), hinge_height [m] or 'optimal'",
         MechanismKind.GABLE: "no other key (the gable is geometry.gable_height)",
+        MechanismKind.HORIZONTAL_FLEXURE: "level and strip_height [m], span [m], thrust_limit "
+        "[kN] or tie (a restrainer's name)",
     }[kind]
 
 
@@ -288,6 +333,35 @@ def check_mechanisms(model: Any) -> None:
             _check_floor(entry, storeys, where)
         if entry.type is MechanismKind.VERTICAL_FLEXURE:
             _check_flexure(model, entry, storeys, where)
+        if entry.type is MechanismKind.HORIZONTAL_FLEXURE:
+            _check_strip(model, entry, storeys, where)
+
+
+def _check_strip(model: Any, entry: MechanismEntry, storeys: tuple, where: tuple) -> None:
+    """A horizontal flexure: f_m given, its strip inside one storey, its tie a restrainer
+    with a strength."""
+    if model.masonry is None or model.masonry.f_m is None:
+        raise rule_error((*where, "type"), "a horizontal flexure needs the masonry's strength "
+                         "(its arch's stress blocks)", "[masonry] f_m [Pa]",
+                         entry.type.value)  # fmt: skip
+    assert entry.level is not None and entry.strip_height is not None
+    bases = storey_bases(storeys)
+    tops = [b + s.height for b, s in zip(bases, storeys, strict=True)]
+    inside = [k for k, (b, t) in enumerate(zip(bases, tops, strict=True))
+              if b - 1e-9 <= entry.level < t - 1e-9]  # fmt: skip
+    top = entry.level + entry.strip_height
+    if not inside or top > tops[inside[0]] * (1 + 1e-9) + 1e-9:
+        spans = ", ".join(f"{b:g}–{t:g}" for b, t in zip(bases, tops, strict=True))
+        raise rule_error((*where, "level"), f"a strip from {entry.level:g} to {top:g} m is not "
+                         "inside one storey of the wall",
+                         f"level and strip_height within a storey: {spans} [m]",
+                         entry.level)  # fmt: skip
+    if entry.tie is not None:
+        names = [r.name for r in model.restrainers if r.name]
+        if entry.tie not in names:
+            allowed = ("one of: " + ", ".join(f"'{n}'" for n in names) if names
+                       else "the name of a [[restrainers]] entry")  # fmt: skip
+            raise rule_error((*where, "tie"), "no such restrainer", allowed, entry.tie)
 
 
 def _check_toothing(model: Any, storeys: tuple[Storey, ...]) -> None:

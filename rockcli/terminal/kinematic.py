@@ -93,7 +93,17 @@ def catalogue_entry(m: Any) -> dict[str, Any]:
         "verdict": r.verdict(),
         "notes": list(r.notes),
         "friction": friction_document(m.friction),
+        **arch_document(m.arch),
     }
+
+
+def arch_document(arch: Any) -> dict[str, Any]:
+    """A horizontal flexure's arch: its thrust H [kN] and stress block depth a [m] (the two
+    numbers a checker looks for), its span and strip [m]; nothing for another type."""
+    if arch is None:
+        return {}
+    return {"thrust_kN": arch.thrust / 1e3, "stress_block_depth": arch.depth,
+            "span": arch.span, "strip_height": arch.strip}  # fmt: skip
 
 
 def friction_document(friction: Any) -> dict[str, Any] | None:
