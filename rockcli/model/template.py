@@ -226,7 +226,15 @@ OTHER_KEYS: dict[str, dict[str, Any]] = {
         "gable_height": 2.0,
     },
     "geometry.storeys": {"height": 4.0, "thickness": 0.6},
-    "return_walls": {"thickness": 0.45},
+    "return_walls": {
+        "thickness": 0.45,
+        "toothed": True,
+        "mu": 0.577,
+        "course_height": 0.25,
+        "overlap": 0.25,
+        "sides": 2,
+    },
+    "base": {"mu": 0.6},
     "masonry": {"f_m": 2.0e6, "E": 6.0e8, "type": "rough-cut-stone"},
     "mechanisms": {
         "type": "overturning",
@@ -236,6 +244,12 @@ OTHER_KEYS: dict[str, dict[str, Any]] = {
         "angle": 30.0,
         "sides": 2,
         "free": False,
+        "friction": True,
+        "level": 5.0,
+        "strip_height": 1.0,
+        "span": 6.0,
+        "thrust_limit": 50.0,
+        "tie": "tie at the eaves",
     },
     "mass": {"weight": 100.0, "unit_weight": 18.0},
     "restitution": {"model": "explicit", "factor": 0.9, "e": 0.8},
@@ -328,7 +342,11 @@ OPTIONAL_TABLE_NOTES: dict[str, tuple[str, ...]] = {
         "[[geometry.storeys]] table per storey, bottom up; needs geometry.width and [mass]. "
         "See docs/mechanisms.md.",
     ),
-    "return_walls": ("The return walls, where a wedge (compound overturning) can form.",),
+    "return_walls": (
+        "The return walls, where a wedge (compound overturning) can form; toothed into the "
+        "wall, their friction holds an overturning back (docs/mechanisms/friction.md).",
+    ),
+    "base": ("The base joint's friction: whether the element slides before it rocks.",),
     "masonry": (
         "The masonry's strength (each hinge moves inward by half the stress block) and its "
         "stiffness (E, or a type of Circolare 7/2019 Tab. C8.5.I) for elements free to "
@@ -336,8 +354,8 @@ OPTIONAL_TABLE_NOTES: dict[str, tuple[str, ...]] = {
     ),
     "mechanisms": (
         "The local mechanisms to check, one [[mechanisms]] table each (none: overturning about "
-        'the base). type = "overturning" | "wedge" | "vertical-flexure" | "gable"; each '
-        "type takes only its own keys (docs/mechanisms.md).",
+        'the base). type = "overturning" | "wedge" | "vertical-flexure" | "gable" | '
+        '"horizontal-flexure"; each type takes only its own keys (docs/mechanisms.md).',
     ),
     "ntc.site": ("Instead of [ntc.demand.*]: the site, for the demand from a hazard grid.",),
     "ntc.demand.SLO": ("Spectrum parameters of the operational limit state, if needed.",),

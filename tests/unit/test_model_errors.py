@@ -89,7 +89,7 @@ def test_unknown_table_at_top_level_exact_line(tmp_path: Path) -> None:
     assert line == (
         f"{tmp_path / 'm.toml'}: unknown table [results] (allowed: one of: name, kind, notes, "
         "geometry, mass, restitution, motion, analysis, restrainers, loads, thrusts, building, "
-        "ntc, return_walls, masonry, mechanisms)"
+        "base, ntc, return_walls, masonry, mechanisms)"
     )
 
 
