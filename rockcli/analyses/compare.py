@@ -17,7 +17,9 @@ from rockcli.analyses.catalogue import main_mechanism, named_result
 from rockcli.codecheck.demand import Spectrum
 from rockcli.codecheck.result import KinematicResult
 from rockcli.dynamics.result import Assessment, RockingRun, RunStatus, Verdict
+from rockcli.mechanisms.wall import NOT_ROCKED, MechanismType
 from rockcli.model.schema import Model
+from rockcli.notes import Note
 from rockcli.records.record import Record
 
 
@@ -227,6 +229,13 @@ class ComparisonOutput:
     catalogue: Catalogue = ()
 
 
+#: Why the time history does not rock a horizontal flexure (rockcli.mechanisms.wall
+#: .NOT_ROCKED).
+NOT_A_ROCKER = Note("not_a_rocker", "the time history does not apply: its strip is held by "
+                    "the arch's thrust between the return walls, not by its weight (not a "
+                    "gravity rocking mechanism); the code check keeps it")  # fmt: skip
+
+
 @dataclass(frozen=True)
 class MechanismComparison:
     """One mechanism of a wall's catalogue under the record: its code check, its rocking and
@@ -372,6 +381,9 @@ def catalogue_comparisons(model, record, engine, kin, main, shown, ground, mecha
             run: Assessment = rocking.result
             why = main_why
             collapse = None if why is not None else rocking_collapse(run)
+        elif MechanismType(m.type) in NOT_ROCKED:
+            out.append(MechanismComparison(m.name, m.type, m.result, None, None, NOT_A_ROCKER))
+            continue
         else:
             try:
                 run = assess_model_output(model, record, engine, ground=ground, mechanism=m.name,

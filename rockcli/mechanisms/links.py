@@ -220,4 +220,34 @@ class TwoBlock:
         return lower, upper
 
 
-Motion = Rotation | TwoBlock
+@dataclass(frozen=True)
+class CappedPiers:
+    """Two links: the piers of a rocking frame turning by θ about the origin (a base corner
+    of each, in the side frame), and the roof translating with the top corner (top_x, top_z)
+    that carries it (the corner diagonally opposite the pivot: (2b, 2h); Makris & Vassiliou
+    2013, rockcli.mechanisms.frame)."""
+
+    top_x: float
+    top_z: float
+    links: int = 2
+
+    @property
+    def limit(self) -> float:
+        """The largest rotation the motion is defined for [rad]."""
+        return math.pi / 2
+
+    def states(self, theta: Angle) -> tuple[LinkState, ...]:
+        """The piers and the roof at θ (a rotation, or an array of them)."""
+        c, s = cos(theta), sin(theta)
+        vers = versines(theta, c)
+        ux = -self.top_x * vers - self.top_z * s
+        uz = self.top_x * s - self.top_z * vers
+        still = 0.0 * theta
+        roof = LinkState(self.top_x, self.top_z, self.top_x + ux, self.top_z + uz, still,
+                         -self.top_x * s - self.top_z * c, self.top_x * c - self.top_z * s,
+                         still, ux, uz)  # fmt: skip
+        return (LinkState(0.0, 0.0, 0.0, 0.0, theta, 0.0, 0.0, 1.0), roof)
+
+
+#: Every motion of a mechanism's links.
+Motion = Rotation | TwoBlock | CappedPiers
