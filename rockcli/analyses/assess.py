@@ -146,8 +146,8 @@ def restitution_rule(rule: str, block: Rocker, rocked: tuple[str, str] | None) -
     wall's mechanism, Housner's balance about the new pivot of its body (one rigid body) or
     the projection on the motion after the impact (a chain), or for a one-sided mechanism
     the energy that impact keeps (mechanics.rebound_restitution), times the model's factor
-    (an explicit e as given)."""
-    if rocked is None or rule == "explicit":
+    (an explicit e as given). A frame (a chain of its own file) is a chain."""
+    if (rocked is None and not isinstance(block, Chain)) or rule == "explicit":
         return rule
     if block.one_sided:
         own = Note("one_sided_impact", "the energy Housner's impact at the other edge keeps, "

@@ -112,13 +112,11 @@ def kinematic_quantity(model: Model, inputs: KinematicInput, quantity: str) -> f
 
 def rocking_restitution(model: Model, name: str) -> float:
     """The coefficient of restitution the time history gives the mechanism named, side +1
-    (rockcli.analyses.rocked.mechanism_block: Housner's about the new pivot, or a one-sided
-    mechanism's √(e₊·e₋))."""
-    from rockcli.analyses.rocked import mechanism_block, named_spec
-    from rockcli.model.derive_wall import to_wall
+    (rockcli.model.catalogue.Mechanism.rocker: Housner's about the new pivot, a chain's
+    projection, or a one-sided mechanism's √(e₊·e₋))."""
+    from rockcli.model.catalogue import named_mechanism
 
-    wall = to_wall(model)
-    return mechanism_block(model, wall, named_spec(wall, name)).restitution(1)
+    return named_mechanism(model, name).rocker.restitution(1)
 
 
 def catalogue_entry(result: KinematicResult, name: str | None) -> MechanismResult:

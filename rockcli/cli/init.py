@@ -28,8 +28,9 @@ def init(kind: str, output: Path | None, force: bool) -> None:
     """Write a commented model-file template.
 
     KIND is wall, altar or facade (the altar and the facade are the source paper's cases),
-    or project: the project of a calculation report (rock report --project). The template
-    loads unchanged; edit its values for your element.
+    frame (piers capped by a roof: a bell cell), or project: the project of a calculation
+    report (rock report --project). The template loads unchanged; edit its values for your
+    element.
     """
     from rockcli.model.template import render_template
     from rockcli.outfile import check_writable, is_stdout, write_text

@@ -130,7 +130,8 @@ class Mechanism:
         strength_notes: the hinges set back by the stress block (f_m given).
         model: the model it comes from (the engine's settings and e rule).
         wall, spec: the wall and its entry (None for a block file).
-        block: a block file's block, what the engines rock (None for a wall's mechanism).
+        block: what the engines rock, derived with the file: a block file's block, a
+            frame's chain (None for a wall's mechanism: built when first asked).
     """
 
     name: str
@@ -149,7 +150,7 @@ class Mechanism:
     model: Model
     wall: Wall | None = None
     spec: MechanismSpec | None = None
-    block: Block | None = None
+    block: Rocker | None = None
 
     def view(self, side: int) -> BlockSide | ChainSide:
         """Its geometry about the pivot of ``side``."""
@@ -230,6 +231,8 @@ def named(items, name: str, where: str = "--mechanism", problem: str = "no such 
 def catalogue(model: Model) -> tuple[Mechanism, ...]:
     """Every mechanism of the model in the file's order: a wall's ``[[mechanisms]]`` (none:
     its overturning about the base), or a block file's block (its overturning)."""
+    if model.frame is not None:
+        return (frame_mechanism(model),)
     if block_file(model):
         return (block_mechanism(model),)
     from rockcli.model.derive_wall import to_wall
@@ -242,18 +245,20 @@ def catalogue(model: Model) -> tuple[Mechanism, ...]:
 def block_file(model: Model) -> bool:
     """True for a model file of one block (no storeys, no ``[[mechanisms]]``): its catalogue
     is the block's overturning. The one place that tells the file's two forms apart."""
-    return model.geometry.storeys is None and not model.mechanisms
+    return model.geometry.storeys is None and not model.mechanisms and model.frame is None
 
 
 def rocks_its_block(model: Model) -> bool:
     """True when the model's catalogue is one mechanism that rocks as the paper's rectangle
     (a block file): its sizes are the block's R and α, which a spectrum over sizes varies."""
     mechanisms = catalogue(model)
-    return len(mechanisms) == 1 and mechanisms[0].wall is None
+    return len(mechanisms) == 1 and isinstance(mechanisms[0].block, Block)
 
 
 def first_mechanism(model: Model) -> Mechanism:
     """The catalogue's first mechanism alone, derived as :func:`catalogue` derives it."""
+    if model.frame is not None:
+        return frame_mechanism(model)
     if block_file(model):
         return block_mechanism(model)
     from rockcli.model.derive_wall import to_wall
@@ -265,6 +270,8 @@ def first_mechanism(model: Model) -> Mechanism:
 def named_mechanism(model: Model, name: str) -> Mechanism:
     """The catalogue's mechanism ``name`` alone, derived as :func:`catalogue` derives it
     (InputError naming the catalogue's names)."""
+    if model.frame is not None:
+        return named((frame_mechanism(model),), name)
     if block_file(model):
         return named((block_mechanism(model),), name)
     from rockcli.model.derive_wall import to_wall
@@ -287,6 +294,56 @@ def block_view(block: Block, side: int) -> BlockSide:
     if block.mass is None:
         block = replace(block, mass=UNIT_MASS)
     return BlockSide(block, side)
+
+
+#: The name of a frame's one mechanism.
+FRAME = Note("name_frame", "rocking frame")
+
+
+def frame_mechanism(model: Model) -> Mechanism:
+    """A frame file's one mechanism: the piers rocking under their roof (rockcli.mechanisms
+    .frame), each side's chain for the code check and, derived here, the Chain the engines
+    rock (its table) with the e of its impact (Housner's rule: the projection's)."""
+    from rockcli.mechanisms.frame import FrameGeometry, frame_chain, frame_side
+    from rockcli.model.derive import derive_block, with_system_restitution
+
+    table = model.frame
+    assert table is not None and model.mass is not None and model.mass.unit_weight is not None
+    frame = FrameGeometry(table.piers, table.pier_width, table.pier_depth, table.pier_height,
+                          model.mass.unit_weight * 1e3, table.roof_mass, table.roof_height,
+                          model.analysis.g)  # fmt: skip
+    plus, minus = frame_side(frame, 1), frame_side(frame, -1)
+    block = derive_block(model)
+    chain = with_system_restitution(frame_chain(plus, minus, block), model)
+    sides = (block.free_side,) if block.one_sided else (1, -1)
+    return Mechanism(
+        name=FRAME,
+        type=MechanismType.OVERTURNING,
+        hinge_height=0.0,
+        storey=None,
+        sides=sides,
+        views=(plus, minus),
+        block=chain,
+        reported=(1, -1),
+        base=0.0,
+        wall_height=table.pier_height,
+        storey_count=1,
+        free=None,
+        notes=(frame_note(frame, chain),),
+        strength_notes=(),
+        model=model,
+    )
+
+
+def frame_note(frame, chain: Rocker) -> Note:
+    """The frame in a sentence: its piers and roof, γ, and what the roof does to p and e."""
+    pier = frame.unit_weight * frame.width * frame.depth * frame.height / frame.g
+    gamma = frame.roof_mass / (frame.piers * pier)
+    return Note("frame", "rocking frame of {n} piers {w:g} × {d:g} × {h:g} m capped by a roof "
+                "of {m:.4g} t (γ = m_roof/Σ m_pier = {gamma:.4g}): uplift at g·tan α of a "
+                "pier, p = {p:.5g} rad/s, e = {e:.5g} (Makris & Vassiliou 2013)",
+                n=frame.piers, w=frame.width, d=frame.depth, h=frame.height,
+                m=frame.roof_mass / 1e3, gamma=gamma, p=chain.p, e=chain.e)  # fmt: skip
 
 
 def block_mechanism(model: Model) -> Mechanism:

@@ -42,6 +42,7 @@ from rockcli.model.bounds import (
     MIN_WEIGHT,
     PRETENSION_ALLOWED,
 )
+from rockcli.model.frame_table import FrameTable, check_frame, frame_geometry
 from rockcli.model.ntc import Ntc
 from rockcli.model.physical import (
     Base,
@@ -94,11 +95,13 @@ CONTAINMENT_RTOL = 1e-2
 
 
 class Kind(StrEnum):
-    """What the macro-element is (identity only: the mechanics are the same)."""
+    """What the macro-element is: a wall, an altar and a façade are identities only (the
+    mechanics are the same); a frame is equal piers capped by a rigid roof ([frame])."""
 
     WALL = "wall"
     ALTAR = "altar"
     FACADE = "facade"
+    FRAME = "frame"
 
 
 class RestitutionModel(StrEnum):
@@ -744,6 +747,15 @@ class Model(Table):
     mechanisms: tuple[MechanismEntry, ...] = Field(
         (), description="The local mechanisms to check; none: overturning about the base"
     )
+    frame: FrameTable | None = Field(
+        None, description="A rocking frame's piers and roof, with kind = 'frame'"
+    )
+
+    @model_validator(mode="before")
+    @classmethod
+    def _frame_sizes(cls, data: Any) -> Any:
+        """A frame's [geometry] written from its [frame] (rockcli.model.frame_table)."""
+        return frame_geometry(data)
 
     @model_validator(mode="after")
     def _cross_table_rules(self) -> Model:
@@ -761,6 +773,7 @@ class Model(Table):
         top = 2.0 * h + (self.geometry.gable_height or 0.0)
         check_points(physical, 2.0 * b, top, CONTAINMENT_RTOL)
         check_mechanisms(self)
+        check_frame(self)
         return self
 
     def _check_width(self) -> None:

@@ -85,6 +85,26 @@ _ALTAR_NTC = {
 }
 
 TEMPLATES: dict[Kind, dict[str, Any]] = {
+    Kind.FRAME: {
+        "name": "Bell cell",
+        "kind": "frame",
+        "notes": "Four piers capped by the belfry's roof and bells, on the tower (Makris & "
+        "Vassiliou 2013): they rock together, uplift at g·tan α of a pier whatever the roof.",
+        "frame": {
+            "piers": 4,
+            "pier_width": 0.6,
+            "pier_depth": 0.6,
+            "pier_height": 3.0,
+            "roof_mass": 15000.0,
+            "roof_height": 0.5,
+        },
+        "mass": {"unit_weight": 18.6},
+        "restitution": {"model": "housner"},
+        "motion": {"sides": "two"},
+        "analysis": _ANALYSIS,
+        "building": {"Z": 20.0, "H": 23.0, "N": 1},
+        "ntc": _NTC,
+    },
     Kind.WALL: {
         "name": "Wall with a tie-rod",
         "kind": "wall",
@@ -226,6 +246,14 @@ OTHER_KEYS: dict[str, dict[str, Any]] = {
         "gable_height": 2.0,
     },
     "geometry.storeys": {"height": 4.0, "thickness": 0.6},
+    "frame": {
+        "piers": 4,
+        "pier_width": 0.6,
+        "pier_depth": 0.6,
+        "pier_height": 3.0,
+        "roof_mass": 15000.0,
+        "roof_height": 0.5,
+    },
     "return_walls": {
         "thickness": 0.45,
         "toothed": True,
@@ -347,6 +375,10 @@ OPTIONAL_TABLE_NOTES: dict[str, tuple[str, ...]] = {
         "wall, their friction holds an overturning back (docs/mechanisms/friction.md).",
     ),
     "base": ("The base joint's friction: whether the element slides before it rocks.",),
+    "frame": (
+        'A rocking frame (kind = "frame", no [geometry]): equal piers capped by a rigid roof, '
+        "a bell cell (docs/mechanisms/frame.md).",
+    ),
     "masonry": (
         "The masonry's strength (each hinge moves inward by half the stress block) and its "
         "stiffness (E, or a type of Circolare 7/2019 Tab. C8.5.I) for elements free to "

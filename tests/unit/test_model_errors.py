@@ -89,7 +89,7 @@ def test_unknown_table_at_top_level_exact_line(tmp_path: Path) -> None:
     assert line == (
         f"{tmp_path / 'm.toml'}: unknown table [results] (allowed: one of: name, kind, notes, "
         "geometry, mass, restitution, motion, analysis, restrainers, loads, thrusts, building, "
-        "base, ntc, return_walls, masonry, mechanisms)"
+        "base, ntc, return_walls, masonry, mechanisms, frame)"
     )
 
 
@@ -499,7 +499,7 @@ def test_every_error_is_reported_one_line_each(tmp_path: Path) -> None:
     lines = text.split("\n")
     path = tmp_path / "m.toml"
     assert lines == [
-        f"{path}: kind: unknown value (got 'tower'; allowed: one of: wall, altar, facade)",
+        f"{path}: kind: unknown value (got 'tower'; allowed: one of: wall, altar, facade, frame)",
         f"{path}: geometry.thickness: out of range (got -1.0; allowed: {LENGTH})",
         f"{path}: geometry.height: out of range (got -2.0; allowed: {LENGTH})",
     ]
