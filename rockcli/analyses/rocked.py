@@ -165,7 +165,25 @@ def rocked_mechanism(model: Model, record: Record, name: str | None,
     else:
         mechanisms = catalogue(model) if mechanisms is None else mechanisms
         mech = mechanisms[0] if len(mechanisms) == 1 else governing(model, mechanisms, record)
+        refuse_unrocked(mech)
     return Rocked(mech, mechanism_floor(mech, building_settings(model)))
+
+
+def refuse_unrocked(mech: CatalogueMechanism) -> None:
+    """InputError when the mechanism the time history would rock by default is one it
+    cannot (a catalogue of horizontal flexures only)."""
+    from rockcli.errors import InputError
+    from rockcli.mechanisms.wall import NOT_ROCKED
+
+    if mech.type in NOT_ROCKED:
+        raise InputError(
+            "no mechanism of the model rocks: a horizontal flexure is the code check's alone "
+            "(its strip is held by the arch's thrust, not by its weight)",
+            where="mechanisms",
+            value=mech.name,
+            allowed="an overturning, wedge, vertical flexure or gable among [[mechanisms]] "
+            "for the time history, or rock kinematic",
+        )
 
 
 def mechanism_floor(mech: CatalogueMechanism, building: BuildingSettings) -> Floor | None:

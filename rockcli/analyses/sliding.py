@@ -6,10 +6,12 @@ load multiplier reaches the one that lifts it. With the weights W_i that bear on
 (the normal force N = Σ W_i), the masses that move (Σ P_j, shaken by α·P_j) and the thrusts
 pushing it towards the side it opens to (Σ F), it slides at
 
-    α_s = (μ·N − Σ F) / Σ P_j
+    α_s = (μ·N + F_t − Σ F) / Σ P_j
 
-(a lone block: α_s = μ). Where α_s is below the multiplier that lifts it on a side it can
-open to, it slides first, and a rocking verdict does not describe what it does (Shenton 1996,
+(a lone block: α_s = μ), F_t the toothed return walls' friction (Circolare 7/2019 Eq.
+C8.7.1.2: the same courses hold the wall from sliding out as from turning out). Where α_s
+is below the multiplier that lifts it on a side it can open to, it slides first, and a
+rocking verdict does not describe what it does (Shenton 1996,
 J. Eng. Mech. 122(7):690–693: a rigid block on a shaken base slides first where μ < tan α,
 its width over its height). Checked for the mechanisms that turn about the element's base
 (a block file's block, the overturning of the whole wall, the wedge); the restrainers' hold
@@ -40,11 +42,13 @@ SLIDES_FIRST = (
 
 def sliding_multiplier(view, mu: float) -> float:
     """α_s = (μ·N − Σ F) / Σ P_j of a mechanism's placement on one side (module docstring)."""
-    items = [it for it in view.work_items() if it.kind in ("body", "load")]
+    every = view.work_items()
+    items = [it for it in every if it.kind in ("body", "load")]
     normal = sum(it.force for it in items if it.bears)
     moving = sum(it.force for it in items if it.moves)
-    pushing = sum(it.opens * it.force for it in view.work_items() if it.kind == "thrust")
-    return (mu * normal - pushing) / moving
+    pushing = sum(it.opens * it.force for it in every if it.kind == "thrust")
+    toothing = sum(it.force for it in every if it.kind == "friction")
+    return (mu * normal + toothing - pushing) / moving
 
 
 def at_the_base(mech: Mechanism) -> bool:

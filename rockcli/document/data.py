@@ -68,6 +68,7 @@ def governing_body(part: Part) -> tuple[dict[str, Any], dict[str, str] | None]:
     (the document `rock assess` gives of what it rocks), and its (name, type) for a wall."""
     from rockcli.analyses.assess import restitution_rule
     from rockcli.analyses.catalogue import main_mechanism
+    from rockcli.analyses.rocked import refuse_unrocked
     from rockcli.model.catalogue import named
     from rockcli.model.derive import describe
     from rockcli.terminal.assess import model_document
@@ -77,6 +78,7 @@ def governing_body(part: Part) -> tuple[dict[str, Any], dict[str, str] | None]:
     model = part.inputs.model
     main = main_mechanism(ver.result)  # a horizontal flexure has no body the engines rock
     mech = named(ver.mechanisms, main.name if main is not None else ver.result.governing or "")
+    refuse_unrocked(mech)
     rocked = None if mech.wall is None else (mech.name, mech.type.value)
     rule = restitution_rule(describe(model).e_rule, mech.rocker, rocked)
     body = model_document(model.name, str(model.kind), mech.rocker, rule)

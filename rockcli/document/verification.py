@@ -109,7 +109,9 @@ BODY_NAMES = {"gable": "body.gable", "wedge (both return walls)": "body.wedge_bo
               "wedge (one return wall)": "body.wedge_one", "lower block": "body.lower",
               "upper block": "body.upper", "block": "body.block",
               "the wall above": "body.above",
-              "friction of the return walls": "body.friction"}  # fmt: skip
+              "friction of the return walls": "body.friction", "half strip": "body.half_strip",
+              "other half strip": "body.other_half_strip", "arch thrust": "body.arch_thrust",
+              "roof": "body.roof"}  # fmt: skip
 
 
 def item_name(t: Mapping[str, Any], w: Words) -> str:
@@ -119,6 +121,8 @@ def item_name(t: Mapping[str, Any], w: Words) -> str:
         return name
     if t["kind"] == "body" and name.startswith("storey ") and name[7:].isdigit():
         return w("body.storey", n=name[7:])
+    if t["kind"] == "body" and name.startswith("piers (") and name[7:-1].isdigit():
+        return w("body.piers", n=name[7:-1])
     return w(BODY_NAMES[name]) if name in BODY_NAMES else name
 
 

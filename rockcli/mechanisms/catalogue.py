@@ -389,6 +389,17 @@ def arch_thrust(f_m: float, strip: float, thickness: float, limit: float | None)
     return best if limit is None else min(best, limit)
 
 
+def arch_numbers(wall: Wall, spec: MechanismSpec) -> tuple[float, float, float, float]:
+    """(s [m], H [N], the masonry's H* [N], a [m]) of a horizontal flexure's arch: the strip's
+    thickness (its storey's), its thrust (:func:`arch_thrust`), the rigid abutments' and the
+    stress block's depth a = H/(f_m·b)."""
+    assert wall.f_m is not None and spec.level is not None and spec.strip_height is not None
+    s = wall.storeys[storey_of(wall, spec.level)].thickness
+    thrust = arch_thrust(wall.f_m, spec.strip_height, s, spec.thrust_limit)
+    best = arch_thrust(wall.f_m, spec.strip_height, s, None)
+    return s, thrust, best, thrust / (wall.f_m * spec.strip_height)
+
+
 def horizontal_flexure(wall: Wall, spec: MechanismSpec, side: int) -> ChainSide:
     """A strip of the wall of height b at ``level`` between the return walls, of span L, as a
     three-hinge flat arch in plan (the arch effect of "flessione orizzontale", the horizontal
@@ -408,12 +419,9 @@ def horizontal_flexure(wall: Wall, spec: MechanismSpec, side: int) -> ChainSide:
     fixed, as a stress block's set-back is for every mechanism), so the lever closes at
     δ ≈ s − a. As a chain: H is a weight bearing at the mid-span hinge that does not move
     (it does the work H·dZ/dθ), the halves two bodies of the link."""
-    assert wall.f_m is not None and spec.level is not None
     assert spec.strip_height is not None and spec.span is not None
-    s = wall.storeys[storey_of(wall, spec.level)].thickness
     b, span = spec.strip_height, spec.span
-    thrust = arch_thrust(wall.f_m, b, s, spec.thrust_limit)
-    a = thrust / (wall.f_m * b)
+    s, thrust, _, a = arch_numbers(wall, spec)
     frame = Frame(0.5 * a if side > 0 else s - 0.5 * a, 0.0, side)
     mid = frame.x(s - 0.5 * a if side > 0 else 0.5 * a)
     half = replace(prism("half strip", 0.0, s, 0.0, 0.5 * span, b, wall.unit_weight, wall.g),

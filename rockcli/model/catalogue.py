@@ -17,6 +17,7 @@ Pure: the model, the mechanisms and the code check's α0.
 
 from __future__ import annotations
 
+import math
 from collections.abc import Callable
 from dataclasses import dataclass, replace
 from functools import cached_property, partial
@@ -30,7 +31,7 @@ from rockcli.mechanics import Block, Rocker
 from rockcli.mechanisms.block import BlockSide
 from rockcli.mechanisms.catalogue import (
     CrushingError,
-    arch_thrust,
+    arch_numbers,
     build,
     flexure_at,
     flexure_range,
@@ -464,7 +465,10 @@ def resolved(wall: Wall, spec: MechanismSpec, sides: tuple[int, ...]):
 def hinge_note(flexure: bool, z: float, lo: float, hi: float) -> Note:
     """Where the optimal hinge was found in its range [lo, hi], and whether at an end."""
     values = {"z": z, "lo": lo, "hi": hi}
-    at_end = min(z - lo, hi - z) <= RANGE_END * (hi - lo)
+    # an overturning's range starts at the wall's base, a hinge the wall has: only its top
+    # end is the range's own
+    low = z - lo if flexure else math.inf
+    at_end = min(low, hi - z) <= RANGE_END * (hi - lo)
     if flexure:
         if at_end:
             return Note("hinge_at_end", FLEXURE_FOUND + AT_END, **values)
@@ -564,14 +568,11 @@ class Arch:
 
 
 def arch_of(wall: Wall, spec: MechanismSpec) -> Arch:
-    """The arch of a horizontal flexure (rockcli.mechanisms.catalogue.horizontal_flexure)."""
-    assert wall.f_m is not None and spec.level is not None
+    """The arch of a horizontal flexure, as rockcli.mechanisms.catalogue.horizontal_flexure
+    places it (its ``arch_numbers``)."""
     assert spec.strip_height is not None and spec.span is not None
-    s = wall.storeys[storey_of(wall, spec.level)].thickness
-    b = spec.strip_height
-    thrust = arch_thrust(wall.f_m, b, s, spec.thrust_limit)
-    best = arch_thrust(wall.f_m, b, s, None)
-    return Arch(spec.span, b, s, thrust, best, thrust / (wall.f_m * b))
+    s, thrust, best, depth = arch_numbers(wall, spec)
+    return Arch(spec.span, spec.strip_height, s, thrust, best, depth)
 
 
 def flexure_notes(wall: Wall, spec: MechanismSpec) -> tuple[Note, ...]:

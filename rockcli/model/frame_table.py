@@ -48,8 +48,8 @@ class FrameTable(Table):
         "The roof's mass with what it carries (bells) [kg]", ..., ge=0.0, le=MAX_ROOF_MASS
     )
     roof_height: float = number(
-        "The roof's centroid above the piers' tops [m]: the roof translates, so it does not "
-        "enter the motion (shown in reports)",
+        "The roof's centroid above the piers' tops; the roof translates, so it does not "
+        "enter the motion [m]",
         0.0,
         ge=0.0,
         le=MAX_LENGTH,
@@ -60,7 +60,12 @@ def frame_geometry(data: Any) -> Any:
     """A frame file's raw data with its [geometry] written from [frame] (the pier's sizes;
     a value [frame] refuses is replaced by 1 m, so that only [frame] names it). A [geometry]
     given with kind = "frame" is refused."""
-    if not isinstance(data, dict) or data.get("kind") != "frame":
+    if not isinstance(data, dict):
+        return data
+    if data.get("kind") != "frame":
+        if "frame" in data and "geometry" not in data:
+            raise rule_error("frame", "only with kind = 'frame'",
+                             "kind = 'frame', or no [frame] table")  # fmt: skip
         return data
     if "geometry" in data:
         raise rule_error("geometry", "a frame's sizes are its piers'", "[frame] pier_width, "

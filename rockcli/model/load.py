@@ -217,8 +217,12 @@ def check_derived(model: Model, file: str | None = None) -> None:
 
 
 def to_toml(model: Model) -> str:
-    """The model as TOML text that :func:`load_model` reads back to an equal model."""
-    return dumps(model.model_dump(mode="json", exclude_none=True))
+    """The model as TOML text that :func:`load_model` reads back to an equal model (a frame
+    without the [geometry] its [frame] writes)."""
+    data = model.model_dump(mode="json", exclude_none=True)
+    if model.frame is not None:
+        data.pop("geometry", None)
+    return dumps(data)
 
 
 def dumps(data: Mapping[str, Any]) -> str:

@@ -714,7 +714,9 @@ class Model(Table):
     loads, thrusts, the building it stands in and the code check's settings."""
 
     name: str = Field(..., min_length=1, description="Name shown in reports")
-    kind: Kind = Field(..., description="'wall', 'altar' or 'facade'")
+    kind: Kind = Field(
+        ..., description="'wall', 'altar', 'facade', or 'frame' (piers capped by a roof: [frame])"
+    )
     notes: str | None = Field(None, description="Free text")
     geometry: Geometry = Field(..., description="The rocking block")
     mass: Mass | None = Field(
@@ -772,8 +774,8 @@ class Model(Table):
         check_mass(physical, self.mass is not None)
         top = 2.0 * h + (self.geometry.gable_height or 0.0)
         check_points(physical, 2.0 * b, top, CONTAINMENT_RTOL)
-        check_mechanisms(self)
         check_frame(self)
+        check_mechanisms(self)
         return self
 
     def _check_width(self) -> None:

@@ -188,13 +188,13 @@ class MechanismEntry(Table):
         "horizontal-flexure: the strip's height b [m]", ge=MIN_LENGTH, le=MAX_LENGTH
     )
     span: float | None = number(
-        "horizontal-flexure: the span L between the return walls [m] (default the wall's width)",
+        "horizontal-flexure: the span L between the return walls, default the wall's width [m]",
         ge=MIN_LENGTH,
         le=MAX_LENGTH,
     )
     thrust_limit: float | None = number(
-        "horizontal-flexure: the largest thrust the abutments take (a ring beam, a tie) [kN]; "
-        "default rigid abutments",
+        "horizontal-flexure: the largest thrust the abutments take (a ring beam, a tie), "
+        "default rigid abutments [kN]",
         ge=MIN_THRUST_LIMIT,
         le=MAX_THRUST_LIMIT,
     )
@@ -313,6 +313,11 @@ def check_mechanisms(model: Any) -> None:
     if model.geometry.storeys is not None or model.mechanisms:
         check_wall_points(model, storeys)
         _check_toothing(model, storeys)
+    elif model.return_walls is not None and model.return_walls.toothed:
+        raise rule_error(("return_walls", "toothed"), "a block file has no overturning the "
+                         "toothing's friction holds (its block is not a wall's mechanism)",
+                         "toothed = false, or a wall of [[geometry.storeys]] or with "
+                         "[[mechanisms]]", True)  # fmt: skip
     for i, entry in enumerate(model.mechanisms):
         where = ("mechanisms", i)
         if entry.type is MechanismKind.WEDGE and model.return_walls is None:
@@ -362,6 +367,20 @@ def _check_strip(model: Any, entry: MechanismEntry, storeys: tuple, where: tuple
             allowed = ("one of: " + ", ".join(f"'{n}'" for n in names) if names
                        else "the name of a [[restrainers]] entry")  # fmt: skip
             raise rule_error((*where, "tie"), "no such restrainer", allowed, entry.tie)
+        member = next(r for r in model.restrainers if r.name == entry.tie)
+        if not _has_strength(member):
+            raise rule_error((*where, "tie"), "a restrainer without a strength cannot limit "
+                             "the arch's thrust", "a tie-rod with a grade (or fy, fu), or a "
+                             "restrainer with anchor_capacity; or thrust_limit [kN]",
+                             entry.tie)  # fmt: skip
+
+
+def _has_strength(member: Any) -> bool:
+    """True when a restrainer has a strength (rockcli.model.derive.member_strength finite):
+    a tie-rod's steel, or an anchor's capacity."""
+    steel = member.kind is not None and member.kind.value == "tie-rod" and (
+        member.grade is not None or member.fy is not None)  # fmt: skip
+    return steel or member.anchor_capacity is not None
 
 
 def _check_toothing(model: Any, storeys: tuple[Storey, ...]) -> None:
@@ -381,8 +400,16 @@ def _check_toothing(model: Any, storeys: tuple[Storey, ...]) -> None:
 
 
 def _check_floor(entry: MechanismEntry, storeys: tuple[Storey, ...], where: tuple) -> None:
-    """An overturning's hinge at a storey's base."""
+    """An overturning's hinge at a storey's base; an optimal one with a range to search."""
     value = entry.hinge_height
+    if value == OPTIMAL:
+        height = sum(s.height for s in storeys)
+        margin = max(storeys[-1].thickness, 0.1 * height)
+        if height - margin <= 0.0:
+            raise rule_error((*where, "hinge_height"), "no range to search: the wall is not "
+                             "taller than its top storey is thick",
+                             "a hinge height [m] at a storey's base", value)  # fmt: skip
+        return
     if not isinstance(value, float):  # None (the base) or "each-floor"
         return
     bases = storey_bases(storeys)

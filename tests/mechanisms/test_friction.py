@@ -244,3 +244,59 @@ def test_friction_is_the_default_of_a_toothed_wall_and_the_reference_mu(tmp_path
     whole = kinematic_json(write(tmp_path, model))["overturning, whole wall"]
     assert whole["friction"]["F_kN"] == pytest.approx(70.1055, rel=1e-9)  # μ = 0.577
     assert whole["friction"]["walls"] == 2
+
+
+def test_an_optimal_hinge_needs_a_range_to_search(tmp_path: Path) -> None:
+    # a wall 0.4 m high and 0.5 m thick: base to top less max(0.5, 0.04) is empty
+    model = {**FACADE, "geometry": {"width": 5.0, "storeys": [{"height": 0.4,
+                                                                "thickness": 0.5}]},
+             "return_walls": {**FACADE["return_walls"], "course_height": 0.1},
+             "mechanisms": [{"type": "overturning", "hinge_height": "optimal"}]}  # fmt: skip
+    result = CliRunner().invoke(cli, ["kinematic", str(write(tmp_path, model))])
+    assert result.exit_code == 2 and result.stdout == ""
+    lines = result.stderr.strip().splitlines()
+    assert len(lines) == 1 and "mechanisms[0].hinge_height" in lines[0], result.stderr
+
+
+def test_a_block_file_with_a_toothing_is_refused(tmp_path: Path) -> None:
+    model = {k: v for k, v in FACADE.items() if k != "mechanisms"}
+    model["geometry"] = {"thickness": 0.5, "height": 6.0, "width": 5.0}
+    result = CliRunner().invoke(cli, ["kinematic", str(write(tmp_path, model))])
+    assert result.exit_code == 2 and result.stdout == ""
+    lines = result.stderr.strip().splitlines()
+    assert len(lines) == 1 and "return_walls.toothed" in lines[0], result.stderr
+
+
+def test_the_toothing_holds_the_base_from_sliding_too(tmp_path: Path) -> None:
+    # μ = 0.4: without the toothing α_s = 0.4 < α0 = 0.4295 would slide first; the courses
+    # hold it: α_s = (0.4·270 + 2·70.1055)/270 = 0.91930 above α0
+    from rockcli.analyses.sliding import alpha0_of, slides_first, sliding_multiplier
+
+    model = {**FACADE, "base": {"mu": 0.4}}
+    mech = named(catalogue(load_model(write(tmp_path, model))), "overturning, whole wall")
+    W = GAMMA * T * B * H
+    assert sliding_multiplier(mech.view(1), 0.4) == pytest.approx(
+        (0.4 * W + 2 * F_hand(H)) / W, rel=1e-12
+    )
+    assert slides_first(mech, 0.4, alpha0_of(mech)) is None
+
+
+def test_the_friction_on_the_inward_side_and_with_a_stress_block(tmp_path: Path) -> None:
+    # side −1 turns about the inner edge: the interface at t/2 is again t/2 from the pivot,
+    # so the same closed form holds; with f_m the pivot moves in by a/2, a = W/(f_m·B)
+    mech = named(catalogue(load_model(write(tmp_path, FACADE))), "overturning, whole wall")
+    W = GAMMA * T * B * H
+    for theta in (0.0, 0.03, 0.08):
+        c, s = math.cos(theta), math.sin(theta)
+        expected = (W * (T / 2 * c - H / 2 * s) - 2 * engaged_work(theta, F_hand(H), H)) / (
+            W * (T / 2 * s + H / 2 * c)
+        )
+        got = load_multiplier(SideCheck(mech.view(-1)), theta)
+        assert got == pytest.approx(expected, rel=1e-9, abs=1e-12)
+    f_m = 1.0e3  # kN/m² (1 MPa): a = 270/(1000·5) = 0.054 m
+    model = {**FACADE, "masonry": {"f_m": 1.0e6}}
+    mech = named(catalogue(load_model(write(tmp_path, model))), "overturning, whole wall")
+    a = W / (f_m * B)
+    lever = T / 2 - a / 2  # the centroid's and the interface's x from the set-back pivot
+    alpha0 = (W * lever + 2 * F_hand(H) * H / 3) / (W * H / 2)
+    assert load_multiplier(SideCheck(mech.view(1)), 0.0) == pytest.approx(alpha0, rel=1e-12)

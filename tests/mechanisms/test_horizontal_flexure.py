@@ -181,3 +181,29 @@ def test_where_it_governs_the_time_history_rocks_the_next_mechanism(tmp_path: Pa
     kin = replace(kin, catalogue=tuple(strip_first), governing=STRIP)
     main = main_mechanism(kin)
     assert main is not None and main.name == "overturning, whole wall"
+
+
+def test_a_tie_without_a_strength_is_refused(tmp_path: Path) -> None:
+    # a spring of stiffness alone has no strength: the thrust would be unlimited, silently
+    model = wall(5.0, 1.0e6, tie="spring")
+    model["restrainers"] = [{"name": "spring", "k": 1e7, "position": "top"}]
+    result = CliRunner().invoke(cli, ["kinematic", str(write(tmp_path, model))])
+    assert result.exit_code == 2 and result.stdout == ""
+    lines = result.stderr.strip().splitlines()
+    assert len(lines) == 1 and "mechanisms[0].tie" in lines[0], result.stderr
+    assert "without a strength" in lines[0]
+
+
+def test_a_wall_of_horizontal_flexures_only_says_nothing_rocks(tmp_path: Path) -> None:
+    model = wall(5.0, 1.0e6)
+    model["mechanisms"] = model["mechanisms"][:1]
+    path = write(tmp_path, model)
+    for command in (["assess", str(path), "--record", str(PULSE)],
+                    ["compare", str(path), "--record", str(PULSE)]):  # fmt: skip
+        result = CliRunner().invoke(cli, command)
+        assert result.exit_code == 2 and result.stdout == "", result.output
+        lines = result.stderr.strip().splitlines()
+        assert len(lines) == 1 and "no mechanism of the model rocks" in lines[0], lines
+        assert "--mechanism" not in lines[0]
+    result = CliRunner().invoke(cli, ["kinematic", str(path)])
+    assert result.exit_code == 0, result.output

@@ -157,13 +157,14 @@ def mechanism_rows(
         mech = named(mechanisms, m.name)
         rod = [r for r in side_check(mech, m.result.side, settings).restrainers
                if r.name == plan.name]  # fmt: skip
+        arch = mech.spec is not None and mech.spec.limit_by == plan.name  # its thrust's tie
         row: dict[str, Any] = {
             "name": m.name,
             "type": m.type,
             "side": m.result.side,
             "mechanism": None if mech.wall is None else m.name,  # a block file's: the block
-            "on_mechanism": bool(rod),
-            "restrained": bool(rod) and rod[0].slack_side != m.result.side,
+            "on_mechanism": bool(rod) or arch,
+            "restrained": arch or (bool(rod) and rod[0].slack_side != m.result.side),
             **code_columns(m.result),
             **rocked_columns(model, record, analyses, plan, m.name, mechanisms, bool(rod)),
         }
