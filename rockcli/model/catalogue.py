@@ -316,21 +316,35 @@ def frame_mechanism(model: Model) -> Mechanism:
     plus, minus = frame_side(frame, 1), frame_side(frame, -1)
     block = derive_block(model)
     chain = with_system_restitution(frame_chain(plus, minus, block), model)
-    sides = (block.free_side,) if block.one_sided else (1, -1)
+    return own_mechanism(model, FRAME, (plus, minus), chain, table.pier_height,
+                         (frame_note(frame, chain),))  # fmt: skip
+
+
+def own_mechanism(
+    model: Model,
+    name: str,
+    views: tuple[BlockSide | ChainSide, ...],
+    rocker: Rocker,
+    height: float,
+    notes: tuple[Note, ...] = (),
+) -> Mechanism:
+    """The one mechanism of a file that is its element (a block, a frame): its overturning
+    about its base, its views and what the engines rock derived with the file."""
+    sides = (rocker.free_side,) if rocker.one_sided else (1, -1)
     return Mechanism(
-        name=FRAME,
+        name=name,
         type=MechanismType.OVERTURNING,
         hinge_height=0.0,
         storey=None,
         sides=sides,
-        views=(plus, minus),
-        block=chain,
+        views=(views[0], views[1]),
+        block=rocker,
         reported=(1, -1),
         base=0.0,
-        wall_height=table.pier_height,
+        wall_height=height,
         storey_count=1,
         free=None,
-        notes=(frame_note(frame, chain),),
+        notes=notes,
         strength_notes=(),
         model=model,
     )
@@ -353,24 +367,8 @@ def block_mechanism(model: Model) -> Mechanism:
     from rockcli.model.derive import to_block
 
     block: Block = to_block(model)
-    sides = (block.free_side,) if block.one_sided else (1, -1)
-    return Mechanism(
-        name=WHOLE_WALL,
-        type=MechanismType.OVERTURNING,
-        hinge_height=0.0,
-        storey=None,
-        sides=sides,
-        views=(block_view(block, 1), block_view(block, -1)),
-        block=block,
-        reported=(1, -1),
-        base=0.0,
-        wall_height=2.0 * block.h,
-        storey_count=1,
-        free=None,
-        notes=(),
-        strength_notes=(),
-        model=model,
-    )
+    views = (block_view(block, 1), block_view(block, -1))
+    return own_mechanism(model, WHOLE_WALL, views, block, 2.0 * block.h)
 
 
 def wall_mechanism(model: Model, wall: Wall, spec: MechanismSpec, free: int | None) -> Mechanism:
