@@ -492,7 +492,7 @@ def assessment_report(doc: dict[str, Any]) -> Report:
             ("instability rotation α", m["alpha"], "rad", "{:.4g}"),
             ("generalised mass M(0)", m["chain"]["inertia_by_side"]["1"], "kg·m²", "{:.4g}"),
         ]
-        shape = ("centroid of both blocks from O: x, z", f"{m['b']:.3f}, {m['h']:.3f}", "m", "")
+        shape = ("centroid of both bodies from O: x, z", f"{m['b']:.3f}, {m['h']:.3f}", "m", "")
     block = key_value(
         title,
         [
