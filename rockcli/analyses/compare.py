@@ -229,13 +229,6 @@ class ComparisonOutput:
     catalogue: Catalogue = ()
 
 
-#: Why the time history does not rock a horizontal flexure (rockcli.mechanisms.wall
-#: .NOT_ROCKED).
-NOT_A_ROCKER = Note("not_a_rocker", "the time history does not apply: its strip is held by "
-                    "the arch's thrust between the return walls, not by its weight (not a "
-                    "gravity rocking mechanism); the code check keeps it")  # fmt: skip
-
-
 @dataclass(frozen=True)
 class MechanismComparison:
     """One mechanism of a wall's catalogue under the record: its code check, its rocking and
@@ -330,7 +323,6 @@ def shown_result(kin: KinematicResult, main: Any) -> KinematicResult:
 
     if main is None or main.name == kin.mechanism:
         return kin
-    from rockcli.notes import Note
 
     notes = main.result.notes
     if main.name != kin.governing:
@@ -382,7 +374,8 @@ def catalogue_comparisons(model, record, engine, kin, main, shown, ground, mecha
             why = main_why
             collapse = None if why is not None else rocking_collapse(run)
         elif MechanismType(m.type) in NOT_ROCKED:
-            out.append(MechanismComparison(m.name, m.type, m.result, None, None, NOT_A_ROCKER))
+            reason = NOT_ROCKED[MechanismType(m.type)]
+            out.append(MechanismComparison(m.name, m.type, m.result, None, None, reason))
             continue
         else:
             try:

@@ -177,8 +177,9 @@ def refuse_unrocked(mech: CatalogueMechanism) -> None:
 
     if mech.type in NOT_ROCKED:
         raise InputError(
-            "no mechanism of the model rocks: a horizontal flexure is the code check's alone "
-            "(its strip is held by the arch's thrust, not by its weight)",
+            "no mechanism of the model rocks: its mechanisms are the code check's alone ("
+            + NOT_ROCKED[mech.type]
+            + ")",
             where="mechanisms",
             value=mech.name,
             allowed="an overturning, wedge, vertical flexure or gable among [[mechanisms]] "

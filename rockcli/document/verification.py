@@ -111,7 +111,7 @@ BODY_NAMES = {"gable": "body.gable", "wedge (both return walls)": "body.wedge_bo
               "the wall above": "body.above",
               "friction of the return walls": "body.friction", "half strip": "body.half_strip",
               "other half strip": "body.other_half_strip", "arch thrust": "body.arch_thrust",
-              "roof": "body.roof"}  # fmt: skip
+              "roof": "body.roof", "corner wedge": "body.corner"}  # fmt: skip
 
 
 def item_name(t: Mapping[str, Any], w: Words) -> str:

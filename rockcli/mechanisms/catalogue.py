@@ -16,6 +16,10 @@ base) each ``[[mechanisms]]`` entry becomes, for each side it can open to, a
   the outer face at the top, which is held horizontally and free to rise (side −1 mirrors it)
   (Doherty et al. 2002, EESD 31:833–850; Sorrentino, Masiani & Griffith 2008);
 - **gable** ("ribaltamento del timpano"): the triangular gable about its base;
+- **corner** ("ribaltamento del cantonale"): the corner of the wall and a return wall,
+  cracked in each along a line from the outer base corner at ``angle`` from the vertical,
+  turning out about the horizontal axis through that corner normal to its bisector (see
+  :func:`corner`);
 - **horizontal flexure** ("flessione orizzontale", the arch effect in plan): a strip of the
   wall between the return walls as a three-hinge flat arch, each half turning about its
   abutment's hinge on one face towards the mid-span hinge on the other, held by the arch's
@@ -343,7 +347,7 @@ def half_block(wall: Wall, weight: float, thickness: float, name: str) -> float:
 def sides_of(spec: MechanismSpec, one_sided: int | None) -> tuple[int, ...]:
     """The sides a mechanism can open to: the wedge outward only; a one-sided wall its free
     side; the others both."""
-    if spec.type is MechanismType.WEDGE:
+    if spec.type in (MechanismType.WEDGE, MechanismType.CORNER):
         return (1,)
     return (one_sided,) if one_sided is not None else (1, -1)
 
@@ -353,7 +357,7 @@ def hinge_of(spec: MechanismSpec, wall: Wall) -> float:
     wedge at the base, the gable on the last storey."""
     if spec.type is MechanismType.GABLE:
         return wall.height
-    if spec.type is MechanismType.WEDGE:
+    if spec.type in (MechanismType.WEDGE, MechanismType.CORNER):
         return 0.0
     if spec.type is MechanismType.HORIZONTAL_FLEXURE:
         assert spec.level is not None
@@ -373,8 +377,91 @@ def build(wall: Wall, spec: MechanismSpec, side: int) -> ChainSide:
         return gable_mechanism(wall, side, spec.name)
     if spec.type is MechanismType.HORIZONTAL_FLEXURE:
         return horizontal_flexure(wall, spec, side)
+    if spec.type is MechanismType.CORNER:
+        return corner(wall, spec, side)
     assert spec.storey is not None and isinstance(spec.hinge_height, float)
     return flexure(wall, spec.storey, spec.hinge_height, side, spec.name)
+
+
+#: Gauss–Legendre nodes and weights on [−1, 1], four points: exact for polynomials of degree
+#: up to 7 (the corner's sections: piecewise polynomials of degree 4 in z, times z²).
+_OUTER = math.sqrt(3 / 7 + 2 / 7 * math.sqrt(6 / 5))
+_INNER = math.sqrt(3 / 7 - 2 / 7 * math.sqrt(6 / 5))
+_NODES = (-_OUTER, -_INNER, _INNER, _OUTER)
+_WEIGHTS = ((18 - math.sqrt(30)) / 36, (18 + math.sqrt(30)) / 36,
+            (18 + math.sqrt(30)) / 36, (18 - math.sqrt(30)) / 36)  # fmt: skip
+
+
+def rectangle_moments(x: float, y: float) -> tuple[float, float, float]:
+    """(∫dA, ∫(x + y) dA, ∫(x + y)² dA) over the rectangle [0, x] × [0, y] [m², m³, m⁴]."""
+    area = x * y
+    return area, 0.5 * area * (x + y), area * (x * x / 3 + x * y / 2 + y * y / 3)
+
+
+def corner_section(z: float, wall_t: float, return_t: float, tb: float):
+    """(∫dA, ∫u dA, ∫u² dA) of the corner's horizontal section at height z above its base:
+    the wall's piece [0, z·tan β] × [0, wall_t] and the return wall's [0, return_t] ×
+    [0, z·tan β] (x along the wall, y along the return wall, from the outer corner), counted
+    once where they overlap; u = (x + y)/√2 the distance inward along the bisector."""
+    a = z * tb
+    parts = (rectangle_moments(a, wall_t), rectangle_moments(return_t, a),
+             rectangle_moments(min(a, return_t), min(a, wall_t)))  # fmt: skip
+    area = parts[0][0] + parts[1][0] - parts[2][0]
+    first = parts[0][1] + parts[1][1] - parts[2][1]
+    second = parts[0][2] + parts[1][2] - parts[2][2]
+    return area, first / math.sqrt(2.0), second / 2.0
+
+
+def corner_body(wall_t: float, return_t: float, height: float, angle: float,
+                unit_weight: float, g: float) -> Body:  # fmt: skip
+    """The corner wedge as one body in the plane of its bisector: x = u inward from the outer
+    corner along the bisector, z up from its base; its weight, centroid, inertia about the
+    axis through the centroid normal to that plane and its variances, integrated exactly
+    (four-point Gauss–Legendre on each piece between the heights where the pieces' widths
+    reach the walls' thicknesses)."""
+    tb = math.tan(angle)
+    breaks = sorted({0.0, height, *(t / tb for t in (wall_t, return_t) if t / tb < height)})
+    sums = [0.0] * 6  # ∫A, ∫A z, ∫A z², ∫U, ∫U2 (sections' first and second in u)
+    for lo, hi in zip(breaks, breaks[1:], strict=False):
+        half, mid = 0.5 * (hi - lo), 0.5 * (hi + lo)
+        for node, weight in zip(_NODES, _WEIGHTS, strict=True):
+            z = mid + half * node
+            area, first, second = corner_section(z, wall_t, return_t, tb)
+            w = weight * half
+            sums[0] += w * area
+            sums[1] += w * area * z
+            sums[2] += w * area * z * z
+            sums[3] += w * first
+            sums[4] += w * second
+    volume = sums[0]
+    u, z = sums[3] / volume, sums[1] / volume
+    var_u, var_z = sums[4] / volume - u * u, sums[2] / volume - z * z
+    weight = unit_weight * volume
+    mass = weight / g
+    return Body("corner wedge", weight, u, z, mass * (var_u + var_z), var_u, var_z, mass)
+
+
+def corner(wall: Wall, spec: MechanismSpec, side: int) -> ChainSide:
+    """The corner of the wall and a return wall ("ribaltamento del cantonale"): cracked in
+    each from the outer base corner at ``angle`` β from the vertical (the wall's piece
+    z·tan β wide at height z, the return wall's the same, the corner counted once), over the
+    wall's height with the ground storey's thickness, turning out about the horizontal axis
+    through the outer base corner normal to the corner's bisector (side 1). In the plane of
+    the bisector it is one rigid body about a pivot: a point at depth u inward along the
+    bisector and height z moves δx = z out and δy = u up per unit rotation, so α0 = Σ W u /
+    Σ W z (less a hip beam's thrust H at the top: − H·h) — the Circolare's virtual work
+    (Eq. C8.7.1.1) on this body. Side −1 (inward, about the inner corner) is placed only as
+    every mechanism's is; the corner opens outward only."""
+    assert spec.angle is not None and spec.return_thickness is not None
+    body = corner_body(wall.storeys[0].thickness, spec.return_thickness, wall.height,
+                       spec.angle, wall.unit_weight, wall.g)  # fmt: skip
+    inner = (wall.storeys[0].thickness + spec.return_thickness) / math.sqrt(2.0)
+    frame = Frame(0.0 if side > 0 else inner, 0.0, side)
+    thrusts: tuple[SideThrust, ...] = ()
+    if spec.hip_thrust:
+        at = Attached(0, frame.x(0.0), wall.height)
+        thrusts = (SideThrust("hip beam thrust", spec.hip_thrust, side, at),)
+    return ChainSide(Rotation(), ((0, frame.body(body)),), wall.g, thrusts=thrusts, side=side)
 
 
 #: The name of the arch's thrust on each half of a horizontal flexure.

@@ -125,11 +125,21 @@ class MechanismType(StrEnum):
     VERTICAL_FLEXURE = "vertical-flexure"
     GABLE = "gable"
     HORIZONTAL_FLEXURE = "horizontal-flexure"
+    CORNER = "corner"
 
 
-#: The mechanisms the time history cannot rock: not a gravity rocking mechanism (the
-#: horizontal flexure's strip is held by the arch's thrust, not by its weight).
-NOT_ROCKED = (MechanismType.HORIZONTAL_FLEXURE,)
+#: The mechanisms the time history cannot rock, and why.
+NOT_ROCKED: dict[MechanismType, Note] = {
+    MechanismType.HORIZONTAL_FLEXURE: Note(
+        "not_a_rocker", "the time history does not apply: its strip is held by the arch's "
+        "thrust between the return walls, not by its weight (not a gravity rocking "
+        "mechanism); the code check keeps it"),
+    MechanismType.CORNER: Note(
+        "corner_not_rocked", "the time history does not rock it: the corner turns about an "
+        "axis through the corner's base, on which it stands on a point, and its impacts on "
+        "the walls' inclined cracks are not the rocking of a body on its bed that the engine "
+        "integrates; the code check keeps it"),
+}  # fmt: skip
 
 
 #: ``hinge_height`` of a vertical flexure whose hinge the code finds (the lowest α0).
@@ -149,7 +159,7 @@ class MechanismSpec:
             base (0: the whole wall) [m]; vertical flexure: the intermediate hinge's height
             above the wall's base [m], or :data:`OPTIMAL`; None for wedge and gable.
         storey: vertical flexure: the storey it spans (1 = the ground storey); else None.
-        angle: wedge: the crack's angle from the vertical [rad]; else None.
+        angle: wedge, corner: the cracks' angle from the vertical [rad]; else None.
         sides: wedge: 1 or 2 return walls dragged; else None.
         free: free to vibrate before it activates (Circolare 7/2019 §C8.7.1.2.1.3): its
             capacity curve starts with an elastic branch.
@@ -160,6 +170,9 @@ class MechanismSpec:
         thrust_limit: horizontal flexure: the largest thrust the abutments (a tie, a ring
             beam) take [N]; None: rigid abutments (the masonry's crushing limits it).
         limit_by: what sets ``thrust_limit`` (a tie's name, or "thrust_limit").
+        return_thickness: corner: the return wall's thickness [m].
+        hip_thrust: corner: a hip beam's thrust at the corner's top, outward along its
+            bisector [N]; None: none.
     """
 
     name: str
@@ -175,6 +188,8 @@ class MechanismSpec:
     span: float | None = None
     thrust_limit: float | None = None
     limit_by: str | None = None
+    return_thickness: float | None = None
+    hip_thrust: float | None = None
 
 
 @dataclass(frozen=True)

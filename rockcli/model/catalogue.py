@@ -196,9 +196,7 @@ class Mechanism:
             return self.block
         if self.type in NOT_ROCKED:
             raise InputError(
-                "the time history does not apply to a horizontal flexure: the strip is held "
-                "by the arch's thrust between the return walls, not by its weight (a gravity "
-                "rocking mechanism); the code check keeps it",
+                NOT_ROCKED[self.type],
                 where="--mechanism",
                 value=self.name,
                 allowed="a mechanism that rocks (overturning, wedge, vertical flexure, gable)",

@@ -181,6 +181,14 @@ def expand(entry: MechanismEntry, wall: Wall) -> list[MechanismSpec]:
                               free=entry.is_free)]  # fmt: skip
     if kind is MechanismType.HORIZONTAL_FLEXURE:
         return [strip_spec(entry, wall)]
+    if kind is MechanismType.CORNER:
+        angle = entry.angle or 0.0
+        thickness = entry.thickness_return or wall.return_wall_thickness
+        hip = None if entry.hip_thrust is None else entry.hip_thrust * NEWTONS_PER_KILONEWTON
+        name = entry.name or Note("name_corner", "corner, cracks at {angle:g}°",
+                                  angle=float(angle))  # fmt: skip
+        return [MechanismSpec(name, kind, angle=math.radians(angle),
+                              return_thickness=thickness, hip_thrust=hip)]  # fmt: skip
     hinge = OPTIMAL if entry.hinge_height is None else entry.hinge_height
     name = entry.name or Note(
         "name_flexure", "vertical flexure, storey {storey}", storey=entry.storey

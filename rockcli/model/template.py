@@ -278,6 +278,8 @@ OTHER_KEYS: dict[str, dict[str, Any]] = {
         "span": 6.0,
         "thrust_limit": 50.0,
         "tie": "tie at the eaves",
+        "thickness_return": 0.45,
+        "hip_thrust": 5.0,
     },
     "mass": {"weight": 100.0, "unit_weight": 18.0},
     "restitution": {"model": "explicit", "factor": 0.9, "e": 0.8},
@@ -387,7 +389,8 @@ OPTIONAL_TABLE_NOTES: dict[str, tuple[str, ...]] = {
     "mechanisms": (
         "The local mechanisms to check, one [[mechanisms]] table each (none: overturning about "
         'the base). type = "overturning" | "wedge" | "vertical-flexure" | "gable" | '
-        '"horizontal-flexure"; each type takes only its own keys (docs/mechanisms.md).',
+        '"horizontal-flexure" | "corner"; each type takes only its own keys '
+        "(docs/mechanisms.md).",
     ),
     "ntc.site": ("Instead of [ntc.demand.*]: the site, for the demand from a hazard grid.",),
     "ntc.demand.SLO": ("Spectrum parameters of the operational limit state, if needed.",),

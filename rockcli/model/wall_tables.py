@@ -204,6 +204,16 @@ class MechanismEntry(Table):
         description="horizontal-flexure: the restrainer whose strength limits the thrust (its "
         "name)",
     )
+    thickness_return: float | None = number(
+        "corner: the return wall's thickness [m] (default [return_walls] thickness)",
+        ge=MIN_LENGTH,
+        le=MAX_LENGTH,
+    )
+    hip_thrust: float | None = number(
+        "corner: a hip beam's thrust at the corner's top, outward along its bisector [kN]",
+        ge=MIN_THRUST_LIMIT,
+        le=MAX_THRUST_LIMIT,
+    )
     friction: bool | None = Field(
         None,
         strict=True,
@@ -229,17 +239,23 @@ class MechanismEntry(Table):
             MechanismKind.GABLE: set(),
             MechanismKind.HORIZONTAL_FLEXURE: {"level", "strip_height", "span",
                                                "thrust_limit", "tie"},
+            MechanismKind.CORNER: {"angle", "thickness_return", "hip_thrust"},
         }[self.type]  # fmt: skip
         for key in ("hinge_height", "storey", "angle", "sides", "friction", "level",
-                    "strip_height", "span", "thrust_limit", "tie"):  # fmt: skip
+                    "strip_height", "span", "thrust_limit", "tie", "thickness_return",
+                    "hip_thrust"):  # fmt: skip
             if key not in own and getattr(self, key) is not None:
                 raise rule_error(
                     key, f"not a key of a {self.type.value} mechanism", _allowed(self.type),
                     getattr(self, key),
                 )  # fmt: skip
         self._check_hinge()
-        if self.type is MechanismKind.WEDGE and self.angle is None:
-            raise rule_error("angle", "required with type = 'wedge'", _allowed(self.type))
+        if self.type in (MechanismKind.WEDGE, MechanismKind.CORNER) and self.angle is None:
+            raise rule_error("angle", f"required with type = '{self.type.value}'",
+                             _allowed(self.type))  # fmt: skip
+        if self.type is MechanismKind.CORNER and self.free:
+            raise rule_error("free", "a corner cannot stand free: it is bonded to both walls",
+                             "free = false, or no free key", self.free)  # fmt: skip
         if self.type is MechanismKind.HORIZONTAL_FLEXURE:
             for key in ("level", "strip_height"):
                 if getattr(self, key) is None:
@@ -286,6 +302,8 @@ def _allowed(kind: MechanismKind) -> str:
         MechanismKind.GABLE: "no other key (the gable is geometry.gable_height)",
         MechanismKind.HORIZONTAL_FLEXURE: "level and strip_height [m], span [m], thrust_limit "
         "[kN] or tie (a restrainer's name)",
+        MechanismKind.CORNER: "angle (0–60 degrees from the vertical), thickness_return [m], "
+        "hip_thrust [kN]",
     }[kind]
 
 
@@ -324,6 +342,12 @@ def check_mechanisms(model: Any) -> None:
             raise rule_error(
                 (*where, "type"), "a wedge needs the return walls", "a [return_walls] table "
                 "with thickness [m]", entry.type.value,
+            )  # fmt: skip
+        if (entry.type is MechanismKind.CORNER and entry.thickness_return is None
+                and model.return_walls is None):  # fmt: skip
+            raise rule_error(
+                (*where, "thickness_return"), "a corner needs the return wall's thickness",
+                "thickness_return [m], or a [return_walls] table with thickness",
             )  # fmt: skip
         toothed = model.return_walls is not None and model.return_walls.toothed
         if entry.friction and not toothed:
