@@ -114,9 +114,15 @@ BODY_NAMES = {"gable": "body.gable", "wedge (both return walls)": "body.wedge_bo
               "roof": "body.roof", "corner wedge": "body.corner"}  # fmt: skip
 
 
+#: The thrusts the catalogue names itself (a model's thrust keeps the model's name).
+OWN_THRUSTS = {"hip beam thrust": "body.hip_thrust"}
+
+
 def item_name(t: Mapping[str, Any], w: Words) -> str:
     """An item of the virtual-work table as the report's language names it."""
     name = str(t["item"])
+    if t["kind"] == "thrust" and name in OWN_THRUSTS:
+        return w(OWN_THRUSTS[name])
     if t["kind"] not in ("body", "load", "friction"):
         return name
     if t["kind"] == "body" and name.startswith("storey ") and name[7:].isdigit():

@@ -412,18 +412,23 @@ def corner_section(z: float, wall_t: float, return_t: float, tb: float):
     return area, first / math.sqrt(2.0), second / 2.0
 
 
-def corner_body(wall_t: float, return_t: float, height: float, angle: float,
-                unit_weight: float, g: float) -> Body:  # fmt: skip
+def corner_body(storeys: Sequence[tuple[float, float, float]], return_t: float,
+                angle: float, unit_weight: float, g: float) -> Body:  # fmt: skip
     """The corner wedge as one body in the plane of its bisector: x = u inward from the outer
     corner along the bisector, z up from its base; its weight, centroid, inertia about the
     axis through the centroid normal to that plane and its variances, integrated exactly
-    (four-point Gauss–Legendre on each piece between the heights where the pieces' widths
-    reach the walls' thicknesses)."""
+    (four-point Gauss–Legendre on each piece between the storeys' bases and the heights
+    where the pieces' widths reach the walls' thicknesses). ``storeys``: (base, top,
+    thickness) of each storey the wedge spans, bottom up."""
     tb = math.tan(angle)
-    breaks = sorted({0.0, height, *(t / tb for t in (wall_t, return_t) if t / tb < height)})
-    sums = [0.0] * 6  # ∫A, ∫A z, ∫A z², ∫U, ∫U2 (sections' first and second in u)
-    for lo, hi in zip(breaks, breaks[1:], strict=False):
+    top = storeys[-1][1]
+    breaks = {0.0, top, *(base for base, _, _ in storeys)}
+    breaks |= {t / tb for t in (return_t, *(t for _, _, t in storeys)) if t / tb < top}
+    ordered = sorted(breaks)
+    sums = [0.0] * 5  # ∫A, ∫A z, ∫A z², ∫U, ∫U2 (sections' first and second in u)
+    for lo, hi in zip(ordered, ordered[1:], strict=False):
         half, mid = 0.5 * (hi - lo), 0.5 * (hi + lo)
+        wall_t = next(t for base, end, t in storeys if base <= mid < end)
         for node, weight in zip(_NODES, _WEIGHTS, strict=True):
             z = mid + half * node
             area, first, second = corner_section(z, wall_t, return_t, tb)
@@ -445,7 +450,7 @@ def corner(wall: Wall, spec: MechanismSpec, side: int) -> ChainSide:
     """The corner of the wall and a return wall ("ribaltamento del cantonale"): cracked in
     each from the outer base corner at ``angle`` β from the vertical (the wall's piece
     z·tan β wide at height z, the return wall's the same, the corner counted once), over the
-    wall's height with the ground storey's thickness, turning out about the horizontal axis
+    storeys' height with each storey's thickness, turning out about the horizontal axis
     through the outer base corner normal to the corner's bisector (side 1). In the plane of
     the bisector it is one rigid body about a pivot: a point at depth u inward along the
     bisector and height z moves δx = z out and δy = u up per unit rotation, so α0 = Σ W u /
@@ -453,8 +458,9 @@ def corner(wall: Wall, spec: MechanismSpec, side: int) -> ChainSide:
     (Eq. C8.7.1.1) on this body. Side −1 (inward, about the inner corner) is placed only as
     every mechanism's is; the corner opens outward only."""
     assert spec.angle is not None and spec.return_thickness is not None
-    body = corner_body(wall.storeys[0].thickness, spec.return_thickness, wall.height,
-                       spec.angle, wall.unit_weight, wall.g)  # fmt: skip
+    bases = wall.storey_bases()
+    storeys = [(b, b + st.height, st.thickness) for b, st in zip(bases, wall.storeys, strict=True)]
+    body = corner_body(storeys, spec.return_thickness, spec.angle, wall.unit_weight, wall.g)
     inner = (wall.storeys[0].thickness + spec.return_thickness) / math.sqrt(2.0)
     frame = Frame(0.0 if side > 0 else inner, 0.0, side)
     thrusts: tuple[SideThrust, ...] = ()

@@ -374,7 +374,8 @@ def wall_mechanism(model: Model, wall: Wall, spec: MechanismSpec, free: int | No
     sides = sides_of(spec, free)
     spec, hinge_notes = resolved(wall, spec, sides)
     strength: tuple[Note, ...] = ()
-    if wall.f_m is not None and spec.type is not MechanismType.HORIZONTAL_FLEXURE:
+    if wall.f_m is not None and spec.type not in (MechanismType.HORIZONTAL_FLEXURE,
+                                                  MechanismType.CORNER):  # fmt: skip
         strength = (Note("set_back", "hinges set back by half the stress block "
                          "a = N/(f_m·width), f_m = {f_m:g} MPa", f_m=wall.f_m / 1e6),)  # fmt: skip
     hinge = spec.hinge_height if isinstance(spec.hinge_height, float) else hinge_of(spec, wall)
@@ -390,7 +391,12 @@ def wall_mechanism(model: Model, wall: Wall, spec: MechanismSpec, free: int | No
         wall_height=wall.height,
         storey_count=len(wall.storeys),
         free=free_member(wall, spec) if spec.free else None,
-        notes=(*hinge_notes, *flexure_notes(wall, spec), *arch_notes(wall, spec)),
+        notes=(
+            *hinge_notes,
+            *flexure_notes(wall, spec),
+            *arch_notes(wall, spec),
+            *corner_notes(wall, spec),
+        ),
         strength_notes=strength,
         model=model,
         wall=wall,
@@ -526,6 +532,18 @@ def free_member(wall: Wall, spec: MechanismSpec) -> FreeMember:
         kappa, length = KAPPA_CANTILEVER, wall.height - hinge + gable
         thickness = wall.storeys[k].thickness
     return FreeMember(kappa, length, thickness, wall.unit_weight, wall.E, wall.g)
+
+
+def corner_notes(wall: Wall, spec: MechanismSpec) -> tuple[Note, ...]:
+    """What a corner leaves out: the model's loads, thrusts and restrainers (its own hip
+    thrust aside), and the masonry's stress block at its point pivot (none for other
+    types)."""
+    if spec.type is not MechanismType.CORNER:
+        return ()
+    return (Note("corner_alone", "corner: the wedge alone with its hip_thrust; the model's "
+                 "loads, thrusts and restrainers are not on it (give a roof's push at the "
+                 "corner as hip_thrust) and its pivot is the outer corner, not set back by a "
+                 "stress block"),)  # fmt: skip
 
 
 def arch_notes(wall: Wall, spec: MechanismSpec) -> tuple[Note, ...]:

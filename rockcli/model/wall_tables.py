@@ -174,7 +174,7 @@ class MechanismEntry(Table):
         description="vertical-flexure: the storey (1 = ground)",
     )
     angle: float | None = number(
-        "wedge: the crack's angle from the vertical, through the base corner [degrees]",
+        "wedge, corner: the cracks' angle from the vertical, through the base corner [degrees]",
         gt=0.0,
         le=MAX_WEDGE_ANGLE,
     )
@@ -205,7 +205,7 @@ class MechanismEntry(Table):
         "name)",
     )
     thickness_return: float | None = number(
-        "corner: the return wall's thickness [m] (default [return_walls] thickness)",
+        "corner: the return wall's thickness, default [return_walls] thickness [m]",
         ge=MIN_LENGTH,
         le=MAX_LENGTH,
     )
@@ -343,6 +343,8 @@ def check_mechanisms(model: Any) -> None:
                 (*where, "type"), "a wedge needs the return walls", "a [return_walls] table "
                 "with thickness [m]", entry.type.value,
             )  # fmt: skip
+        if entry.type is MechanismKind.CORNER:
+            _check_corner(model, entry, storeys, where)
         if (entry.type is MechanismKind.CORNER and entry.thickness_return is None
                 and model.return_walls is None):  # fmt: skip
             raise rule_error(
@@ -364,6 +366,19 @@ def check_mechanisms(model: Any) -> None:
             _check_flexure(model, entry, storeys, where)
         if entry.type is MechanismKind.HORIZONTAL_FLEXURE:
             _check_strip(model, entry, storeys, where)
+
+
+def _check_corner(model: Any, entry: MechanismEntry, storeys: tuple, where: tuple) -> None:
+    """A corner's wedge no longer along the wall than the wall is wide (h·tan β ≤ width)."""
+    assert entry.angle is not None
+    height, width = sum(s.height for s in storeys), model.geometry.width
+    reach = height * math.tan(math.radians(entry.angle))
+    if width is not None and reach > width * (1 + 1e-9):
+        top = math.degrees(math.atan(width / height))
+        raise rule_error((*where, "angle"), f"the wedge would reach {reach:.3g} m along the "
+                         f"wall, longer than its width {width:g} m",
+                         f"an angle up to atan(width/height) = {top:.3g} degrees",
+                         entry.angle)  # fmt: skip
 
 
 def _check_strip(model: Any, entry: MechanismEntry, storeys: tuple, where: tuple) -> None:

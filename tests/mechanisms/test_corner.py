@@ -74,7 +74,9 @@ def by_hand(s: float, t_r: float, h: float, beta: float, hip: float = 0.0) -> fl
 
 
 def alpha0(tmp_path: Path, **corner: Any) -> float:
-    result = CliRunner().invoke(cli, ["kinematic", str(write(tmp_path, model(**corner))),
+    data = model(**corner)
+    data["geometry"]["width"] = 10.0  # the wedge reaches up to 6·tan 55° = 8.6 m along it
+    result = CliRunner().invoke(cli, ["kinematic", str(write(tmp_path, data)),
                                       "--format", "json"])  # fmt: skip
     assert result.exit_code == 0, result.output
     return json.loads(result.stdout)["mechanisms"][0]["alpha0"]
@@ -132,3 +134,56 @@ def test_a_corner_without_the_return_walls_thickness_is_refused(tmp_path: Path) 
     result = CliRunner().invoke(cli, ["kinematic", str(write(tmp_path, data))])
     assert result.exit_code == 2
     assert "mechanisms[0].thickness_return" in result.stderr
+
+
+def by_storeys(storeys: list[tuple[float, float, float]], t_r: float, beta: float) -> float:
+    """α0 of a corner over storeys (base, top, thickness): the sections' integrals storey by
+    storey, each with its own thickness (kN, m; γ = 18 kN/m³)."""
+    tb = math.tan(beta)
+    resisting = overturning = 0.0
+    for base, top, s in storeys:
+
+        def area(z: float, s: float = s) -> float:
+            a = z * tb
+            return a * s + t_r * a - min(a, t_r) * min(a, s)
+
+        def lever(z: float, s: float = s) -> float:
+            a = z * tb
+            m, n = min(a, t_r), min(a, s)
+            return a * s * (a + s) / 2 + t_r * a * (t_r + a) / 2 - m * n * (m + n) / 2
+
+        cuts = sorted({base, top, *(t / tb for t in (s, t_r) if base < t / tb < top)})
+        for lo, hi in zip(cuts, cuts[1:], strict=False):
+            resisting += 18.0 * quad(lever, lo, hi)[0] / math.sqrt(2)
+            overturning += 18.0 * quad(lambda z, f=area: z * f(z), lo, hi)[0]
+    return resisting / overturning
+
+
+def test_each_storey_with_its_own_thickness(tmp_path: Path) -> None:
+    data = model(thickness_return=0.45)
+    data["geometry"] = {"width": 8.0, "storeys": [{"height": 3.0, "thickness": 0.9},
+                                                  {"height": 3.0, "thickness": 0.6},
+                                                  {"height": 3.0, "thickness": 0.4}]}  # fmt: skip
+    result = CliRunner().invoke(cli, ["kinematic", str(write(tmp_path, data)), "--format",
+                                      "json"])  # fmt: skip
+    assert result.exit_code == 0, result.output
+    got = json.loads(result.stdout)["mechanisms"][0]["alpha0"]
+    storeys = [(0.0, 3.0, 0.9), (3.0, 6.0, 0.6), (6.0, 9.0, 0.4)]
+    assert got == pytest.approx(by_storeys(storeys, 0.45, math.radians(30)), rel=1e-12)
+
+
+def test_a_wedge_longer_than_the_wall_is_refused(tmp_path: Path) -> None:
+    data = model(angle=60.0)
+    data["geometry"] = {"width": 2.0, "storeys": [{"height": 6.0, "thickness": 0.5}]}
+    result = CliRunner().invoke(cli, ["kinematic", str(write(tmp_path, data))])
+    assert result.exit_code == 2 and result.stdout == ""
+    lines = result.stderr.strip().splitlines()
+    assert len(lines) == 1 and "mechanisms[0].angle" in lines[0], result.stderr
+    assert "longer than its width" in lines[0]
+
+
+def test_it_says_what_it_leaves_out(tmp_path: Path) -> None:
+    result = CliRunner().invoke(cli, ["kinematic", str(write(tmp_path, model())), "--format",
+                                      "json"])  # fmt: skip
+    notes = json.loads(result.stdout)["mechanisms"][0]["notes"]
+    assert any("loads, thrusts and restrainers are not on it" in n for n in notes)
