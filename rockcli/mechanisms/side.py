@@ -17,8 +17,8 @@ From the one configuration function (the motion's link states) come, at any rota
 - the control point's displacement d_k(θ) (the bodies' centre of mass) for d*;
 - the equation of motion's M(θ), V(θ), Γ(θ) (rockcli.mechanisms.motion).
 
-Pure and silent: :mod:`math` (the links take an array of rotations too), the package's own
-modules and :mod:`rockcli.searches`.
+Pure and silent: :mod:`math`, numpy (the links take an array of rotations too, and so does
+the toothing's friction), the package's own modules and :mod:`rockcli.searches`.
 """
 
 from __future__ import annotations
@@ -106,7 +106,7 @@ class SideFriction:
     height: float
     overlap: float
 
-    def engaged(self, state: LinkState, theta):
+    def engaged(self, state: LinkState):
         """(u, v): the part of the toothed height whose slide is at most the overlap, as
         fractions of h from the bottom (u = v: none), at the link's ``state``."""
         bottom = -state.displacement(self.x, self.z0)[0]
@@ -121,10 +121,10 @@ class SideFriction:
         u = np.clip(u, 0.0, 1.0)
         return u, np.maximum(np.clip(v, 0.0, 1.0), u)
 
-    def work(self, state: LinkState, theta) -> float:
+    def work(self, state: LinkState) -> float:
         """∫ q·dX/dθ dz over the engaged courses [N·m per unit rotation] (negative when the
         mechanism opens: the friction resists), exact by two-point quadrature."""
-        u, v = self.engaged(state, theta)
+        u, v = self.engaged(state)
         total = 0.0
         for g in _GAUSS:
             f = u + (v - u) * g
@@ -227,7 +227,7 @@ class ChainSide:
             dx = states[th.at.link].place(th.at.x, th.at.z)[2]
             t -= th.opens * th.force * dx
         for fr in self.frictions:
-            t += fr.work(states[fr.link], theta)  # it pushes shut: opens = −1
+            t += fr.work(states[fr.link])  # it pushes shut: opens = −1
         return g, t, h
 
     def work_items(self) -> tuple[WorkItem, ...]:

@@ -315,7 +315,7 @@ def frame_mechanism(model: Model) -> Mechanism:
     block = derive_block(model)
     chain = with_system_restitution(frame_chain(plus, minus, block), model)
     return own_mechanism(model, FRAME, (plus, minus), chain, table.pier_height,
-                         (frame_note(frame, chain),))  # fmt: skip
+                         (frame_note(frame, plus, chain),))  # fmt: skip
 
 
 def own_mechanism(
@@ -348,10 +348,10 @@ def own_mechanism(
     )
 
 
-def frame_note(frame, chain: Rocker) -> Note:
+def frame_note(frame, plus: ChainSide, chain: Rocker) -> Note:
     """The frame in a sentence: its piers and roof, γ, and what the roof does to p and e."""
-    pier = frame.unit_weight * frame.width * frame.depth * frame.height / frame.g
-    gamma = frame.roof_mass / (frame.piers * pier)
+    piers = plus.bodies[0][1]  # the piers' joint body (rockcli.mechanisms.frame.frame_side)
+    gamma = frame.roof_mass / piers.mass
     return Note("frame", "rocking frame of {n} piers {w:g} × {d:g} × {h:g} m capped by a roof "
                 "of {m:.4g} t (γ = m_roof/Σ m_pier = {gamma:.4g}): uplift at g·tan α of a "
                 "pier, p = {p:.5g} rad/s, e = {e:.5g} (Makris & Vassiliou 2013)",

@@ -407,19 +407,11 @@ def _check_strip(model: Any, entry: MechanismEntry, storeys: tuple, where: tuple
                        else "the name of a [[restrainers]] entry")  # fmt: skip
             raise rule_error((*where, "tie"), "no such restrainer", allowed, entry.tie)
         member = next(r for r in model.restrainers if r.name == entry.tie)
-        if not _has_strength(member):
+        if not (member.has_steel or member.anchor_capacity is not None):  # a finite strength
             raise rule_error((*where, "tie"), "a restrainer without a strength cannot limit "
                              "the arch's thrust", "a tie-rod with a grade (or fy, fu), or a "
                              "restrainer with anchor_capacity; or thrust_limit [kN]",
                              entry.tie)  # fmt: skip
-
-
-def _has_strength(member: Any) -> bool:
-    """True when a restrainer has a strength (rockcli.model.derive.member_strength finite):
-    a tie-rod's steel, or an anchor's capacity."""
-    steel = member.kind is not None and member.kind.value == "tie-rod" and (
-        member.grade is not None or member.fy is not None)  # fmt: skip
-    return steel or member.anchor_capacity is not None
 
 
 def _check_toothing(model: Any, storeys: tuple[Storey, ...]) -> None:
