@@ -202,6 +202,56 @@ class Load:
 
 
 @dataclass(frozen=True)
+class Friction:
+    """The friction of toothed return walls on a rigid body (Circolare 7/2019 §C8.7.1.2.1.1,
+    Eq. C8.7.1.2): the courses interlocked with the body over the height h above ``z0`` resist
+    its rotation with a horizontal force F in all, spread as q(ζ) = 2F(h − ζ)/h² over the
+    height (its resultant at h/3, the clause's point), each course while its slide is at most
+    the overlap l (:func:`friction_moment`; rockcli.mechanisms.side.SideFriction is the same
+    law on a link of a chain).
+
+    Attributes:
+        name: label. force: F of all the walls [N]. x_pos, x_neg: the interface's horizontal
+        distance from pivot O and from O′ [m]. z0: the toothing's bottom above the base [m].
+        height: h [m]. overlap: l [m].
+    """
+
+    name: str
+    force: float
+    x_pos: float
+    x_neg: float
+    z0: float
+    height: float
+    overlap: float
+
+
+def friction_moment(force, x, z0, height, overlap, a, sin_a, cos_a):
+    """The moment [N·m] about the pivot of the friction of :class:`Friction` at rotation
+    a ≥ 0, resisting the rotation (positive: it acts towards a = 0 when the body opens).
+
+    A point (x, z) of the interface slides x·(1 − cos a) + z·sin a outward; the courses up to
+    ζ_e = (l − x·(1 − cos a))/sin a − z0 above the toothing's bottom are engaged (v = ζ_e/h,
+    clipped to [0, 1]), and the force per unit height q(ζ) works through dX/da = −(x sin a +
+    z cos a). Integrated over the engaged part by hand:
+
+        M = (x sin a + z0 cos a)·F·(2v − v²) + cos a·F·h·(v² − 2v³/3),
+
+    F·(x sin a + (z0 + h/3) cos a) with every course engaged (at rest: F at h/3 above z0).
+    ``force`` may be signed (the sense of the motion it resists) and scales M.
+    """
+    slide = x * versine(a, cos_a)
+    if sin_a <= 0.0:
+        v = 1.0 if slide <= overlap else 0.0
+    else:
+        v = ((overlap - slide) / sin_a - z0) / height
+        v = min(max(v, 0.0), 1.0)
+    return force * (
+        (x * sin_a + z0 * cos_a) * (2.0 * v - v * v)
+        + cos_a * height * (v * v - 2.0 * v * v * v / 3.0)
+    )
+
+
+@dataclass(frozen=True)
 class Thrust:
     """A horizontal force independent of the earthquake (roof or arch thrust) on the block.
 
@@ -443,6 +493,8 @@ class Rocker:
         restrainers: the horizontal springs.
         loads: weights carried by or pushing on the system (mass required).
         thrusts: horizontal forces independent of the earthquake (mass required).
+        frictions: the toothed return walls' friction resisting the rotation (a rigid body's
+            only: :class:`RigidBody`; at most one).
     """
 
     R: float
@@ -458,6 +510,7 @@ class Rocker:
     restrainers: tuple[Restrainer, ...] = field(default_factory=tuple)
     loads: tuple[Load, ...] = field(default_factory=tuple)
     thrusts: tuple[Thrust, ...] = field(default_factory=tuple)
+    frictions: tuple[Friction, ...] = field(default_factory=tuple)
 
     @property
     def kind(self) -> str:
@@ -471,8 +524,18 @@ class Rocker:
         out = []
         for s in (POSITIVE, NEGATIVE):
             g, h, t, _, _ = point_moments(points, s, 0.0, 1.0)
-            out.append((g - s * t) / h)
+            out.append((g + self.friction_at(s, 0.0) - s * t) / h)
         return out[0], out[1]
+
+    def friction_at(self, s: int, a: float) -> float:
+        """The frictions' moment resisting the rotation a about pivot s [N·m]
+        (:func:`friction_moment`; 0 without)."""
+        sin_a, cos_a = math.sin(a), math.cos(a)
+        return sum(
+            friction_moment(f.force, f.x_pos if s > 0 else f.x_neg, f.z0, f.height, f.overlap,
+                            a, sin_a, cos_a)
+            for f in self.frictions
+        )  # fmt: skip
 
     def collapses(self) -> tuple[float, float]:
         """(θc⁺, θc⁻) from the point table (:func:`collapse_rotations`)."""
@@ -1109,6 +1172,7 @@ def mirrored(block: Rocker) -> Rocker:
             replace(th, x_pos=th.x_neg, x_neg=th.x_pos, direction=-th.direction)
             for th in block.thrusts
         ),
+        frictions=tuple(replace(f, x_pos=f.x_neg, x_neg=f.x_pos) for f in block.frictions),
         **block.mirrored_shape(),
     )
 
@@ -1130,13 +1194,17 @@ def mirror_symmetric(block: Rocker) -> bool:
         return False
     # mirrored(block) == block, field by field without building the mirror (once per case of
     # a study): each restrainer and load the same from either pivot.
-    return all(
-        r.k_pos == r.k_neg
-        and r.r_pos == r.r_neg
-        and r.phi_pos == r.phi_neg
-        and r.yield_pos == r.yield_neg
-        for r in block.restrainers
-    ) and all(ld.x_pos == ld.x_neg for ld in block.loads)
+    return (
+        all(
+            r.k_pos == r.k_neg
+            and r.r_pos == r.r_neg
+            and r.phi_pos == r.phi_neg
+            and r.yield_pos == r.yield_neg
+            for r in block.restrainers
+        )
+        and all(ld.x_pos == ld.x_neg for ld in block.loads)
+        and all(f.x_pos == f.x_neg for f in block.frictions)
+    )
 
 
 # Columns of a row of the point table (point_table): the block at its centroid, each load,

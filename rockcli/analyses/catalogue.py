@@ -78,7 +78,8 @@ def friction_note(friction: Friction) -> Note:
     """The friction in a sentence, with the clause."""
     return Note("friction", "friction of {walls} toothed return wall(s): F = {F:.3f} kN each "
                 "at h/3 = {lever:.3f} m above the hinge (Circolare 7/2019 Eq. C8.7.1.2: "
-                "h = {h:.3f} m, n = {n:.4g} courses); the time history does not carry it",
+                "h = {h:.3f} m, n = {n:.4g} courses); the time history carries it as a Coulomb "
+                "moment against the motion",
                 walls=friction.walls, F=friction.force / 1e3, lever=friction.lever,
                 h=friction.height, n=friction.courses)  # fmt: skip
 
@@ -211,18 +212,32 @@ def free_period(
     return T0, (note,)
 
 
-def refuse_unstable(name: str, cap: Capacity) -> None:
+def refuse_unstable(name: str, cap: Capacity, where: str = "thrusts") -> None:
     """InputError when the thrusts open the mechanism with no earthquake (α0 ≤ 0), as for
-    the block (rockcli.model.derived_checks): no code check describes a wall already falling."""
+    the block (rockcli.model.derived_checks): no code check describes a wall already falling.
+    ``where``: the field that holds them (the model's thrusts, or a corner's hip_thrust)."""
     if cap.alpha0 > 0.0:
         return
     side = "outward (side 1)" if cap.mech.side > 0 else "inward (side −1)"
     raise InputError(
         f"the thrusts open mechanism '{name}' {side} with no earthquake (α0 = {cap.alpha0:.4g})",
-        where="thrusts",
+        where=where,
         allowed="thrusts whose work is less than that of the weights (α0 > 0 on each side "
         "each mechanism can open to)",
     )
+
+
+def thrusts_field(mech: CatalogueMechanism) -> str:
+    """The model file's field of the thrusts on ``mech``: a corner's own hip_thrust
+    (``mechanisms[i].hip_thrust``, i its entry's index), else the model's ``thrusts``."""
+    spec = mech.spec
+    if spec is None or spec.type is not MechanismType.CORNER or not spec.hip_thrust:
+        return "thrusts"
+    entries = [(i, e) for i, e in enumerate(mech.model.mechanisms or ())
+               if e.type.value == MechanismType.CORNER.value and e.hip_thrust]  # fmt: skip
+    named_entry = [i for i, e in entries if e.name == mech.name]
+    index = named_entry or [i for i, _ in entries]
+    return f"mechanisms[{index[0]}].hip_thrust" if len(index) == 1 else "hip_thrust"
 
 
 def analyse_mechanism(
@@ -235,7 +250,7 @@ def analyse_mechanism(
     caps: list[Capacity] = [capacity(side_check(mech, s, settings), settings.FC, T0)
                             for s in mech.sides]  # fmt: skip
     for c in caps:
-        refuse_unstable(mech.name, c)
+        refuse_unstable(mech.name, c, thrusts_field(mech))
     cap = min(caps, key=lambda c: (c.d0_star is None, c.d0_star or 0.0, -c.mech.side))
     by_side = {str(s): alpha0(side_check(mech, s, settings)) for s in mech.reported}
     from rockcli.analyses.sliding import alpha0_of, sliding_note

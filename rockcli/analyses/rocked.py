@@ -96,33 +96,13 @@ HELD_AT_TOP = (
 )
 
 
-#: The time history of a mechanism the toothed return walls resist by friction.
-WITHOUT_FRICTION = (
-    "'{name}': the time history rocks it without the friction of the toothed return walls "
-    "(not modelled in the equation of motion yet), so it uplifts at {uplift:.4g} g where the "
-    "code check's α0 with the friction is {alpha0:.4g}: on the safe side for overturning, "
-    "not like with like"
-)
-
-
 def mechanism_notes(mech: CatalogueMechanism) -> tuple[Note, ...]:
     """What the reader needs to know of a mechanism as the time history rocks it: that it
-    slides on its base before it lifts (rockcli.analyses.sliding); the toothed return walls'
-    friction left out; a member on a vertical flexure's upper block
-    taken as at its held top (rockcli.mechanisms.flexure.held_at_top)."""
+    slides on its base before it lifts (rockcli.analyses.sliding); a member on a vertical
+    flexure's upper block taken as at its held top (rockcli.mechanisms.flexure.held_at_top)."""
     from rockcli.analyses.sliding import sliding_note, uplift_of
 
-    return (*sliding_note(mech, uplift_of(mech)), *friction_left_out(mech), *held_members(mech))
-
-
-def friction_left_out(mech: CatalogueMechanism) -> tuple[Note, ...]:
-    """The note of a mechanism whose placement carries friction the engines do not."""
-    view = mech.view(mech.sides[0])
-    if not getattr(view, "frictions", ()):
-        return ()
-    side = mech.openings[0 if mech.sides[0] > 0 else 1]
-    return (Note("without_friction", WITHOUT_FRICTION, name=mech.name, uplift=side.uplift,
-                 alpha0=side.alpha0),)  # fmt: skip
+    return (*sliding_note(mech, uplift_of(mech)), *held_members(mech))
 
 
 def held_members(mech: CatalogueMechanism) -> tuple[Note, ...]:

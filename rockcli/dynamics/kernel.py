@@ -54,6 +54,7 @@ for _fn in (
     mechanics.chain_terms,  # chains only
     mechanics.path_terms,  # members on a chain's upper block only
     mechanics.path_rotation,
+    mechanics.friction_moment,  # rigid bodies with toothed return walls only
 ):
     register_jitable(_fn)
 for _array_fn in (
@@ -69,6 +70,8 @@ register_jitable(motion.member_moment)
 register_jitable(motion.side_index)
 register_jitable(motion.spring_arm)
 register_jitable(motion.chain_balance)
+register_jitable(motion.friction_sense)
+register_jitable(motion.stuck_thresholds)
 # The member laws' state changes: called at events only.
 for _law_fn in (
     motion.rotation_at_elongation,
@@ -171,7 +174,8 @@ DENSE_P = np.array(
 @njit(cache=CACHE, inline=INLINE)
 def _constants(par):
     """The constants of the equation of motion, read once a step: (α, sin α, cos α, p²,
-    linearized, 1/I0, the own inertia the point table adds to, P_I0)."""
+    linearized, 1/I0, the own inertia the point table adds to, P_I0, then the friction's F,
+    x from O, x from O′, z0, h, l: P_RUB*)."""
     return (
         par[L.P_ALPHA],
         par[L.P_SIN_ALPHA],
@@ -180,49 +184,58 @@ def _constants(par):
         par[L.P_LINEAR] != 0.0,
         par[L.P_INV_I0],
         par[L.P_I0],
+        par[L.P_RUB],
+        par[L.P_RUB_X_POS],
+        par[L.P_RUB_X_NEG],
+        par[L.P_RUB_Z0],
+        par[L.P_RUB_H],
+        par[L.P_RUB_L],
     )
 
 
 @njit(cache=CACHE, inline=INLINE)
-def _free_accel(a, s, om, ag, c, springs, alive, points):
+def _free_accel(a, s, om, ag, c, springs, alive, points, d):
     """θ̈ of the rectangle (paper Eq. 2, closed form) at rotation a = s·θ, velocity θ̇ = om,
-    ground ag [g]; c: :func:`_constants`."""
+    ground ag [g]; c: :func:`_constants`; d: the sense of the motion a friction resists
+    (±1; 0: none; a rigid body's only)."""
     return _rhs(a, s, ag, c[0], c[1], c[2], c[3], c[4], springs, alive, c[5])
 
 
 @njit(cache=CACHE, inline=INLINE)
-def _loaded_accel(a, s, om, ag, c, springs, alive, points):
-    """θ̈ of a rigid body given by its point table (motion.loaded_angular_acceleration)."""
-    return _loaded_rhs(a, s, om, ag, points, c[6], springs, alive)
+def _loaded_accel(a, s, om, ag, c, springs, alive, points, d):
+    """θ̈ of a rigid body given by its point table (motion.loaded_angular_acceleration), its
+    friction against the sense d."""
+    return _loaded_rhs(a, s, om, ag, points, c[6], springs, alive, d * c[7],
+                       c[8] if s > 0 else c[9], c[10], c[11], c[12])  # fmt: skip
 
 
 @njit(cache=CACHE, inline=INLINE)
-def _chain_accel(a, s, om, ag, c, springs, alive, points):
+def _chain_accel(a, s, om, ag, c, springs, alive, points, d):
     """θ̈ of a chain read from its table (motion.chain_angular_acceleration)."""
     return _chain_rhs(a, s, om, ag, points, springs, alive)
 
 
 @njit(cache=CACHE, inline=INLINE)
-def _stage(th, om, s, ag, par, springs, alive, points):
+def _stage(th, om, s, ag, par, springs, alive, points, d):
     """θ̈ at rotation θ, velocity θ̇ on side s under ground acceleration ag [g], by the
-    equation of the input's kind (P_KIND)."""
+    equation of the input's kind (P_KIND), a friction resisting the sense d."""
     kind = par[L.P_KIND]
     c = _constants(par)
     if kind == L.K_CHAIN:
-        return _chain_accel(s * th, s, om, ag, c, springs, alive, points)
+        return _chain_accel(s * th, s, om, ag, c, springs, alive, points, d)
     if kind == L.K_POINTS:
-        return _loaded_accel(s * th, s, om, ag, c, springs, alive, points)
-    return _free_accel(s * th, s, om, ag, c, springs, alive, points)
+        return _loaded_accel(s * th, s, om, ag, c, springs, alive, points, d)
+    return _free_accel(s * th, s, om, ag, c, springs, alive, points, d)
 
 
 @njit(cache=CACHE, inline=INLINE)
-def _stage_at(t, th, om, s, i, times, accel, pol, par, springs, alive, points):
+def _stage_at(t, th, om, s, i, times, accel, pol, par, springs, alive, points, d):
     """θ̈ at (t, θ, θ̇) on side s, t inside sample interval i."""
-    return _stage(th, om, s, _ground(t, i, times, accel, pol), par, springs, alive, points)
+    return _stage(th, om, s, _ground(t, i, times, accel, pol), par, springs, alive, points, d)
 
 
 @njit(cache=CACHE, inline=INLINE)
-def _dp5_step(th, om, f1, h, s, g0, gs, par, springs, alive, points, k_th, k_om, accel):
+def _dp5_step(th, om, f1, h, s, g0, gs, par, springs, alive, points, k_th, k_om, accel, d):
     """One Dormand–Prince step of size h; fills the stage slopes; returns (θ, θ̇, θ̈, error norm).
 
     The state is (θ, θ̇); slopes of θ are θ̇ at the stages, slopes of θ̇ are θ̈ (``accel``, the
@@ -235,27 +248,27 @@ def _dp5_step(th, om, f1, h, s, g0, gs, par, springs, alive, points, k_th, k_om,
     k_om[0] = f1
     w2, v2 = th + h * A21 * k_th[0], om + h * A21 * k_om[0]
     k_th[1] = v2
-    k_om[1] = accel(s * w2, s, v2, g0 + gs * (C2 * h), c, springs, alive, points)
+    k_om[1] = accel(s * w2, s, v2, g0 + gs * (C2 * h), c, springs, alive, points, d)
     w3 = th + h * (A31 * k_th[0] + A32 * k_th[1])
     v3 = om + h * (A31 * k_om[0] + A32 * k_om[1])
     k_th[2] = v3
-    k_om[2] = accel(s * w3, s, v3, g0 + gs * (C3 * h), c, springs, alive, points)
+    k_om[2] = accel(s * w3, s, v3, g0 + gs * (C3 * h), c, springs, alive, points, d)
     w4 = th + h * (A41 * k_th[0] + A42 * k_th[1] + A43 * k_th[2])
     v4 = om + h * (A41 * k_om[0] + A42 * k_om[1] + A43 * k_om[2])
     k_th[3] = v4
-    k_om[3] = accel(s * w4, s, v4, g0 + gs * (C4 * h), c, springs, alive, points)
+    k_om[3] = accel(s * w4, s, v4, g0 + gs * (C4 * h), c, springs, alive, points, d)
     w5 = th + h * (A51 * k_th[0] + A52 * k_th[1] + A53 * k_th[2] + A54 * k_th[3])
     v5 = om + h * (A51 * k_om[0] + A52 * k_om[1] + A53 * k_om[2] + A54 * k_om[3])
     k_th[4] = v5
-    k_om[4] = accel(s * w5, s, v5, g0 + gs * (C5 * h), c, springs, alive, points)
+    k_om[4] = accel(s * w5, s, v5, g0 + gs * (C5 * h), c, springs, alive, points, d)
     w6 = th + h * (A61 * k_th[0] + A62 * k_th[1] + A63 * k_th[2] + A64 * k_th[3] + A65 * k_th[4])
     v6 = om + h * (A61 * k_om[0] + A62 * k_om[1] + A63 * k_om[2] + A64 * k_om[3] + A65 * k_om[4])
     k_th[5] = v6
-    k_om[5] = accel(s * w6, s, v6, g0 + gs * h, c, springs, alive, points)
+    k_om[5] = accel(s * w6, s, v6, g0 + gs * h, c, springs, alive, points, d)
     th1 = th + h * (B1 * k_th[0] + B3 * k_th[2] + B4 * k_th[3] + B5 * k_th[4] + B6 * k_th[5])
     om1 = om + h * (B1 * k_om[0] + B3 * k_om[2] + B4 * k_om[3] + B5 * k_om[4] + B6 * k_om[5])
     k_th[6] = om1
-    f7 = accel(s * th1, s, om1, g0 + gs * h, c, springs, alive, points)
+    f7 = accel(s * th1, s, om1, g0 + gs * h, c, springs, alive, points, d)
     k_om[6] = f7
     rtol = par[L.P_RTOL]
     atol = par[L.P_ATOL]
@@ -272,18 +285,18 @@ def _dp5_step(th, om, f1, h, s, g0, gs, par, springs, alive, points, k_th, k_om,
 
 
 @njit(cache=CACHE, inline=INLINE)
-def _step_of_kind(th, om, f, h, s, g0, gs, par, springs, alive, points, k_th, k_om):
+def _step_of_kind(th, om, f, h, s, g0, gs, par, springs, alive, points, k_th, k_om, d):
     """:func:`_dp5_step` specialised for the input's kind (P_KIND): one compiled step each, so
     the rectangle's stays lean."""
     kind = par[L.P_KIND]
     if kind == L.K_CHAIN:
         return _dp5_step(th, om, f, h, s, g0, gs, par, springs, alive, points, k_th, k_om,
-                         _chain_accel)  # fmt: skip
+                         _chain_accel, d)  # fmt: skip
     if kind == L.K_POINTS:
         return _dp5_step(th, om, f, h, s, g0, gs, par, springs, alive, points, k_th, k_om,
-                         _loaded_accel)  # fmt: skip
+                         _loaded_accel, d)  # fmt: skip
     return _dp5_step(th, om, f, h, s, g0, gs, par, springs, alive, points, k_th, k_om,
-                     _free_accel)  # fmt: skip
+                     _free_accel, d)  # fmt: skip
 
 
 @njit(cache=CACHE, inline=INLINE)
@@ -466,6 +479,7 @@ def _scan_sampled(
     spring_out,
     levels,
     kinds,
+    d,
 ):
     """Scan a step that may hold an event or a turning point; record the peaks before it.
 
@@ -474,7 +488,10 @@ def _scan_sampled(
     downward one (a member's slack point) is located by _root between the samples that
     bracket it, and turning points (roots of θ̇) give the peaks; with a member on its yield
     plateau the turning point is itself an event (the member unloads). A step that starts at
-    θ = 0 brackets the impact from its turning point (engine.md, trap 1).
+    θ = 0 brackets the impact from its turning point (engine.md, trap 1). Under friction
+    (P_RUB) the turning point of the motion's sense d (a peak opening, a trough closing) is
+    an event, EV_TURN, and so is a motion found against d at a sample with no turning point
+    before it (a start from a standstill too weak to tell).
 
     Returns (x_event, kind, spring_row): x_event in [0, 1] (2.0 when nothing happens),
     kind EV_*, spring_row the restrainer of the event (−1 otherwise).
@@ -484,6 +501,7 @@ def _scan_sampled(
     n_levels, n_down = _event_levels(s, par, springs, alive, levels, kinds)
     base = 2 * n_rows + 1
     plastic = n_rows > 0 and _any_plastic(springs, alive, s)
+    rub = par[L.P_RUB] != 0.0
     x_prev = 0.0
     a_prev = s * th0
     for step in range(1, SCAN_POINTS + 1):
@@ -522,8 +540,16 @@ def _scan_sampled(
         xp = _turning_point(om0, h, q_om, s, x_prev, x_end)
         if xp >= 0.0:
             _update_peak(s * _dense(xp, th0, h, q_th), s, peaks, spring_out, springs, alive, lin)
+            if rub and d > 0:
+                return xp, L.EV_TURN, -1
             if plastic:
                 return xp, L.EV_UNLOAD, -1
+        if rub and d < 0:
+            xq = _turning_point(om0, h, q_om, -s, x_prev, x_end)
+            if xq >= 0.0:
+                return xq, L.EV_TURN, -1
+        if rub and kind == L.EV_NONE and d * s * _dense(x, om0, h, q_om) <= 0.0:
+            return x, L.EV_TURN, -1
         if kind != L.EV_NONE:
             return x_best, kind, row
         _update_peak(a, s, peaks, spring_out, springs, alive, lin)
@@ -556,8 +582,13 @@ def _next_uplift(t, i, times, accel, pol, par, thr_pos, thr_neg):
     an interval only if it does at the interval's end sample: the samples are scanned, and the
     crossing is located exactly in the first interval whose end exceeds it.
     """
-    one_sided = int(par[L.P_ONE_SIDED])
-    free_side = int(par[L.P_FREE_SIDE])
+    return _next_crossing(t, i, times, accel, pol, thr_pos, thr_neg, int(par[L.P_ONE_SIDED]),
+                          int(par[L.P_FREE_SIDE]))  # fmt: skip
+
+
+@njit(cache=CACHE)
+def _next_crossing(t, i, times, accel, pol, thr_pos, thr_neg, one_sided, free_side):
+    """:func:`_next_uplift` with the motion's sides given (one_sided 0: either side)."""
     n = times.size
     tau, side = _uplift_in_interval(t, i, times, accel, pol, thr_pos, thr_neg, one_sided, free_side)
     if side != 0:
@@ -763,7 +794,10 @@ def integrate_sloped(times, accel, slopes, pol, par, springs, points, alive, his
     """:func:`integrate` with the ground's slopes given (ground_slopes of times and accel, or
     of a longer grid of which times is a prefix). The driver: the next uplift from rest
     (:func:`_rest_until_uplift`), steps (:func:`_step_of_kind`) scanned for events
-    (:func:`_scan_sampled`) and the events (:func:`_apply_event`)."""
+    (:func:`_scan_sampled`) and the events (:func:`_apply_event`). Under friction (P_RUB) the
+    sense d of the motion is a mode, like the pivot side: +1 after an uplift or an impact,
+    decided again at each turning point (EV_TURN), where the body may stick
+    (:func:`_stuck_until_slip`)."""
     n = times.size
     k_th, k_om = np.empty(7), np.empty(7)  # the stages' slopes of θ and θ̇
     q_th, q_om = np.empty(4), np.empty(4)  # their dense output
@@ -778,10 +812,17 @@ def integrate_sloped(times, accel, slopes, pol, par, springs, points, alive, his
     s = _initial_side(th, om)
     f = 0.0
     h = times[1] - times[0]
+    rub = par[L.P_RUB] != 0.0
+    d = 1  # the sense of the motion a friction resists: opening
+    stuck = False
     _store(hist_th, hist_om, hist_f, 0, 0, 0.0, 0.0, 0, springs, alive, lin)
     if s != 0:
         f = _start_moving(t, th, om, s, times, accel, pol, par, springs, alive, points,
                           hist_th, hist_om, hist_f, out_f, spring_out)  # fmt: skip
+        if rub:
+            d = _initial_sense(t, th, om, s, times, accel, pol, par, springs, alive, points)
+            stuck = d == 0
+            f = _stage_at(t, th, om, s, 0, times, accel, pol, par, springs, alive, points, d)
     status = L.STATUS_COMPLETED
     nan_rejects = 0
     lowest, highest = _level_bounds(s, par, springs, alive)
@@ -789,6 +830,15 @@ def integrate_sloped(times, accel, slopes, pol, par, springs, points, alive, his
     if free_from <= 0:
         free_from = n
     while i < n - 1:
+        if stuck:
+            t, i, d = _stuck_until_slip(t, i, th, s, times, accel, pol, par, springs, alive,
+                                        points, hist_th, hist_om, hist_f)  # fmt: skip
+            if d == 0:
+                break
+            stuck = False
+            om = 0.0
+            f = _stage_at(t, th, om, s, i, times, accel, pol, par, springs, alive, points, d)
+            continue
         if s == 0 and i >= free_from:  # at rest on ground at rest: nothing more happens
             _store(hist_th, hist_om, hist_f, i + 1, n - 1, 0.0, 0.0, 0, springs, alive, lin)
             t = times[n - 1]
@@ -798,9 +848,10 @@ def integrate_sloped(times, accel, slopes, pol, par, springs, points, alive, his
                                          hist_th, hist_om, hist_f, out_f, out_i)  # fmt: skip
             th = 0.0
             om = 0.0
+            d = 1
             if s == 0:
                 break
-            f = _stage_at(t, th, om, s, i, times, accel, pol, par, springs, alive, points)
+            f = _stage_at(t, th, om, s, i, times, accel, pol, par, springs, alive, points, d)
             lowest, highest = _level_bounds(s, par, springs, alive)
             continue
         if not math.isfinite(f) or out_i[L.I_STEPS] + out_i[L.I_REJECTED] >= max_steps:
@@ -812,7 +863,7 @@ def integrate_sloped(times, accel, slopes, pol, par, springs, points, alive, his
         gap = t_next - t
         if gap <= GAP_FRACTION * (t_next - times[i]):  # a rounding remnant: to the sample
             f = _at_sample(th, om, s, i, last, times, accel, pol, par, springs, alive, points,
-                           hist_th, hist_om, hist_f)  # fmt: skip
+                           hist_th, hist_om, hist_f, d)  # fmt: skip
             t = t_next
             i = last
             continue
@@ -820,7 +871,7 @@ def integrate_sloped(times, accel, slopes, pol, par, springs, points, alive, his
         gs = pol * slopes[i]
         g0 = pol * accel[i] + gs * (t - times[i])
         th1, om1, f1, err = _step_of_kind(
-            th, om, f, h_try, s, g0, gs, par, springs, alive, points, k_th, k_om
+            th, om, f, h_try, s, g0, gs, par, springs, alive, points, k_th, k_om, d
         )
         if not err <= 1.0:  # too large, or NaN
             out_i[L.I_REJECTED] += 1
@@ -835,13 +886,16 @@ def integrate_sloped(times, accel, slopes, pol, par, springs, points, alive, his
         nan_rejects = 0
         trend = _stage_trend(k_th, s)
         a1 = s * th1
-        if (trend > 0 and a1 < lowest) or (trend < 0 and a1 > highest):
+        if (trend > 0 and a1 < lowest and (d > 0 or not rub)) or (
+            trend < 0 and a1 > highest and (d < 0 or not rub)
+        ):
             x_ev, kind, row = 2.0, L.EV_NONE, -1
         else:
             _dense_coefficients(k_th, q_th)
             _dense_coefficients(k_om, q_om)
             x_ev, kind, row = _scan_sampled(th, om, th1, h_try, q_th, q_om, s, par, springs,
-                                            alive, out_f, spring_out, levels, kinds)  # fmt: skip
+                                            alive, out_f, spring_out, levels, kinds,
+                                            d)  # fmt: skip
         if kind == L.EV_UNRESOLVED and h_try > UNRESOLVED_MIN_STEP:
             out_i[L.I_REJECTED] += 1
             h = h_try * UNRESOLVED_FACTOR
@@ -870,12 +924,23 @@ def integrate_sloped(times, accel, slopes, pol, par, springs, points, alive, his
         om_ev = _dense(x_ev, om, h_try, q_om)
         th_ev = _dense(x_ev, th, h_try, q_th)
         out_f[L.O_MAX_OMEGA] = max(out_f[L.O_MAX_OMEGA], abs(om_ev))
+        if kind == L.EV_TURN:
+            t, th, om = t_ev, th_ev, 0.0
+            d = _turn(t, th, s, i, times, accel, pol, par, springs, alive, points, memory,
+                      out_f, spring_out)  # fmt: skip
+            stuck = d == 0
+            if not stuck:
+                f = _stage_at(t, th, om, s, i, times, accel, pol, par, springs, alive, points, d)
+                lowest, highest = _level_bounds(s, par, springs, alive)
+            continue
         t, th, om, s, status = _apply_event(kind, row, t_ev, th_ev, om_ev, om, s, t_next, par,
                                             springs, alive, out_f, out_i, spring_out)  # fmt: skip
         if status != L.STATUS_COMPLETED:
             break
+        if kind == L.EV_IMPACT:
+            d = 1  # the new pivot's motion opens
         if s != 0:
-            f = _stage_at(t, th, om, s, i, times, accel, pol, par, springs, alive, points)
+            f = _stage_at(t, th, om, s, i, times, accel, pol, par, springs, alive, points, d)
             lowest, highest = _level_bounds(s, par, springs, alive)
     _finish(t, th, s, status, memory, par, springs, alive, out_f, out_i, spring_out)
 
@@ -895,13 +960,14 @@ def _stop_status(t, th, om, f, s, i, times, accel, pol, par, springs, alive, out
 
 @njit(cache=CACHE)
 def _at_sample(th, om, s, i, last, times, accel, pol, par, springs, alive, points, hist_th,
-               hist_om, hist_f):  # fmt: skip
+               hist_om, hist_f, d):  # fmt: skip
     """The state (θ, θ̇) moved from interval i to sample ``last`` without a step (the gap is a
     rounding remnant): the history kept up to it; returns θ̈ there."""
     if hist_th.size > 1:
         lin = par[L.P_LINEAR] != 0.0
         _store(hist_th, hist_om, hist_f, i + 1, last, th, om, s, springs, alive, lin)
-    return _stage_at(times[last], th, om, s, last, times, accel, pol, par, springs, alive, points)
+    return _stage_at(times[last], th, om, s, last, times, accel, pol, par, springs, alive, points,
+                     d)  # fmt: skip
 
 
 @njit(cache=CACHE)
@@ -935,7 +1001,7 @@ def _start_moving(t, th, om, s, times, accel, pol, par, springs, alive, points, 
     lin = par[L.P_LINEAR] != 0.0
     out_f[L.O_T_UPLIFT] = t
     _update_peak(s * th, s, out_f, spring_out, springs, alive, lin)
-    f = _stage_at(t, th, om, s, 0, times, accel, pol, par, springs, alive, points)
+    f = _stage_at(t, th, om, s, 0, times, accel, pol, par, springs, alive, points, 1)
     if hist_th.size > 1:
         _store(hist_th, hist_om, hist_f, 0, 0, th, om, s, springs, alive, lin)
     return f
@@ -958,6 +1024,66 @@ def _rest_until_uplift(t, i, times, accel, pol, par, springs, alive, memory, his
     if out_i[L.I_UPLIFTS] == 1:
         out_f[L.O_T_UPLIFT] = tau
     return tau, j, side
+
+
+@njit(cache=CACHE)
+def _initial_sense(t, th, om, s, times, accel, pol, par, springs, alive, points):
+    """The sense of the motion under friction of a run that starts in motion (θ0, θ̇0): its
+    velocity's, or at a standstill the one the forces give (0: it sticks)."""
+    if om != 0.0:
+        return 1 if s * om > 0.0 else -1
+    return _sense_at(t, th, s, 0, times, accel, pol, par, springs, alive, points)
+
+
+@njit(cache=CACHE)
+def _turn(t, th, s, i, times, accel, pol, par, springs, alive, points, memory, out_f,
+          spring_out):  # fmt: skip
+    """A turning point under friction at time t, rotation θ on side s: the members on their
+    yield plateau unload there (a peak), and the motion's new sense is decided (0: it sticks)."""
+    if memory:
+        lin = par[L.P_LINEAR] != 0.0
+        _apply_law_event(L.EV_UNLOAD, -1, s, max(s * th, 0.0), t, springs, alive, spring_out,
+                         lin)  # fmt: skip
+    return _sense_at(t, th, s, i, times, accel, pol, par, springs, alive, points)
+
+
+@njit(cache=CACHE)
+def _friction_terms(th, s, par, springs, alive, points):
+    """(q0, k, mf) of a body at a standstill at θ on side s (motion.stuck_thresholds): its
+    ä = s·θ̈ without the friction at üg = 0, its rate per g of s·üg, and the friction's
+    moment over the inertia, all from the equation of motion itself."""
+    q0 = s * _stage(th, 0.0, s, 0.0, par, springs, alive, points, 0)
+    k = s * _stage(th, 0.0, s, s * 1.0, par, springs, alive, points, 0) - q0
+    mf = q0 - s * _stage(th, 0.0, s, 0.0, par, springs, alive, points, 1)
+    return q0, k, mf
+
+
+@njit(cache=CACHE)
+def _sense_at(t, th, s, i, times, accel, pol, par, springs, alive, points):
+    """The sense of the motion a body at a standstill at θ on side s takes at time t under
+    friction (motion.friction_sense: +1 opens, −1 closes, 0 it sticks)."""
+    q0, k, mf = _friction_terms(th, s, par, springs, alive, points)
+    return motion.friction_sense(q0 + s * _ground(t, i, times, accel, pol) * k, mf)
+
+
+@njit(cache=CACHE)
+def _stuck_until_slip(t, i, th, s, times, accel, pol, par, springs, alive, points, hist_th,
+                      hist_om, hist_f):  # fmt: skip
+    """A body held by friction at θ on side s from time t in interval i: the history held up
+    to the time the ground moves it again; returns (τ, interval, sense), sense 0 when the
+    record ends first (τ then its last time)."""
+    lin = par[L.P_LINEAR] != 0.0
+    n = times.size
+    q0, k, mf = _friction_terms(th, s, par, springs, alive, points)
+    if not k > 0.0:  # the earthquake's moment does not reach it: held to the end
+        _store(hist_th, hist_om, hist_f, i + 1, n - 1, th, 0.0, s, springs, alive, lin)
+        return times[n - 1], n - 1, 0
+    thr_pos, thr_neg = motion.stuck_thresholds(s, q0, k, mf)
+    tau, side, j = _next_crossing(t, i, times, accel, pol, thr_pos, thr_neg, 0, 0)
+    _store(hist_th, hist_om, hist_f, i + 1, j, th, 0.0, s, springs, alive, lin)
+    if side == 0:
+        return times[n - 1], j, 0
+    return tau, j, side * s
 
 
 @njit(cache=CACHE, inline=INLINE)

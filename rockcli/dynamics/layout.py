@@ -19,7 +19,11 @@ P_PRE_SCALE_POS, P_PRE_SCALE_NEG, P_INERTIA_POS, P_INERTIA_NEG = 22, 23, 24, 25
 P_FREE_FROM = 26
 # What the engine integrates (K_* below), and the collapse rotation of side −1 [rad].
 P_KIND, P_OVERTURN_NEG = 27, 28
-N_PARAMS = 29
+# The toothed return walls' friction of a rigid body (mechanics.Friction; 0 force: none): F
+# of all the walls [N], the interface's x from pivot O and from O′, the toothing's bottom z0,
+# its height h and the overlap l [m] (mechanics.friction_moment).
+P_RUB, P_RUB_X_POS, P_RUB_X_NEG, P_RUB_Z0, P_RUB_H, P_RUB_L = 29, 30, 31, 32, 33, 34
+N_PARAMS = 35
 
 # Kinds of the engine's input (P_KIND), each with its own equation of motion: the paper's
 # rectangle (Eq. 2, closed form; no point table), a rigid body with loads or thrusts (the
@@ -56,6 +60,9 @@ N_SPRING_OUT = 5
 # reached going up; a slack point going down; the turning point of a yield plateau).
 EV_NONE, EV_IMPACT, EV_OVERTURN, EV_FAIL, EV_UNRESOLVED = 0, 1, 2, 3, 4
 EV_LAW_UP, EV_SLACK, EV_UNLOAD = 5, 6, 7
+# A turning point of the motion under friction (θ̇ = 0 where a = s·θ > 0): the body sticks or
+# the friction turns round (kernel.py).
+EV_TURN = 8
 
 
 STATUS_NAMES = {

@@ -39,6 +39,7 @@ from rockcli.mechanics import (
     PA_N,
     chain_terms,
     cos_minus,
+    friction_moment,
     gravity_moment_ratio_trig,
     ground_moment_ratio_trig,
     path_rotation,
@@ -412,29 +413,38 @@ def angular_acceleration(
     return acc
 
 
-def loaded_angular_acceleration(a, s, om, ag, points, i0, springs, alive):
+def loaded_angular_acceleration(a, s, om, ag, points, i0, springs, alive, rub, rub_x, rub_z0,
+                                rub_h, rub_l):  # fmt: skip
     """θ̈ of a block with loads or thrusts on pivot side s at rotation a = s·θ, velocity θ̇ = om.
 
     Lagrange's equation for the one coordinate a (kinetic energy ½ [I0 + J(a)] ȧ², potential
-    of the bearing weights, generalised forces of the earthquake, the thrusts and the springs;
-    docs/physics.md, "Loads and thrusts"):
+    of the bearing weights, generalised forces of the earthquake, the thrusts, the springs
+    and the friction of toothed return walls; docs/physics.md, "Loads and thrusts"):
 
-        [I0 + J(a)]·ä + ½ J′(a)·ȧ² = −G(a) + s·T(a) + s·üg·H(a) − Σ_k M_k(a),   θ̈ = s·ä
+        [I0 + J(a)]·ä + ½ J′(a)·ȧ² = −G(a) + s·T(a) + s·üg·H(a) − Σ_k M_k(a) − d·M_F(a),
 
-    with G, H, T, J, J′ from :func:`rockcli.mechanics.point_moments` (the very function of the
-    capacity curve) and M_k the springs' restoring moments (spec/rocking.md). Without loads
-    and thrusts it is paper Eq. (2): G = m g R sin(α − a), H = m g R cos(α − a), J = 0.
+    θ̈ = s·ä, with G, H, T, J, J′ from :func:`rockcli.mechanics.point_moments` (the very
+    function of the capacity curve), M_k the springs' restoring moments (spec/rocking.md) and
+    M_F the friction's moment (:func:`rockcli.mechanics.friction_moment`), a Coulomb moment
+    against the sense d = sign(ȧ) of the motion, which the engines hold as a mode (kernel.py).
+    Without loads and thrusts it is paper Eq. (2): G = m g R sin(α − a), H = m g R cos(α − a),
+    J = 0.
 
     Args:
         a: rotation about the active pivot [rad]. s: pivot side ±1. om: θ̇ [rad/s].
         ag: ground acceleration, polarity applied [g]. points: flat point table.
         i0: the block's own polar moment of inertia about a base corner [kg·m²].
         springs, alive: as in :func:`angular_acceleration`.
+        rub: d·F, the friction's force signed by the sense of the motion it resists [N]
+            (0: none). rub_x: the interface's x from the pivot; rub_z0, rub_h, rub_l: the
+            toothing's bottom, height and overlap [m].
     """
     sin_a = math.sin(a)
     cos_a = math.cos(a)
     g, h, t, j, dj = point_moments(points, s, sin_a, cos_a)
     moment = -g + s * t + s * ag * h - 0.5 * dj * om * om
+    if rub != 0.0:
+        moment -= friction_moment(rub, rub_x, rub_z0, rub_h, rub_l, a, sin_a, cos_a)
     for k in range(springs.shape[0]):
         if alive[k] != 0:
             kk, r, sin_phi, cos_phi = spring_trig_on_side(springs, k, s)
@@ -488,6 +498,32 @@ def chain_balance(g, h, t, m, mp, a, s, om, ag, springs, alive):
                             springs, k, s, kk, r, sin_phi, cos_phi, a, sin_a, cos_a, False
                         )
     return s * moment / m
+
+
+def friction_sense(q, mf):
+    """The sense of the motion that starts from a standstill under friction: +1 (opening),
+    −1 (closing), or 0 (it sticks), from q, the opening moment of everything but the friction
+    over the inertia [rad/s²], and mf, the friction's over the inertia (Coulomb: it moves only
+    where |q| exceeds mf)."""
+    if q > mf:
+        return 1
+    if q < -mf:
+        return -1
+    return 0
+
+
+def stuck_thresholds(s, q0, k, mf):
+    """(thr_pos, thr_neg) [g]: the ground accelerations at which a body stuck by friction on
+    side s starts to move, in :func:`uplift_in_interval`'s form (side +1 when üg > thr_pos,
+    side −1 when üg < −thr_neg); the side found, times s, is the sense of the motion.
+
+    q0: the opening moment over the inertia at üg = 0 (ä without the friction); k: its rate
+    per g of s·üg (H/I > 0); mf: the friction's moment over the inertia. It opens where
+    s·üg·k > mf − q0 and closes where s·üg·k < −mf − q0.
+    """
+    opening = (mf - q0) / k
+    closing = (mf + q0) / k
+    return (opening, closing) if s > 0 else (closing, opening)
 
 
 def ground_acceleration(t, i, times, accel, polarity):

@@ -56,6 +56,11 @@ class _Phase:
         self.evals = 0
         self.max_evals = int(par[L.P_MAX_STEPS]) * EVALS_PER_STEP
         self.memory = bool(np.any(springs[:, motion.COL_MEMORY] != 0.0)) if springs.size else False
+        #: Under friction (P_RUB): the sense of the motion it resists (+1 opening, −1
+        #: closing), and whether the body is held at a standstill (kernel.py's modes).
+        self.rub = par[L.P_RUB] != 0.0
+        self.d = 1
+        self.stuck = False
         #: A chain's terms from its configuration function (mechanics.Chain.exact), or None.
         self.exact: Callable[[int, float], tuple[float, float, float, float, float]] | None = None
 
@@ -66,13 +71,14 @@ def _rhs(phase: _Phase, t0: float, g0: float, gs: float):
         phase.evals += 1
         if phase.evals > phase.max_evals:
             raise _OutOfBudget
-        return [y[1], _acceleration(phase, g0 + gs * (t - t0), y[0], y[1])]
+        return [y[1], _acceleration(phase, g0 + gs * (t - t0), y[0], y[1], phase.d)]
 
     return f
 
 
-def _acceleration(phase: _Phase, ag: float, th: float, om: float) -> float:
-    """θ̈ at rotation θ, velocity θ̇ under ground acceleration ag [g]; NaN where math refuses."""
+def _acceleration(phase: _Phase, ag: float, th: float, om: float, d: int = 1) -> float:
+    """θ̈ at rotation θ, velocity θ̇ under ground acceleration ag [g], a friction resisting
+    the sense d (0: none); NaN where math refuses."""
     par = phase.par
     try:
         if phase.exact is not None:
@@ -92,6 +98,11 @@ def _acceleration(phase: _Phase, ag: float, th: float, om: float) -> float:
                     par[L.P_I0],
                     phase.springs,
                     phase.alive,
+                    d * par[L.P_RUB],
+                    par[L.P_RUB_X_POS] if phase.s > 0 else par[L.P_RUB_X_NEG],
+                    par[L.P_RUB_Z0],
+                    par[L.P_RUB_H],
+                    par[L.P_RUB_L],
                 )
             )
         return float(
@@ -127,19 +138,21 @@ def _nonfinite_quantity(phase: _Phase, ag: float, th: float, om: float) -> int:
                 return L.NF_FORCE + j
     if not math.isfinite(ag):
         return L.NF_GROUND
-    if not math.isfinite(_acceleration(phase, ag, th, om)):
+    if not math.isfinite(_acceleration(phase, ag, th, om, phase.d)):
         return L.NF_ACCEL
     return L.NF_ERROR
 
 
 #: Kinds of the reference's events: the block's, then the restrainers'.
-K_IMPACT, K_OVERTURN, K_PEAK, K_FAIL, K_LAW_UP, K_SLACK = range(6)
+K_IMPACT, K_OVERTURN, K_PEAK, K_FAIL, K_LAW_UP, K_SLACK, K_TURN = range(7)
 
 
 def _events(phase: _Phase):
     """Impact, overturning, failures, the members' law levels (terminal) and the turning point
-    (a peak; terminal while a member is on its yield plateau, where it unloads)."""
+    (a peak; terminal while a member is on its yield plateau, where it unloads, and under
+    friction, where the body sticks or turns: then a trough of a closing motion too)."""
     s = phase.s
+    t_start = phase.t
 
     def impact(t: float, y: np.ndarray) -> float:
         return s * y[0]
@@ -161,6 +174,17 @@ def _events(phase: _Phase):
     peak.direction = -1  # type: ignore[attr-defined]
     events = [impact, overturn, peak]
     rows = [(K_IMPACT, -1), (K_OVERTURN, -1), (K_PEAK if unloads else -1, -1)]
+    if phase.rub:
+        d = phase.d
+
+        def turn(t: float, y: np.ndarray) -> float:
+            # positive at the solve's start: a start from a standstill is not a turning point
+            return d * s * y[1] if t > t_start else 1.0
+
+        turn.terminal = True  # type: ignore[attr-defined]
+        turn.direction = -1  # type: ignore[attr-defined]
+        events.append(turn)
+        rows.append((K_TURN, -1))
     col = motion.side_index(s)
     for j in range(phase.springs.shape[0]):
         k, _, _, a_fail = motion.spring_on_side(phase.springs, j, s)
@@ -261,10 +285,18 @@ def _interval(phase, i, times, accel, pol, out_f, out_i, spring_out):
             )
             if side == 0:
                 return None
-            phase.s, phase.th, phase.om, phase.restart = side, 0.0, 0.0, True
+            phase.s, phase.th, phase.om, phase.restart, phase.d = side, 0.0, 0.0, True, 1
             out_i[L.I_UPLIFTS] += 1
             if out_i[L.I_UPLIFTS] == 1:
                 out_f[L.O_T_UPLIFT] = tau
+            t = tau
+            continue
+        if phase.stuck:
+            thr_pos, thr_neg = motion.stuck_thresholds(phase.s, *_friction_terms(phase))
+            tau, side = motion.uplift_in_interval(t, i, times, accel, pol, thr_pos, thr_neg, 0, 0)
+            if side == 0:
+                return None
+            phase.d, phase.stuck, phase.om, phase.restart = side * phase.s, False, 0.0, True
             t = tau
             continue
         g0 = motion.ground_acceleration(t, i, times, accel, pol)
@@ -284,10 +316,44 @@ def _interval(phase, i, times, accel, pol, out_f, out_i, spring_out):
             _peak(phase, phase.s * phase.th, out_f, spring_out)
             return None
         t, y, kind, row = hit
+        if row[0] == K_TURN:
+            _turn(phase, t, float(y[0]), motion.ground_acceleration(t, i, times, accel, pol),
+                  out_f, spring_out)  # fmt: skip
+            continue
         status = _apply_event(phase, t, y, kind, row, out_f, out_i, spring_out)
         if status is not None:
             return status
     return None
+
+
+def _friction_terms(phase: _Phase) -> tuple[float, float, float]:
+    """(q0, k, mf) of the body at a standstill at phase.th (kernel.py's _friction_terms)."""
+    s, th = phase.s, phase.th
+    q0 = s * _acceleration(phase, 0.0, th, 0.0, 0)
+    k = s * _acceleration(phase, float(s), th, 0.0, 0) - q0
+    mf = q0 - s * _acceleration(phase, 0.0, th, 0.0, 1)
+    return q0, k, mf
+
+
+def _sense(phase: _Phase, ag: float) -> int:
+    """The sense of the motion from a standstill at phase.th under ground ag [g] (0: sticks)."""
+    q0, k, mf = _friction_terms(phase)
+    return motion.friction_sense(q0 + phase.s * ag * k, mf)
+
+
+def _turn(phase: _Phase, t: float, th: float, ag: float, out_f: np.ndarray,
+          spring_out: np.ndarray) -> None:  # fmt: skip
+    """A turning point under friction: the peak kept, members on their plateau unload, the
+    new sense (or a standstill: stuck, held until the ground moves it: :func:`_interval`)."""
+    phase.th, phase.om, phase.restart, phase.t = th, 0.0, True, t
+    _peak(phase, max(phase.s * th, 0.0), out_f, spring_out)
+    if phase.memory:
+        a = max(phase.s * th, 0.0)
+        motion.unload(phase.springs, phase.alive, phase.s, a, phase.lin, spring_out, L.S_ENERGY)
+    phase.d = _sense(phase, ag)
+    phase.stuck = phase.d == 0
+    if phase.stuck:
+        phase.d = 1
 
 
 def _uplift_thresholds(phase: _Phase) -> tuple[float, float]:
@@ -360,7 +426,7 @@ def _apply_event(phase, t, y, kind, row, out_f, out_i, spring_out):
     om, s = motion.velocity_after_impact(
         float(y[1]), phase.s, e, int(par[L.P_ONE_SIDED]), par[L.P_REBOUND]
     )
-    phase.th, phase.om, phase.s, phase.restart = 0.0, om, s, True
+    phase.th, phase.om, phase.s, phase.restart, phase.d = 0.0, om, s, True, 1
     if abs(om) < par[L.P_REST]:
         phase.s, phase.om = 0, 0.0
     out_f[L.O_IMPACT_LOSS] += before - 0.5 * _inertia(par, phase.s) * phase.om**2
@@ -462,6 +528,13 @@ def _integrate(
         phase.th, phase.om = th0, om0
         out_f[L.O_T_UPLIFT] = times[0]
         _peak(phase, phase.s * th0, out_f, spring_out)
+        if phase.rub:
+            if om0 != 0.0:
+                phase.d = 1 if phase.s * om0 > 0.0 else -1
+            else:
+                _turn(phase, times[0], th0,
+                      motion.ground_acceleration(times[0], 0, times, accel, pol), out_f,
+                      spring_out)  # fmt: skip
     _store(hist_th, hist_om, hist_f, 0, phase)
     out_i[L.I_STATUS] = L.STATUS_COMPLETED
     out_f[L.O_T_END] = times[-1]

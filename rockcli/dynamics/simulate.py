@@ -138,6 +138,18 @@ def pack_parameters(
         (-1, L.P_PRE_SCALE_NEG, L.P_INERTIA_NEG),
     ):
         par[scale], par[inertia] = rest_terms(block, s)
+    return friction_columns(par, block)
+
+
+def friction_columns(par: np.ndarray, block: Rocker) -> np.ndarray:
+    """The toothed return walls' friction (P_RUB*): a rigid body's one friction, or none."""
+    if not block.frictions:
+        return par
+    if block.kind != "points" or len(block.frictions) > 1:
+        raise ValueError("the engines take one friction, on a rigid body")
+    f = block.frictions[0]
+    par[L.P_RUB], par[L.P_RUB_X_POS], par[L.P_RUB_X_NEG] = f.force, f.x_pos, f.x_neg
+    par[L.P_RUB_Z0], par[L.P_RUB_H], par[L.P_RUB_L] = f.z0, f.height, f.overlap
     return par
 
 

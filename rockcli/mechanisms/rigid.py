@@ -7,8 +7,9 @@ on each side (rockcli.dynamics.motion.loaded_angular_acceleration: [I + J(a)]·�
 −G + s·T + s·üg·H − ΣM_k). So the mechanism enters the engine as a
 :class:`rockcli.mechanics.RigidBody` whose ``shape`` is the composite of its bodies: its weight at
 their centroid (a rigid point mass in the point table) plus its own moment of inertia about
-that centroid, I_G = Σ [I_Gi + m_i·|r_i − r_G|²] (parallel axes). The loads, thrusts and
-restrainers above the hinge go in from each pivot (x from O, x′ from O′, z above the hinge).
+that centroid, I_G = Σ [I_Gi + m_i·|r_i − r_G|²] (parallel axes). The loads, thrusts,
+restrainers and the toothed return walls' friction above the hinge go in from each pivot (x
+from O, x′ from O′, z above the hinge).
 Each side's coefficient of restitution is Housner's, from the angular momentum about the new
 pivot (mechanics.impact_restitution); a one-sided mechanism's (the wedge's always) is that of
 its one-sided impact, √(e₊·e₋) (mechanics.rebound_restitution; rockcli.model.derive
@@ -23,6 +24,7 @@ import math
 from dataclasses import dataclass, replace
 
 from rockcli.mechanics import (
+    Friction,
     Load,
     Restrainer,
     RigidBody,
@@ -79,6 +81,10 @@ def rigid_block(plus: ChainSide, minus: ChainSide, block: Rocker, wedge: bool) -
         for member, at_pos, at_neg in zip(plus.restrainers, plus.anchors, minus.anchors,
                                           strict=True)
     )  # fmt: skip
+    frictions = tuple(
+        Friction(fr.name, fr.force, fr.x, other.x, fr.z0, fr.height, fr.overlap)
+        for fr, other in zip(plus.frictions, minus.frictions, strict=True)
+    )
     return RigidBody(
         **rocker_fields(
             block,
@@ -91,6 +97,7 @@ def rigid_block(plus: ChainSide, minus: ChainSide, block: Rocker, wedge: bool) -
             restrainers=members,
             loads=loads,
             thrusts=thrusts,
+            frictions=frictions,
             e_neg=None,
         ),
         shape=(x_pos, x_neg, z, body.inertia),

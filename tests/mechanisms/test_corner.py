@@ -115,6 +115,7 @@ def test_the_time_history_says_it_does_not_rock_it(tmp_path: Path) -> None:
         ({"angle": None}, "mechanisms[0].angle"),
         ({"angle": 70.0}, "mechanisms[0].angle"),
         ({"hip_thrust": -1.0}, "mechanisms[0].hip_thrust"),
+        ({"hip_thrust": 5000.0}, "mechanisms[0].hip_thrust"),  # opens it with no earthquake
         ({"thickness_return": 0.0}, "mechanisms[0].thickness_return"),
         ({"sides": 2}, "mechanisms[0].sides"),
     ],

@@ -19,6 +19,7 @@ n = h/h_b the courses the vertical crack crosses, Φ = h_b/l, applied at h/3; "l
 
 from __future__ import annotations
 
+import json
 import math
 from pathlib import Path
 from typing import Any
@@ -173,24 +174,22 @@ def test_only_the_courses_near_the_hinge_still_resist_at_large_rotations(
     assert 0.0 < left < 0.05 * 2 * F_hand(H) * H / 3
 
 
-def test_time_history_says_it_leaves_the_friction_out(tmp_path: Path) -> None:
+def test_time_history_uplifts_where_the_friction_lets_it(tmp_path: Path) -> None:
+    """The time history carries the friction (tests/dynamics/test_coulomb_friction.py): the façade
+    leaves rest at the code check's α0 with it, 0.4295 g, not at t/h = 0.08333 g."""
     record = Path(__file__).resolve().parents[2] / "records" / "ricker_Tp0.5s_0.5g.txt"
     path = write(tmp_path, FACADE)
     result = CliRunner().invoke(
         cli,
-        [
-            "assess",
-            str(path),
-            "--record",
-            str(record),
-            "--mechanism",
-            "overturning, whole wall",
-        ],  # fmt: skip
-    )
+        ["assess", str(path), "--record", str(record), "--mechanism",
+         "overturning, whole wall", "--format", "json"],
+    )  # fmt: skip
     assert result.exit_code == 0, result.output
-    text = " ".join(result.output.split())
-    assert "without the friction of the toothed return walls" in text
-    assert "uplifts at 0.08333 g" in text and "0.4295" in text
+    doc = json.loads(result.output)
+    alpha0 = (GAMMA * T * B * H * T / 2 + 2 * F_hand(H) * H / 3) / (GAMMA * T * B * H * H / 2)
+    assert doc["model"]["uplift_acceleration_g"] == pytest.approx(alpha0, rel=1e-9)
+    assert alpha0 == pytest.approx(0.42953, abs=1e-5)
+    assert not any("friction" in w for w in doc.get("warnings", []))
 
 
 BAD = [

@@ -170,5 +170,10 @@ def test_each_mechanism_impacts_and_loses_energy_in_a_run(every_mechanism) -> No
             theta0 = 0.25 * collapse_rotations(block)[0 if s > 0 else 1]
             run = simulate(block, time, still, 0.01, theta0=s * theta0,
                            settings=SolverSettings(tail=0.0))  # fmt: skip
+            if block.frictions and block.friction_at(s, theta0) >= block.weights_moment(
+                s, theta0
+            ):  # the toothing holds it where released (tests/dynamics/test_coulomb_friction.py)
+                assert run.impacts == 0 and abs(run.theta_max or run.theta_min) == theta0, name
+                continue
             assert run.impacts >= 1, f"{name}, side {s:+d}: no impact"
             assert run.impact_loss > 0.0, f"{name}, side {s:+d}: {run.impact_loss!r} J"

@@ -338,7 +338,9 @@ def model_sizes(records, model_path, mechanism, ground, p_values, R_values, peri
     else:
         if not rocks_its_block(model):
             raise InputError(
-                "a wall's size is its storeys'",
+                "a frame's size is its piers'"
+                if model.frame is not None
+                else "a wall's size is its storeys'",
                 file=model_path,
                 where="--p" if p_values is not None else "--R",
                 allowed="a model of one block for --p or --R; --floor-periods for a wall at height",
