@@ -794,10 +794,8 @@ def integrate_sloped(times, accel, slopes, pol, par, springs, points, alive, his
     """:func:`integrate` with the ground's slopes given (ground_slopes of times and accel, or
     of a longer grid of which times is a prefix). The driver: the next uplift from rest
     (:func:`_rest_until_uplift`), steps (:func:`_step_of_kind`) scanned for events
-    (:func:`_scan_sampled`) and the events (:func:`_apply_event`). Under friction (P_RUB) the
-    sense d of the motion is a mode, like the pivot side: +1 after an uplift or an impact,
-    decided again at each turning point (EV_TURN), where the body may stick
-    (:func:`_stuck_until_slip`)."""
+    (:func:`_scan_sampled`) and the events (:func:`_apply_event`). Under friction the sense
+    d of the motion is a mode like the pivot side, decided at each turning point (:func:`_turn`)."""
     n = times.size
     k_th, k_om = np.empty(7), np.empty(7)  # the stages' slopes of θ and θ̇
     q_th, q_om = np.empty(4), np.empty(4)  # their dense output
@@ -812,17 +810,11 @@ def integrate_sloped(times, accel, slopes, pol, par, springs, points, alive, his
     s = _initial_side(th, om)
     f = 0.0
     h = times[1] - times[0]
-    rub = par[L.P_RUB] != 0.0
     d = 1  # the sense of the motion a friction resists: opening
-    stuck = False
     _store(hist_th, hist_om, hist_f, 0, 0, 0.0, 0.0, 0, springs, alive, lin)
     if s != 0:
-        f = _start_moving(t, th, om, s, times, accel, pol, par, springs, alive, points,
-                          hist_th, hist_om, hist_f, out_f, spring_out)  # fmt: skip
-        if rub:
-            d = _initial_sense(t, th, om, s, times, accel, pol, par, springs, alive, points)
-            stuck = d == 0
-            f = _stage_at(t, th, om, s, 0, times, accel, pol, par, springs, alive, points, d)
+        f, d = _start_moving(t, th, om, s, times, accel, pol, par, springs, alive, points,
+                             hist_th, hist_om, hist_f, out_f, spring_out)  # fmt: skip
     status = L.STATUS_COMPLETED
     nan_rejects = 0
     lowest, highest = _level_bounds(s, par, springs, alive)
@@ -830,26 +822,12 @@ def integrate_sloped(times, accel, slopes, pol, par, springs, points, alive, his
     if free_from <= 0:
         free_from = n
     while i < n - 1:
-        if stuck:
-            t, i, d = _stuck_until_slip(t, i, th, s, times, accel, pol, par, springs, alive,
-                                        points, hist_th, hist_om, hist_f)  # fmt: skip
-            if d == 0:
-                break
-            stuck = False
+        if s == 0 or d == 0:  # at rest, or held by friction (d = 0)
+            t, i, s, th, d = _resume(t, i, th, s, times, accel, pol, par, springs, alive, points,
+                                     memory, hist_th, hist_om, hist_f, out_f, out_i, spring_out,
+                                     free_from)  # fmt: skip
             om = 0.0
-            f = _stage_at(t, th, om, s, i, times, accel, pol, par, springs, alive, points, d)
-            continue
-        if s == 0 and i >= free_from:  # at rest on ground at rest: nothing more happens
-            _store(hist_th, hist_om, hist_f, i + 1, n - 1, 0.0, 0.0, 0, springs, alive, lin)
-            t = times[n - 1]
-            break
-        if s == 0:
-            t, i, s = _rest_until_uplift(t, i, times, accel, pol, par, springs, alive, memory,
-                                         hist_th, hist_om, hist_f, out_f, out_i)  # fmt: skip
-            th = 0.0
-            om = 0.0
-            d = 1
-            if s == 0:
+            if s == 0 or d == 0:
                 break
             f = _stage_at(t, th, om, s, i, times, accel, pol, par, springs, alive, points, d)
             lowest, highest = _level_bounds(s, par, springs, alive)
@@ -884,18 +862,9 @@ def integrate_sloped(times, accel, slopes, pol, par, springs, points, alive, his
                 break
             continue
         nan_rejects = 0
-        trend = _stage_trend(k_th, s)
-        a1 = s * th1
-        if (trend > 0 and a1 < lowest and (d > 0 or not rub)) or (
-            trend < 0 and a1 > highest and (d < 0 or not rub)
-        ):
-            x_ev, kind, row = 2.0, L.EV_NONE, -1
-        else:
-            _dense_coefficients(k_th, q_th)
-            _dense_coefficients(k_om, q_om)
-            x_ev, kind, row = _scan_sampled(th, om, th1, h_try, q_th, q_om, s, par, springs,
-                                            alive, out_f, spring_out, levels, kinds,
-                                            d)  # fmt: skip
+        x_ev, kind, row = _step_events(th, om, th1, h_try, k_th, k_om, q_th, q_om, s, d, lowest,
+                                       highest, par, springs, alive, out_f, spring_out, levels,
+                                       kinds)  # fmt: skip
         if kind == L.EV_UNRESOLVED and h_try > UNRESOLVED_MIN_STEP:
             out_i[L.I_REJECTED] += 1
             h = h_try * UNRESOLVED_FACTOR
@@ -924,22 +893,18 @@ def integrate_sloped(times, accel, slopes, pol, par, springs, points, alive, his
         om_ev = _dense(x_ev, om, h_try, q_om)
         th_ev = _dense(x_ev, th, h_try, q_th)
         out_f[L.O_MAX_OMEGA] = max(out_f[L.O_MAX_OMEGA], abs(om_ev))
-        if kind == L.EV_TURN:
-            t, th, om = t_ev, th_ev, 0.0
-            d = _turn(t, th, s, i, times, accel, pol, par, springs, alive, points, memory,
-                      out_f, spring_out)  # fmt: skip
-            stuck = d == 0
-            if not stuck:
-                f = _stage_at(t, th, om, s, i, times, accel, pol, par, springs, alive, points, d)
-                lowest, highest = _level_bounds(s, par, springs, alive)
-            continue
-        t, th, om, s, status = _apply_event(kind, row, t_ev, th_ev, om_ev, om, s, t_next, par,
-                                            springs, alive, out_f, out_i, spring_out)  # fmt: skip
-        if status != L.STATUS_COMPLETED:
-            break
-        if kind == L.EV_IMPACT:
-            d = 1  # the new pivot's motion opens
-        if s != 0:
+        if kind == L.EV_TURN:  # under friction: it sticks, or turns round
+            t, th, om, d = t_ev, th_ev, 0.0, _turn(t_ev, th_ev, s, i, times, accel, pol, par,
+                                                   springs, alive, points, memory,
+                                                   spring_out)  # fmt: skip
+        else:
+            t, th, om, s, status = _apply_event(kind, row, t_ev, th_ev, om_ev, om, s, t_next,
+                                                par, springs, alive, out_f, out_i,
+                                                spring_out)  # fmt: skip
+            if status != L.STATUS_COMPLETED:
+                break
+            d = 1 if kind == L.EV_IMPACT else d  # after an impact the new pivot's motion opens
+        if s != 0 and d != 0:
             f = _stage_at(t, th, om, s, i, times, accel, pol, par, springs, alive, points, d)
             lowest, highest = _level_bounds(s, par, springs, alive)
     _finish(t, th, s, status, memory, par, springs, alive, out_f, out_i, spring_out)
@@ -997,14 +962,18 @@ def _reset_outputs(out_f, out_i):
 def _start_moving(t, th, om, s, times, accel, pol, par, springs, alive, points, hist_th,
                   hist_om, hist_f, out_f, spring_out):  # fmt: skip
     """A run that starts in motion (θ0 or θ̇0 given): its uplift time and first peak, its
-    history's first sample; returns θ̈ there."""
+    history's first sample; returns θ̈ there and the sense of its motion under friction
+    (:func:`_initial_sense`; 0: held where it starts; +1 without friction)."""
     lin = par[L.P_LINEAR] != 0.0
     out_f[L.O_T_UPLIFT] = t
     _update_peak(s * th, s, out_f, spring_out, springs, alive, lin)
-    f = _stage_at(t, th, om, s, 0, times, accel, pol, par, springs, alive, points, 1)
+    d = 1
+    if par[L.P_RUB] != 0.0:
+        d = _initial_sense(t, th, om, s, times, accel, pol, par, springs, alive, points)
+    f = _stage_at(t, th, om, s, 0, times, accel, pol, par, springs, alive, points, d)
     if hist_th.size > 1:
         _store(hist_th, hist_om, hist_f, 0, 0, th, om, s, springs, alive, lin)
-    return f
+    return f, d
 
 
 @njit(cache=CACHE)
@@ -1036,26 +1005,28 @@ def _initial_sense(t, th, om, s, times, accel, pol, par, springs, alive, points)
 
 
 @njit(cache=CACHE)
-def _turn(t, th, s, i, times, accel, pol, par, springs, alive, points, memory, out_f,
-          spring_out):  # fmt: skip
-    """A turning point under friction at time t, rotation θ on side s: the members on their
-    yield plateau unload there (a peak), and the motion's new sense is decided (0: it sticks)."""
-    if memory:
+def _turn(t, th, s, i, times, accel, pol, par, springs, alive, points, memory, spring_out):
+    """A turning point under friction at time t, rotation θ on side s: the motion's new sense
+    (0: it sticks), and the members on their yield plateau unloaded when it turns back (a
+    wall held at its peak keeps its members on the plateau)."""
+    d = _sense_at(t, th, s, i, times, accel, pol, par, springs, alive, points)
+    if memory and d < 0:
         lin = par[L.P_LINEAR] != 0.0
         _apply_law_event(L.EV_UNLOAD, -1, s, max(s * th, 0.0), t, springs, alive, spring_out,
                          lin)  # fmt: skip
-    return _sense_at(t, th, s, i, times, accel, pol, par, springs, alive, points)
+    return d
 
 
 @njit(cache=CACHE)
 def _friction_terms(th, s, par, springs, alive, points):
     """(q0, k, mf) of a body at a standstill at θ on side s (motion.stuck_thresholds): its
     ä = s·θ̈ without the friction at üg = 0, its rate per g of s·üg, and the friction's
-    moment over the inertia, all from the equation of motion itself."""
+    moment over the inertia, all from the equation of motion itself (the latter raised by
+    motion.FRICTION_MARGIN, so that a rounding tie sticks)."""
     q0 = s * _stage(th, 0.0, s, 0.0, par, springs, alive, points, 0)
     k = s * _stage(th, 0.0, s, s * 1.0, par, springs, alive, points, 0) - q0
     mf = q0 - s * _stage(th, 0.0, s, 0.0, par, springs, alive, points, 1)
-    return q0, k, mf
+    return q0, k, mf + motion.FRICTION_MARGIN * (abs(q0) + mf)
 
 
 @njit(cache=CACHE)
@@ -1084,6 +1055,51 @@ def _stuck_until_slip(t, i, th, s, times, accel, pol, par, springs, alive, point
     if side == 0:
         return times[n - 1], j, 0
     return tau, j, side * s
+
+
+@njit(cache=CACHE)
+def _resume(t, i, th, s, times, accel, pol, par, springs, alive, points, memory, hist_th,
+            hist_om, hist_f, out_f, out_i, spring_out, free_from):  # fmt: skip
+    """From a standstill: at rest (s = 0) until the next uplift (:func:`_rest_until_uplift`;
+    at rest on a ground at rest from sample ``free_from``: nothing more happens), or held by
+    friction at θ until the ground moves it (:func:`_stuck_until_slip`; members on their
+    plateau unload when it moves back). Returns (τ, interval, side, θ, sense): side 0 or
+    sense 0 when the record ends first."""
+    n = times.size
+    if s == 0 and i >= free_from:
+        lin = par[L.P_LINEAR] != 0.0
+        _store(hist_th, hist_om, hist_f, i + 1, n - 1, 0.0, 0.0, 0, springs, alive, lin)
+        return times[n - 1], n - 1, 0, 0.0, 1
+    if s == 0:
+        t, i, s = _rest_until_uplift(t, i, times, accel, pol, par, springs, alive, memory,
+                                     hist_th, hist_om, hist_f, out_f, out_i)  # fmt: skip
+        return t, i, s, 0.0, 1
+    t, i, d = _stuck_until_slip(t, i, th, s, times, accel, pol, par, springs, alive, points,
+                                hist_th, hist_om, hist_f)  # fmt: skip
+    if memory and d < 0:
+        lin = par[L.P_LINEAR] != 0.0
+        _apply_law_event(L.EV_UNLOAD, -1, s, max(s * th, 0.0), t, springs, alive, spring_out,
+                         lin)  # fmt: skip
+    return t, i, s, th, d
+
+
+@njit(cache=CACHE, inline=INLINE)
+def _step_events(th, om, th1, h, k_th, k_om, q_th, q_om, s, d, lowest, highest, par, springs,
+                 alive, out_f, spring_out, levels, kinds):  # fmt: skip
+    """(x, kind, row) of the first event in an accepted step (:func:`_scan_sampled`), or
+    none without a scan when a = s·θ moves one way at every stage and crosses no level
+    (under friction, the way of its sense d: else a turning point may hide in it)."""
+    trend = _stage_trend(k_th, s)
+    a1 = s * th1
+    rub = par[L.P_RUB] != 0.0
+    if (trend > 0 and a1 < lowest and (d > 0 or not rub)) or (
+        trend < 0 and a1 > highest and (d < 0 or not rub)
+    ):
+        return 2.0, L.EV_NONE, -1
+    _dense_coefficients(k_th, q_th)
+    _dense_coefficients(k_om, q_om)
+    return _scan_sampled(th, om, th1, h, q_th, q_om, s, par, springs, alive, out_f, spring_out,
+                         levels, kinds, d)  # fmt: skip
 
 
 @njit(cache=CACHE, inline=INLINE)

@@ -500,6 +500,12 @@ def chain_balance(g, h, t, m, mp, a, s, om, ag, springs, alive):
     return s * moment / m
 
 
+#: Relative margin on the friction's moment in the stick/slip decisions of both engines: a
+#: rounding tie between "slips" and "sticks" sticks (the three predicates, the threshold on
+#: üg, the sense and the equation of motion, round differently).
+FRICTION_MARGIN = 1e-12
+
+
 def friction_sense(q, mf):
     """The sense of the motion that starts from a standstill under friction: +1 (opening),
     −1 (closing), or 0 (it sticks), from q, the opening moment of everything but the friction

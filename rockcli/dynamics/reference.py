@@ -169,7 +169,7 @@ def _events(phase: _Phase):
     def peak(t: float, y: np.ndarray) -> float:
         return s * y[1]
 
-    unloads = phase.memory and motion.any_plastic(phase.springs, phase.alive, s)
+    unloads = phase.memory and not phase.rub and motion.any_plastic(phase.springs, phase.alive, s)
     peak.terminal = unloads  # type: ignore[attr-defined]
     peak.direction = -1  # type: ignore[attr-defined]
     events = [impact, overturn, peak]
@@ -191,25 +191,30 @@ def _events(phase: _Phase):
         if not phase.alive[j] or k == 0.0:
             continue
         if math.isfinite(a_fail):
-            events.append(_level_event(s, a_fail, 1))
+            events.append(_level_event(s, a_fail, 1, phase.rub))
             rows.append((K_FAIL, j))
         if phase.springs[j, motion.COL_MEMORY] != 0.0:
             up = phase.springs[j, motion.COL_UP + col]
             down = phase.springs[j, motion.COL_DOWN + col]
             if math.isfinite(up):
-                events.append(_level_event(s, up, 1))
+                events.append(_level_event(s, up, 1, phase.rub))
                 rows.append((K_LAW_UP, j))
             if down >= 0.0:
-                events.append(_level_event(s, down, -1))
+                events.append(_level_event(s, down, -1, phase.rub))
                 rows.append((K_SLACK, j))
     return events, rows
 
 
-def _level_event(s: int, level: float, direction: int):
-    """A terminal event where a = s·θ crosses ``level`` upwards (+1) or downwards (−1)."""
+def _level_event(s: int, level: float, direction: int, at_level_before: bool = False):
+    """A terminal event where a = s·θ crosses ``level`` upwards (+1) or downwards (−1);
+    ``at_level_before`` (under friction, a restart from a standstill may sit on a level):
+    exactly on it counts as not yet crossed."""
 
     def cross(t: float, y: np.ndarray) -> float:
-        return s * y[0] - level
+        v = s * y[0] - level
+        if at_level_before and v == 0.0:
+            return -float(direction)  # under friction, a start at the level has not crossed it
+        return v
 
     cross.terminal = True  # type: ignore[attr-defined]
     cross.direction = direction  # type: ignore[attr-defined]
@@ -297,6 +302,11 @@ def _interval(phase, i, times, accel, pol, out_f, out_i, spring_out):
             if side == 0:
                 return None
             phase.d, phase.stuck, phase.om, phase.restart = side * phase.s, False, 0.0, True
+            if phase.memory and phase.d < 0:
+                a = max(phase.s * phase.th, 0.0)
+                motion.unload(
+                    phase.springs, phase.alive, phase.s, a, phase.lin, spring_out, L.S_ENERGY
+                )
             t = tau
             continue
         g0 = motion.ground_acceleration(t, i, times, accel, pol)
@@ -332,7 +342,7 @@ def _friction_terms(phase: _Phase) -> tuple[float, float, float]:
     q0 = s * _acceleration(phase, 0.0, th, 0.0, 0)
     k = s * _acceleration(phase, float(s), th, 0.0, 0) - q0
     mf = q0 - s * _acceleration(phase, 0.0, th, 0.0, 1)
-    return q0, k, mf
+    return q0, k, mf + motion.FRICTION_MARGIN * (abs(q0) + mf)
 
 
 def _sense(phase: _Phase, ag: float) -> int:
@@ -347,10 +357,10 @@ def _turn(phase: _Phase, t: float, th: float, ag: float, out_f: np.ndarray,
     new sense (or a standstill: stuck, held until the ground moves it: :func:`_interval`)."""
     phase.th, phase.om, phase.restart, phase.t = th, 0.0, True, t
     _peak(phase, max(phase.s * th, 0.0), out_f, spring_out)
-    if phase.memory:
+    phase.d = _sense(phase, ag)
+    if phase.memory and phase.d < 0:
         a = max(phase.s * th, 0.0)
         motion.unload(phase.springs, phase.alive, phase.s, a, phase.lin, spring_out, L.S_ENERGY)
-    phase.d = _sense(phase, ag)
     phase.stuck = phase.d == 0
     if phase.stuck:
         phase.d = 1

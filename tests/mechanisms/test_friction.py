@@ -174,6 +174,22 @@ def test_only_the_courses_near_the_hinge_still_resist_at_large_rotations(
     assert 0.0 < left < 0.05 * 2 * F_hand(H) * H / 3
 
 
+@pytest.mark.parametrize("side", [1, -1])
+def test_the_engines_friction_is_the_capacity_curves(tmp_path: Path, side: int) -> None:
+    """The time history's friction moment (mechanics.friction_moment, for a rigid body) is
+    the code check's SideFriction.work with the sign turned, at every rotation."""
+    from rockcli.mechanics import friction_moment
+
+    mech = named(catalogue(load_model(write(tmp_path, FACADE))), "overturning, whole wall")
+    view = mech.view(side)
+    fr = view.frictions[0]
+    for a in (0.0, 0.003, 0.02, 0.041, 0.09, 0.3, 0.7):
+        work = fr.work(view.states(a)[fr.link])
+        moment = friction_moment(fr.force, fr.x, fr.z0, fr.height, fr.overlap, a,
+                                 math.sin(a), math.cos(a))  # fmt: skip
+        assert moment == pytest.approx(-work, rel=1e-12, abs=1e-9)
+
+
 def test_time_history_uplifts_where_the_friction_lets_it(tmp_path: Path) -> None:
     """The time history carries the friction (tests/dynamics/test_coulomb_friction.py): the façade
     leaves rest at the code check's α0 with it, 0.4295 g, not at t/h = 0.08333 g."""
