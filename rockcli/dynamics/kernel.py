@@ -792,35 +792,27 @@ def ground_slopes(times, accel):
 def integrate_sloped(times, accel, slopes, pol, par, springs, points, alive, hist_th, hist_om,
                      hist_f, out_f, out_i, spring_out):  # fmt: skip
     """:func:`integrate` with the ground's slopes given (ground_slopes of times and accel, or
-    of a longer grid of which times is a prefix). The driver: the next uplift from rest
-    (:func:`_rest_until_uplift`), steps (:func:`_step_of_kind`) scanned for events
-    (:func:`_scan_sampled`) and the events (:func:`_apply_event`). Under friction the sense
-    d of the motion is a mode like the pivot side, decided at each turning point (:func:`_turn`)."""
+    of a longer grid of which times is a prefix). The driver: standstills (:func:`_resume`),
+    steps (:func:`_step_of_kind`) scanned for events (:func:`_scan_sampled`), the events
+    (:func:`_apply_event`; under friction the sense d of the motion, :func:`_turn`)."""
     n = times.size
-    k_th, k_om = np.empty(7), np.empty(7)  # the stages' slopes of θ and θ̇
-    q_th, q_om = np.empty(4), np.empty(4)  # their dense output
-    levels = np.empty(3 * springs.shape[0] + 1)
-    kinds = np.empty(3 * springs.shape[0] + 1, dtype=np.int64)
+    k_th, k_om, q_th, q_om, levels, kinds = _work_arrays(springs)
     memory = _has_memory(springs)
     _reset_outputs(out_f, out_i)
-    lin = par[L.P_LINEAR] != 0.0
-    max_steps = int(par[L.P_MAX_STEPS])
+    lin, max_steps = par[L.P_LINEAR] != 0.0, int(par[L.P_MAX_STEPS])
     t, i = times[0], 0
     th, om = par[L.P_THETA0], par[L.P_OMEGA0]
     s = _initial_side(th, om)
-    f = 0.0
+    f, d = 0.0, 1  # d: the sense of the motion a friction resists, opening
     h = times[1] - times[0]
-    d = 1  # the sense of the motion a friction resists: opening
     _store(hist_th, hist_om, hist_f, 0, 0, 0.0, 0.0, 0, springs, alive, lin)
     if s != 0:
         f, d = _start_moving(t, th, om, s, times, accel, pol, par, springs, alive, points,
                              hist_th, hist_om, hist_f, out_f, spring_out)  # fmt: skip
-    status = L.STATUS_COMPLETED
-    nan_rejects = 0
+    status, nan_rejects = L.STATUS_COMPLETED, 0
     lowest, highest = _level_bounds(s, par, springs, alive)
-    free_from = int(par[L.P_FREE_FROM])
-    if free_from <= 0:
-        free_from = n
+    free_from = n if int(par[L.P_FREE_FROM]) <= 0 else int(par[L.P_FREE_FROM])
+    rub = par[L.P_RUB] != 0.0
     while i < n - 1:
         if s == 0 or d == 0:  # at rest, or held by friction (d = 0)
             t, i, s, th, d = _resume(t, i, th, s, times, accel, pol, par, springs, alive, points,
@@ -862,9 +854,18 @@ def integrate_sloped(times, accel, slopes, pol, par, springs, points, alive, his
                 break
             continue
         nan_rejects = 0
-        x_ev, kind, row = _step_events(th, om, th1, h_try, k_th, k_om, q_th, q_om, s, d, lowest,
-                                       highest, par, springs, alive, out_f, spring_out, levels,
-                                       kinds)  # fmt: skip
+        trend = _stage_trend(k_th, s)  # no scan when a = s·θ moves one way, its sense's
+        a1 = s * th1
+        if (trend > 0 and a1 < lowest and (d > 0 or not rub)) or (
+            trend < 0 and a1 > highest and (d < 0 or not rub)
+        ):
+            x_ev, kind, row = 2.0, L.EV_NONE, -1
+        else:
+            _dense_coefficients(k_th, q_th)
+            _dense_coefficients(k_om, q_om)
+            x_ev, kind, row = _scan_sampled(th, om, th1, h_try, q_th, q_om, s, par, springs,
+                                            alive, out_f, spring_out, levels, kinds,
+                                            d)  # fmt: skip
         if kind == L.EV_UNRESOLVED and h_try > UNRESOLVED_MIN_STEP:
             out_i[L.I_REJECTED] += 1
             h = h_try * UNRESOLVED_FACTOR
@@ -908,6 +909,15 @@ def integrate_sloped(times, accel, slopes, pol, par, springs, points, alive, his
             f = _stage_at(t, th, om, s, i, times, accel, pol, par, springs, alive, points, d)
             lowest, highest = _level_bounds(s, par, springs, alive)
     _finish(t, th, s, status, memory, par, springs, alive, out_f, out_i, spring_out)
+
+
+@njit(cache=CACHE)
+def _work_arrays(springs):
+    """The driver's scratch arrays: the stages' slopes of θ and θ̇ (7 each), their dense
+    output (4 each), the event levels and their kinds (3 per restrainer + 1)."""
+    rows = 3 * springs.shape[0] + 1
+    return (np.empty(7), np.empty(7), np.empty(4), np.empty(4), np.empty(rows),
+            np.empty(rows, dtype=np.int64))  # fmt: skip
 
 
 @njit(cache=CACHE)
@@ -1081,25 +1091,6 @@ def _resume(t, i, th, s, times, accel, pol, par, springs, alive, points, memory,
         _apply_law_event(L.EV_UNLOAD, -1, s, max(s * th, 0.0), t, springs, alive, spring_out,
                          lin)  # fmt: skip
     return t, i, s, th, d
-
-
-@njit(cache=CACHE, inline=INLINE)
-def _step_events(th, om, th1, h, k_th, k_om, q_th, q_om, s, d, lowest, highest, par, springs,
-                 alive, out_f, spring_out, levels, kinds):  # fmt: skip
-    """(x, kind, row) of the first event in an accepted step (:func:`_scan_sampled`), or
-    none without a scan when a = s·θ moves one way at every stage and crosses no level
-    (under friction, the way of its sense d: else a turning point may hide in it)."""
-    trend = _stage_trend(k_th, s)
-    a1 = s * th1
-    rub = par[L.P_RUB] != 0.0
-    if (trend > 0 and a1 < lowest and (d > 0 or not rub)) or (
-        trend < 0 and a1 > highest and (d < 0 or not rub)
-    ):
-        return 2.0, L.EV_NONE, -1
-    _dense_coefficients(k_th, q_th)
-    _dense_coefficients(k_om, q_om)
-    return _scan_sampled(th, om, th1, h, q_th, q_om, s, par, springs, alive, out_f, spring_out,
-                         levels, kinds, d)  # fmt: skip
 
 
 @njit(cache=CACHE, inline=INLINE)
