@@ -13,6 +13,7 @@ from rockcli.cli.overturning import spectrum
 from rockcli.cli.record import record
 from rockcli.cli.report import report
 from rockcli.cli.retrofit import retrofit
+from rockcli.cli.risk import risk
 from rockcli.cli.suite import suite
 from rockcli.cli.sweep import sweep
 from rockcli.cli.validate import validate
@@ -32,3 +33,4 @@ ALL.append(report)
 ALL.append(validate)
 ALL.append(fragility)
 ALL.append(spectrum)
+ALL.append(risk)

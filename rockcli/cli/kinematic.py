@@ -23,7 +23,6 @@ from rockcli.cli.plot_option import plot_option
 
 def _site(value: str | None, record_path: str | None) -> tuple[float, float] | None:
     from rockcli.errors import InputError
-    from rockcli.numbers import ascii_float
 
     if value is None:
         return None
@@ -34,16 +33,9 @@ def _site(value: str | None, record_path: str | None) -> tuple[float, float] | N
             value=value,
             allowed="either --site LON,LAT or --record FILE",
         )
-    try:
-        lon, lat = (ascii_float(x) for x in value.split(","))
-    except ValueError:
-        raise InputError(
-            "not a site",
-            where="--site",
-            value=value,
-            allowed="LON,LAT in decimal degrees, e.g. 13.40,42.35",
-        ) from None
-    return lon, lat
+    from rockcli.cli.options import parse_site
+
+    return parse_site(value)
 
 
 @click.command(

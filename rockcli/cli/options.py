@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import math
+
 import click
 
 from rockcli.cli.inputs import InputPath
@@ -418,3 +420,21 @@ def exit_if_non_finite(runs: list[dict]) -> None:
     if line is not None:
         click.echo(line, err=True)
         raise SystemExit(EXIT_INTERNAL)
+
+
+#: What --site takes.
+SITE_ALLOWED = "LON,LAT in decimal degrees, e.g. 13.40,42.35"
+
+
+def parse_site(value: str) -> tuple[float, float]:
+    """(lon, lat) of ``--site LON,LAT`` [deg] (InputError naming --site otherwise)."""
+    from rockcli.errors import InputError
+    from rockcli.numbers import ascii_float
+
+    try:
+        lon, lat = (ascii_float(x) for x in value.split(","))
+    except ValueError:
+        lon = lat = math.nan
+    if not (-180.0 <= lon <= 180.0 and -90.0 <= lat <= 90.0):
+        raise InputError("not a site", where="--site", value=value, allowed=SITE_ALLOWED)
+    return lon, lat

@@ -18,7 +18,7 @@ LAYERS = (
     ("model",),
     ("suites",),
     ("analyses",),
-    ("studies", "casebook"),
+    ("studies", "casebook", "risk"),
     ("terminal", "plots", "document"),
     ("api", "rockcli", "cli", "__main__"),
 )  # fmt: skip
