@@ -97,6 +97,8 @@ class MechanismResult:
         result: the code check, as for today's block.
         friction: the toothed return walls' friction on it (None: none).
         arch: a horizontal flexure's arch: its thrust and stress block (None: another type).
+        T_Rc: the return period of the action that brings it to each limit state [years]
+            (:func:`return_periods`; None: the demand is not a site's).
     """
 
     name: str
@@ -107,6 +109,7 @@ class MechanismResult:
     result: KinematicResult
     friction: Friction | None = None
     arch: Arch | None = None
+    T_Rc: dict[str, float] | None = None
 
     def zeta(self, states: tuple[str, ...]) -> float | None:
         """ζ_E of these limit states: the lowest capacity/demand of the deciding checks
@@ -273,7 +276,28 @@ def analyse_mechanism(
         arch = arch_of(mech.wall, mech.spec)
     return MechanismResult(mech.name, mech.type.value, mech.hinge_height, mech.storey,
                            participating_mass(cap.mech),
-                           replace(result, mechanism=mech.name), friction, arch)  # fmt: skip
+                           replace(result, mechanism=mech.name), friction, arch,
+                           return_periods(result.checks, dem))  # fmt: skip
+
+
+#: The demand's limit state of each check's (2009 calls SLD and SLV its DLS and ULS).
+DEMAND_STATE = {"DLS": "SLD", "ULS": "SLV", "SLD": "SLD", "SLV": "SLV", "SLC": "SLC"}
+
+
+def return_periods(checks, dem: dict[str, LimitStateDemand]) -> dict[str, float] | None:
+    """T_Rc of each limit state whose demand comes from a site: the return period, on the
+    site's hazard curve of ag (rockcli.codecheck.hazard_curve: log–log between the grid's
+    30–2475 years as Allegato A interpolates, the end segments' power law beyond), of the
+    capacity ag of its deciding checks (the lowest: the action that first brings it to the
+    limit state; DM 58/2017 Allegato A's TR_C). None without a site."""
+    out = {}
+    for ls, demand in dem.items():
+        states = tuple(k for k, v in DEMAND_STATE.items() if v == ls)
+        caps = [c.capacity for c in deciding(checks, states)
+                if c.unit == "g" and c.capacity is not None]  # fmt: skip
+        if demand.hazard is not None and caps:
+            out[ls] = demand.hazard.return_period_of(min(caps))
+    return out or None
 
 
 def analyse_catalogue(

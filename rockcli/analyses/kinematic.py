@@ -12,6 +12,7 @@ from collections.abc import Callable
 from dataclasses import dataclass, replace
 
 from rockcli.codecheck.demand import LimitStateDemand, Spectrum, record_demand
+from rockcli.codecheck.hazard_curve import HazardCurve
 from rockcli.codecheck.result import KinematicResult
 from rockcli.errors import InputError
 from rockcli.model.bounds import MIN_AG
@@ -31,6 +32,7 @@ def code_demand(
     g: float,
     source: str,
     TR: float | None = None,  # noqa: N803 (the code's symbol)
+    hazard: HazardCurve | None = None,
 ) -> LimitStateDemand:
     """The code's elastic spectrum of one limit state, for any ag with F0 and Tc* fixed."""
     from rockcli.codecheck.spectra import ElasticSpectrum, Soil, Topography
@@ -44,6 +46,7 @@ def code_demand(
         source=source,
         at_ag=lambda a: ElasticSpectrum(ag=a, F0=F0, Tc_star=Tc, soil=soil, topography=topo, g=g),
         TR=TR,
+        hazard=hazard,
     )
 
 
@@ -55,12 +58,25 @@ def site_demands(
     from rockcli.codecheck.spectra import LimitState, return_period
 
     grid = read_grid(grid_path(grid_file))
+    hazard = rock_hazard(grid, site)
     out = {}
     for ls in LIMIT_STATES[settings.edition]:
         TR = return_period(settings.VN, settings.CU, LimitState(ls), settings.edition)
         params = site_parameters(grid, site[0], site[1], TR)
-        out[ls] = code_demand(ls, params, settings, g, grid_source(site), TR)
+        out[ls] = code_demand(ls, params, settings, g, grid_source(site), TR, hazard)
     return out
+
+
+def rock_hazard(grid, site: tuple[float, float]) -> HazardCurve | None:
+    """The site's hazard curve of ag on rock through the grid's return periods (None when its
+    ag does not grow with TR: no curve to read a return period from)."""
+    from rockcli.codecheck.hazard import site_parameters
+
+    periods = [float(TR) for TR in grid.return_periods]
+    ag = [site_parameters(grid, site[0], site[1], TR).ag for TR in periods]
+    if not all(b > a for a, b in zip(ag[:-1], ag[1:], strict=True)):
+        return None
+    return HazardCurve(tuple(ag), tuple(1.0 / TR for TR in periods))
 
 
 def given_demands(settings: NtcSettings, g: float) -> dict[str, LimitStateDemand]:

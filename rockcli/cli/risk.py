@@ -14,7 +14,7 @@ from rockcli.cli.options import ASCII_FLOAT, SITE_ALLOWED, hazard_grid, output_f
 
 @click.command(
     "risk", cls=RockCommand,
-    short_help="Annual rate, return period and probability of each damage state of a fragility.",
+    short_help="Annual rate of each damage state of a fragility at a site.",
 )  # fmt: skip
 @click.option("--fragility", "fragility_path", type=InputPath("file"), required=True,
               help="The JSON of `rock fragility` on PGA.")  # fmt: skip
@@ -57,27 +57,47 @@ def risk(fragility_path, site, grid_file, soil, topography, vr, output):
                          allowed=SITE_ALLOWED + ", inside the NTC grid") from None  # fmt: skip
     check_rising(points, soil)
     curve = curve_of(points)
-    entries = [state_entry(s, None if s.median is None or s.beta is None else
-                           damage_rate(curve, s.median, s.beta), vr) for s in states]  # fmt: skip
-    unfitted = [s.name for s in states if s.median is None]
-    notes = tuple(f"{e['name']}: {e['tail_share']:.1%} of λ from PGAs beyond the grid's"
-                  for e in entries if e["tail_share"] is not None)  # fmt: skip
-    if unfitted:
-        notes += (f"not fitted by the fragility, no rate: {', '.join(unfitted)}",)
+    rates = [damage_rate(curve, s.median, s.beta) if s.median and s.beta else None
+             for s in states]  # fmt: skip
+    entries = [state_entry(s, r, vr) for s, r in zip(states, rates, strict=True)]
+    notes = state_notes(states, rates)
     doc = risk_document(fragility_path, (lon, lat), soil, topography, vr, points, entries, notes)
     show(doc, output, risk_report)
 
 
+#: The steepest hazard segment taken as a hazard curve, λ ∝ PGA^−k (the grid's rock curves:
+#: k ≈ 1.5–4; a soft soil's S_S falling almost as fast as ag grows flattens the surface PGA,
+#: so that λ would vanish just above it: no curve to integrate a fragility on).
+STEEPEST = 30.0
+
+
 def check_rising(points, soil: str) -> None:
-    """The surface PGA must grow with the return period (a soft soil's S_S can fall faster
-    than ag grows at high hazard; the curve is then not a hazard curve)."""
+    """The surface PGA must grow with the return period, by more than a power law of
+    STEEPEST (a soft soil's S_S can fall as fast as ag grows at high hazard)."""
     from rockcli.errors import InputError
 
     for a, b in zip(points[:-1], points[1:], strict=True):
-        if not b.pga > a.pga:
+        if not (b.pga > a.pga and math.log(b.TR / a.TR) <= STEEPEST * math.log(b.pga / a.pga)):
             raise InputError(
-                f"the surface PGA ag·S falls from {a.pga:.4g} g at {a.TR:g} years to "
-                f"{b.pga:.4g} g at {b.TR:g} (S_S falls faster than ag grows)",
+                f"the surface PGA ag·S goes from {a.pga:.4g} g at {a.TR:g} years to "
+                f"{b.pga:.4g} g at {b.TR:g} years (S_S falls as fast as ag grows)",
                 where="--soil", value=soil,
                 allowed="a soil whose surface PGA grows with the return period at this site",
             )  # fmt: skip
+
+
+def state_notes(states, rates) -> tuple[str, ...]:
+    """What each state's rate rests on: the tails beyond the grid's points, or nothing."""
+    notes = []
+    for state, rate in zip(states, rates, strict=True):
+        if rate is not None and rate.tails > 0.5:
+            notes.append(f"{state.name}: {rate.tails:.1%} of λ from PGAs beyond the grid's "
+                         "points: the rate rests on the extrapolated hazard curve")  # fmt: skip
+        elif rate is not None:
+            notes.append(f"{state.name}: {rate.tails:.1%} of λ from PGAs beyond the grid's points")
+        elif state.fitted:
+            notes.append(f"{state.name}: no usable rate (beyond e^±700 a year)")
+    unfitted = [s.name for s in states if not s.fitted]
+    if unfitted:
+        notes.append(f"not fitted by the fragility, no rate: {', '.join(unfitted)}")
+    return tuple(notes)

@@ -15,6 +15,7 @@ from typing import Protocol
 
 import numpy as np
 
+from rockcli.codecheck.hazard_curve import HazardCurve
 from rockcli.searches import brent_root
 
 #: Root search bounds on ag [g] for the 2019 capacities (beyond, the capacity is reported as
@@ -102,6 +103,8 @@ class LimitStateDemand:
         TR: the return period the parameters belong to [years]; None when the model gives
             the parameters directly, or for a record.
         record: the record's name when the demand is a record, None for the code spectrum.
+        hazard: the site's hazard curve of ag on rock through the grid's return periods,
+            when the demand comes from a site (the return period a capacity ag bears).
     """
 
     limit_state: str
@@ -111,6 +114,7 @@ class LimitStateDemand:
     parameters: tuple[float, float, float] | None = None
     TR: float | None = None
     record: str | None = None
+    hazard: HazardCurve | None = None
 
     @property
     def spectrum(self) -> Spectrum:

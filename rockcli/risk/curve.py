@@ -12,12 +12,15 @@ between 975 and 2475 years (the tails; the rate of a damage state says how much 
 from them).
 
 The annual rate of a damage state of a lognormal fragility (median θ, dispersion β) is the
-total probability λ_DS = ∫ P(DS | im)·|dλ(im)| (Cornell et al. 2002), computed as the
-expectation of λ over the capacity's lognormal distribution (integration by parts:
-λ_DS = ∫ λ(im)·f_C(im) dim, f_C the lognormal density), by adaptive quadrature in
-x = ln im with the curve's kinks as break points, over μ ± 12β (the rest below 1e-30 of the
-total). Beside it the closed form k0·θ^−k·exp(k²β²/2) of a hazard curve k0·im^−k through
-the grid segment that holds the median (the tangent's secant), and their ratio.
+total probability λ_DS = ∫ P(DS | im)·|dλ(im)| (Cornell et al. 2002), by parts the
+expectation of λ over the capacity's lognormal distribution, λ_DS = ∫ λ(im)·f_C(im) dim
+(the boundary terms vanish: Φ·λ → 0 at both ends). On each segment λ = exp(y_j − k_j(x −
+x_j)) in x = ln im, so the integral has a closed form, segment by segment (completing the
+square): exp(y_j + k_j(x_j − μ) + k_j²β²/2)·[Φ(b_j + k_jβ) − Φ(a_j + k_jβ)], a_j and b_j the
+segment's ends in (x − μ)/β, the first from −∞ and the last to +∞. Summed in log space
+(log Φ differences, log-sum-exp): exact for this curve and bounded whatever θ and β. Beside it
+the closed form k0·θ^−k·exp(k²β²/2) of a hazard curve k0·im^−k through the grid segment
+that holds the median, and their ratio (None where it overflows).
 
 Pure and silent: numpy, scipy and math.
 """
@@ -29,46 +32,10 @@ from dataclasses import dataclass
 
 import numpy as np
 
-#: How far either side of the median the integral of a damage state's rate goes [β].
-SPAN_BETAS = 12.0
+from rockcli.codecheck.hazard_curve import HazardCurve
 
-
-@dataclass(frozen=True)
-class HazardCurve:
-    """The site's λ(im) through its points (im ascending, λ descending).
-
-    Attributes:
-        im: the surface PGA at each grid return period [g], ascending.
-        rate: 1/TR at each [1/year], descending.
-    """
-
-    im: tuple[float, ...]
-    rate: tuple[float, ...]
-
-    def slopes(self) -> np.ndarray:
-        """k of each segment, λ ∝ im^−k, and of the two tails (first and last segment's)."""
-        x, y = np.log(self.im), np.log(self.rate)
-        return -np.diff(y) / np.diff(x)
-
-    def rate_at(self, im: float | np.ndarray) -> np.ndarray:
-        """λ(im) [1/year]: log–log between the points, the end segments' power law beyond."""
-        x, y = np.log(np.asarray(self.im)), np.log(np.asarray(self.rate))
-        k = self.slopes()
-        q = np.log(np.asarray(im, dtype=float))
-        seg = np.clip(np.searchsorted(x, q) - 1, 0, len(k) - 1)
-        return np.exp(y[seg] - k[seg] * (q - x[seg]))
-
-    def return_period_of(self, im: float) -> float:
-        """The return period [years] of the surface PGA ``im``: 1/λ(im)."""
-        return float(1.0 / self.rate_at(im))
-
-    def local_power_law(self, im: float) -> tuple[float, float]:
-        """(k0, k) of λ = k0·im^−k through the segment that holds ``im`` (an end
-        segment beyond the points)."""
-        x, y = np.log(np.asarray(self.im)), np.log(np.asarray(self.rate))
-        k = self.slopes()
-        seg = int(np.clip(np.searchsorted(x, math.log(im)) - 1, 0, len(k) - 1))
-        return float(math.exp(y[seg] + k[seg] * x[seg])), float(k[seg])
+#: The largest log-rate a result may have (a rate of e^700 a year is no rate).
+LOG_RATE_MAX = 700.0
 
 
 @dataclass(frozen=True)
@@ -91,14 +58,15 @@ def site_points(grid, lon: float, lat: float, soil: str, topography: str) -> tup
     """The site's hazard at the grid's nine return periods (DM 14/01/2008 Allegati A–B, in
     space as Allegato A interpolates), S = S_S(soil, ag, F0)·S_T(topography) (NTC 2018
     §3.2.3.2.1, Tabb. 3.2.V–VI) at each."""
+    from rockcli.codecheck.categories import Soil, Topography
     from rockcli.codecheck.hazard import site_parameters
     from rockcli.codecheck.spectra import soil_amplification, topographic_amplification
 
-    s_t = topographic_amplification(topography)  # type: ignore[arg-type]
+    s_t = topographic_amplification(Topography(topography))
     out = []
     for TR in grid.return_periods:
         ag, F0, _ = site_parameters(grid, lon, lat, float(TR))
-        out.append(SitePoint(float(TR), ag, F0, soil_amplification(soil, ag, F0) * s_t))  # type: ignore[arg-type]
+        out.append(SitePoint(float(TR), ag, F0, soil_amplification(Soil(soil), ag, F0) * s_t))
     return tuple(out)
 
 
@@ -112,14 +80,14 @@ class DamageRate:
     """The annual rate of a damage state and what it means.
 
     Attributes:
-        rate: λ_DS [1/year] by integration. closed_form: k0·θ^−k·exp(k²β²/2) [1/year].
+        rate: λ_DS [1/year]. closed_form: k0·θ^−k·exp(k²β²/2) [1/year] (None: overflows).
         k0, k: the power law of the closed form. median_rate: λ(θ) [1/year].
         tails: the share of λ_DS from intensities beyond the grid's points (∫ P·|dλ| there,
             over λ_DS) [-].
     """
 
     rate: float
-    closed_form: float
+    closed_form: float | None
     k0: float
     k: float
     median_rate: float
@@ -135,47 +103,68 @@ class DamageRate:
         return -math.expm1(-self.rate * years)
 
 
-def damage_rate(curve: HazardCurve, median: float, beta: float) -> DamageRate:
+def log_phi_between(a: float, b: float) -> float:
+    """log(Φ(b) − Φ(a)) for a < b, accurate in both tails (−inf when it underflows)."""
+    from scipy.special import log_ndtr
+
+    if a > 0.0:  # Φ(b) − Φ(a) = Φ(−a) − Φ(−b): the small upper tails
+        a, b = -b, -a
+    lb, la = float(log_ndtr(b)), float(log_ndtr(a))
+    return lb + math.log1p(-math.exp(la - lb)) if la < lb else -math.inf
+
+
+def segment_terms(curve: HazardCurve, mu: float, beta: float) -> list[float]:
+    """log ∫ λ·f_C over each segment of the curve (module docstring), the first from −∞ and
+    the last to +∞."""
+    x, y = np.log(curve.im), np.log(curve.rate)
+    k = curve.slopes()
+    edges = [-math.inf, *x[1:-1].tolist(), math.inf]
+    return [
+        float(y[j] + k[j] * (x[j] - mu) + 0.5 * (k[j] * beta) ** 2)
+        + log_phi_between(
+            (edges[j] - mu) / beta + k[j] * beta, (edges[j + 1] - mu) / beta + k[j] * beta
+        )  # fmt: skip
+        for j in range(len(k))
+    ]
+
+
+def log_damage_rate(curve: HazardCurve, median: float, beta: float) -> float:
+    """log λ_DS [log 1/year] of a lognormal fragility on ``curve``."""
+    from scipy.special import logsumexp
+
+    return float(logsumexp(segment_terms(curve, math.log(median), beta)))
+
+
+def damage_rate(curve: HazardCurve, median: float, beta: float) -> DamageRate | None:
     """λ_DS of a lognormal fragility (median θ [g], dispersion β) on ``curve`` (module
-    docstring)."""
-    from scipy.integrate import quad
-
-    mu = math.log(median)
-    lo, hi = mu - SPAN_BETAS * beta, mu + SPAN_BETAS * beta
-    kinks = [x for x in np.log(curve.im) if lo < x < hi]
-
-    def integrand(x: float) -> float:
-        z = (x - mu) / beta
-        return (
-            float(curve.rate_at(math.exp(x)))
-            * math.exp(-0.5 * z * z)
-            / (beta * math.sqrt(2.0 * math.pi))
-        )
-
-    edges = [lo, *kinks, hi]
-    pieces = [quad(integrand, a, b, epsabs=0.0, epsrel=1e-11, limit=200)[0]
-              for a, b in zip(edges[:-1], edges[1:], strict=True)]  # fmt: skip
-    rate = math.fsum(pieces)
+    docstring); None when it is not a usable rate (beyond e^±700 a year)."""
+    log_rate = log_damage_rate(curve, median, beta)
+    if not -LOG_RATE_MAX < log_rate < LOG_RATE_MAX:
+        return None
+    rate = math.exp(log_rate)
     k0, k = curve.local_power_law(median)
-    closed = k0 * median**-k * math.exp(0.5 * k * k * beta * beta)
-    return DamageRate(rate, closed, k0, k, float(curve.rate_at(median)),
-                      tail_share(curve, mu, beta) / rate)  # fmt: skip
+    log_closed = math.log(k0) - k * math.log(median) + 0.5 * k * k * beta * beta
+    closed = math.exp(log_closed) if abs(log_closed) < LOG_RATE_MAX else None
+    share = tail_rate(curve, math.log(median), beta) / rate
+    return DamageRate(rate, closed, k0, k, float(curve.rate_at(median)), min(max(share, 0.0), 1.0))
 
 
-def tail_share(curve: HazardCurve, mu: float, beta: float) -> float:
-    """∫ P(DS | im)·|dλ| over the intensities beyond the grid's points [1/year]: below the
-    30-year PGA and above the 2475-year one, where the curve is extrapolated."""
-    from scipy.integrate import quad
+def tail_rate(curve: HazardCurve, mu: float, beta: float) -> float:
+    """∫ P(DS | im)·|dλ| over the intensities beyond the grid's points [1/year], by parts:
+    below the first, I_0(−∞, x_0) − Φ(z_0)·λ_0; above the last, I_last(x_last, ∞) +
+    Φ(z_last)·λ_last (I the segments' closed forms, z = (x − μ)/β)."""
     from scipy.special import ndtr
 
-    slopes = curve.slopes()
-    x = np.log(curve.im)
+    x, y = np.log(curve.im), np.log(curve.rate)
+    k = curve.slopes()
+    z0, z8 = (x[0] - mu) / beta, (x[-1] - mu) / beta
 
-    def density(t: float, k: float) -> float:  # P(DS | e^t)·|dλ/dt|
-        return float(ndtr((t - mu) / beta)) * k * float(curve.rate_at(math.exp(t)))
+    def piece(j: int, lo: float, hi: float) -> float:
+        log_i = float(y[j] + k[j] * (x[j] - mu) + 0.5 * (k[j] * beta) ** 2) + log_phi_between(
+            lo + k[j] * beta, hi + k[j] * beta
+        )
+        return math.exp(min(log_i, LOG_RATE_MAX))
 
-    below_from = min(x[0], mu - SPAN_BETAS * beta)
-    below = quad(density, below_from, x[0], args=(slopes[0],), epsrel=1e-10)[0]
-    above_to = x[-1] + 60.0 / slopes[-1]  # λ down by e^−60
-    above = quad(density, x[-1], above_to, args=(slopes[-1],), epsrel=1e-10, limit=200)[0]
-    return below + above
+    below = piece(0, -math.inf, z0) - float(ndtr(z0)) * curve.rate[0]
+    above = piece(len(k) - 1, z8, math.inf) + float(ndtr(z8)) * curve.rate[-1]
+    return max(below, 0.0) + above

@@ -1,6 +1,6 @@
-"""A fragility document read at the edge: the damage states of `rock fragility` or
-`rock fragility fit` output (their JSON contract: rockcli.studies.fragility.results,
-rockcli.terminal.fragility), for the annual rate of each on a site's hazard.
+"""A fragility document read at the edge: the damage states of `rock fragility` output (its
+JSON contract: rockcli.studies.fragility.results), for the annual rate of each on a site's
+hazard. (`rock fragility fit` writes "im": "im", a measure it cannot know: refused.)
 
 Only a fragility on the peak ground acceleration can be put on the NTC hazard, whose grid
 gives ag (and, with the soil, the surface PGA): ``"im": "pga"``. Every other measure is
@@ -15,6 +15,7 @@ from dataclasses import dataclass
 from typing import Any
 
 from rockcli.errors import InputError
+from rockcli.studies.fragility.study import MAX_INTENSITY, Measure
 from rockcli.textfile import TOML_LIMIT, read_text
 
 #: The intensity measures whose hazard the NTC grid gives.
@@ -23,11 +24,11 @@ ACCEPTED_IM = ("pga",)
 FRAGILITY_LIMIT = 16 * TOML_LIMIT
 #: The most damage states read (a study's points × states).
 MAX_STATES = 1000
-#: Bounds of a median [g] and of a dispersion [-] taken as a fragility.
-MEDIAN_MAX = 1e4
+#: Bounds of a median [g] (the largest PGA a fragility study may name) and of a dispersion.
+MEDIAN_MAX = MAX_INTENSITY[Measure.PGA]
 BETA_MAX = 5.0
 
-ACCEPTED_TEXT = 'the JSON of `rock fragility` on PGA ([intensity] measure = "pga"; "im": "pga")'
+ACCEPTED_TEXT = 'the JSON of `rock fragility` with [intensity] measure = "pga"'
 
 
 @dataclass(frozen=True)
@@ -38,6 +39,11 @@ class FragilityState:
     median: float | None
     beta: float | None
     point: str = ""
+
+    @property
+    def fitted(self) -> bool:
+        """The fragility gives its median and dispersion."""
+        return self.median is not None and self.beta is not None
 
 
 def read_fragility(path: str) -> tuple[FragilityState, ...]:
@@ -56,11 +62,11 @@ def read_fragility(path: str) -> tuple[FragilityState, ...]:
     im = doc.get("im")
     if im not in ACCEPTED_IM:
         raise InputError(
-            "the fragility's intensity is not the peak ground acceleration the hazard grid gives",
+            "no im key" if im is None else "the intensity is not the PGA the hazard grid gives",
             file=path,
             where="im",
             value=im,
-            allowed="one of: " + ", ".join(ACCEPTED_IM) + f" ({ACCEPTED_TEXT})",
+            allowed=f"one of: {', '.join(ACCEPTED_IM)}: {ACCEPTED_TEXT}",
         )
     states = doc["damage_states"]
     if not states or len(states) > MAX_STATES:
@@ -76,8 +82,8 @@ def _state(path: str, k: int, entry: Any) -> FragilityState:
     name = entry.get("name")
     if not isinstance(name, str) or not name:
         raise InputError("no name", file=path, where=f"{where}.name", allowed="a text")
-    median, beta = entry.get("median"), entry.get("beta")
-    if median is None or beta is None:  # the study could not fit it: said in the output
+    median, beta = entry.get("median", "missing"), entry.get("beta", "missing")
+    if median is None and beta is None:  # the study could not fit it: said in the output
         return FragilityState(name, None, None, _point(entry))
     _bounded(path, f"{where}.median", median, MEDIAN_MAX, "g")
     _bounded(path, f"{where}.beta", beta, BETA_MAX, "")
@@ -86,7 +92,11 @@ def _state(path: str, k: int, entry: Any) -> FragilityState:
 
 def _bounded(path: str, where: str, value: Any, high: float, unit: str) -> None:
     ok = isinstance(value, (int, float)) and not isinstance(value, bool)
-    if not ok or not (math.isfinite(value) and 0.0 < value <= high):
+    try:
+        ok = ok and math.isfinite(float(value)) and 0.0 < float(value) <= high
+    except OverflowError:  # an integer of hundreds of digits
+        ok = False
+    if not ok:
         bound = f"a number in (0, {high:g}]" + (f" {unit}" if unit else "")
         raise InputError("not usable", file=path, where=where, value=value, allowed=bound)
 

@@ -62,6 +62,7 @@ def kinematic_document(
         doc["mechanisms"] = [catalogue_entry(m) for m in result.catalogue]
         doc["governing"] = result.governing
         doc["mechanism"] = chosen.mechanism or result.governing
+        doc["T_Rc"] = next(m.T_Rc for m in result.catalogue if m.name == doc["mechanism"])
     return doc
 
 
@@ -88,6 +89,7 @@ def catalogue_entry(m: Any) -> dict[str, Any]:
         "a0_star": r.a0_star,
         "d0_star": r.d0_star,
         "zeta": {"DLS": m.zeta_dls, "ULS": m.zeta_uls},
+        "T_Rc": m.T_Rc,
         "virtual_work": [work_document(t) for t in r.work_by_side.get(str(r.side), ())],
         "checks": [check_document(c, r.edition) for c in r.checks],
         "verdict": r.verdict(),
@@ -326,6 +328,27 @@ def catalogue_reports(doc: dict[str, Any], all_mechanisms: bool) -> list[Report]
     return [head, first]
 
 
+#: The grid's first and last return periods [years] (DM 14/01/2008, Allegato B).
+GRID_SPAN = (30.0, 2475.0)
+
+
+def return_period_notes(T_Rc: dict[str, float] | None) -> tuple[str, ...]:  # noqa: N803
+    """How T_Rc was read from the site's hazard, and which lie beyond the grid's periods."""
+    if not T_Rc:
+        return ()
+    outside = [f"{ls} {years:.4g} years" for ls, years in T_Rc.items()
+               if not GRID_SPAN[0] <= years <= GRID_SPAN[1]]  # fmt: skip
+    text = (
+        "T_Rc: the return period whose ag at the site (the grid's, log–log between its "
+        "30–2475 years as Allegato A interpolates) equals the capacity ag of the limit "
+        "state's deciding checks"
+    )
+    if outside:
+        text += ("; beyond the grid's periods, extrapolated with the power law of its end "
+                 "segment (30–50 or 975–2475 years): " + ", ".join(outside))  # fmt: skip
+    return (text,)
+
+
 def kinematic_report(doc: dict[str, Any]) -> Report:
     """The terminal report of a kinematic document."""
     edition = EDITION_TEXT[doc["edition"]]
@@ -343,6 +366,10 @@ def kinematic_report(doc: dict[str, Any]) -> Report:
             for key, (label, unit) in QUANTITIES.items()
             if key in doc
         ),
+        *(
+            (f"return period of the capacity T_Rc,{ls}", years, "years", "{:.4g}")
+            for ls, years in (doc.get("T_Rc") or {}).items()
+        ),
     ]
     demand = demand_table(doc["demand"])
     actions = doc.get("restrainer_actions", [])
@@ -359,6 +386,7 @@ def kinematic_report(doc: dict[str, Any]) -> Report:
     )
     notes = [
         *doc["notes"],
+        *return_period_notes(doc.get("T_Rc")),
         *action_notes(actions),
         *(
             f"demand {demand_line(ls, numbers, spectral=True)}"

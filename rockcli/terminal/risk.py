@@ -25,7 +25,7 @@ NOTES = (
     "λ = ∫ P(DS | PGA)·|dλ(PGA)|: the hazard curve of the surface PGA through the grid's nine "
     "return periods (30–2475 years), log–log between them as DM 14/01/2008 Allegato A "
     "interpolates ag, and beyond them the power law of the end segment (30–50 and 975–2475 "
-    "years); tail share: the part of λ from intensities beyond the grid's",
+    "years); tail share: the part of λ from intensities beyond the grid's points",
     "closed form k0·θ^−k·exp(k²β²/2) (Cornell et al. 2002) with k0, k of the grid segment "
     "that holds the median; its ratio to λ says how far the hazard curve bends there",
     "P in t years = 1 − exp(−λ·t) (Poisson)",
@@ -46,7 +46,7 @@ def state_entry(state: FragilityState, rate: DamageRate | None, vr: float) -> di
         "p50": rate.probability_in(FIFTY),
         "p_VR": rate.probability_in(vr),
         "closed_form_rate": rate.closed_form,
-        "closed_form_ratio": rate.closed_form / rate.rate,
+        "closed_form_ratio": None if rate.closed_form is None else rate.closed_form / rate.rate,
         "k0": rate.k0,
         "k": rate.k,
         "median_return_period": 1.0 / rate.median_rate,
@@ -79,18 +79,23 @@ HAZARD_COLUMNS = (
 
 
 def state_columns(vr: float) -> tuple[Column, ...]:
-    """The damage states' table: the fragility, then its rates."""
-    return (
-        Column("name", "damage state"),
-        Column("median", "median θ", "g", "{:.4g}", short="θ"),
-        Column("beta", "β", "", "{:.3f}"),
-        Column("annual_rate", "λ", "1/year", "{:.4g}"),
-        Column("return_period", "1/λ", "years", "{:.4g}"),
-        Column("p50", "P in 50 years", "", "{:.4f}", short="P50"),
-        Column("p_VR", f"P in V_R = {vr:g} years", "", "{:.4f}", short="P_VR"),
-        Column("closed_form_rate", "closed form", "1/year", "{:.4g}"),
-        Column("closed_form_ratio", "closed/λ", "", "{:.3f}"),
-        Column("median_return_period", "TR of θ", "years", "{:.4g}"),
+    """The damage states' table: the fragility, then its rates (V_R's column when it is not
+    50 years)."""
+    return tuple(
+        c
+        for c in (
+            Column("name", "damage state"),
+            Column("median", "median θ", "g", "{:.4g}", short="θ"),
+            Column("beta", "β", "", "{:.3f}"),
+            Column("annual_rate", "λ", "1/year", "{:.4g}"),
+            Column("return_period", "1/λ", "years", "{:.4g}"),
+            Column("p50", "P in 50 years", "", "{:.4f}", short="P50"),
+            Column("p_VR", f"P in V_R = {vr:g} years", "", "{:.4f}", short="P_VR"),
+            Column("closed_form_rate", "closed form", "1/year", "{:.4g}"),
+            Column("closed_form_ratio", "closed/λ", "", "{:.3f}"),
+            Column("median_return_period", "TR of θ", "years", "{:.4g}"),
+        )
+        if c.key != "p_VR" or vr != FIFTY
     )
 
 

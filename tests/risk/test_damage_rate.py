@@ -39,7 +39,8 @@ def grid_or_skip() -> Path:
 
 
 @pytest.mark.parametrize(("k", "theta", "beta"), [(2.9, 0.3, 0.35), (1.8, 0.05, 0.6),
-                                                  (3.5, 1.2, 0.2)])  # fmt: skip
+                                                  (3.5, 1.2, 0.2), (2.5, 0.3, 4.0),
+                                                  (3.0, 50.0, 1e-6)])  # fmt: skip
 def test_a_power_law_curve_gives_the_closed_form(k: float, theta: float, beta: float) -> None:
     k0 = 1e-4
     im = tuple(np.geomspace(0.01, 2.0, 9))
@@ -139,6 +140,10 @@ GOOD = '{"im": "pga", "damage_states": [{"name": "a", "median": 0.3, "beta": 0.3
         ('{"im": "pga", "damage_states": [{"median": 0.3, "beta": 0.3}]}',
          ("damage_states[0].name",)),
         ("not json", ("not JSON",)),
+        (GOOD.replace("0.3,", "1" + "0" * 400 + ",", 1), ("damage_states[0].median",)),
+        ('{"im": "pga", "damage_states": [{"name": "a", "median": 0.3}]}',
+         ("damage_states[0].beta",)),
+        ('{"damage_states": []}', ("no im key",)),
         ("[" * 100_000 + "]" * 100_000, ("not JSON",)),
     ],
 )  # fmt: skip
@@ -168,3 +173,25 @@ def test_a_deeply_nested_file_under_limits(tmp_path: Path) -> None:
                     memory=2 << 30, timeout=60)  # fmt: skip
     assert done.code == 2, done.err
     assert len(done.err.strip().splitlines()) == 1 and "not JSON" in done.err
+
+
+@pytest.mark.parametrize(
+    ("site", "soil"),
+    [("14.963,41.676", "D"), ("15.004,37.774", "E")],
+)
+def test_a_soil_whose_surface_pga_flattens_is_refused(tmp_path: Path, site: str, soil: str) -> None:
+    """Where S_S falls almost as fast as ag grows the surface PGA saturates (a segment of
+    λ ∝ PGA^−17764 on soil D): no hazard curve to put a fragility on."""
+    grid_or_skip()
+    line = bad(tmp_path, GOOD, "--site", site, "--soil", soil)
+    assert "--soil" in line and "S_S" in line
+
+
+def test_a_wide_fragility_says_its_rate_rests_on_the_tails(tmp_path: Path) -> None:
+    doc = run_json(tmp_path, [{"name": "wide", "median": 0.3, "beta": 4.0},
+                              {"name": "far", "median": 9.0, "beta": 0.05}])  # fmt: skip
+    wide, far = doc["damage_states"]
+    assert 0.5 < wide["tail_share"] <= 1.0 and 0.99 < far["tail_share"] <= 1.0
+    assert any("wide" in n and "extrapolated" in n for n in doc["notes"])
+    for state in (wide, far):  # finite, valid JSON: the exact sum of the segments
+        assert math.isfinite(state["annual_rate"]) and state["annual_rate"] > 0.0
