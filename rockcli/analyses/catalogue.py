@@ -17,6 +17,7 @@ from dataclasses import dataclass, replace
 from rockcli.analyses.capacity_check import analyse_capacity
 from rockcli.codecheck.demand import LimitStateDemand
 from rockcli.codecheck.free import MASONRY_TYPES, elastic_period
+from rockcli.codecheck.hazard_curve import HazardCurve
 from rockcli.codecheck.kinematic import Capacity, Mechanism, alpha0, capacity
 from rockcli.codecheck.position import Position, position
 from rockcli.codecheck.result import KinematicResult, deciding
@@ -99,6 +100,10 @@ class MechanismResult:
         arch: a horizontal flexure's arch: its thrust and stress block (None: another type).
         T_Rc: the return period of the action that brings it to each limit state [years]
             (:func:`return_periods`; None: the demand is not a site's).
+        pga_SLV: (PGA_C, PGA_D) at the SLV: the ground's peak acceleration ag·S of the
+            capacity ag of its deciding checks and of the demand [g] (:func:`pga_at_slv`;
+            None: the demand is not the code's spectrum, or no capacity ag).
+        hazard: the hazard curve T_Rc was read on (None: none).
     """
 
     name: str
@@ -110,6 +115,8 @@ class MechanismResult:
     friction: Friction | None = None
     arch: Arch | None = None
     T_Rc: dict[str, float] | None = None
+    pga_SLV: tuple[float, float] | None = None
+    hazard: HazardCurve | None = None
 
     def zeta(self, states: tuple[str, ...]) -> float | None:
         """ζ_E of these limit states: the lowest capacity/demand of the deciding checks
@@ -277,7 +284,9 @@ def analyse_mechanism(
     return MechanismResult(mech.name, mech.type.value, mech.hinge_height, mech.storey,
                            participating_mass(cap.mech),
                            replace(result, mechanism=mech.name), friction, arch,
-                           return_periods(result.checks, dem))  # fmt: skip
+                           return_periods(result.checks, dem),
+                           pga_at_slv(result.checks, dem),
+                           next((d.hazard for d in dem.values() if d.hazard), None))  # fmt: skip
 
 
 #: The demand's limit state of each check's (2009 calls SLD and SLV its DLS and ULS).
@@ -298,6 +307,20 @@ def return_periods(checks, dem: dict[str, LimitStateDemand]) -> dict[str, float]
         if demand.hazard is not None and caps:
             out[ls] = demand.hazard.return_period_of(min(caps))
     return out or None
+
+
+def pga_at_slv(checks, dem: dict[str, LimitStateDemand]) -> tuple[float, float] | None:
+    """(PGA_C, PGA_D) at the SLV [g]: the peak ground acceleration ag·S (S = S_S·S_T of the
+    soil at that ag, NTC 2018 §3.2.3.2.1) of the lowest capacity ag of the SLV's deciding checks
+    and of the demand's ag: the two terms of DM 58/2017 Allegato A's IS-V = PGA_C/PGA_D
+    (rockcli.risk.classification). None for a record's demand (not the code's spectrum) or
+    without a capacity ag (2009: the checks are not in ag)."""
+    demand = dem.get("SLV")
+    caps = [c.capacity for c in deciding(checks, ("SLV",))
+            if c.unit == "g" and c.capacity is not None]  # fmt: skip
+    if demand is None or demand.parameters is None or not caps:
+        return None
+    return demand.at_ag(min(caps)).pga_ground, demand.spectrum.pga_ground
 
 
 def analyse_catalogue(

@@ -84,7 +84,9 @@ def rock_hazard(grid, lon: float, lat: float) -> HazardCurve | None:
 
 
 def given_demands(settings: NtcSettings, g: float) -> dict[str, LimitStateDemand]:
-    """Each limit state's spectrum from the model's [ntc.demand.*] parameters."""
+    """Each limit state's spectrum from the model's [ntc.demand.*] parameters, with the hazard
+    curve through them (:func:`given_hazard`)."""
+    hazard = given_hazard(settings)
     out = {}
     for ls in LIMIT_STATES[settings.edition]:
         if ls not in settings.demand:
@@ -93,8 +95,31 @@ def given_demands(settings: NtcSettings, g: float) -> dict[str, LimitStateDemand
                 where=f"ntc.demand.{ls}",
                 allowed="ag [g], F0, Tc_star [s]",
             )
-        out[ls] = code_demand(ls, settings.demand[ls], settings, g, f"[ntc.demand.{ls}]")
+        source = f"[ntc.demand.{ls}]"
+        out[ls] = code_demand(ls, settings.demand[ls], settings, g, source, hazard=hazard)
     return out
+
+
+def given_hazard(settings: NtcSettings) -> HazardCurve | None:
+    """The hazard curve of ag through the model's own [ntc.demand.*]: each limit state's ag
+    at its return period TR = −V_R/ln(1 − P_VR) (NTC 2018 §3.2.1, Tab. 3.2.I; V_R = VN·CU),
+    the points of the site's hazard the model's author read them from (the T_Rc of a
+    capacity, log–log between them as Allegato A interpolates). None for the 2009 edition
+    (its checks are not in ag), with fewer than two limit states, or where ag does not grow
+    with TR (docs/interpretations.md)."""
+    from rockcli.codecheck.spectra import LimitState, return_period
+
+    if settings.edition != "2019":
+        return None
+    points = sorted(
+        (return_period(settings.VN, settings.CU, LimitState(ls), settings.edition), p[0])
+        for ls, p in settings.demand.items()
+    )
+    pairs = zip(points[:-1], points[1:], strict=True)
+    if len(points) < 2 or not all(b[1] > a[1] and b[0] > a[0] for a, b in pairs):
+        return None
+    return HazardCurve(tuple(ag for _, ag in points), tuple(1.0 / TR for TR, _ in points),
+                       "model")  # fmt: skip
 
 
 def demands(

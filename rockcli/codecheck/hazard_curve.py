@@ -22,10 +22,19 @@ class HazardCurve:
     Attributes:
         im: the intensity at each grid return period [g], ascending.
         rate: 1/TR at each [1/year], descending.
+        source: where the points come from: "grid" (the hazard grid's return periods at a
+            site) or "model" (the ag the model gives each limit state, at the limit state's
+            return period from V_R).
     """
 
     im: tuple[float, ...]
     rate: tuple[float, ...]
+    source: str = "grid"
+
+    @property
+    def periods(self) -> tuple[float, ...]:
+        """The return periods of the points [years], ascending."""
+        return tuple(1.0 / r for r in self.rate)
 
     def slopes(self) -> np.ndarray:
         """k of each segment, λ ∝ im^−k, and of the two tails (first and last segment's)."""

@@ -62,8 +62,19 @@ def kinematic_document(
         doc["mechanisms"] = [catalogue_entry(m) for m in result.catalogue]
         doc["governing"] = result.governing
         doc["mechanism"] = chosen.mechanism or result.governing
-        doc["T_Rc"] = next(m.T_Rc for m in result.catalogue if m.name == doc["mechanism"])
+        shown = next(m for m in result.catalogue if m.name == doc["mechanism"])
+        doc["T_Rc"] = shown.T_Rc
+        doc["T_Rc_hazard"] = hazard_document(shown.hazard if shown.T_Rc else None)
     return doc
+
+
+def hazard_document(curve) -> dict[str, Any] | None:
+    """The hazard curve T_Rc was read on: where its points come from ("grid": the hazard
+    grid at the site; "model": the ag of the model's [ntc.demand.*] at their return periods),
+    their return periods [years] and ag [g]."""
+    if curve is None:
+        return None
+    return {"source": curve.source, "TR": list(curve.periods), "ag": list(curve.im)}
 
 
 def chosen_result(result: KinematicResult, mechanism: str | None) -> KinematicResult:
@@ -328,24 +339,29 @@ def catalogue_reports(doc: dict[str, Any], all_mechanisms: bool) -> list[Report]
     return [head, first]
 
 
-#: The grid's first and last return periods [years] (DM 14/01/2008, Allegato B).
-GRID_SPAN = (30.0, 2475.0)
-
-
-def return_period_notes(T_Rc: dict[str, float] | None) -> tuple[str, ...]:  # noqa: N803
-    """How T_Rc was read from the site's hazard, and which lie beyond the grid's periods."""
-    if not T_Rc:
+def return_period_notes(T_Rc: dict[str, float] | None,  # noqa: N803
+                        hazard: dict[str, Any] | None) -> tuple[str, ...]:  # fmt: skip
+    """How T_Rc was read from the site's hazard, and which lie beyond its points."""
+    if not T_Rc or not hazard:
         return ()
+    first, last = hazard["TR"][0], hazard["TR"][-1]
     outside = [f"{ls} {years:.4g} years" for ls, years in T_Rc.items()
-               if not GRID_SPAN[0] <= years <= GRID_SPAN[1]]  # fmt: skip
+               if not first <= years <= last]  # fmt: skip
+    points = (
+        f"the grid's points at the site, {first:.4g}–{last:.4g} years"
+        if hazard["source"] == "grid"
+        else "the ag the model gives each limit state, at its return period: "
+        + ", ".join(f"{TR:.4g}" for TR in hazard["TR"])
+        + " years ([ntc.site] reads the grid's nine points)"
+    )
     text = (
-        "T_Rc: the return period whose ag at the site (the grid's, log–log between its "
-        "30–2475 years as Allegato A interpolates) equals the capacity ag of the limit "
-        "state's deciding checks"
+        f"T_Rc: the return period whose ag equals the capacity ag of the limit state's deciding "
+        f"checks, on the hazard curve through {points}, log–log between them as Allegato A "
+        "interpolates"
     )
     if outside:
-        text += ("; beyond the grid's periods, extrapolated with the power law of its end "
-                 "segment (30–50 or 975–2475 years): " + ", ".join(outside))  # fmt: skip
+        text += (f"; beyond {first:.4g}–{last:.4g} years, extrapolated with the power law of "
+                 "the end segment: " + ", ".join(outside))  # fmt: skip
     return (text,)
 
 
@@ -386,7 +402,7 @@ def kinematic_report(doc: dict[str, Any]) -> Report:
     )
     notes = [
         *doc["notes"],
-        *return_period_notes(doc.get("T_Rc")),
+        *return_period_notes(doc.get("T_Rc"), doc.get("T_Rc_hazard")),
         *action_notes(actions),
         *(
             f"demand {demand_line(ls, numbers, spectral=True)}"

@@ -81,9 +81,37 @@ def test_the_2009_checks_give_no_capacity_ag_so_no_return_period() -> None:
     assert doc["T_Rc"] is None and all(m["T_Rc"] is None for m in doc["mechanisms"])
 
 
-def test_without_a_site_there_is_no_return_period() -> None:
+def test_without_a_site_the_model_s_own_demand_is_the_hazard() -> None:
+    """[ntc.demand]'s ag at each limit state's return period, TR = −V_R/ln(1 − P_VR) (NTC 2018
+    Tab. 3.2.I, V_R = 50 years: SLD 63 %, SLV 10 %, SLC 5 %), are three points of the site's
+    hazard: T_Rc of a capacity ag is read log–log between them, the end segments beyond."""
     result = CliRunner().invoke(cli, ["kinematic", str(FACADE), "--format", "json"])
     assert result.exit_code == 0, result.output
     doc = json.loads(result.output)
-    assert doc["T_Rc"] is None
+    periods = [-50.0 / math.log(1.0 - p) for p in (0.63, 0.10, 0.05)]
+    ag = [0.06, 0.15, 0.19]  # the model's [ntc.demand.SLD/SLV/SLC]
+    assert doc["T_Rc_hazard"] == {"source": "model", "TR": pytest.approx(periods, rel=1e-12),
+                                  "ag": ag}  # fmt: skip
+
+    def inverse3(capacity: float) -> float:
+        k = 0 if capacity <= ag[1] else 1
+        return periods[k] * (periods[k + 1] / periods[k]) ** (
+            math.log(capacity / ag[k]) / math.log(ag[k + 1] / ag[k]))
+
+    for m in doc["mechanisms"]:
+        for ls, years in m["T_Rc"].items():
+            capacity = deciding_capacity(m["checks"], STATES[ls])
+            assert years == pytest.approx(inverse3(capacity), rel=1e-9), (m["name"], ls)
+
+
+def test_a_record_s_demand_has_no_return_period() -> None:
+    record = ROOT.parent / "shared" / "records"
+    files = sorted(record.glob("*.AT2")) if record.is_dir() else []
+    if not files:
+        pytest.skip(f"no PEER AT2 record in {record} (the shared records are absent)")
+    result = CliRunner().invoke(cli, ["kinematic", str(FACADE), "--record", str(files[0]),
+                                      "--format", "json"])  # fmt: skip
+    assert result.exit_code == 0, result.output
+    doc = json.loads(result.output)
+    assert doc["T_Rc"] is None and doc["T_Rc_hazard"] is None
     assert all(m["T_Rc"] is None for m in doc["mechanisms"])

@@ -1,0 +1,92 @@
+"""The risk class of a building from its local mechanisms (rockcli.risk.classification on the
+code check of a model's catalogue): each mechanism's own class, and the building's from the
+lowest T_Rc of each limit state and the lowest IS-V over the mechanisms (the building
+reaches a limit state when its first mechanism does).
+
+A local mechanism has no operational limit state in the Circolare (§C8.7.1.2.1 checks the
+SLD, SLV and SLC): its T_Rc(SLO) is read as its T_Rc(SLD), the action that first sets it in
+motion (a rigid block does not move, and so loses nothing, below it; docs/interpretations.md).
+
+Pure and silent.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from dataclasses import dataclass
+from typing import Protocol
+
+from rockcli.risk.classification import RiskClass, classify
+
+#: The limit states the code check of a local mechanism gives T_Rc for.
+CHECKED = ("SLD", "SLV", "SLC")
+
+
+class Checked(Protocol):
+    """What the class reads of one mechanism's code check (analyses.catalogue.MechanismResult)."""
+
+    name: str
+    T_Rc: dict[str, float] | None
+    pga_SLV: tuple[float, float] | None
+
+
+@dataclass(frozen=True)
+class MechanismRisk:
+    """One mechanism's class (None: its check gives no T_Rc of a state, or no IS-V)."""
+
+    name: str
+    T_Rc: dict[str, float] | None
+    IS_V: float | None
+    risk: RiskClass | None
+
+
+@dataclass(frozen=True)
+class BuildingRisk:
+    """The building's class from its mechanisms.
+
+    Attributes:
+        T_Rc: the lowest T_Rc of each of SLD, SLV, SLC over the mechanisms [years].
+        governing: the mechanism that gives each (and "IS_V": the lowest IS-V's).
+        IS_V: the lowest IS-V.
+        risk: the class (classification.classify with SLO read as SLD).
+        mechanisms: each mechanism's own class, in the catalogue's order.
+        left_out: the mechanisms without a class (their checks give no capacity ag).
+    """
+
+    T_Rc: dict[str, float]
+    governing: dict[str, str]
+    IS_V: float
+    risk: RiskClass
+    mechanisms: tuple[MechanismRisk, ...]
+    left_out: tuple[str, ...]
+
+
+def with_slo(T_Rc: dict[str, float]) -> dict[str, float]:  # noqa: N803
+    """The four states of the curve, SLO read as SLD (the module's reading)."""
+    return {"SLO": T_Rc["SLD"], **{ls: T_Rc[ls] for ls in CHECKED}}
+
+
+def mechanism_risk(m: Checked) -> MechanismRisk:
+    """One mechanism's T_Rc, IS-V and class."""
+    periods = m.T_Rc if m.T_Rc and all(ls in m.T_Rc for ls in CHECKED) else None
+    isv = None if m.pga_SLV is None else m.pga_SLV[0] / m.pga_SLV[1]
+    risk = None if periods is None or isv is None else classify(with_slo(periods), isv)
+    return MechanismRisk(m.name, m.T_Rc, isv, risk)
+
+
+def building_risk(catalogue: Sequence[Checked]) -> BuildingRisk | None:
+    """The building's class from the mechanisms that have one (None: no mechanism has)."""
+    own = tuple(mechanism_risk(m) for m in catalogue)
+    rated = [r for r in own if r.risk is not None]
+    if not rated:
+        return None
+    governing: dict[str, str] = {}
+    periods: dict[str, float] = {}
+    for ls in CHECKED:
+        first = min(rated, key=lambda r: r.T_Rc[ls])  # type: ignore[index]
+        governing[ls], periods[ls] = first.name, first.T_Rc[ls]  # type: ignore[index]
+    weakest = min(rated, key=lambda r: r.IS_V)  # type: ignore[arg-type,return-value]
+    governing["IS_V"] = weakest.name
+    isv = float(weakest.IS_V)  # type: ignore[arg-type]
+    left_out = tuple(r.name for r in own if r.risk is None)
+    return BuildingRisk(periods, governing, isv, classify(with_slo(periods), isv), own, left_out)
