@@ -91,7 +91,10 @@ def conclusions_section(part: Any, w: Words) -> Section:
 
     blocks: list[Block] = []
     if part.verification is not None:
+        from rockcli.document.risk_class import risk_class_blocks
+
         blocks += verification_blocks(part.verification, w)[0]
+        blocks += risk_class_blocks(part.verification, w)
     else:
         blocks.append(Paragraph(w("verify.none"), "warning"))
     if part.doc is not None:

@@ -188,14 +188,20 @@ def verification_blocks(ver: Verification, w: Words) -> tuple[list[Block], str]:
         blocks.append(Paragraph(w("verify.governing", name=w.note(kin["governing"]))))
     zeta = zeta_by_state(kin)
     verdicts = {state: passed for state, _, passed in risk_indices(kin)}
+    periods = kin.get("T_Rc") or {}
     rows = tuple(
-        (w(f"ls.{state}"), n(ratio, "{:.3f}"), w.passed(verdicts.get(state)),
-         w.yes_no(state in ver.required))
+        (w(f"ls.{state}"), n(ratio, "{:.3f}"),
+         *((n(periods.get(state), "{:.4g}"),) if periods else ()),
+         w.passed(verdicts.get(state)), w.yes_no(state in ver.required))
         for state, ratio in zeta.items()
     )  # fmt: skip
-    blocks.append(Grid(w("verify.zeta_caption", demand=w(f"verify.demand_{ver.demand}")),
-                       (w("concl.state"), "ζ_E", w("concl.verdict"), w("verify.required")),
-                       rows, (False, True, False, False)))  # fmt: skip
+    headers = (w("concl.state"), "ζ_E", *((w("risk.period"),) if periods else ()),
+               w("concl.verdict"), w("verify.required"))  # fmt: skip
+    caption = w("verify.zeta_caption", demand=w(f"verify.demand_{ver.demand}"))
+    if periods:
+        caption += w("verify.period_caption")
+    blocks.append(Grid(caption, headers, rows,
+                       (False, True, *((True,) if periods else ()), False, False)))  # fmt: skip
     blocks.append(Paragraph(required_sentence(ver, w)))
     others = [s for s in zeta if s not in ver.required and state_outcome(ver, s)[0] is False]
     if others:

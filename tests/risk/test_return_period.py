@@ -96,7 +96,8 @@ def test_without_a_site_the_model_s_own_demand_is_the_hazard() -> None:
     def inverse3(capacity: float) -> float:
         k = 0 if capacity <= ag[1] else 1
         return periods[k] * (periods[k + 1] / periods[k]) ** (
-            math.log(capacity / ag[k]) / math.log(ag[k + 1] / ag[k]))
+            math.log(capacity / ag[k]) / math.log(ag[k + 1] / ag[k])
+        )
 
     for m in doc["mechanisms"]:
         for ls, years in m["T_Rc"].items():

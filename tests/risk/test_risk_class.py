@@ -36,7 +36,8 @@ def pam_by_hand(tr: dict[str, float]) -> float:
     for ls in ("SLO", "SLD"):
         tr[ls] = min(tr[ls], tr["SLV"])
     lam = {"SLID": 0.1, **{ls: 1.0 / tr[ls] for ls in ("SLO", "SLD", "SLV", "SLC")}}
-    area = sum(abs(lam[b] - lam[a]) * (CR[a] + CR[b]) / 2 for a, b in zip(ORDER, ORDER[1:]))
+    pairs = zip(ORDER[:-1], ORDER[1:], strict=True)
+    area = sum(abs(lam[b] - lam[a]) * (CR[a] + CR[b]) / 2 for a, b in pairs)
     return area + lam["SLC"] * 1.0
 
 
@@ -134,7 +135,7 @@ def model_with_rod(tmp_path: Path, diameter_m: float | None) -> Path:
     end = text.index("\n\n", start)
     block = text[start:end]
     if diameter_m is None:
-        text = text[:start] + text[end + 2:]
+        text = text[:start] + text[end + 2 :]
     else:
         text = text[:start] + block.replace("diameter = 0.020", f"diameter = {diameter_m!r}") \
             + text[end:]  # fmt: skip
