@@ -16,11 +16,13 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from rockcli.casebook.schema import (
+    DamageRateInput,
     FloorInput,
     HazardInput,
     KinematicInput,
     ModelInput,
     ResponseSpectrumInput,
+    RiskClassInput,
     SpectrumInput,
     SuiteInput,
 )
@@ -212,6 +214,32 @@ def hazard_quantity(inputs: HazardInput, quantity: str, grid_file: str) -> float
 
     values = site_parameters(read_grid(grid_file), inputs.lon, inputs.lat, inputs.TR)
     return float(getattr(values, quantity))
+
+
+def risk_class_quantity(inputs: RiskClassInput, quantity: str) -> float:
+    """PAM (a fraction), or a class's rank (A+ = 0 … G = 7), of DM 58/2017 Allegato A."""
+    from rockcli.risk.classification import CLASSES, classify
+
+    periods = {ls: getattr(inputs, f"T_Rc_{ls}") for ls in ("SLO", "SLD", "SLV", "SLC")}
+    result = classify(periods, inputs.IS_V)
+    if quantity == "PAM":
+        return result.PAM
+    name = {"PAM_class": result.pam_class, "IS_V_class": result.isv_class}
+    return float(CLASSES.index(name.get(quantity, result.risk_class)))
+
+
+def damage_rate_quantity(inputs: DamageRateInput, quantity: str, grid_file: str) -> float | None:
+    """The annual rate [1/year] of a lognormal fragility on the site's surface PGA, or its
+    return period [years] (rock risk --fragility)."""
+    from rockcli.codecheck.hazard import read_grid
+    from rockcli.risk.curve import curve_of, damage_rate, site_points
+
+    points = site_points(read_grid(grid_file), inputs.lon, inputs.lat, inputs.soil,
+                         inputs.topography)  # fmt: skip
+    rate = damage_rate(curve_of(points), inputs.median, inputs.beta)
+    if rate is None:  # beyond e^±700 a year
+        return None
+    return rate.rate if quantity == "annual_rate" else rate.return_period
 
 
 def response_quantity(inputs: ResponseSpectrumInput, quantity: str) -> float:

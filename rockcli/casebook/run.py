@@ -108,7 +108,7 @@ def available_grid(grid_file: str | None) -> str | None:
 def run_case(loaded: LoadedCase, grid_file: str | None) -> CaseResult:
     """One case: computed, compared, or skipped (a hazard case without a grid)."""
     case = loaded.case
-    if case.kind is Kind.HAZARD and grid_file is None:
+    if case.kind in (Kind.HAZARD, Kind.DAMAGE_RATE) and grid_file is None:
         return result_of(loaded, None, Status.SKIPPED, note=NO_GRID)
     try:
         obtained = obtain(loaded, grid_file)
@@ -145,6 +145,11 @@ def obtain(loaded: LoadedCase, grid_file: str | None) -> float | None:
         return code.floor_quantity(inputs)
     if isinstance(inputs, schema.SuiteInput):
         return code.suite_quantity(inputs)
+    if isinstance(inputs, schema.RiskClassInput):
+        return code.risk_class_quantity(inputs, q)
+    if isinstance(inputs, schema.DamageRateInput):
+        assert grid_file is not None
+        return code.damage_rate_quantity(inputs, q, grid_file)
     return obtain_on_model(loaded)
 
 

@@ -44,6 +44,8 @@ class Kind(StrEnum):
     UPLIFT_RAMP = "uplift-ramp"
     UPLIFT_SINE = "uplift-sine"
     RELEASE = "release"
+    RISK_CLASS = "risk-class"
+    DAMAGE_RATE = "damage-rate"
 
 
 class ToleranceType(StrEnum):
@@ -92,6 +94,8 @@ QUANTITIES: dict[Kind, dict[str, str]] = {
     Kind.SUITE: {"ratio": "-"},
     Kind.UPLIFT_RAMP: {"uplift_acceleration": "g", "uplift_time": "s"},
     Kind.UPLIFT_SINE: {"uplift_time": "s"},
+    Kind.RISK_CLASS: {"PAM": "-", "IS_V_class": "-", "PAM_class": "-", "class": "-"},
+    Kind.DAMAGE_RATE: {"annual_rate": "1/year", "return_period": "years"},
     Kind.RELEASE: {
         "max_rotation": "rad",
         "max_elongation": "m",
@@ -214,6 +218,28 @@ class HazardInput(Table):
     TR: Positive
 
 
+class RiskClassInput(Table):
+    """``risk-class``: DM 58/2017 Allegato A's class of four return periods of the capacity
+    [years] and an IS-V (a fraction); a class is checked as its rank, A+ = 0 … G = 7."""
+
+    T_Rc_SLO: Positive = Field(description="[years]")
+    T_Rc_SLD: Positive = Field(description="[years]")
+    T_Rc_SLV: Positive = Field(description="[years]")
+    T_Rc_SLC: Positive = Field(description="[years]")
+    IS_V: Positive = 1.0
+
+
+class DamageRateInput(Table):
+    """``damage-rate``: the annual rate of a lognormal fragility on PGA at a site of the grid."""
+
+    lon: Finite
+    lat: Finite
+    median: Positive = Field(description="θ [g]")
+    beta: Positive = Field(description="β")
+    soil: Literal["A", "B", "C", "D", "E"] = "A"
+    topography: Literal["T1", "T2", "T3", "T4"] = "T1"
+
+
 class ResponseSpectrumInput(Table):
     """``response-spectrum``: a linear oscillator under a generated pulse."""
 
@@ -303,4 +329,6 @@ INPUTS: dict[Kind, type[Table]] = {
     Kind.UPLIFT_RAMP: UpliftRampInput,
     Kind.UPLIFT_SINE: UpliftSineInput,
     Kind.RELEASE: ReleaseInput,
+    Kind.RISK_CLASS: RiskClassInput,
+    Kind.DAMAGE_RATE: DamageRateInput,
 }

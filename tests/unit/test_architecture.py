@@ -18,7 +18,7 @@ LAYERS = (
     ("model",),
     ("suites",),
     ("analyses",),
-    ("studies", "casebook", "risk"),
+    ("studies", "risk", "casebook"),
     ("terminal", "plots", "document"),
     ("api", "rockcli", "cli", "__main__"),
 )  # fmt: skip
