@@ -75,10 +75,11 @@ def rock_hazard(grid, lon: float, lat: float) -> HazardCurve | None:
     (read once per process) and site, as a study's cases share them (nine interpolations,
     ≈ 4 ms)."""
     from rockcli.codecheck.hazard import site_parameters
+    from rockcli.codecheck.hazard_curve import rising
 
     periods = [float(TR) for TR in grid.return_periods]
     ag = [site_parameters(grid, lon, lat, TR).ag for TR in periods]
-    if not all(b > a for a, b in zip(ag[:-1], ag[1:], strict=True)):
+    if not rising(ag, periods):
         return None
     return HazardCurve(tuple(ag), tuple(1.0 / TR for TR in periods))
 
@@ -106,7 +107,9 @@ def given_hazard(settings: NtcSettings) -> HazardCurve | None:
     the points of the site's hazard the model's author read them from (the T_Rc of a
     capacity, log–log between them as Allegato A interpolates). None for the 2009 edition
     (its checks are not in ag), with fewer than two limit states, or where ag does not grow
-    with TR (docs/interpretations.md)."""
+    with TR, or grows so little that a segment is steeper than λ ∝ ag^−30:
+    rockcli.codecheck.hazard_curve.rising; docs/interpretations.md)."""
+    from rockcli.codecheck.hazard_curve import rising
     from rockcli.codecheck.spectra import LimitState, return_period
 
     if settings.edition != "2019":
@@ -115,8 +118,7 @@ def given_hazard(settings: NtcSettings) -> HazardCurve | None:
         (return_period(settings.VN, settings.CU, LimitState(ls), settings.edition), p[0])
         for ls, p in settings.demand.items()
     )
-    pairs = zip(points[:-1], points[1:], strict=True)
-    if len(points) < 2 or not all(b[1] > a[1] and b[0] > a[0] for a, b in pairs):
+    if not rising([ag for _, ag in points], [TR for TR, _ in points]):
         return None
     return HazardCurve(tuple(ag for _, ag in points), tuple(1.0 / TR for TR, _ in points),
                        "model")  # fmt: skip

@@ -162,15 +162,10 @@ def fragility_risk(fragility_path, site, grid_file, soil, topography, vr, output
     show(doc, output, risk_report)
 
 
-#: The steepest hazard segment taken as a hazard curve, λ ∝ PGA^−k (the grid's rock curves:
-#: k ≈ 1.5–4; a soft soil's S_S falling almost as fast as ag grows flattens the surface PGA,
-#: so that λ would vanish just above it: no curve to integrate a fragility on).
-STEEPEST = 30.0
-
-
 def check_rising(points, soil: str) -> None:
     """The surface PGA must grow with the return period, by more than a power law of
     STEEPEST (a soft soil's S_S can fall as fast as ag grows at high hazard)."""
+    from rockcli.codecheck.hazard_curve import STEEPEST
     from rockcli.errors import InputError
 
     for a, b in zip(points[:-1], points[1:], strict=True):

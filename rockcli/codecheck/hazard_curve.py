@@ -14,6 +14,25 @@ from dataclasses import dataclass
 
 import numpy as np
 
+#: The return periods [years] a capacity's T_Rc is read within: beyond, the end segment's power
+#: law has no support (a capacity far below the curve's first point would come back every
+#: 1e-35 years, one far above it after 1e75), and T_Rc is the bound (the notes say so).
+TR_BOUNDS = (1.0, 1e6)
+#: The steepest segment a hazard curve may have, λ ∝ im^−k (the grid's curves of ag: k ≈ 1.5–4;
+#: two points whose ag barely differ would make T_Rc jump by orders of magnitude for a small
+#: change of the capacity).
+STEEPEST = 30.0
+
+
+def rising(im: list[float] | tuple[float, ...], periods: list[float] | tuple[float, ...]) -> bool:
+    """The points make a hazard curve: im grows with the return period, each segment no
+    steeper than STEEPEST."""
+    points = list(zip(im, periods, strict=True))
+    return len(points) >= 2 and all(
+        b_im > a_im and b_tr > a_tr and math.log(b_tr / a_tr) <= STEEPEST * math.log(b_im / a_im)
+        for (a_im, a_tr), (b_im, b_tr) in zip(points[:-1], points[1:], strict=True)
+    )
+
 
 @dataclass(frozen=True)
 class HazardCurve:
@@ -50,8 +69,9 @@ class HazardCurve:
         return np.exp(y[seg] - k[seg] * (q - x[seg]))
 
     def return_period_of(self, im: float) -> float:
-        """The return period [years] of the intensity ``im``: 1/λ(im)."""
-        return float(1.0 / self.rate_at(im))
+        """The return period [years] of the intensity ``im``: 1/λ(im), within TR_BOUNDS."""
+        years = float(1.0 / self.rate_at(im)) if im > 0.0 else TR_BOUNDS[0]
+        return min(max(years, TR_BOUNDS[0]), TR_BOUNDS[1])
 
     def local_power_law(self, im: float) -> tuple[float, float]:
         """(k0, k) of λ = k0·im^−k through the segment that holds ``im`` (an end

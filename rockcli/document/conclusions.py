@@ -91,10 +91,7 @@ def conclusions_section(part: Any, w: Words) -> Section:
 
     blocks: list[Block] = []
     if part.verification is not None:
-        from rockcli.document.risk_class import risk_class_blocks
-
         blocks += verification_blocks(part.verification, w)[0]
-        blocks += risk_class_blocks(part.verification, w)
     else:
         blocks.append(Paragraph(w("verify.none"), "warning"))
     if part.doc is not None:
@@ -105,6 +102,10 @@ def conclusions_section(part: Any, w: Words) -> Section:
     blocks.append(Paragraph(next_sentence(part.verification, part.doc, w)))
     if part.sizing is not None:
         blocks.append(sizing_paragraph(part.sizing, w))
+    if part.verification is not None:
+        from rockcli.document.risk_class import risk_class_blocks
+
+        blocks += risk_class_blocks(part.verification, w)
     return Section("conclusions", w("section.conclusions"), tuple(blocks))
 
 

@@ -31,7 +31,6 @@ Pure and silent: math only.
 
 from __future__ import annotations
 
-import math
 from collections.abc import Mapping
 from dataclasses import dataclass
 
@@ -100,7 +99,7 @@ def expected_annual_loss(rates: Mapping[str, float]) -> float:
 def pam_class(pam: float) -> str:
     """Tab. 1: the class of a PAM (a fraction: 0.0113 is 1.13 %)."""
     for bound, name in zip(PAM_BOUNDS, CLASSES, strict=False):
-        if pam <= bound:
+        if pam <= bound and not (name == "F" and pam == bound):  # 7.5 %: F and G, the worse
             return name
     return CLASSES[-1]
 
@@ -133,10 +132,3 @@ def classify(T_Rc: Mapping[str, float], IS_V: float) -> RiskClass:  # noqa: N803
     pam = expected_annual_loss(rates)
     by_pam, by_isv = pam_class(pam), isv_class(IS_V)
     return RiskClass(periods, capped, rates, pam, IS_V, by_pam, by_isv, worse(by_pam, by_isv))
-
-
-def usable(T_Rc: Mapping[str, float] | None) -> bool:  # noqa: N803
-    """The return periods hold every state the curve needs, each finite and positive."""
-    return T_Rc is not None and all(
-        ls in T_Rc and math.isfinite(T_Rc[ls]) and T_Rc[ls] > 0.0 for ls in NEEDED
-    )

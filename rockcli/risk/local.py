@@ -45,20 +45,23 @@ class BuildingRisk:
     """The building's class from its mechanisms.
 
     Attributes:
-        T_Rc: the lowest T_Rc of each of SLD, SLV, SLC over the mechanisms [years].
+        T_Rc: the lowest T_Rc of each of SLD, SLV, SLC over the mechanisms that have it
+            [years].
         governing: the mechanism that gives each (and "IS_V": the lowest IS-V's).
-        IS_V: the lowest IS-V.
-        risk: the class (classification.classify with SLO read as SLD).
+        IS_V: the lowest IS-V (None: no mechanism has one).
+        risk: the class (classification.classify with SLO read as SLD); None when a mechanism
+            lacks the T_Rc of a state or its IS-V (its check not evaluated there): the class
+            of the others could be better than the building's.
         mechanisms: each mechanism's own class, in the catalogue's order.
-        left_out: the mechanisms without a class (their checks give no capacity ag).
+        missing: the mechanisms without a T_Rc of every state or an IS-V, and what they lack.
     """
 
     T_Rc: dict[str, float]
     governing: dict[str, str]
-    IS_V: float
-    risk: RiskClass
+    IS_V: float | None
+    risk: RiskClass | None
     mechanisms: tuple[MechanismRisk, ...]
-    left_out: tuple[str, ...]
+    missing: tuple[str, ...]
 
 
 def with_slo(T_Rc: dict[str, float]) -> dict[str, float]:  # noqa: N803
@@ -74,19 +77,30 @@ def mechanism_risk(m: Checked) -> MechanismRisk:
     return MechanismRisk(m.name, m.T_Rc, isv, risk)
 
 
+def lacks(r: MechanismRisk) -> str:
+    """What a mechanism without a class lacks, in words."""
+    states = [ls for ls in CHECKED if not r.T_Rc or ls not in r.T_Rc]
+    parts = [f"T_Rc of {', '.join(states)}"] if states else []
+    return f"{r.name} ({', '.join(parts + ([] if r.IS_V is not None else ['IS-V']))})"
+
+
 def building_risk(catalogue: Sequence[Checked]) -> BuildingRisk | None:
-    """The building's class from the mechanisms that have one (None: no mechanism has)."""
+    """The building's class (None: no mechanism has any T_Rc, the demand gives no hazard)."""
     own = tuple(mechanism_risk(m) for m in catalogue)
-    rated = [r for r in own if r.risk is not None]
-    if not rated:
+    if not any(r.T_Rc for r in own):
         return None
     governing: dict[str, str] = {}
     periods: dict[str, float] = {}
     for ls in CHECKED:
-        first = min(rated, key=lambda r: r.T_Rc[ls])  # type: ignore[index]
-        governing[ls], periods[ls] = first.name, first.T_Rc[ls]  # type: ignore[index]
-    weakest = min(rated, key=lambda r: r.IS_V)  # type: ignore[arg-type,return-value]
-    governing["IS_V"] = weakest.name
-    isv = float(weakest.IS_V)  # type: ignore[arg-type]
-    left_out = tuple(r.name for r in own if r.risk is None)
-    return BuildingRisk(periods, governing, isv, classify(with_slo(periods), isv), own, left_out)
+        known = [r for r in own if r.T_Rc and ls in r.T_Rc]
+        if known:
+            first = min(known, key=lambda r: r.T_Rc[ls])  # type: ignore[index]
+            governing[ls], periods[ls] = first.name, first.T_Rc[ls]  # type: ignore[index]
+    with_isv = [r for r in own if r.IS_V is not None]
+    isv = None
+    if with_isv:
+        weakest = min(with_isv, key=lambda r: r.IS_V)  # type: ignore[arg-type,return-value]
+        governing["IS_V"], isv = weakest.name, float(weakest.IS_V)  # type: ignore[arg-type]
+    missing = tuple(lacks(r) for r in own if r.risk is None)
+    risk = None if missing or isv is None else classify(with_slo(periods), isv)
+    return BuildingRisk(periods, governing, isv, risk, own, missing)

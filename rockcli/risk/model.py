@@ -41,8 +41,10 @@ class Retrofit:
     rocked: bool
 
 
-def check_edition(model: Model, edition: str | None, file: str) -> None:
-    """The class needs T_Rc at SLD, SLV and SLC: the 2019 edition's (InputError otherwise)."""
+def check_model(model: Model, edition: str | None, file: str, site: bool) -> None:
+    """The class needs T_Rc at SLD, SLV and SLC: the 2019 edition's checks, on a code spectrum
+    with a hazard (InputError otherwise; ``site``: --site is given)."""
+    from rockcli.analyses.compare import code_sets_demand
     from rockcli.analyses.kinematic import check_settings
 
     settings = check_settings(model, edition)
@@ -52,9 +54,15 @@ def check_edition(model: Model, edition: str | None, file: str) -> None:
             "mechanism (Circolare 617/2009 checks DLS and ULS on a0* and spectral values)",
             file=None if edition else file,
             where="--edition" if edition else "ntc.edition",
-            value=settings.edition,
+            value=edition or settings.edition,
             allowed="2019 (NTC 2018 + Circolare 7/2019), whose SLD, SLV and SLC give T_Rc",
         )
+    if not site and not code_sets_demand(model):
+        raise InputError(
+            "the model sets no code spectrum to read T_Rc on", file=file, where="ntc",
+            allowed="[ntc.demand.SLD/SLV/SLC] or [ntc.site] in the model (or --site LON,LAT "
+            "without --retrofit)",
+        )  # fmt: skip
 
 
 def classified(label: str, model: Model, analyses: Analyses, site, grid_file, file: str
@@ -68,7 +76,8 @@ def classified(label: str, model: Model, analyses: Analyses, site, grid_file, fi
     if risk is None:
         raise InputError(
             "no hazard curve to read T_Rc on: the ag of the model's limit states does not "
-            "grow with their return periods",
+            "grow with their return periods (or grows so little that a segment is steeper "
+            "than λ ∝ ag^−30)",
             file=file,
             where="ntc.demand",
             allowed="[ntc.demand.SLD/SLV/SLC] whose ag grows from SLD to SLC, or [ntc.site] "
@@ -82,7 +91,7 @@ def model_risk(path: str, analyses: Analyses, site, grid_file) -> Classified:
     from rockcli.model.load import load_model
 
     model = load_model(path)
-    check_edition(model, analyses.edition, path)
+    check_model(model, analyses.edition, path, site is not None)
     return classified("the model as described", model, analyses, site, grid_file, path)
 
 
@@ -92,16 +101,18 @@ def retrofit_risk(path: str, record: Record | None, analyses: Analyses, grid_fil
     retrofit` sizes (on the model's own spectra, rocked under ``record`` when given), and the
     class with it (None: no diameter tried passes)."""
     from rockcli.model.load import read_toml, validate_model
-    from rockcli.studies.retrofit.candidates import build_candidate, make_plan
+    from rockcli.studies.retrofit.candidates import build_candidate, make_plan, tie_rods
     from rockcli.studies.retrofit.run import size_rod
 
     table = read_toml(path)
     model = validate_model(table, file=path)
-    check_edition(model, analyses.edition, path)
-    sizing = size_rod(path, record, analyses, "model", grid_file)
-    if not sizing.rod:
-        raise InputError(str(sizing.reason), file=path, where="restrainers",
+    check_model(model, analyses.edition, path, False)
+    rods = len(tie_rods(model))
+    if rods != 1:
+        raise InputError(f"{rods} tie-rods: --retrofit sizes the model's only tie-rod",
+                         file=path, where="restrainers",
                          allowed='a model with one tie-rod (kind = "tie-rod") to size')  # fmt: skip
+    sizing = size_rod(path, record, analyses, "model", grid_file)
     plan = make_plan(table, model, file=path, diameters_mm=(10.0,))
     bare = validate_model(without_rod(table, plan.index), file=path)
     before = classified(f"without its tie-rod '{plan.name}'", bare, analyses, None, grid_file,

@@ -344,8 +344,13 @@ def return_period_notes(T_Rc: dict[str, float] | None,  # noqa: N803
     """How T_Rc was read from the site's hazard, and which lie beyond its points."""
     if not T_Rc or not hazard:
         return ()
+    from rockcli.codecheck.hazard_curve import TR_BOUNDS
+
     first, last = hazard["TR"][0], hazard["TR"][-1]
-    outside = [f"{ls} {years:.4g} years" for ls, years in T_Rc.items()
+    low, high = TR_BOUNDS
+    bound = {low: f"{low:g} year or less, taken as {low:g}",
+             high: f"{high:g} years or more, taken as {high:g}"}  # fmt: skip
+    outside = [f"{ls} {bound.get(years, f'{years:.4g} years')}" for ls, years in T_Rc.items()
                if not first <= years <= last]  # fmt: skip
     points = (
         f"the grid's points at the site, {first:.4g}–{last:.4g} years"

@@ -43,19 +43,20 @@ NOTES = (
 
 
 def class_entry(risk: BuildingRisk) -> dict[str, Any]:
-    """The keys of one state's class."""
+    """The keys of one state's class (null where the class is not evaluated)."""
     r = risk.risk
     return {
         "T_Rc": risk.T_Rc,
-        "T_Rc_used": r.T_Rc,
-        "capped": list(r.capped),
+        "T_Rc_used": None if r is None else r.T_Rc,
+        "capped": [] if r is None else list(r.capped),
         "governing": risk.governing,
-        "annual_rates": r.rates,
-        "PAM": r.PAM,
-        "PAM_class": r.pam_class,
-        "IS_V": r.IS_V,
-        "IS_V_class": r.isv_class,
-        "class": r.risk_class,
+        "annual_rates": None if r is None else r.rates,
+        "PAM": None if r is None else r.PAM,
+        "PAM_class": None if r is None else r.pam_class,
+        "IS_V": risk.IS_V,
+        "IS_V_class": None if r is None else r.isv_class,
+        "class": None if r is None else r.risk_class,
+        "not_evaluated": list(risk.missing),
         "mechanisms": [
             {
                 "name": m.name,
@@ -70,27 +71,30 @@ def class_entry(risk: BuildingRisk) -> dict[str, Any]:
 
 
 def state_notes(state: Classified) -> list[str]:
-    """The notes of one state: the hazard T_Rc were read on, the capped states, the mechanisms
-    left out."""
+    """The notes of one state: the hazard T_Rc were read on (and the values beyond its
+    points), the mechanism that sets each state, a T_Rc below the SLID's, the capped states,
+    the mechanisms without a class."""
     from rockcli.terminal.kinematic import hazard_document, return_period_notes
 
     risk = state.risk
     shown = next(m for m in state.result.catalogue if m.T_Rc)
-    notes = list(return_period_notes(risk.T_Rc, hazard_document(shown.hazard)))
-    sets = [f"{ls.replace('_', '-')} {risk.governing[ls]}" for ls in ("SLD", "SLV", "SLC", "IS_V")]
+    notes = [f"{state.label}: {text}"
+             for text in return_period_notes(risk.T_Rc, hazard_document(shown.hazard))]  # fmt: skip
+    sets = [f"{ls.replace('_', '-')} {risk.governing[ls]}"
+            for ls in ("SLD", "SLV", "SLC", "IS_V") if ls in risk.governing]  # fmt: skip
     notes.append(f"{state.label}: {'; '.join(sets)} (the mechanism that sets each)")
-    short = [f"{ls} {years:.3g} years" for ls, years in risk.risk.T_Rc.items()
-             if years < TR_SLID and ls != "SLO"]  # fmt: skip
-    if short:
+    short = [f"{ls} {years:.3g} years" for ls, years in risk.T_Rc.items() if years < TR_SLID]
+    if short and risk.risk is not None:
         notes.append(f"{state.label}: T_Rc shorter than the SLID's conventional {TR_SLID:g} "
                      f"years ({', '.join(short)}): the curve runs beyond λ = 1/{TR_SLID:g}, and "
                      "the area of Allegato A's formula (|Δλ|) counts it")  # fmt: skip
-    if risk.risk.capped:
+    if risk.risk is not None and risk.risk.capped:
         notes.append(f"{state.label}: T_Rc of {', '.join(risk.risk.capped)} lowered to the "
                      "SLV's (Allegato A, step 3)")  # fmt: skip
-    if risk.left_out:
-        notes.append(f"{state.label}: not in the class (their checks give no capacity ag): "
-                     + ", ".join(risk.left_out))  # fmt: skip
+    if risk.missing:
+        notes.append(f"{state.label}: no class: the code check of {'; '.join(risk.missing)} is "
+                     "not evaluated there (its kinematic notes say why), and the class of the "
+                     "other mechanisms could be better than the building's")  # fmt: skip
     return notes
 
 
@@ -124,10 +128,12 @@ def risk_class_document(name: str, path: str, before: Classified,
         if after is not None:
             from rockcli.risk.classification import classes_gained
 
-            gained = classes_gained(before.risk.risk.risk_class, after.risk.risk.risk_class)
+            first, then = before.risk.risk, after.risk.risk
+            gained = (None if first is None or then is None
+                      else classes_gained(first.risk_class, then.risk_class))  # fmt: skip
             doc["after"] = {"state": after.label, **class_entry(after.risk),
                             "classes_gained": gained}  # fmt: skip
-            notes += state_notes(after)[1:]  # the hazard's note once
+            notes += state_notes(after)
         else:
             notes.append(f"retrofit: {rod.reason}")
     doc["notes"] = notes
@@ -149,9 +155,12 @@ PERCENT = ("PAM", "IS_V")
 
 
 def _cell(entry: dict[str, Any] | None, key: str, sub: str | None, fmt: str) -> str:
+    """One cell: the value (T_Rc used by the class, else the building's), "—" for none."""
     if entry is None:
         return "—"
-    value = entry[key] if sub is None else entry[key][sub]
+    value = entry[key] if sub is None else (entry[key] or entry["T_Rc"]).get(sub)
+    if value is None:
+        return "—"
     return format_value(100.0 * value if key in PERCENT else value, fmt)
 
 
@@ -191,12 +200,15 @@ def mechanism_rows(entry: dict[str, Any]) -> tuple[dict[str, Any], ...]:
 def verdict_of(doc: dict[str, Any]) -> str:
     """The class, and with a retrofit the class after and the classes gained."""
     text = (f"class {doc['class']} ({doc['state']}; PAM {doc['PAM_class']}, "
-            f"IS-V {doc['IS_V_class']})")  # fmt: skip
+            f"IS-V {doc['IS_V_class']})" if doc["class"] else
+            f"class not evaluated ({doc['state']}: see the notes)")  # fmt: skip
     after = doc.get("after")
     if after is not None:
         rod = doc["retrofit"]
-        text += (f"; with the tie-rod '{rod['rod']}' Ø{rod['diameter_mm']:g} mm: class "
-                 f"{after['class']}, {after['classes_gained']:+d} class(es)")  # fmt: skip
+        text += f"; with the tie-rod '{rod['rod']}' Ø{rod['diameter_mm']:g} mm: "
+        text += f"class {after['class']}" if after["class"] else "class not evaluated"
+        if after["classes_gained"] is not None:
+            text += f", {after['classes_gained']:+d} class(es)"
     elif "retrofit" in doc:
         text += "; no diameter tried makes the mechanisms the rod restrains safe"
     return text + "; an upper bound of the building's class (local mechanisms only)"

@@ -36,7 +36,13 @@ def inverse(ag_site: list[float], capacity: float) -> float:
     k = next((j for j in range(8) if capacity <= ag_site[j + 1]), 7)
     k = 0 if capacity < ag_site[0] else k
     a1, a2, t1, t2 = ag_site[k], ag_site[k + 1], GRID_TR[k], GRID_TR[k + 1]
-    return t1 * (t2 / t1) ** (math.log(capacity / a1) / math.log(a2 / a1))
+    return bounded(t1 * (t2 / t1) ** (math.log(capacity / a1) / math.log(a2 / a1)))
+
+
+def bounded(years: float) -> float:
+    """T_Rc is read within 1 and 10^6 years (the power law beyond the points has no support
+    further out: docs/risk.md)."""
+    return min(max(years, 1.0), 1e6)
 
 
 def deciding_capacity(checks: list[dict], states: tuple[str, ...]) -> float | None:
@@ -95,8 +101,10 @@ def test_without_a_site_the_model_s_own_demand_is_the_hazard() -> None:
 
     def inverse3(capacity: float) -> float:
         k = 0 if capacity <= ag[1] else 1
-        return periods[k] * (periods[k + 1] / periods[k]) ** (
-            math.log(capacity / ag[k]) / math.log(ag[k + 1] / ag[k])
+        return bounded(
+            periods[k]
+            * (periods[k + 1] / periods[k])
+            ** (math.log(capacity / ag[k]) / math.log(ag[k + 1] / ag[k]))
         )
 
     for m in doc["mechanisms"]:

@@ -15,6 +15,7 @@ model's local mechanisms (rock risk MODEL), against numbers written here from th
 from __future__ import annotations
 
 import json
+import math
 from pathlib import Path
 
 import pytest
@@ -56,7 +57,8 @@ def test_the_decree_s_own_new_building_is_pam_1_13_percent_class_b() -> None:
 
 @pytest.mark.parametrize(("pam", "expected"), [
     (0.005, "A+"), (0.00501, "A"), (0.010, "A"), (0.0101, "B"), (0.015, "B"), (0.025, "C"),
-    (0.035, "D"), (0.045, "E"), (0.0451, "F"), (0.075, "F"), (0.0751, "G"), (0.5, "G"),
+    (0.035, "D"), (0.045, "E"), (0.0451, "F"), (0.0749, "F"), (0.075, "G"), (0.0751, "G"),
+    (0.5, "G"),
 ])  # fmt: skip
 def test_pam_classes_follow_table_1(pam: float, expected: str) -> None:
     assert pam_class(pam) == expected
@@ -184,6 +186,77 @@ def test_bad_input_is_one_line_and_exit_2(tmp_path: Path) -> None:
     flat.write_text(FACADE.read_text(encoding="utf-8").replace("ag = 0.19", "ag = 0.14"),
                     encoding="utf-8")  # fmt: skip
     assert "ntc.demand" in refused(str(flat))
-    wall = ROOT / "examples" / "wall.toml"
-    assert "restrainers" in refused(str(wall), "--retrofit")
+    no_rod = ROOT / "examples" / "palazzo-facade.toml"
+    assert "0 tie-rods" in refused(str(no_rod), "--retrofit")
     assert "MODEL and --fragility" in refused(str(FACADE), "--fragility", str(FACADE))
+
+
+def edited(tmp_path: Path, name: str, *changes: tuple[str, str]) -> Path:
+    """The façade with these text replacements (each must apply)."""
+    text = FACADE.read_text(encoding="utf-8")
+    for old, new in changes:
+        assert old in text, old
+        text = text.replace(old, new)
+    path = tmp_path / f"{name}.toml"
+    path.write_text(text, encoding="utf-8")
+    return path
+
+
+def test_a_near_flat_demand_gives_no_hazard_curve(tmp_path: Path) -> None:
+    """ag 0.1499 g at 50 years and 0.15 g at 475: λ ∝ ag^−3400 between them, no curve (a
+    capacity a hair above 0.15 g would come back in 10^-3000 years)."""
+    flat = edited(tmp_path, "flat-low", ("ag = 0.06", "ag = 0.1499"))
+    assert "ntc.demand" in refused(str(flat))
+    top = edited(tmp_path, "flat-top", ("ag = 0.19", "ag = 0.1501"))
+    assert "ntc.demand" in refused(str(top))
+    kin = CliRunner().invoke(cli, ["kinematic", str(top), "--format", "json"])
+    assert kin.exit_code == 0, kin.output
+    assert json.loads(kin.output)["T_Rc"] is None
+
+
+def test_t_rc_far_beyond_the_curve_is_bounded(tmp_path: Path) -> None:
+    """A capacity far below the first point (SLD ag 0.14 g at 50 years, 0.15 at 475: k = 32.6,
+    just above the steepest allowed) is refused; at k = 10 (SLD ag 0.12 g: still steep) the
+    gable's SLD comes back in 1 year or less: taken as 1, and said."""
+    path = edited(tmp_path, "steep", ("ag = 0.06", "ag = 0.1199"))
+    doc = run_json(str(path))
+    assert doc["T_Rc"]["SLD"] == 1.0
+    assert any("1 year or less, taken as 1" in n for n in doc["notes"])
+    assert all(math.isfinite(m["PAM"]) for m in doc["mechanisms"] if m["PAM"] is not None)
+
+
+def test_a_mechanism_not_evaluated_leaves_no_class(tmp_path: Path) -> None:
+    """A stiff spring in place of the rod: the whole wall's SLV and SLC checks are not evaluated
+    (positive stiffness, no limit displacement); the class of the others would be better than
+    the building's, so there is none, and the mechanism is named."""
+    rod = FACADE.read_text(encoding="utf-8")
+    start = rod.index("[[restrainers]]")
+    block = rod[start : rod.index("\n\n", start)]
+    path = edited(
+        tmp_path,
+        "spring",
+        (
+            block,
+            '[[restrainers]]\nname = "stiff spring"\nk = 1.0e8\nheight = 7.5\nfrom_pivot = 0.30',
+        ),
+    )
+    doc = run_json(str(path))
+    assert doc["class"] is None and doc["PAM"] is None
+    assert any("whole wall" in m for m in doc["not_evaluated"])
+    assert doc["T_Rc"]["SLD"] > 0  # the states the mechanisms give are still there
+
+
+def test_options_name_what_rock_risk_takes(tmp_path: Path) -> None:
+    assert "--edition" in refused(str(FACADE), "--edition", "2008")  # 2008 is 2009's code
+    nodemand = ROOT / "examples" / "facade.toml"
+    line = refused(str(nodemand), "--retrofit")
+    assert "ntc" in line and "--record" not in line
+    two = edited(tmp_path, "two", ('name = "tie-rod"', 'name = "tie-rod"'))
+    text = two.read_text(encoding="utf-8")
+    start = text.index("[[restrainers]]")
+    block = text[start : text.index("\n\n", start)]
+    two.write_text(text.replace(block, block + "\n\n" + block.replace('"tie-rod"\nkind',
+                                                                    '"second"\nkind')),
+                   encoding="utf-8")  # fmt: skip
+    line = refused(str(two), "--retrofit")
+    assert "2 tie-rods" in line and "rock retrofit --name" not in line
