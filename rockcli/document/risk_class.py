@@ -41,7 +41,7 @@ def risk_class_blocks(verification: Any, w: Words) -> list[Block]:
     )  # fmt: skip
     headers = (w("concl.state"), w("risk.period"), w("risk.rate"), w("risk.cost"),
                w("risk.mechanism"))  # fmt: skip
-    caption = w("risk.caption", points=points_text(verification, w))
+    caption = w("risk.caption", points=points_text(risk, w))
     blocks += [
         Grid(caption, headers, rows, (False, True, True, True, False)),
         Paragraph(w("risk.result", pam=n(100.0 * r.PAM, "{:.2f}"), pam_class=r.pam_class,
@@ -49,26 +49,19 @@ def risk_class_blocks(verification: Any, w: Words) -> list[Block]:
                     risk_class=r.risk_class, name=w.note(risk.governing["IS_V"])), "verdict"),
         Paragraph(w("risk.upper_bound"), "warning"),
     ]  # fmt: skip
-    return blocks + risk_notes(risk, verification, w)
+    return blocks + risk_notes(risk, w)
 
 
-def curve_points(verification: Any) -> tuple[str, tuple[float, ...]]:
-    """The hazard curve's source ("grid" or "model") and its return periods [years]."""
-    shown = next(m for m in verification.result.catalogue if m.T_Rc)
-    return shown.hazard.source, shown.hazard.periods
-
-
-def points_text(verification: Any, w: Words) -> str:
+def points_text(risk: BuildingRisk, w: Words) -> str:
     """Where the curve's points come from, in words."""
-    source, periods = curve_points(verification)
-    years = ", ".join(w.number(TR, "{:.4g}") for TR in periods)
-    return w(f"risk.points_{source}", years=years)
+    years = ", ".join(w.number(TR, "{:.4g}") for TR in risk.hazard.periods)
+    return w(f"risk.points_{risk.hazard.source}", years=years)
 
 
-def risk_notes(risk: BuildingRisk, verification: Any, w: Words) -> list[Block]:
+def risk_notes(risk: BuildingRisk, w: Words) -> list[Block]:
     """The extrapolated T_Rc, step 3's cap, a T_Rc below the SLID's."""
     assert risk.risk is not None
-    _, periods = curve_points(verification)
+    periods = risk.hazard.periods
     out = [f"{ls} {w.number(years, '{:.4g}')}" for ls, years in risk.T_Rc.items()
            if not periods[0] <= years <= periods[-1]]  # fmt: skip
     blocks: list[Block] = []

@@ -16,6 +16,7 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import Protocol
 
+from rockcli.codecheck.hazard_curve import HazardCurve
 from rockcli.risk.classification import RiskClass, classify
 
 #: The limit states the code check of a local mechanism gives T_Rc for.
@@ -28,6 +29,7 @@ class Checked(Protocol):
     name: str
     T_Rc: dict[str, float] | None
     pga_SLV: tuple[float, float] | None
+    hazard: HazardCurve | None
 
 
 @dataclass(frozen=True)
@@ -54,6 +56,7 @@ class BuildingRisk:
             of the others could be better than the building's.
         mechanisms: each mechanism's own class, in the catalogue's order.
         missing: the mechanisms without a T_Rc of every state or an IS-V, and what they lack.
+        hazard: the hazard curve the T_Rc were read on (the mechanisms share it).
     """
 
     T_Rc: dict[str, float]
@@ -62,6 +65,7 @@ class BuildingRisk:
     risk: RiskClass | None
     mechanisms: tuple[MechanismRisk, ...]
     missing: tuple[str, ...]
+    hazard: HazardCurve
 
 
 def with_slo(T_Rc: dict[str, float]) -> dict[str, float]:  # noqa: N803
@@ -103,4 +107,6 @@ def building_risk(catalogue: Sequence[Checked]) -> BuildingRisk | None:
         governing["IS_V"], isv = weakest.name, float(weakest.IS_V)  # type: ignore[arg-type]
     missing = tuple(lacks(r) for r in own if r.risk is None)
     risk = None if missing or isv is None else classify(with_slo(periods), isv)
-    return BuildingRisk(periods, governing, isv, risk, own, missing)
+    hazard = next(m.hazard for m in catalogue if m.T_Rc)
+    assert hazard is not None  # a T_Rc is read on a curve
+    return BuildingRisk(periods, governing, isv, risk, own, missing, hazard)

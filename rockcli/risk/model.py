@@ -107,22 +107,22 @@ def retrofit_risk(path: str, record: Record | None, analyses: Analyses, grid_fil
     table = read_toml(path)
     model = validate_model(table, file=path)
     check_model(model, analyses.edition, path, False)
-    rods = len(tie_rods(model))
-    if rods != 1:
-        raise InputError(f"{rods} tie-rods: --retrofit sizes the model's only tie-rod",
+    rods = tie_rods(model)
+    if len(rods) != 1:
+        raise InputError(f"{len(rods)} tie-rods: --retrofit sizes the model's only tie-rod",
                          file=path, where="restrainers",
                          allowed='a model with one tie-rod (kind = "tie-rod") to size')  # fmt: skip
     sizing = size_rod(path, record, analyses, "model", grid_file)
-    plan = make_plan(table, model, file=path, diameters_mm=(10.0,))
-    bare = validate_model(without_rod(table, plan.index), file=path)
-    before = classified(f"without its tie-rod '{plan.name}'", bare, analyses, None, grid_file,
+    bare = validate_model(without_rod(table, rods[0]), file=path)
+    before = classified(f"without its tie-rod '{sizing.rod}'", bare, analyses, None, grid_file,
                         path)  # fmt: skip
     chosen = None if sizing.chosen is None else float(sizing.chosen["diameter_mm"])
-    rod = Retrofit(plan.name, plan.grade, plan.count, chosen, str(sizing.reason), sizing.rocked)
+    rod = Retrofit(sizing.rod, sizing.grade, sizing.bars, chosen, str(sizing.reason),
+                   sizing.rocked)  # fmt: skip
     if chosen is None:
         return before, rod, None
     with_rod = build_candidate(make_plan(table, model, file=path, diameters_mm=(chosen,)), chosen)
-    after = classified(f"with '{plan.name}' Ø{chosen:g} mm", with_rod, analyses, None,
+    after = classified(f"with '{sizing.rod}' Ø{chosen:g} mm", with_rod, analyses, None,
                        grid_file, path)  # fmt: skip
     return before, rod, after
 

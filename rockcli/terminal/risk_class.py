@@ -77,9 +77,8 @@ def state_notes(state: Classified) -> list[str]:
     from rockcli.terminal.kinematic import hazard_document, return_period_notes
 
     risk = state.risk
-    shown = next(m for m in state.result.catalogue if m.T_Rc)
     notes = [f"{state.label}: {text}"
-             for text in return_period_notes(risk.T_Rc, hazard_document(shown.hazard))]  # fmt: skip
+             for text in return_period_notes(risk.T_Rc, hazard_document(risk.hazard))]  # fmt: skip
     sets = [f"{ls.replace('_', '-')} {risk.governing[ls]}"
             for ls in ("SLD", "SLV", "SLC", "IS_V") if ls in risk.governing]  # fmt: skip
     notes.append(f"{state.label}: {'; '.join(sets)} (the mechanism that sets each)")
@@ -110,7 +109,6 @@ def risk_class_document(name: str, path: str, before: Classified,
     """The `rock risk MODEL --format json` document."""
     from rockcli.terminal.kinematic import hazard_document
 
-    shown = next(m for m in before.result.catalogue if m.T_Rc)
     doc: dict[str, Any] = {
         "schema": SCHEMA,
         "rock_version": __version__,
@@ -118,7 +116,7 @@ def risk_class_document(name: str, path: str, before: Classified,
         "edition": before.result.edition,
         "state": before.label,
         **class_entry(before.risk),
-        "hazard": hazard_document(shown.hazard),
+        "hazard": hazard_document(before.risk.hazard),
     }
     notes = [UPPER_BOUND, *NOTES, *state_notes(before)]
     if retrofit is not None:
